@@ -1,0 +1,265 @@
+#include "app/cli.h"
+
+#include "core/exr_io.h"
+#include "core/image_metrics.h"
+#include "core/scene_io.h"
+#include "core/task_system.h"
+#include "render/progressive/backend.h"
+#include "render/progressive/progressive_render.h"
+#include "ui/display.h"
+
+#include <QSaveFile>
+
+#include <charconv>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <thread>
+#include <unistd.h>
+
+namespace lucerna::cli {
+
+namespace {
+
+// Bad usage or bad input: exit status 2 with this one line.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+volatile std::sig_atomic_t gInterrupted = 0;  // set by SIGINT/SIGTERM only
+extern "C" void onInterrupt(int) { gInterrupted = 1; }
+
+template <class T>
+T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
+    T value{};
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || ptr != text.data() + text.size() || !(value >= lo && value <= hi))
+        throw UsageError(option + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                         "], got '" + text + "'");
+    return value;
+}
+
+struct RenderArgs {
+    std::string scene, output, backend = "auto";
+    RenderSettings settings;
+    int threads = 0;
+};
+
+RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
+    RenderArgs r;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "-o" || a == "--output") r.output = value();
+        else if (a == "--backend") r.backend = value();
+        else if (a == "--spp") r.settings.spp = parseNumber<int>(a, value(), 1, 1 << 24);
+        else if (a == "--time") r.settings.seconds = parseNumber<double>(a, value(), 1e-3, 1e7);
+        else if (a == "--seed") r.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--threads") r.threads = parseNumber<int>(a, value(), 1, 4096);
+        else if (a == "--width") r.settings.width = parseNumber<int>(a, value(), 1, 16384);
+        else if (a == "--height") r.settings.height = parseNumber<int>(a, value(), 1, 16384);
+        else if (a == "--option") {
+            const std::string& kv = value();
+            const auto eq = kv.find('=');
+            if (eq == std::string::npos || eq == 0) throw UsageError("--option expects name=value, got '" + kv + "'");
+            r.settings.options[kv.substr(0, eq)] = kv.substr(eq + 1);
+        } else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
+        else if (r.scene.empty()) r.scene = a;
+        else throw UsageError("unexpected argument '" + a + "'");
+    }
+    if (r.scene.empty()) throw UsageError("render: no scene file given");
+    if (r.output.empty()) throw UsageError("render: no output file given (-o OUT.exr)");
+    return r;
+}
+
+std::string formatSeconds(double s) {
+    char buf[32];
+    if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);
+    else std::snprintf(buf, sizeof buf, "%d min %02d s", int(s) / 60, int(s) % 60);
+    return buf;
+}
+
+Scene loadOrThrow(const std::string& path, LoadReport* report) {
+    try {
+        return loadScene(path, report);
+    } catch (const SceneError& e) {
+        throw UsageError(e.what());
+    }
+}
+
+int renderImpl(const std::vector<std::string>& args) {
+    RenderArgs r = parseRenderArgs(args);
+    LoadReport report;
+    const SceneSnapshot scene = std::make_shared<const Scene>(loadOrThrow(r.scene, &report));
+    for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+
+    std::string backendName = r.backend;
+    if (backendName == "auto") {
+        const AutoChoice choice = chooseAutoBackend(*scene);
+        std::cerr << "auto: " << choice.reason << "\n";
+        backendName = choice.backend;
+    }
+    const BackendInfo* info = findBackend(backendName);
+    if (!info) {
+        std::string names = "auto";
+        for (const BackendInfo& b : backendTable()) names += ", " + std::string(b.name);
+        throw UsageError("unknown backend '" + r.backend + "' (available: " + names + ")");
+    }
+    std::unique_ptr<ProgressiveBackend> backend;
+    try {
+        backend = info->make(scene, r.settings);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+
+    std::signal(SIGINT, onInterrupt);
+    std::signal(SIGTERM, onInterrupt);
+    TaskSystem tasks(r.threads);
+    std::optional<RenderFrame> result;
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        backend->prepare(ctx);
+        if (ctx.isCancelled()) return;
+        RenderFrame frame = runProgressive(*backend, backendName, r.settings, ctx);
+        if (!ctx.isCancelled()) result = std::move(frame);
+    });
+
+    const bool tty = isatty(STDERR_FILENO);
+    const auto start = std::chrono::steady_clock::now();
+    while (!job->isFinished()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        if (gInterrupted) job->cancel();
+        if (tty) {
+            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            const double p = job->progress();
+            std::string left = p > 0.01 ? formatSeconds(t * (1.0 - p) / p) + " left" : "estimating";
+            std::fprintf(stderr, "\r%s: %5.1f%%  %s elapsed, %s   ", backendName.c_str(), 100.0 * p,
+                         formatSeconds(t).c_str(), left.c_str());
+        }
+    }
+    job->wait();
+    if (tty) std::fputs("\n", stderr);
+    job->rethrowIfFailed();
+    if (gInterrupted || !result) {
+        std::cerr << "render interrupted; no file written\n";
+        return 130;
+    }
+    writeExr(r.output, result->image);
+    std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
+                 backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
+                 result->estimatedRelmse);
+    return 0;
+}
+
+int compareImpl(const std::vector<std::string>& args) {
+    if (args.size() != 2) throw UsageError("usage: lucerna compare TEST.exr REFERENCE.exr");
+    Image test, ref;
+    try {
+        test = readExr(args[0]);
+        ref = readExr(args[1]);
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
+    if (test.width != ref.width || test.height != ref.height)
+        throw UsageError("image sizes differ: " + args[0] + " is " + std::to_string(test.width) + "x" +
+                         std::to_string(test.height) + ", " + args[1] + " is " + std::to_string(ref.width) + "x" +
+                         std::to_string(ref.height));
+    std::cout << formatMetrics(compareImages(test, ref));
+    return 0;
+}
+
+const char* materialTypeName(MaterialType t) {
+    switch (t) {
+    case MaterialType::Diffuse: return "diffuse";
+    case MaterialType::Glossy: return "glossy";
+    case MaterialType::Mirror: return "mirror";
+    case MaterialType::Dielectric: return "dielectric";
+    case MaterialType::Emitter: return "emitter";
+    }
+    return "?";
+}
+
+int infoImpl(const std::vector<std::string>& args) {
+    if (args.size() != 1) throw UsageError("usage: lucerna info SCENE.json");
+    LoadReport report;
+    const Scene scene = loadOrThrow(args[0], &report);
+    for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+    const SceneFeatures f = analyseFeatures(scene);
+    std::cout << "scene: " << args[0] << "\n"
+              << "meters_per_unit: " << scene.metersPerUnit << "\n"
+              << "camera: " << scene.camera.width << "x" << scene.camera.height << ", fov_y " << scene.camera.fovYDeg
+              << " deg\n"
+              << "objects: " << scene.objects.size() << "\n"
+              << "triangles: " << f.triangles << "\n"
+              << "degenerate triangles dropped: " << report.degenerateTrianglesDropped << "\n"
+              << "materials: " << scene.materials.size() << "\n";
+    for (const Material& m : scene.materials) std::cout << "  " << m.name << ": " << materialTypeName(m.type) << "\n";
+    std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
+              << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
+              << ", directional " << f.directionalLights << ")\n";
+    std::string needs;
+    if (f.hasDiffuse) needs += " diffuse";
+    if (f.hasGlossy) needs += " glossy";
+    if (f.hasMirror) needs += " mirror";
+    if (f.hasDielectric) needs += " dielectric";
+    if (f.emitterTriangles) needs += " area-lights";
+    if (f.hasDeltaLights()) needs += " delta-lights";
+    std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
+    std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";
+    return 0;
+}
+
+int convertImpl(const std::vector<std::string>& args) {
+    if (args.size() != 2 && !(args.size() == 4 && args[2] == "--exposure"))
+        throw UsageError("usage: lucerna convert IN.exr OUT.png [--exposure STOPS]");
+    const float exposure = args.size() == 4 ? parseNumber<float>("--exposure", args[3], -64.0f, 64.0f) : 0.0f;
+    Image image;
+    try {
+        image = readExr(args[0]);
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
+    const QImage png = toDisplayImage(image, exposure);
+    QSaveFile file(QString::fromStdString(args[1]));
+    if (!file.open(QIODevice::WriteOnly) || !png.save(&file, "PNG") || !file.commit())
+        throw UsageError(args[1] + ": cannot write");
+    return 0;
+}
+
+int run(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args) {
+    try {
+        return impl(args);
+    } catch (const UsageError& e) {
+        std::cerr << "lucerna: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "lucerna: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace
+
+int render(const std::vector<std::string>& args) { return run(renderImpl, args); }
+int compare(const std::vector<std::string>& args) { return run(compareImpl, args); }
+int info(const std::vector<std::string>& args) { return run(infoImpl, args); }
+int convert(const std::vector<std::string>& args) { return run(convertImpl, args); }
+
+void printUsage() {
+    std::cout << "usage:\n"
+                 "  lucerna [SCENE.json]                      open the application\n"
+                 "  lucerna render SCENE.json -o OUT.exr [--backend NAME] [--spp N | --time SECONDS]\n"
+                 "                 [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
+                 "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
+                 "  lucerna info SCENE.json                   validate and print statistics\n"
+                 "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"
+                 "backends: auto";
+    for (const BackendInfo& b : backendTable()) std::cout << ", " << b.name;
+    std::cout << "\n";
+}
+
+}  // namespace lucerna::cli

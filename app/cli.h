@@ -1,0 +1,17 @@
+#pragma once
+// The headless commands of SPEC.md section 2: render, compare, info. Each returns the process
+// exit status: 0 success, 2 bad usage or bad input (one line on stderr), 1 internal error.
+
+#include <string>
+#include <vector>
+
+namespace lucerna::cli {
+
+int render(const std::vector<std::string>& args);
+int compare(const std::vector<std::string>& args);
+int info(const std::vector<std::string>& args);
+// convert IN.exr OUT.png [--exposure STOPS]: what the screen would show (sRGB).
+int convert(const std::vector<std::string>& args);
+void printUsage();
+
+}  // namespace lucerna::cli

@@ -1,0 +1,43 @@
+// lucerna: the application, or one of the headless commands of SPEC.md section 2.
+
+#include "app/cli.h"
+#include "ui/main_window.h"
+
+#include <QApplication>
+#include <QCoreApplication>
+
+#include <cstring>
+#include <string>
+#include <vector>
+
+namespace {
+std::string defaultScenePath() { return std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json"; }
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc >= 2) {
+        const std::string command = argv[1];
+        const std::vector<std::string> rest(argv + 2, argv + argc);
+        if (command == "render" || command == "compare" || command == "info" || command == "convert") {
+            QCoreApplication app(argc, argv);  // Qt's file and image helpers; no display needed
+            if (command == "render") return lucerna::cli::render(rest);
+            if (command == "compare") return lucerna::cli::compare(rest);
+            if (command == "convert") return lucerna::cli::convert(rest);
+            return lucerna::cli::info(rest);
+        }
+        if (command == "-h" || command == "--help" || command == "help") {
+            lucerna::cli::printUsage();
+            return 0;
+        }
+        if (argc > 2 || (!command.empty() && command[0] == '-')) {
+            lucerna::cli::printUsage();
+            return 2;
+        }
+    }
+    QApplication app(argc, argv);
+    QApplication::setApplicationName("Lucerna");
+    QApplication::setOrganizationName("Lucerna");
+    lucerna::MainWindow window(argc >= 2 ? argv[1] : defaultScenePath());
+    window.show();
+    return app.exec();
+}

@@ -1,0 +1,99 @@
+#include "core/scene.h"
+
+#include <cmath>
+
+namespace lucerna {
+
+namespace {
+
+// cos and sin of a whole number of quarter turns are exact, so that "rotate 90 degrees" moves
+// (1, 0, 0) to exactly (0, 1, 0) rather than to (6e-17, 1, 0).
+void exactCosSin(double degrees, double& c, double& s) {
+    const double quarters = degrees / 90.0;
+    if (quarters == std::floor(quarters) && std::abs(quarters) < 1e15) {
+        const long long q = static_cast<long long>(quarters) % 4;
+        static constexpr double kCos[4] = {1, 0, -1, 0};
+        static constexpr double kSin[4] = {0, 1, 0, -1};
+        const int i = int((q + 4) % 4);
+        c = kCos[i];
+        s = kSin[i];
+        return;
+    }
+    const double a = radians(degrees);
+    c = std::cos(a);
+    s = std::sin(a);
+}
+
+}  // namespace
+
+M44d Transform::toMatrix() const {
+    if (isMatrix) return matrix;
+
+    // Rodrigues' rotation about the unit axis (right-hand rule), in column-vector form.
+    double r[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    if (hasRotate && rotateAxis.length() > 0) {
+        const V3d k = rotateAxis / rotateAxis.length();
+        double c = 1, s = 0;
+        exactCosSin(rotateDeg, c, s);
+        const double t = 1 - c;
+        r[0][0] = t * k.x * k.x + c;        r[0][1] = t * k.x * k.y - s * k.z;  r[0][2] = t * k.x * k.z + s * k.y;
+        r[1][0] = t * k.x * k.y + s * k.z;  r[1][1] = t * k.y * k.y + c;        r[1][2] = t * k.y * k.z - s * k.x;
+        r[2][0] = t * k.x * k.z - s * k.y;  r[2][1] = t * k.y * k.z + s * k.x;  r[2][2] = t * k.z * k.z + c;
+    }
+    // M = T * R * S: the columns of R scaled by S, translation in the last column.
+    M44d m;  // identity
+    const double sc[3] = {scale.x, scale.y, scale.z};
+    const double tr[3] = {translate.x, translate.y, translate.z};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) m[i][j] = r[i][j] * sc[j];
+        m[i][3] = tr[i];
+    }
+    return m;
+}
+
+const Material* Scene::findMaterial(const std::string& name) const {
+    const int i = materialIndex(name);
+    return i < 0 ? nullptr : &materials[size_t(i)];
+}
+
+int Scene::materialIndex(const std::string& name) const {
+    for (size_t i = 0; i < materials.size(); ++i)
+        if (materials[i].name == name) return int(i);
+    return -1;
+}
+
+SceneFeatures analyseFeatures(const Scene& scene) {
+    SceneFeatures f;
+    for (const Object& o : scene.objects) {
+        // Before resolveMeshes there is no world mesh; inline and quad meshes still say how many
+        // triangles they will have (degenerate ones included), file meshes do not.
+        size_t count = 0;
+        bool known = true;
+        if (o.worldMesh) count = o.worldMesh->triangles.size();
+        else if (o.mesh.kind == MeshSource::Kind::Inline) count = o.mesh.inlineMesh.triangles.size();
+        else if (o.mesh.kind == MeshSource::Kind::Quad) count = 2;
+        else known = false;
+        f.triangles += count;
+
+        // An object known to have no triangles does not call for its material's model.
+        const Material* m = scene.findMaterial(o.material);
+        if (!m || (known && count == 0)) continue;
+        switch (m->type) {
+        case MaterialType::Diffuse: f.hasDiffuse = true; break;
+        case MaterialType::Glossy: f.hasGlossy = true; break;
+        case MaterialType::Mirror: f.hasMirror = true; break;
+        case MaterialType::Dielectric: f.hasDielectric = true; break;
+        case MaterialType::Emitter: f.emitterTriangles += int(count); break;
+        }
+    }
+    for (const Light& l : scene.lights) {
+        switch (l.type) {
+        case LightType::Point: ++f.pointLights; break;
+        case LightType::Spot: ++f.spotLights; break;
+        case LightType::Directional: ++f.directionalLights; break;
+        }
+    }
+    return f;
+}
+
+}  // namespace lucerna

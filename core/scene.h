@@ -1,0 +1,137 @@
+#pragma once
+// The scene of SPEC.md section 1 as plain values: what the file says, kept faithfully so that
+// save(load(file)) loses nothing, plus the resolved world-space triangle meshes that backends use.
+
+#include "core/math.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+struct Camera {
+    V3d position{0, 0, 0};
+    V3d target{0, 0, -1};
+    V3d up{0, 1, 0};
+    double fovYDeg = 45;   // full vertical field of view, degrees
+    int width = 512;       // pixels
+    int height = 512;
+
+    bool operator==(const Camera&) const = default;
+};
+
+enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter };
+
+struct Material {
+    std::string name;
+    MaterialType type = MaterialType::Diffuse;
+    Rgbd albedo{0, 0, 0};       // diffuse, glossy: Lambertian part, each channel in [0, 1]
+    Rgbd specular{0, 0, 0};     // glossy: GGX lobe weight, in [0, 1]
+    double roughness = 0.5;     // glossy: GGX alpha, in (0, 1]
+    Rgbd reflectance{0, 0, 0};  // mirror
+    double ior = 1.5;           // dielectric
+    Rgbd radiance{0, 0, 0};     // emitter, W sr^-1 m^-2, front face only
+
+    bool operator==(const Material&) const = default;
+};
+
+// SPEC: scale (number or triple), then rotate (axis, degrees), then translate; or a row-major
+// matrix for column vectors.
+struct Transform {
+    bool isMatrix = false;
+    V3d scale{1, 1, 1};
+    bool uniformScale = true;  // written back as a number rather than a triple
+    V3d rotateAxis{0, 1, 0};
+    double rotateDeg = 0;
+    bool hasRotate = false;
+    V3d translate{0, 0, 0};
+    M44d matrix;  // row-major as in the file: matrix[i][j] is row i, column j; p' = M p
+
+    // The 4x4 matrix (row-major, column vectors) this transform applies.
+    M44d toMatrix() const;
+    bool operator==(const Transform&) const = default;
+};
+
+struct TriangleMesh {
+    std::vector<V3d> vertices;
+    std::vector<V3i> triangles;
+    bool operator==(const TriangleMesh&) const = default;
+};
+
+struct MeshSource {
+    enum class Kind { Inline, Quad, File };
+    Kind kind = Kind::Inline;
+    TriangleMesh inlineMesh;   // Inline
+    std::array<V3d, 4> quad{}; // Quad
+    std::string file;          // File, as written (relative to the scene's folder)
+
+    bool operator==(const MeshSource&) const = default;
+};
+
+struct Object {
+    std::string name;
+    std::string material;  // key into Scene::materials
+    MeshSource mesh;
+    std::optional<Transform> transform;
+
+    // World-space triangles after the transform, degenerate triangles dropped. Filled by the
+    // loader (resolveMeshes); shared between scene copies, never mutated once set.
+    std::shared_ptr<const TriangleMesh> worldMesh;
+
+    // Equality compares what the file says, not the cache.
+    bool operator==(const Object& o) const {
+        return name == o.name && material == o.material && mesh == o.mesh && transform == o.transform;
+    }
+};
+
+enum class LightType { Point, Spot, Directional };
+
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    V3d position{0, 0, 0};   // point, spot
+    V3d direction{0, -1, 0}; // spot: axis; directional: the direction light travels (as written)
+    Rgbd intensity{0, 0, 0}; // point, spot: W/sr (on axis for a spot)
+    Rgbd irradiance{0, 0, 0};// directional: W/m^2 on a surface facing it
+    double coneAngleDeg = 45;         // spot: half-angle, degrees
+    std::optional<double> falloffStartDeg;  // spot: half-angle, degrees; absent = hard edge
+
+    bool operator==(const Light&) const = default;
+};
+
+struct Scene {
+    int version = 1;
+    double metersPerUnit = 1.0;
+    bool metersPerUnitGiven = false;  // written back only if it was there
+    Camera camera;
+    std::vector<Material> materials;  // in file order; names unique
+    std::vector<Object> objects;
+    std::vector<Light> lights;
+    std::string baseDir;  // folder that relative mesh paths resolve against (absolute)
+
+    const Material* findMaterial(const std::string& name) const;
+    int materialIndex(const std::string& name) const;  // -1 if absent
+
+    bool operator==(const Scene& s) const {
+        return version == s.version && metersPerUnit == s.metersPerUnit && camera == s.camera &&
+               materials == s.materials && objects == s.objects && lights == s.lights;
+    }
+};
+
+// Immutable snapshots are what backends receive (DESIGN.md, "The flow of data").
+using SceneSnapshot = std::shared_ptr<const Scene>;
+
+// What a scene calls for, so that backends model only what it needs (and `lucerna info` says so).
+struct SceneFeatures {
+    bool hasDiffuse = false, hasGlossy = false, hasMirror = false, hasDielectric = false;
+    int emitterTriangles = 0;
+    int pointLights = 0, spotLights = 0, directionalLights = 0;
+    size_t triangles = 0;
+    bool hasSpecular() const { return hasMirror || hasDielectric; }
+    bool hasDeltaLights() const { return pointLights + spotLights + directionalLights > 0; }
+};
+SceneFeatures analyseFeatures(const Scene& scene);
+
+}  // namespace lucerna

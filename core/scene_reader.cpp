@@ -1,0 +1,541 @@
+// Reading SPEC.md section 1: JSON text -> validated Scene -> world-space meshes. Every rule of the
+// contract is checked here, and every violation becomes one SceneError line
+// "<file>: <JSON path>: <problem>".
+
+#include "core/json_reader.h"
+#include "core/mesh_file.h"
+#include "core/scene_io.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+
+#include <charconv>
+#include <cfloat>
+#include <map>
+#include <unordered_map>
+
+namespace lucerna {
+
+namespace {
+
+using json::Type;
+using json::Value;
+
+inline constexpr int kMaxResolution = 16384;
+inline constexpr const char* kTopLevel = "top level";
+
+std::string formatNumber(double x) {
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);
+    return std::string(buf, r.ptr);
+}
+
+// A string from the file, quoted as JSON would, so that a message stays on one line whatever
+// the file holds.
+std::string quote(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += char(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04X", c);
+            out += buf;
+        } else {
+            out += char(c);
+        }
+    }
+    return out + "\"";
+}
+
+bool isPlainKey(const std::string& key) {
+    if (key.empty() || std::isdigit(static_cast<unsigned char>(key[0]))) return false;
+    for (unsigned char c : key)
+        if (!(std::isalnum(c) || c == '_' || c == '-')) return false;
+    return true;
+}
+
+// JSON paths: camera.fov_y, objects[2].mesh.vertices[5][1], materials["my glass"].ior.
+std::string member(const std::string& parent, const std::string& key) {
+    if (!isPlainKey(key)) return (parent == kTopLevel ? std::string() : parent) + "[" + quote(key) + "]";
+    return parent == kTopLevel ? key : parent + "." + key;
+}
+std::string item(const std::string& parent, size_t i) { return parent + "[" + std::to_string(i) + "]"; }
+
+class SceneParser {
+public:
+    explicit SceneParser(const std::string& file) : file_(file) {}
+
+    Scene parse(const Value& root) {
+        Scene scene;
+        const std::string top = kTopLevel;
+        expectType(root, Type::Object, top);
+        // The version first: a newer file may well have keys this reader does not know.
+        const Value& version = required(root, top, "lucerna");
+        const double v = integer(version, "lucerna");
+        if (v != 1) fail("lucerna", "unsupported format version " + formatNumber(v) + " (this reader reads version 1)");
+        checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights"});
+        scene.version = 1;
+        if (const Value* mpu = root.find("meters_per_unit")) {
+            scene.metersPerUnit = number(*mpu, "meters_per_unit");
+            if (!(scene.metersPerUnit > 0))
+                fail("meters_per_unit", "must be positive, got " + formatNumber(scene.metersPerUnit));
+            scene.metersPerUnitGiven = true;
+        }
+        scene.camera = parseCamera(required(root, top, "camera"), "camera");
+        parseMaterials(required(root, top, "materials"), "materials", scene);
+        const Value& objects = required(root, top, "objects");
+        expectType(objects, Type::Array, "objects");
+        for (size_t i = 0; i < objects.array.size(); ++i)
+            scene.objects.push_back(parseObject(objects.array[i], item("objects", i), scene));
+        if (const Value* lights = root.find("lights")) {
+            expectType(*lights, Type::Array, "lights");
+            for (size_t i = 0; i < lights->array.size(); ++i)
+                scene.lights.push_back(parseLight(lights->array[i], item("lights", i)));
+        }
+        return scene;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& place, const std::string& problem) const {
+        throw SceneError(file_ + ": " + place + ": " + problem);
+    }
+
+    void expectType(const Value& v, Type type, const std::string& place) const {
+        if (v.type != type)
+            fail(place, std::string("expected ") + json::describe(type) + ", got " + json::describe(v.type));
+    }
+
+    // `v` is an object whose keys are all among `allowed` (listed in the message otherwise).
+    void checkKeys(const Value& v, const std::string& place, std::initializer_list<std::string_view> allowed,
+                   const std::string& what = {}) const {
+        expectType(v, Type::Object, place);
+        for (const json::Member& m : v.object) {
+            bool known = false;
+            for (std::string_view k : allowed) known = known || m.key == k;
+            if (known) continue;
+            std::string list;
+            for (std::string_view k : allowed) list += (list.empty() ? "" : ", ") + std::string(k);
+            fail(member(place, m.key), "unknown key" + (what.empty() ? std::string() : " for " + what) +
+                                           " (expected one of: " + list + ")");
+        }
+    }
+
+    const Value& required(const Value& object, const std::string& place, const std::string& key) const {
+        if (const Value* v = object.find(key)) return *v;
+        fail(member(place, key), "required key is missing");
+    }
+
+    double number(const Value& v, const std::string& place) const {
+        expectType(v, Type::Number, place);
+        return v.number;
+    }
+
+    // SPEC.md: "indices and resolutions are integers". As in JSON Schema, a number with no
+    // fractional part (2, 2.0, 2e0) is an integer.
+    double integer(const Value& v, const std::string& place) const {
+        const double x = number(v, place);
+        if (x != std::floor(x)) fail(place, "expected an integer, got " + formatNumber(x));
+        return x;
+    }
+
+    double numberIn(const Value& v, const std::string& place, double lo, bool loOpen, double hi, bool hiOpen,
+                    const std::string& unit = {}) const {
+        const double x = number(v, place);
+        const bool ok = (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
+        if (!ok)
+            fail(place, "must be in " + std::string(loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
+                            (hiOpen ? ")" : "]") + unit + ", got " + formatNumber(x));
+        return x;
+    }
+
+    std::string text(const Value& v, const std::string& place) const {
+        expectType(v, Type::String, place);
+        return v.string;
+    }
+
+    const Value& array(const Value& v, const std::string& place, size_t size, const char* what) const {
+        expectType(v, Type::Array, place);
+        if (v.array.size() != size)
+            fail(place, "expected an array of " + std::to_string(size) + " " + what + ", got " +
+                            std::to_string(v.array.size()) + " element" + (v.array.size() == 1 ? "" : "s"));
+        return v;
+    }
+
+    V3d vec3(const Value& v, const std::string& place) const {
+        const Value& a = array(v, place, 3, "numbers");
+        return V3d(number(a.array[0], item(place, 0)), number(a.array[1], item(place, 1)),
+                   number(a.array[2], item(place, 2)));
+    }
+
+    V3d direction(const Value& v, const std::string& place) const {
+        const V3d d = vec3(v, place);
+        if (d == V3d(0, 0, 0)) fail(place, "direction must be non-zero");
+        return d;
+    }
+
+    // Albedo-like colours are fractions in [0, 1]; radiometric ones are at least 0.
+    Rgbd colour(const Value& v, const std::string& place, bool fraction) const {
+        const Value& a = array(v, place, 3, "numbers (R, G, B)");
+        double c[3];
+        for (size_t i = 0; i < 3; ++i) {
+            c[i] = fraction ? numberIn(a.array[i], item(place, i), 0, false, 1, false)
+                            : number(a.array[i], item(place, i));
+            if (!fraction && c[i] < 0) fail(item(place, i), "must be at least 0, got " + formatNumber(c[i]));
+        }
+        return Rgbd(c[0], c[1], c[2]);
+    }
+
+    Camera parseCamera(const Value& v, const std::string& place) const {
+        checkKeys(v, place, {"position", "target", "up", "fov_y", "resolution"});
+        Camera c;
+        c.position = vec3(required(v, place, "position"), member(place, "position"));
+        c.target = vec3(required(v, place, "target"), member(place, "target"));
+        if (const Value* up = v.find("up")) c.up = direction(*up, member(place, "up"));
+        c.fovYDeg = numberIn(required(v, place, "fov_y"), member(place, "fov_y"), 0, true, 180, true, " degrees");
+        const std::string resPlace = member(place, "resolution");
+        const Value& res = array(required(v, place, "resolution"), resPlace, 2, "integers (width, height)");
+        int size[2];
+        for (size_t i = 0; i < 2; ++i) {
+            const double n = integer(res.array[i], item(resPlace, i));
+            if (n < 1 || n > kMaxResolution)
+                fail(item(resPlace, i), "must be from 1 to " + std::to_string(kMaxResolution) + ", got " + formatNumber(n));
+            size[i] = int(n);
+        }
+        c.width = size[0];
+        c.height = size[1];
+        if (c.target == c.position) fail(member(place, "target"), "target equals position, so there is no view direction");
+        const V3d view = c.target - c.position;
+        if (!std::isfinite(view.length())) fail(member(place, "target"), "target is too far from position");
+        const V3d f = view.normalized();
+        // Parallel within rounding: cross(f, up) would give no usable right vector.
+        if (f.cross(c.up.normalized()).length() < 1e-9) fail(member(place, "up"), "up is parallel to the view direction");
+        return c;
+    }
+
+    void parseMaterials(const Value& v, const std::string& place, Scene& scene) const {
+        expectType(v, Type::Object, place);
+        for (const json::Member& m : v.object) {
+            const std::string here = member(place, m.key);
+            expectType(m.value, Type::Object, here);
+            Material mat;
+            mat.name = m.key;
+            const std::string type = text(required(m.value, here, "type"), member(here, "type"));
+            const std::string what = "a " + type + " material";
+            if (type == "diffuse") {
+                mat.type = MaterialType::Diffuse;
+                checkKeys(m.value, here, {"type", "albedo"}, what);
+                mat.albedo = colour(required(m.value, here, "albedo"), member(here, "albedo"), true);
+            } else if (type == "glossy") {
+                mat.type = MaterialType::Glossy;
+                checkKeys(m.value, here, {"type", "albedo", "specular", "roughness"}, what);
+                mat.albedo = colour(required(m.value, here, "albedo"), member(here, "albedo"), true);
+                mat.specular = colour(required(m.value, here, "specular"), member(here, "specular"), true);
+                mat.roughness = numberIn(required(m.value, here, "roughness"), member(here, "roughness"), 0, true, 1, false);
+            } else if (type == "mirror") {
+                mat.type = MaterialType::Mirror;
+                checkKeys(m.value, here, {"type", "reflectance"}, what);
+                mat.reflectance = colour(required(m.value, here, "reflectance"), member(here, "reflectance"), true);
+            } else if (type == "dielectric") {
+                mat.type = MaterialType::Dielectric;
+                checkKeys(m.value, here, {"type", "ior"}, what);
+                mat.ior = number(required(m.value, here, "ior"), member(here, "ior"));
+                if (!(mat.ior > 0)) fail(member(here, "ior"), "must be positive, got " + formatNumber(mat.ior));
+            } else if (type == "emitter") {
+                mat.type = MaterialType::Emitter;
+                checkKeys(m.value, here, {"type", "radiance"}, what);
+                mat.radiance = colour(required(m.value, here, "radiance"), member(here, "radiance"), false);
+            } else {
+                fail(member(here, "type"), "unknown material type " + quote(type) +
+                                               " (expected diffuse, glossy, mirror, dielectric or emitter)");
+            }
+            scene.materials.push_back(std::move(mat));
+        }
+    }
+
+    std::string parseName(const Value& v, const std::string& place) {
+        const std::string here = member(place, "name");
+        std::string name = text(required(v, place, "name"), here);
+        const auto [it, fresh] = names_.emplace(name, here);
+        if (!fresh) fail(here, "name " + quote(name) + " is already used by " + it->second);
+        return name;
+    }
+
+    Object parseObject(const Value& v, const std::string& place, const Scene& scene) {
+        checkKeys(v, place, {"name", "material", "mesh", "transform"});
+        Object o;
+        o.name = parseName(v, place);
+        o.material = text(required(v, place, "material"), member(place, "material"));
+        if (scene.materialIndex(o.material) < 0)
+            fail(member(place, "material"), "unknown material " + quote(o.material));
+        o.mesh = parseMesh(required(v, place, "mesh"), member(place, "mesh"));
+        if (const Value* t = v.find("transform")) o.transform = parseTransform(*t, member(place, "transform"));
+        return o;
+    }
+
+    MeshSource parseMesh(const Value& v, const std::string& place) const {
+        checkKeys(v, place, {"vertices", "triangles", "quad", "file"});
+        const bool isInline = v.find("vertices") || v.find("triangles");
+        const int kinds = int(isInline) + int(v.find("quad") != nullptr) + int(v.find("file") != nullptr);
+        if (kinds != 1)
+            fail(place, std::string(kinds == 0 ? "a mesh needs" : "a mesh has exactly one of") +
+                            " \"vertices\" with \"triangles\", \"quad\" or \"file\"");
+        MeshSource mesh;
+        if (const Value* file = v.find("file")) {
+            mesh.kind = MeshSource::Kind::File;
+            mesh.file = text(*file, member(place, "file"));
+            if (mesh.file.empty()) fail(member(place, "file"), "mesh file path is empty");
+        } else if (const Value* quad = v.find("quad")) {
+            mesh.kind = MeshSource::Kind::Quad;
+            const std::string here = member(place, "quad");
+            array(*quad, here, 4, "vertices");
+            for (size_t i = 0; i < 4; ++i) mesh.quad[i] = vec3(quad->array[i], item(here, i));
+        } else {
+            mesh.kind = MeshSource::Kind::Inline;
+            const std::string vPlace = member(place, "vertices"), tPlace = member(place, "triangles");
+            const Value& vertices = required(v, place, "vertices");
+            const Value& triangles = required(v, place, "triangles");
+            expectType(vertices, Type::Array, vPlace);
+            expectType(triangles, Type::Array, tPlace);
+            TriangleMesh& m = mesh.inlineMesh;
+            m.vertices.reserve(vertices.array.size());
+            for (size_t i = 0; i < vertices.array.size(); ++i) m.vertices.push_back(vec3(vertices.array[i], item(vPlace, i)));
+            m.triangles.reserve(triangles.array.size());
+            for (size_t i = 0; i < triangles.array.size(); ++i) {
+                const std::string here = item(tPlace, i);
+                const Value& t = array(triangles.array[i], here, 3, "vertex indices");
+                int idx[3];
+                for (size_t k = 0; k < 3; ++k) {
+                    const double n = integer(t.array[k], item(here, k));
+                    if (n < 0 || n >= double(m.vertices.size()))
+                        fail(item(here, k), "index " + formatNumber(n) + " is out of range (the mesh has " +
+                                                std::to_string(m.vertices.size()) + " vertices)");
+                    idx[k] = int(n);
+                }
+                m.triangles.emplace_back(idx[0], idx[1], idx[2]);
+            }
+        }
+        return mesh;
+    }
+
+    Transform parseTransform(const Value& v, const std::string& place) const {
+        checkKeys(v, place, {"scale", "rotate", "translate", "matrix"});
+        Transform t;
+        if (const Value* m = v.find("matrix")) {
+            const std::string here = member(place, "matrix");
+            if (v.object.size() > 1) fail(here, "a matrix cannot be combined with scale, rotate or translate");
+            array(*m, here, 16, "numbers (row-major 4x4)");
+            t.isMatrix = true;
+            for (size_t i = 0; i < 16; ++i) t.matrix[i / 4][i % 4] = number(m->array[i], item(here, i));
+            for (int j = 0; j < 4; ++j)
+                if (t.matrix[3][j] != (j == 3 ? 1.0 : 0.0))
+                    fail(item(here, size_t(12 + j)), "the last row of the matrix must be 0 0 0 1");
+            // Invertible: the 3x3 part's determinant against the product of its row lengths
+            // (Hadamard's bound), so that scale does not decide.
+            const M44d& a = t.matrix;
+            const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
+                               a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+                               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+            double bound = 1;
+            for (int i = 0; i < 3; ++i) bound *= std::sqrt(a[i][0] * a[i][0] + a[i][1] * a[i][1] + a[i][2] * a[i][2]);
+            if (!std::isfinite(det) || !(std::abs(det) > 1e-12 * bound)) fail(here, "the matrix is not invertible");
+            return t;
+        }
+        if (const Value* s = v.find("scale")) {
+            const std::string here = member(place, "scale");
+            if (s->type == Type::Number) {
+                t.scale = V3d(s->number, s->number, s->number);
+            } else if (s->type == Type::Array) {
+                t.scale = vec3(*s, here);
+                t.uniformScale = false;
+            } else {
+                fail(here, std::string("expected a number or an array of 3 numbers, got ") + json::describe(s->type));
+            }
+            // A zero scale would flatten the object: the transform would not be invertible,
+            // which the matrix form rejects too.
+            if (t.scale.x == 0 || t.scale.y == 0 || t.scale.z == 0) fail(here, "scale must be non-zero");
+        }
+        if (const Value* r = v.find("rotate")) {
+            const std::string here = member(place, "rotate");
+            array(*r, here, 4, "numbers (axis x, y, z, degrees)");
+            t.hasRotate = true;
+            t.rotateAxis = V3d(number(r->array[0], item(here, 0)), number(r->array[1], item(here, 1)),
+                               number(r->array[2], item(here, 2)));
+            t.rotateDeg = number(r->array[3], item(here, 3));
+            if (t.rotateAxis == V3d(0, 0, 0)) fail(here, "the rotation axis must be non-zero");
+        }
+        if (const Value* tr = v.find("translate")) t.translate = vec3(*tr, member(place, "translate"));
+        return t;
+    }
+
+    Light parseLight(const Value& v, const std::string& place) {
+        expectType(v, Type::Object, place);
+        Light l;
+        const std::string type = text(required(v, place, "type"), member(place, "type"));
+        const std::string what = "a " + type + " light";
+        if (type == "point") {
+            l.type = LightType::Point;
+            checkKeys(v, place, {"name", "type", "position", "intensity"}, what);
+        } else if (type == "spot") {
+            l.type = LightType::Spot;
+            checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start"}, what);
+        } else if (type == "directional") {
+            l.type = LightType::Directional;
+            checkKeys(v, place, {"name", "type", "direction", "irradiance"}, what);
+        } else {
+            fail(member(place, "type"), "unknown light type " + quote(type) + " (expected point, spot or directional)");
+        }
+        l.name = parseName(v, place);
+        if (l.type != LightType::Directional) {
+            l.position = vec3(required(v, place, "position"), member(place, "position"));
+            l.intensity = colour(required(v, place, "intensity"), member(place, "intensity"), false);
+        }
+        if (l.type != LightType::Point) l.direction = direction(required(v, place, "direction"), member(place, "direction"));
+        if (l.type == LightType::Directional)
+            l.irradiance = colour(required(v, place, "irradiance"), member(place, "irradiance"), false);
+        if (l.type == LightType::Spot) {
+            l.coneAngleDeg = numberIn(required(v, place, "cone_angle"), member(place, "cone_angle"), 0, true, 180, true, " degrees");
+            if (const Value* f = v.find("falloff_start"))
+                l.falloffStartDeg = numberIn(*f, member(place, "falloff_start"), 0, true, l.coneAngleDeg, false,
+                                             " degrees (at most cone_angle)");
+        }
+        return l;
+    }
+
+    std::string file_;
+    std::unordered_map<std::string, std::string> names_;  // name -> where it was first used
+};
+
+// Why world vertices must stay within float range: the backends trace in single precision.
+bool representable(const V3d& p) {
+    return std::abs(p.x) <= FLT_MAX && std::abs(p.y) <= FLT_MAX && std::abs(p.z) <= FLT_MAX;
+}
+
+V3d apply(const M44d& m, const V3d& p) {
+    return V3d(m[0][0] * p.x + m[0][1] * p.y + m[0][2] * p.z + m[0][3],
+               m[1][0] * p.x + m[1][1] * p.y + m[1][2] * p.z + m[1][3],
+               m[2][0] * p.x + m[2][1] * p.y + m[2][2] * p.z + m[2][3]);
+}
+
+// Zero area within rounding: the sine of the corner angle is below 1e-12 (collinear points
+// computed in floating point rarely give an exact zero).
+bool degenerate(const V3d& a, const V3d& b, const V3d& c) {
+    const V3d e1 = b - a, e2 = c - a;
+    return e1.cross(e2).length() <= 1e-12 * e1.length() * e2.length();
+}
+
+void resolve(Scene& scene, LoadReport* report, const std::string& label) {
+    const auto fail = [&](const std::string& place, const std::string& problem) {
+        throw SceneError(label + ": " + place + ": " + problem);
+    };
+    const QDir base(QString::fromStdString(scene.baseDir));
+    std::map<std::string, TriangleMesh> files;  // each file read once, however many objects use it
+    std::vector<std::shared_ptr<const TriangleMesh>> world(scene.objects.size());
+    std::map<std::string, std::pair<double, size_t>> emitterArea;  // material -> area, first object
+    int dropped = 0;
+    std::vector<std::string> warnings;
+
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        const std::string place = item("objects", i) + ".mesh";
+        TriangleMesh local;
+        const TriangleMesh* source = &o.mesh.inlineMesh;
+        if (o.mesh.kind == MeshSource::Kind::Quad) {
+            local.vertices.assign(o.mesh.quad.begin(), o.mesh.quad.end());
+            local.triangles = {V3i(0, 1, 2), V3i(0, 2, 3)};
+            source = &local;
+        } else if (o.mesh.kind == MeshSource::Kind::File) {
+            const std::string path = base.absoluteFilePath(QString::fromStdString(o.mesh.file)).toStdString();
+            auto it = files.find(path);
+            if (it == files.end()) {
+                try {
+                    it = files.emplace(path, readMeshFile(path)).first;
+                } catch (const std::runtime_error& e) {
+                    fail(place + ".file", std::string("cannot load mesh file ") + e.what());
+                }
+            }
+            source = &it->second;
+        }
+
+        const M44d m = o.transform ? o.transform->toMatrix() : M44d();
+        auto out = std::make_shared<TriangleMesh>();
+        out->vertices.reserve(source->vertices.size());
+        for (size_t k = 0; k < source->vertices.size(); ++k) {
+            const V3d p = apply(m, source->vertices[k]);
+            if (!representable(p))
+                fail(place, "vertex " + std::to_string(k) + " lies beyond single-precision range after the transform");
+            out->vertices.push_back(p);
+        }
+        const int n = int(out->vertices.size());
+        int droppedHere = 0;
+        double area = 0;
+        for (size_t k = 0; k < source->triangles.size(); ++k) {
+            const V3i& t = source->triangles[k];
+            if (t.x < 0 || t.x >= n || t.y < 0 || t.y >= n || t.z < 0 || t.z >= n)
+                fail(place + ".triangles[" + std::to_string(k) + "]", "index out of range (the mesh has " +
+                                                                          std::to_string(n) + " vertices)");
+            const V3d &a = out->vertices[size_t(t.x)], &b = out->vertices[size_t(t.y)], &c = out->vertices[size_t(t.z)];
+            if (degenerate(a, b, c)) {
+                ++droppedHere;
+                continue;
+            }
+            area += 0.5 * (b - a).cross(c - a).length();
+            out->triangles.push_back(t);
+        }
+        if (droppedHere > 0) {
+            dropped += droppedHere;
+            warnings.push_back(label + ": " + place + ": dropped " + std::to_string(droppedHere) + " of " +
+                               std::to_string(source->triangles.size()) + " triangles as degenerate (zero area)");
+        } else if (source->triangles.empty()) {
+            warnings.push_back(label + ": " + place + ": the mesh has no triangles");
+        }
+        const Material* mat = scene.findMaterial(o.material);
+        if (!mat) fail(item("objects", i) + ".material", "unknown material " + quote(o.material));
+        if (mat->type == MaterialType::Emitter) emitterArea.try_emplace(o.material, 0.0, i).first->second.first += area;
+        world[i] = std::move(out);
+    }
+
+    for (const auto& [name, areaAndObject] : emitterArea)
+        if (!(areaAndObject.first > 0))
+            fail(item("objects", areaAndObject.second) + ".mesh",
+                 "the objects of emitter material " + quote(name) + " have zero total area");
+
+    // Only now that nothing can fail does the scene change.
+    for (size_t i = 0; i < world.size(); ++i) scene.objects[i].worldMesh = std::move(world[i]);
+    if (report) {
+        report->degenerateTrianglesDropped += dropped;
+        report->warnings.insert(report->warnings.end(), warnings.begin(), warnings.end());
+    }
+}
+
+}  // namespace
+
+Scene parseScene(const std::string& bytes, const std::string& path, LoadReport* report) {
+    json::Value root;
+    try {
+        root = json::parse(bytes);
+    } catch (const json::ParseError& e) {
+        throw SceneError(path + ": line " + std::to_string(e.line()) + ": " + e.what());
+    }
+    Scene scene = SceneParser(path).parse(root);
+    scene.baseDir = QFileInfo(QString::fromStdString(path)).absolutePath().toStdString();
+    resolve(scene, report, path);
+    return scene;
+}
+
+Scene loadScene(const std::string& path, LoadReport* report) {
+    QFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::ReadOnly)) throw SceneError(path + ": cannot read the file: " + file.errorString().toStdString());
+    const QByteArray bytes = file.readAll();
+    if (file.error() != QFileDevice::NoError)
+        throw SceneError(path + ": cannot read the file: " + file.errorString().toStdString());
+    return parseScene(bytes.toStdString(), path, report);
+}
+
+void resolveMeshes(Scene& scene, LoadReport* report) {
+    resolve(scene, report, scene.baseDir.empty() ? std::string("scene") : scene.baseDir);
+}
+
+}  // namespace lucerna

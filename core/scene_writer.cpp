@@ -1,0 +1,197 @@
+// Writing SPEC.md section 1. QJsonDocument is not used: it sorts object keys, which would reorder
+// the materials map (kept in file order), and it lays out a mesh one number per line. This writer
+// keeps the order of everything, writes numbers in their shortest form that reads back to the
+// same double, and wraps long vertex and index lists.
+
+#include "core/scene_io.h"
+
+#include <QSaveFile>
+
+#include <charconv>
+#include <cstdio>
+#include <stdexcept>
+
+namespace lucerna {
+
+namespace {
+
+std::string num(double x) {
+    char buf[40];
+    const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round-trip form
+    return std::string(buf, r.ptr);
+}
+
+std::string str(const std::string& s) {
+    std::string out = "\"";
+    for (unsigned char c : s) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        case '\r': out += "\\r"; break;
+        default:
+            if (c < 0x20) {
+                char buf[8];
+                std::snprintf(buf, sizeof buf, "\\u%04X", c);
+                out += buf;
+            } else {
+                out += char(c);
+            }
+        }
+    }
+    return out + "\"";
+}
+
+std::string vec(double x, double y, double z) { return "[" + num(x) + ", " + num(y) + ", " + num(z) + "]"; }
+std::string vec(const V3d& v) { return vec(v.x, v.y, v.z); }
+std::string rgb(const Rgbd& c) { return vec(c.x, c.y, c.z); }
+
+// Appends "[a, b, c]" to `out`, breaking lines before an item that would pass column 100 and
+// aligning continuation lines just inside the bracket.
+void appendWrapped(std::string& out, const std::vector<std::string>& items) {
+    const size_t lineStart = out.rfind('\n') + 1;  // npos + 1 == 0 on the first line
+    const size_t indent = out.size() - lineStart + 1;
+    size_t column = indent;
+    out += '[';
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) {
+            out += ',';
+            ++column;
+            if (column + 1 + items[i].size() > 100) {
+                out += '\n' + std::string(indent, ' ');
+                column = indent;
+            } else {
+                out += ' ';
+                ++column;
+            }
+        }
+        out += items[i];
+        column += items[i].size();
+    }
+    out += ']';
+}
+
+std::string material(const Material& m) {
+    switch (m.type) {
+    case MaterialType::Diffuse: return "{\"type\": \"diffuse\", \"albedo\": " + rgb(m.albedo) + "}";
+    case MaterialType::Glossy:
+        return "{\"type\": \"glossy\", \"albedo\": " + rgb(m.albedo) + ", \"specular\": " + rgb(m.specular) +
+               ", \"roughness\": " + num(m.roughness) + "}";
+    case MaterialType::Mirror: return "{\"type\": \"mirror\", \"reflectance\": " + rgb(m.reflectance) + "}";
+    case MaterialType::Dielectric: return "{\"type\": \"dielectric\", \"ior\": " + num(m.ior) + "}";
+    case MaterialType::Emitter: return "{\"type\": \"emitter\", \"radiance\": " + rgb(m.radiance) + "}";
+    }
+    return "{}";
+}
+
+void appendMesh(std::string& out, const MeshSource& mesh) {
+    switch (mesh.kind) {
+    case MeshSource::Kind::File: out += "{\"file\": " + str(mesh.file) + "}"; return;
+    case MeshSource::Kind::Quad:
+        out += "{\"quad\": [" + vec(mesh.quad[0]) + ", " + vec(mesh.quad[1]) + ", " + vec(mesh.quad[2]) + ", " +
+               vec(mesh.quad[3]) + "]}";
+        return;
+    case MeshSource::Kind::Inline: {
+        const size_t indent = out.size() - (out.rfind('\n') + 1) + 1;
+        std::vector<std::string> items;
+        for (const V3d& v : mesh.inlineMesh.vertices) items.push_back(vec(v));
+        out += "{\"vertices\": ";
+        appendWrapped(out, items);
+        out += ",\n" + std::string(indent, ' ') + "\"triangles\": ";
+        items.clear();
+        for (const V3i& t : mesh.inlineMesh.triangles)
+            items.push_back("[" + std::to_string(t.x) + ", " + std::to_string(t.y) + ", " + std::to_string(t.z) + "]");
+        appendWrapped(out, items);
+        out += "}";
+        return;
+    }
+    }
+}
+
+std::string transform(const Transform& t) {
+    if (t.isMatrix) {
+        std::string m;
+        for (int i = 0; i < 16; ++i) m += (i ? ", " : "") + num(t.matrix[i / 4][i % 4]);
+        return "{\"matrix\": [" + m + "]}";
+    }
+    std::vector<std::string> parts;
+    if (!t.uniformScale || t.scale != V3d(1, 1, 1)) {
+        const bool uniform = t.uniformScale && t.scale.x == t.scale.y && t.scale.y == t.scale.z;
+        parts.push_back("\"scale\": " + (uniform ? num(t.scale.x) : vec(t.scale)));
+    }
+    if (t.hasRotate)
+        parts.push_back("\"rotate\": [" + num(t.rotateAxis.x) + ", " + num(t.rotateAxis.y) + ", " + num(t.rotateAxis.z) +
+                        ", " + num(t.rotateDeg) + "]");
+    if (t.translate != V3d(0, 0, 0)) parts.push_back("\"translate\": " + vec(t.translate));
+    std::string out = "{";
+    for (size_t i = 0; i < parts.size(); ++i) out += (i ? ", " : "") + parts[i];
+    return out + "}";
+}
+
+std::string light(const Light& l) {
+    std::string out = "{\"name\": " + str(l.name) + ", \"type\": ";
+    switch (l.type) {
+    case LightType::Point:
+        out += "\"point\", \"position\": " + vec(l.position) + ", \"intensity\": " + rgb(l.intensity);
+        break;
+    case LightType::Spot:
+        out += "\"spot\", \"position\": " + vec(l.position) + ", \"direction\": " + vec(l.direction) +
+               ", \"intensity\": " + rgb(l.intensity) + ", \"cone_angle\": " + num(l.coneAngleDeg);
+        if (l.falloffStartDeg) out += ", \"falloff_start\": " + num(*l.falloffStartDeg);
+        break;
+    case LightType::Directional:
+        out += "\"directional\", \"direction\": " + vec(l.direction) + ", \"irradiance\": " + rgb(l.irradiance);
+        break;
+    }
+    return out + "}";
+}
+
+}  // namespace
+
+std::string saveSceneToString(const Scene& scene) {
+    std::string out = "{\n  \"lucerna\": 1,\n";
+    if (scene.metersPerUnitGiven || scene.metersPerUnit != 1.0)
+        out += "  \"meters_per_unit\": " + num(scene.metersPerUnit) + ",\n";
+
+    const Camera& c = scene.camera;
+    out += "  \"camera\": {\"position\": " + vec(c.position) + ", \"target\": " + vec(c.target) + ", \"up\": " +
+           vec(c.up) + ",\n             \"fov_y\": " + num(c.fovYDeg) + ", \"resolution\": [" +
+           std::to_string(c.width) + ", " + std::to_string(c.height) + "]},\n";
+
+    out += "  \"materials\": {";
+    for (size_t i = 0; i < scene.materials.size(); ++i)
+        out += (i ? ",\n    " : "\n    ") + str(scene.materials[i].name) + ": " + material(scene.materials[i]);
+    out += scene.materials.empty() ? "},\n" : "\n  },\n";
+
+    out += "  \"objects\": [";
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        out += (i ? ",\n    " : "\n    ");
+        out += "{\"name\": " + str(o.name) + ", \"material\": " + str(o.material) + ",\n     \"mesh\": ";
+        appendMesh(out, o.mesh);
+        if (o.transform) out += ",\n     \"transform\": " + transform(*o.transform);
+        out += "}";
+    }
+    out += scene.objects.empty() ? "]" : "\n  ]";
+
+    if (!scene.lights.empty()) {
+        out += ",\n  \"lights\": [";
+        for (size_t i = 0; i < scene.lights.size(); ++i) out += (i ? ",\n    " : "\n    ") + light(scene.lights[i]);
+        out += "\n  ]";
+    }
+    return out + "\n}\n";
+}
+
+void saveScene(const Scene& scene, const std::string& path) {
+    const std::string text = saveSceneToString(scene);
+    // QSaveFile writes to a temporary file in the same folder and renames it over `path` on
+    // commit; on any failure the temporary is removed and `path` keeps its old contents.
+    QSaveFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::WriteOnly))
+        throw std::runtime_error(path + ": cannot write the scene: " + file.errorString().toStdString());
+    if (file.write(text.data(), qint64(text.size())) != qint64(text.size()) || !file.commit())
+        throw std::runtime_error(path + ": cannot write the scene: " + file.errorString().toStdString());
+}
+
+}  // namespace lucerna

@@ -1,0 +1,31 @@
+#include "render/progressive/backend.h"
+
+#include "render/progressive/path/path_backend.h"
+
+namespace lucerna {
+
+namespace {
+// The explicit factory table: one row per backend.
+const BackendInfo kBackends[] = {
+    {"path", "unidirectional path tracing with next-event estimation and MIS", &makePathBackend},
+};
+}  // namespace
+
+std::span<const BackendInfo> backendTable() { return kBackends; }
+
+const BackendInfo* findBackend(std::string_view name) {
+    for (const BackendInfo& b : kBackends)
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
+AutoChoice chooseAutoBackend(const Scene& scene) {
+    // Only the path tracer exists so far; the choice between MIR and CMLT comes with them.
+    const SceneFeatures f = analyseFeatures(scene);
+    std::string reason = "path: the only progressive backend built so far (scene: ";
+    reason += f.hasSpecular() ? "specular" : (f.hasGlossy ? "glossy" : "diffuse only");
+    reason += ")";
+    return {"path", reason};
+}
+
+}  // namespace lucerna

@@ -1,0 +1,76 @@
+#include "render/progressive/path/path_backend.h"
+
+#include "render/progressive/path/path_tracer.h"
+
+#include <charconv>
+#include <stdexcept>
+
+namespace lucerna {
+
+PathSettings PathSettings::fromOptions(const RenderSettings& settings) {
+    PathSettings s;
+    const auto readInt = [&](const char* key, int& value, int lo) {
+        const auto it = settings.options.find(key);
+        if (it == settings.options.end()) return;
+        int v = 0;
+        const auto [ptr, ec] = std::from_chars(it->second.data(), it->second.data() + it->second.size(), v);
+        if (ec != std::errc() || ptr != it->second.data() + it->second.size() || v < lo)
+            throw std::invalid_argument(std::string("option ") + key + " must be an integer >= " + std::to_string(lo));
+        value = v;
+    };
+    readInt("max_depth", s.maxDepth, 1);
+    readInt("rr_depth", s.rouletteStartDepth, 1);
+    return s;
+}
+
+namespace {
+
+class PathBackend final : public ProgressiveBackend {
+public:
+    PathBackend(SceneSnapshot scene, const RenderSettings& settings)
+        : snapshot_(std::move(scene)), settings_(settings), pathSettings_(PathSettings::fromOptions(settings)) {}
+
+    void prepare(TaskContext&) override {
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+    }
+
+    void renderPass(TaskContext& ctx, int pass) override {
+        const PinholeCamera& camera = scene_->camera();
+        const int tile = pathSettings_.tileSize;
+        const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
+        const PathTracer tracer(*scene_, pathSettings_);
+        const int half = pass % 2;
+        const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
+        ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
+            const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
+            const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) {
+                    Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
+                    const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
+                    Rgb L = tracer.radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng);
+                    if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film; counted as lost energy
+                    film_->addSample(half, x, y, L);
+                }
+        });
+        if (!ctx.isCancelled()) film_->finishPass(half);
+    }
+
+    const Film& film() const override { return *film_; }
+
+private:
+    SceneSnapshot snapshot_;
+    RenderSettings settings_;
+    PathSettings pathSettings_;
+    std::unique_ptr<RenderScene> scene_;
+    std::unique_ptr<Film> film_;
+};
+
+}  // namespace
+
+std::unique_ptr<ProgressiveBackend> makePathBackend(SceneSnapshot scene, const RenderSettings& settings) {
+    return std::make_unique<PathBackend>(std::move(scene), settings);
+}
+
+}  // namespace lucerna

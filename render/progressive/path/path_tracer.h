@@ -1,0 +1,33 @@
+#pragma once
+// The per-thread part of the path backend: the radiance along one camera ray, by unidirectional
+// path tracing with next-event estimation, multiple importance sampling of light and BSDF samples
+// (power heuristic, Veach 1997) and Russian roulette.
+
+#include "render/progressive/path/path_settings.h"
+#include "render/trace/render_scene.h"
+#include "render/trace/rng.h"
+
+namespace lucerna {
+
+class PathTracer {
+public:
+    PathTracer(const RenderScene& scene, const PathSettings& settings) : scene_(scene), settings_(settings) {}
+
+    // Radiance arriving at the camera along `ray` (W sr^-1 m^-2 per channel).
+    Rgb radiance(Ray ray, Rng& rng) const;
+
+private:
+    Rgb nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial& mat, const Frame& frame, const V3f& woLocal,
+                          Rng& rng) const;
+
+    const RenderScene& scene_;
+    PathSettings settings_;
+};
+
+// Power heuristic with beta = 2.
+inline float powerHeuristic(float pdfA, float pdfB) {
+    const float a = pdfA * pdfA, b = pdfB * pdfB;
+    return a > 0.0f ? a / (a + b) : 0.0f;
+}
+
+}  // namespace lucerna

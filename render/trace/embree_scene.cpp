@@ -1,0 +1,131 @@
+#include "render/trace/embree_scene.h"
+
+#include <embree3/rtcore.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace lucerna {
+
+namespace {
+struct DeviceDeleter { void operator()(RTCDevice d) const { rtcReleaseDevice(d); } };
+struct SceneDeleter { void operator()(RTCScene s) const { rtcReleaseScene(s); } };
+using DeviceHandle = std::unique_ptr<RTCDeviceTy, DeviceDeleter>;
+using SceneHandle = std::unique_ptr<RTCSceneTy, SceneDeleter>;
+
+void fillRay(RTCRay& r, const Ray& ray) {
+    r.org_x = ray.origin.x; r.org_y = ray.origin.y; r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x; r.dir_y = ray.direction.y; r.dir_z = ray.direction.z;
+    r.tnear = ray.tNear;
+    r.tfar = ray.tFar;
+    r.time = 0.0f;
+    r.mask = 0xffffffffu;
+    r.id = 0;
+    r.flags = 0;
+}
+}  // namespace
+
+struct EmbreeScene::Impl {
+    DeviceHandle device;
+    SceneHandle scene;
+};
+
+EmbreeScene::EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles)
+    : impl_(std::make_unique<Impl>()) {
+    impl_->device.reset(rtcNewDevice(nullptr));
+    if (!impl_->device)
+        throw std::runtime_error("Embree: cannot create a device (error " +
+                                 std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
+    impl_->scene.reset(rtcNewScene(impl_->device.get()));
+    rtcSetSceneFlags(impl_->scene.get(), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(impl_->scene.get(), RTC_BUILD_QUALITY_HIGH);
+    if (!triangles.empty()) {
+        RTCGeometry geom = rtcNewGeometry(impl_->device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
+        // Embree may read 16 bytes from the last vertex: pad the buffer by one float.
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), positions.size() + 1));
+        for (size_t i = 0; i < positions.size(); ++i) {
+            v[3 * i] = positions[i].x; v[3 * i + 1] = positions[i].y; v[3 * i + 2] = positions[i].z;
+        }
+        auto* idx = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                   3 * sizeof(unsigned), triangles.size()));
+        for (size_t i = 0; i < triangles.size(); ++i) {
+            idx[3 * i] = unsigned(triangles[i].x); idx[3 * i + 1] = unsigned(triangles[i].y);
+            idx[3 * i + 2] = unsigned(triangles[i].z);
+        }
+        rtcCommitGeometry(geom);
+        rtcAttachGeometry(impl_->scene.get(), geom);
+        rtcReleaseGeometry(geom);
+    }
+    rtcCommitScene(impl_->scene.get());
+    if (const RTCError err = rtcGetDeviceError(impl_->device.get()); err != RTC_ERROR_NONE)
+        throw std::runtime_error("Embree: scene build failed (error " + std::to_string(int(err)) + ")");
+}
+
+EmbreeScene::~EmbreeScene() = default;
+
+RayHit EmbreeScene::intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    fillRay(rh.ray, ray);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene.get(), &context, &rh);
+    RayHit hit;
+    if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
+        hit.t = rh.ray.tfar;
+        hit.triangle = rh.hit.primID;
+        hit.b1 = rh.hit.u;
+        hit.b2 = rh.hit.v;
+    }
+    return hit;
+}
+
+bool EmbreeScene::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    fillRay(r, ray);
+    rtcOccluded1(impl_->scene.get(), &context, &r);
+    return r.tfar < 0.0f;  // Embree marks a hit by setting tfar to -inf
+}
+
+void EmbreeScene::intersectCoherent(const Ray* rays, RayHit* hits, size_t count) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    alignas(32) RTCRayHit8 packet;
+    alignas(32) int valid[8];
+    for (size_t base = 0; base < count; base += 8) {
+        const size_t n = std::min<size_t>(8, count - base);
+        for (size_t i = 0; i < 8; ++i) {
+            valid[i] = i < n ? -1 : 0;
+            const Ray& ray = rays[base + (i < n ? i : 0)];
+            packet.ray.org_x[i] = ray.origin.x; packet.ray.org_y[i] = ray.origin.y; packet.ray.org_z[i] = ray.origin.z;
+            packet.ray.dir_x[i] = ray.direction.x; packet.ray.dir_y[i] = ray.direction.y;
+            packet.ray.dir_z[i] = ray.direction.z;
+            packet.ray.tnear[i] = ray.tNear;
+            packet.ray.tfar[i] = ray.tFar;
+            packet.ray.time[i] = 0.0f;
+            packet.ray.mask[i] = 0xffffffffu;
+            packet.ray.id[i] = unsigned(i);
+            packet.ray.flags[i] = 0;
+            packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+            packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+        }
+        rtcIntersect8(valid, impl_->scene.get(), &context, &packet);
+        for (size_t i = 0; i < n; ++i) {
+            RayHit& hit = hits[base + i];
+            hit = RayHit();
+            if (packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID) {
+                hit.t = packet.ray.tfar[i];
+                hit.triangle = packet.hit.primID[i];
+                hit.b1 = packet.hit.u[i];
+                hit.b2 = packet.hit.v[i];
+            }
+        }
+    }
+}
+
+}  // namespace lucerna

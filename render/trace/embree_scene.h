@@ -1,0 +1,52 @@
+#pragma once
+// The one wrapper around Embree 3 (as Mitsuba 3 confines it): nothing else includes rtcore.h.
+// One triangle geometry holds the whole scene; primitive ids index the caller's triangle arrays.
+
+#include "core/math.h"
+
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <vector>
+
+namespace lucerna {
+
+struct Ray {
+    V3f origin;
+    V3f direction;  // need not be unit; t is measured in multiples of it
+    float tNear = 0.0f;
+    float tFar = std::numeric_limits<float>::infinity();
+};
+
+struct RayHit {
+    float t = std::numeric_limits<float>::infinity();
+    uint32_t triangle = kNone;
+    float b1 = 0, b2 = 0;  // barycentrics of vertices 1 and 2
+    static constexpr uint32_t kNone = 0xffffffffu;
+    bool found() const { return triangle != kNone; }
+};
+
+class EmbreeScene {
+public:
+    // Builds a BVH over the triangles (robust, high-quality build). Throws std::runtime_error if
+    // Embree cannot be initialised.
+    EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles);
+    ~EmbreeScene();
+    EmbreeScene(const EmbreeScene&) = delete;
+    EmbreeScene& operator=(const EmbreeScene&) = delete;
+
+    // Closest hit in (tNear, tFar); incoherent single rays.
+    RayHit intersect(const Ray& ray) const;
+    // True when anything lies in (tNear, tFar).
+    bool occluded(const Ray& ray) const;
+
+    // Closest hits for many rays at once, traced as 8-wide packets with Embree's coherent flag:
+    // for camera rays and other bundles whose rays share an origin region and direction.
+    void intersectCoherent(const Ray* rays, RayHit* hits, size_t count) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace lucerna

@@ -1,0 +1,120 @@
+#include "render/trace/light_sampler.h"
+
+#include "render/trace/warp.h"
+
+namespace lucerna {
+
+float DeltaLight::spotFactor(float cosTheta) const {
+    if (cosFalloffStart <= cosCone)  // equal angles: a hard edge
+        return cosTheta >= cosCone ? 1.0f : 0.0f;
+    const float t = std::clamp((cosTheta - cosCone) / (cosFalloffStart - cosCone), 0.0f, 1.0f);
+    return t * t * (3.0f - 2.0f * t);
+}
+
+namespace {
+// Power of each light, in one common unit (irradiance times scene units squared), so that the
+// selection probabilities are comparable across light types. Luminance weights the channels.
+double emitterPower(const EmitterTriangle& e) { return kPi * double(e.area) * luminance(e.radiance); }
+
+double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
+    const double y = luminance(l.intensity);
+    const double toScene = 1.0 / (double(metersPerUnit) * metersPerUnit);  // E = I / (d mpu)^2
+    switch (l.type) {
+    case LightType::Point: return 4.0 * kPi * y * toScene;
+    case LightType::Spot: {
+        // Solid angle of the cone, with the smooth edge counted at half weight.
+        const double c = 0.5 * (double(l.cosCone) + double(std::max(l.cosCone, l.cosFalloffStart)));
+        return 2.0 * kPi * (1.0 - c) * y * toScene;
+    }
+    case LightType::Directional: return kPi * double(sceneRadius) * sceneRadius * y;
+    }
+    return 0.0;
+}
+}  // namespace
+
+LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
+                           float sceneRadius, size_t triangleCount)
+    : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit) {
+    std::vector<double> weights;
+    weights.reserve(emitters_.size() + deltas_.size());
+    for (const auto& e : emitters_) weights.push_back(emitterPower(e));
+    for (const auto& l : deltas_) weights.push_back(deltaPower(l, metersPerUnit, sceneRadius));
+    select_ = DiscreteDistribution(weights);
+    areaPdf_.assign(emitters_.empty() ? 0 : triangleCount, 0.0f);
+    if (!select_.empty())
+        for (size_t i = 0; i < emitters_.size(); ++i)
+            areaPdf_[emitters_[i].triangle] = float(select_.pdf(i) / double(emitters_[i].area));
+}
+
+bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const {
+    if (select_.empty()) return false;
+    size_t index = 0;
+    float selectPdf = 1.0f;
+    if (select_.size() > 1) {
+        index = select_.sample(uSelect);
+        selectPdf = float(select_.pdf(index));
+    }
+    if (index < emitters_.size()) return sampleEmitter(emitters_[index], selectPdf, ref, u, out);
+    return sampleDelta(deltas_[index - emitters_.size()], selectPdf, ref, out);
+}
+
+bool LightSampler::sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
+                                 LightSample& out) const {
+    const V2f b = squareToUniformTriangle(u);
+    const float b0 = 1.0f - b.x - b.y;
+    SurfacePoint q;
+    q.p = e.p0 * b0 + e.p1 * b.x + e.p2 * b.y;
+    q.pError = interpolationError(e.p0, e.p1, e.p2, b0, b.x, b.y);
+    q.ng = e.normal;
+    q.triangle = e.triangle;
+    const V3f toLight = q.p - ref.p;
+    const float dist2 = toLight.length2();
+    if (!(dist2 > 0.0f)) return false;
+    out.wi = toLight / std::sqrt(dist2);
+    const float cosLight = -out.wi.dot(e.normal);
+    if (cosLight <= 0.0f) return false;  // the back of a one-sided emitter
+    out.value = e.radiance;
+    out.pdf = selectPdf * dist2 / (e.area * cosLight);
+    out.isDelta = false;
+    const V3f from = ref.spawnOrigin(out.wi);
+    const V3f to = q.spawnOrigin(-out.wi);
+    out.shadowRay = Ray{from, to - from, 0.0f, kShadowRayEnd};
+    return out.pdf > 0.0f && std::isfinite(out.pdf);
+}
+
+bool LightSampler::sampleDelta(const DeltaLight& l, float selectPdf, const SurfacePoint& ref, LightSample& out) const {
+    out.isDelta = true;
+    out.pdf = selectPdf;
+    if (l.type == LightType::Directional) {
+        out.wi = -l.direction;
+        out.value = l.intensity;
+        out.shadowRay = Ray{ref.spawnOrigin(out.wi), out.wi};
+        return true;
+    }
+    const V3f toLight = l.position - ref.p;
+    const float dist2 = toLight.length2();
+    if (!(dist2 > 0.0f)) return false;
+    out.wi = toLight / std::sqrt(dist2);
+    float factor = 1.0f;
+    if (l.type == LightType::Spot) {
+        factor = l.spotFactor(-out.wi.dot(l.direction));
+        if (factor <= 0.0f) return false;
+    }
+    // SPEC.md: E = I cos / (d * meters_per_unit)^2.
+    out.value = l.intensity * (factor / (dist2 * metersPerUnit_ * metersPerUnit_));
+    const V3f from = ref.spawnOrigin(out.wi);
+    out.shadowRay = Ray{from, l.position - from, 0.0f, kShadowRayEnd};
+    return true;
+}
+
+float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq) const {
+    const float areaPdf = triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f;
+    if (areaPdf <= 0.0f) return 0.0f;
+    const V3f d = q - p;
+    const float dist2 = d.length2();
+    const float cosLight = std::abs(nq.dot(d)) / std::sqrt(dist2);
+    if (!(cosLight > 0.0f)) return 0.0f;
+    return areaPdf * dist2 / cosLight;
+}
+
+}  // namespace lucerna

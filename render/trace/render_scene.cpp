@@ -1,0 +1,97 @@
+#include "render/trace/render_scene.h"
+
+namespace lucerna {
+
+namespace {
+DeltaLight compileLight(const Light& l) {
+    DeltaLight d;
+    d.type = l.type;
+    d.position = toFloat(l.position);
+    d.direction = toFloat(l.direction.normalized());
+    d.intensity = toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity);
+    if (l.type == LightType::Spot) {
+        d.cosCone = float(std::cos(radians(l.coneAngleDeg)));
+        d.cosFalloffStart = float(std::cos(radians(l.falloffStartDeg.value_or(l.coneAngleDeg))));
+    }
+    return d;
+}
+}  // namespace
+
+RenderScene::RenderScene(SceneSnapshot scene, int width, int height)
+    : scene_(std::move(scene)), features_(analyseFeatures(*scene_)) {
+    const Scene& s = *scene_;
+    camera_ = PinholeCamera(s.camera, width > 0 ? width : s.camera.width, height > 0 ? height : s.camera.height);
+    metersPerUnit_ = float(s.metersPerUnit);
+    for (const Material& m : s.materials) materials_.push_back(ShadingMaterial::fromMaterial(m));
+
+    std::vector<EmitterTriangle> emitters;
+    V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    for (const Object& o : s.objects) {
+        if (!o.worldMesh) continue;
+        const uint32_t materialId = uint32_t(s.materialIndex(o.material));
+        const ShadingMaterial& mat = materials_[materialId];
+        const bool emits = mat.isEmitter() && !isBlack(mat.radiance);
+        const int base = int(positions_.size());
+        for (const V3d& v : o.worldMesh->vertices) {
+            positions_.push_back(toFloat(v));
+            lo = V3d(std::min(lo.x, v.x), std::min(lo.y, v.y), std::min(lo.z, v.z));
+            hi = V3d(std::max(hi.x, v.x), std::max(hi.y, v.y), std::max(hi.z, v.z));
+        }
+        for (const V3i& t : o.worldMesh->triangles) {
+            const V3d& a = o.worldMesh->vertices[t.x];
+            const V3d cross = (o.worldMesh->vertices[t.y] - a).cross(o.worldMesh->vertices[t.z] - a);
+            const double len = cross.length();
+            const auto index = uint32_t(triangles_.size());
+            triangles_.push_back(V3i(t.x + base, t.y + base, t.z + base));
+            triangleMaterial_.push_back(materialId);
+            triangleNormal_.push_back(len > 0 ? toFloat(cross / len) : V3f(0, 0, 1));
+            triangleArea_.push_back(float(0.5 * len));
+            if (emits && len > 0) {
+                const V3i& g = triangles_.back();
+                emitters.push_back({index, positions_[g.x], positions_[g.y], positions_[g.z], triangleNormal_.back(),
+                                    float(0.5 * len), mat.radiance});
+            }
+        }
+    }
+    if (!positions_.empty()) {
+        boundsCenter_ = toFloat((lo + hi) * 0.5);
+        boundsRadius_ = std::max(float(0.5 * (hi - lo).length()), 1e-30f);
+    }
+
+    std::vector<DeltaLight> deltas;
+    for (const Light& l : s.lights) {
+        DeltaLight d = compileLight(l);
+        if (!isBlack(d.intensity)) deltas.push_back(d);
+    }
+    lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsRadius_, triangles_.size());
+    accel_ = std::make_unique<EmbreeScene>(positions_, triangles_);
+}
+
+SurfacePoint RenderScene::surfacePoint(uint32_t tri, float b1, float b2) const {
+    const V3i& t = triangles_[tri];
+    const V3f &p0 = positions_[t.x], &p1 = positions_[t.y], &p2 = positions_[t.z];
+    const float b0 = 1.0f - b1 - b2;
+    SurfacePoint sp;
+    sp.p = p0 * b0 + p1 * b1 + p2 * b2;
+    sp.pError = interpolationError(p0, p1, p2, b0, b1, b2);
+    sp.ng = triangleNormal_[tri];
+    sp.triangle = tri;
+    sp.material = triangleMaterial_[tri];
+    return sp;
+}
+
+std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t) const {
+    const RayHit hit = accel_->intersect(ray);
+    if (!hit.found()) return std::nullopt;
+    if (t) *t = hit.t;
+    return surfacePoint(hit.triangle, hit.b1, hit.b2);
+}
+
+bool RenderScene::unoccluded(const SurfacePoint& a, const SurfacePoint& b) const {
+    const V3f d = b.p - a.p;
+    const V3f from = a.spawnOrigin(d);
+    const V3f to = b.spawnOrigin(-d);
+    return !accel_->occluded(Ray{from, to - from, 0.0f, kShadowRayEnd});
+}
+
+}  // namespace lucerna

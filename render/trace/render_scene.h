@@ -1,0 +1,71 @@
+#pragma once
+// A scene compiled for tracing: flat float triangle arrays, per-triangle material and geometric
+// normal, shading materials, the camera at the requested resolution, lights and the Embree BVH.
+// Built once per snapshot; immutable and shared by all threads of a backend afterwards.
+
+#include "core/scene.h"
+#include "render/trace/bsdf.h"
+#include "render/trace/camera.h"
+#include "render/trace/embree_scene.h"
+#include "render/trace/light_sampler.h"
+#include "render/trace/surface_point.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace lucerna {
+
+class RenderScene {
+public:
+    // width/height: the film resolution (the camera's own when <= 0).
+    RenderScene(SceneSnapshot scene, int width = 0, int height = 0);
+
+    const Scene& scene() const { return *scene_; }
+    const SceneFeatures& features() const { return features_; }
+    const PinholeCamera& camera() const { return camera_; }
+    const EmbreeScene& accel() const { return *accel_; }
+    const LightSampler& lights() const { return lights_; }
+    float metersPerUnit() const { return metersPerUnit_; }
+
+    size_t triangleCount() const { return triangles_.size(); }
+    const ShadingMaterial& material(uint32_t id) const { return materials_[id]; }
+    const ShadingMaterial& materialOfTriangle(uint32_t tri) const { return materials_[triangleMaterial_[tri]]; }
+    const V3f& normalOfTriangle(uint32_t tri) const { return triangleNormal_[tri]; }
+    float areaOfTriangle(uint32_t tri) const { return triangleArea_[tri]; }
+    std::array<V3f, 3> verticesOfTriangle(uint32_t tri) const {
+        const V3i& t = triangles_[tri];
+        return {positions_[t.x], positions_[t.y], positions_[t.z]};
+    }
+
+    // Closest surface along the ray, if any.
+    std::optional<SurfacePoint> intersect(const Ray& ray, float* t = nullptr) const;
+    // Point at barycentrics (b1, b2) of a triangle, with its error bound.
+    SurfacePoint surfacePoint(uint32_t tri, float b1, float b2) const;
+    // True when nothing blocks the segment between two surface points (each offset off its
+    // surface toward the other).
+    bool unoccluded(const SurfacePoint& a, const SurfacePoint& b) const;
+    bool occluded(const Ray& ray) const { return accel_->occluded(ray); }
+
+    // Centre and radius of a sphere bounding the geometry (directional lights use it).
+    const V3f& boundsCenter() const { return boundsCenter_; }
+    float boundsRadius() const { return boundsRadius_; }
+
+private:
+    SceneSnapshot scene_;
+    SceneFeatures features_;
+    PinholeCamera camera_;
+    float metersPerUnit_ = 1.0f;
+    std::vector<ShadingMaterial> materials_;
+    std::vector<V3f> positions_;
+    std::vector<V3i> triangles_;
+    std::vector<uint32_t> triangleMaterial_;
+    std::vector<V3f> triangleNormal_;
+    std::vector<float> triangleArea_;
+    V3f boundsCenter_{0, 0, 0};
+    float boundsRadius_ = 1.0f;
+    std::unique_ptr<EmbreeScene> accel_;
+    LightSampler lights_;
+};
+
+}  // namespace lucerna
