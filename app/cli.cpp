@@ -99,9 +99,10 @@ int renderImpl(const std::vector<std::string>& args) {
     for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
 
     std::string backendName = r.backend;
+    std::string autoReason;
     if (backendName == "auto") {
         const AutoChoice choice = chooseAutoBackend(*scene);
-        std::cerr << "auto: " << choice.reason << "\n";
+        autoReason = choice.reason;
         backendName = choice.backend;
     }
     const BackendInfo* info = findBackend(backendName);
@@ -116,6 +117,7 @@ int renderImpl(const std::vector<std::string>& args) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
 
     std::signal(SIGINT, onInterrupt);
     std::signal(SIGTERM, onInterrupt);

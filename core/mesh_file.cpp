@@ -21,33 +21,51 @@ using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<PolyTraits>;
 // OpenMesh's own importer drops faces with a repeated vertex, and re-creates the vertices of a
 // face that would make the mesh non-manifold (a third face on an edge, a flipped neighbour) at
 // new indices. SPEC.md wants every face of the file, with its vertices in file order, so this
-// importer records each polygon exactly as the reader hands it over, before OpenMesh builds its
-// half-edge connectivity (which the PolyMesh still gets, so the readers see valid faces).
+// importer records each vertex and each polygon exactly as the reader hands them over, before
+// OpenMesh builds its half-edge connectivity (which the PolyMesh still gets, so that the readers
+// see valid faces). The vertices OpenMesh duplicates never reach the result.
 class RecordingImporter : public OpenMesh::IO::ImporterT<PolyMesh> {
 public:
     using Base = OpenMesh::IO::ImporterT<PolyMesh>;
     using Base::add_face;
+    using Base::add_vertex;
 
-    explicit RecordingImporter(PolyMesh& mesh) : Base(mesh), mesh_(mesh) {}
+    explicit RecordingImporter(PolyMesh& mesh) : Base(mesh) {}
+
+    // The PLY reader adds a vertex first and sets its position later, so positions are read
+    // from the mesh at the end; only the handles are recorded here.
+    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3f& p) override { return record(Base::add_vertex(p)); }
+    OpenMesh::VertexHandle add_vertex(const OpenMesh::Vec3d& p) override { return record(Base::add_vertex(p)); }
+    OpenMesh::VertexHandle add_vertex() override { return record(Base::add_vertex()); }
 
     OpenMesh::FaceHandle add_face(const VHandles& indices) override {
         if (indices.size() >= 3) {
             std::vector<int> polygon;
             polygon.reserve(indices.size());
             for (const auto& vh : indices) {
-                if (!vh.is_valid() || size_t(vh.idx()) >= mesh_.n_vertices()) badIndex = true;
-                polygon.push_back(vh.idx());
+                const int i = vh.is_valid() && size_t(vh.idx()) < fileIndex_.size() ? fileIndex_[size_t(vh.idx())] : -1;
+                if (i < 0) badIndex = true;
+                polygon.push_back(i);
             }
             polygons.push_back(std::move(polygon));
         }
         return Base::add_face(indices);
     }
 
-    std::vector<std::vector<int>> polygons;
+    std::vector<OpenMesh::VertexHandle> vertices;  // the file's vertices, in file order
+    std::vector<std::vector<int>> polygons;        // in file order, indices into `vertices`
     bool badIndex = false;
 
 private:
-    PolyMesh& mesh_;
+    OpenMesh::VertexHandle record(OpenMesh::VertexHandle vh) {
+        if (!vh.is_valid()) return vh;
+        if (fileIndex_.size() <= size_t(vh.idx())) fileIndex_.resize(size_t(vh.idx()) + 1, -1);
+        fileIndex_[size_t(vh.idx())] = int(vertices.size());
+        vertices.push_back(vh);
+        return vh;
+    }
+
+    std::vector<int> fileIndex_;  // OpenMesh's vertex index -> index in `vertices`
 };
 
 // OpenMesh reports trouble on its own streams (stderr), including harmless notes on every
@@ -67,8 +85,9 @@ std::mutex& openMeshLock() {
 }  // namespace
 
 TriangleMesh readMeshFile(const std::string& absolutePath) {
-    const QFileInfo info(QString::fromStdString(absolutePath));
     const auto fail = [&](const std::string& why) { throw std::runtime_error(absolutePath + ": " + why); };
+    if (absolutePath.find('\0') != std::string::npos) fail("the path contains a NUL character");
+    const QFileInfo info(QString::fromStdString(absolutePath));
     if (!info.exists()) fail("no such file");
     if (!info.isFile()) fail("not a regular file");
     if (!info.isReadable()) fail("not readable (permission denied)");
@@ -88,9 +107,9 @@ TriangleMesh readMeshFile(const std::string& absolutePath) {
     if (importer.polygons.empty()) fail("the file has no faces");
 
     TriangleMesh out;
-    out.vertices.reserve(mesh.n_vertices());
-    for (size_t i = 0; i < mesh.n_vertices(); ++i) {
-        const auto& p = mesh.point(PolyMesh::VertexHandle(int(i)));
+    out.vertices.reserve(importer.vertices.size());
+    for (const OpenMesh::VertexHandle vh : importer.vertices) {
+        const auto& p = mesh.point(vh);
         out.vertices.emplace_back(p[0], p[1], p[2]);
     }
     for (const std::vector<int>& polygon : importer.polygons)

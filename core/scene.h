@@ -64,7 +64,9 @@ struct MeshSource {
     enum class Kind { Inline, Quad, File };
     Kind kind = Kind::Inline;
     TriangleMesh inlineMesh;   // Inline
-    std::array<V3d, 4> quad{}; // Quad
+    // Imath vectors are not zeroed by default construction, so spell the zeros out: equality
+    // compares this array for every kind of mesh.
+    std::array<V3d, 4> quad{V3d(0), V3d(0), V3d(0), V3d(0)}; // Quad
     std::string file;          // File, as written (relative to the scene's folder)
 
     bool operator==(const MeshSource&) const = default;

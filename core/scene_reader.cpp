@@ -287,6 +287,7 @@ private:
             mesh.kind = MeshSource::Kind::File;
             mesh.file = text(*file, member(place, "file"));
             if (mesh.file.empty()) fail(member(place, "file"), "mesh file path is empty");
+            if (mesh.file.find('\0') != std::string::npos) fail(member(place, "file"), "mesh file path contains a NUL character");
         } else if (const Value* quad = v.find("quad")) {
             mesh.kind = MeshSource::Kind::Quad;
             const std::string here = member(place, "quad");

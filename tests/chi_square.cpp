@@ -15,7 +15,8 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kMinExpected = 5.0;        // Pearson's rule of thumb for pooling
 constexpr double kStrayFraction = 1e-5;     // tolerated samples where the pdf integrates to 0
 constexpr double kIntegralSlack = 1e-3;     // a pdf may integrate to at most 1 + this
-constexpr double kCellEps = 1e-9;           // absolute integration tolerance per cell
+constexpr double kCellAbsEps = 1e-12;       // integration tolerance per cell: absolute,
+constexpr double kCellRelEps = 1e-6;        // and relative to the cell's integral
 constexpr int kMaxDepth = 12;               // adaptive Simpson: levels below the initial panels
 constexpr int kPanels = 4;                  // initial panels: a peak narrower than the cell/8
                                             // would otherwise be missed by the first 5 points
@@ -35,28 +36,39 @@ double simpsonRec(const F& f, double a, double b, double fa, double fm, double f
            simpsonRec(f, m, b, fm, frm, fb, right, 0.5 * eps, depth - 1);
 }
 
+// eps is absolute, or relEps times the magnitude of the first estimate if that is larger: the
+// pdfs are float computations whose rounding noise (~1e-7 relative) an absolute tolerance far
+// below it would chase down to the maximum depth everywhere.
 template <class F>
-double adaptiveSimpson(const F& f, double a, double b, double eps) {
+double adaptiveSimpson(const F& f, double a, double b, double absEps, double relEps) {
     const double h = (b - a) / kPanels;
-    double sum = 0.0;
+    double pa[kPanels], pb[kPanels], fa[kPanels], fm[kPanels], fb[kPanels], whole[kPanels];
+    double magnitude = 0.0;
     for (int i = 0; i < kPanels; ++i) {
-        const double pa = a + i * h, pb = (i + 1 == kPanels) ? b : a + (i + 1) * h;
-        const double fa = f(pa), fm = f(0.5 * (pa + pb)), fb = f(pb);
-        const double whole = (pb - pa) / 6.0 * (fa + 4.0 * fm + fb);
-        sum += simpsonRec(f, pa, pb, fa, fm, fb, whole, eps / kPanels, kMaxDepth);
+        pa[i] = a + i * h;
+        pb[i] = (i + 1 == kPanels) ? b : a + (i + 1) * h;
+        fa[i] = i == 0 ? f(pa[i]) : fb[i - 1];
+        fm[i] = f(0.5 * (pa[i] + pb[i]));
+        fb[i] = f(pb[i]);
+        whole[i] = (pb[i] - pa[i]) / 6.0 * (fa[i] + 4.0 * fm[i] + fb[i]);
+        magnitude += std::abs(whole[i]);
     }
+    const double eps = std::max(absEps, relEps * magnitude) / kPanels;
+    double sum = 0.0;
+    for (int i = 0; i < kPanels; ++i)
+        sum += simpsonRec(f, pa[i], pb[i], fa[i], fm[i], fb[i], whole[i], eps, kMaxDepth);
     return sum;
 }
 
 // Integral of g(x, y) over [x0, x1] x [y0, y1], as nested 1D adaptive Simpson. The inner
-// tolerance is 10x tighter (per unit of x) so the outer level does not chase inner noise.
+// tolerances are 10x tighter so that the outer level does not chase inner noise.
 template <class G>
-double integrate2D(const G& g, double x0, double x1, double y0, double y1, double eps) {
-    const double innerEps = 0.1 * eps / std::max(x1 - x0, 1e-300);
+double integrate2D(const G& g, double x0, double x1, double y0, double y1) {
+    const double innerAbs = 0.1 * kCellAbsEps / std::max(x1 - x0, 1e-300);
     auto outer = [&](double x) {
-        return adaptiveSimpson([&](double y) { return g(x, y); }, y0, y1, innerEps);
+        return adaptiveSimpson([&](double y) { return g(x, y); }, y0, y1, innerAbs, 0.1 * kCellRelEps);
     };
-    return adaptiveSimpson(outer, x0, x1, eps);
+    return adaptiveSimpson(outer, x0, x1, kCellAbsEps, kCellRelEps);
 }
 
 // Direction for z = cos(theta) and phi; dOmega = dz dphi in these coordinates.
@@ -287,7 +299,7 @@ ChiSquareResult chiSquareSphereCap(const std::function<bool(Rng&, V3f&)>& sample
         const double z0 = zMin + ti * dz, z1 = (ti + 1 == thetaBins) ? 1.0 : zMin + (ti + 1) * dz;
         for (int pi = 0; pi < phiBins; ++pi) {
             const double p0 = kTwoPi * pi / phiBins, p1 = kTwoPi * (pi + 1) / phiBins;
-            integral[size_t(ti * phiBins + pi)] = integrate2D(g, z0, z1, p0, p1, kCellEps);
+            integral[size_t(ti * phiBins + pi)] = integrate2D(g, z0, z1, p0, p1);
         }
     }
     if (hasBelow) {
@@ -298,7 +310,7 @@ ChiSquareResult chiSquareSphereCap(const std::function<bool(Rng&, V3f&)>& sample
         for (int ti = 0; ti < zCells; ++ti) {
             const double z0 = -1.0 + ti * bz, z1 = (ti + 1 == zCells) ? zMin : -1.0 + (ti + 1) * bz;
             for (int pi = 0; pi < 32; ++pi)
-                sum += integrate2D(g, z0, z1, kTwoPi * pi / 32, kTwoPi * (pi + 1) / 32, kCellEps);
+                sum += integrate2D(g, z0, z1, kTwoPi * pi / 32, kTwoPi * (pi + 1) / 32);
         }
         integral[size_t(below)] = sum;
     }
@@ -342,12 +354,12 @@ ChiSquareResult chiSquareRect(const std::function<bool(Rng&, V2f&)>& sample,
 
     PdfGuard guard;
     auto g = [&](double y, double x) { return guard(pdf(V2f(float(x), float(y)))); };
-    std::vector<double> integral(size_t(cells));
+    std::vector<double> integral(static_cast<size_t>(cells), 0.0);
     for (int yi = 0; yi < yBins; ++yi)
         for (int xi = 0; xi < xBins; ++xi)
             integral[size_t(yi * xBins + xi)] =
                 integrate2D(g, lo.y + yi * dy, lo.y + (yi + 1) * dy, lo.x + xi * dx,
-                            lo.x + (xi + 1) * dx, kCellEps);
+                            lo.x + (xi + 1) * dx);
     auto describe = [&](int cell) {
         const int yi = cell / xBins, xi = cell % xBins;
         return fmt("x in [%.4f, %.4f], y in [%.4f, %.4f]", lo.x + xi * dx, lo.x + (xi + 1) * dx,
@@ -363,8 +375,7 @@ double integrateOverSphere(const std::function<double(const V3f&)>& f, int theta
     for (int ti = 0; ti < thetaBins; ++ti) {
         const double z0 = -1.0 + 2.0 * ti / thetaBins, z1 = -1.0 + 2.0 * (ti + 1) / thetaBins;
         for (int pi = 0; pi < phiBins; ++pi)
-            sum += integrate2D(g, z0, z1, kTwoPi * pi / phiBins, kTwoPi * (pi + 1) / phiBins,
-                               kCellEps);
+            sum += integrate2D(g, z0, z1, kTwoPi * pi / phiBins, kTwoPi * (pi + 1) / phiBins);
     }
     return sum;
 }

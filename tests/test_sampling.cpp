@@ -563,6 +563,10 @@ private slots:
         for (double ior : {1.5, 1.33, 2.4, 0.8}) {
             for (int i = 0; i <= 200; ++i) {
                 const double cosI = std::max(1e-4, i / 200.0);
+                // F has a square-root singularity at the critical angle: a float cosine there
+                // can legitimately be far from the double one.
+                const double sinI = std::sqrt(1.0 - cosI * cosI);
+                if (std::abs(sinI / ior - 1.0) < 1e-3 || std::abs(sinI * ior - 1.0) < 1e-3) continue;
                 const double out = fresnelBySines(cosI, 1.0, ior);      // from vacuum
                 const double in = fresnelBySines(cosI, ior, 1.0);       // from inside
                 QVERIFY2(std::abs(fresnelDielectric(float(cosI), float(ior)) - out) < 2e-5,

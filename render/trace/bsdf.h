@@ -57,8 +57,9 @@ float bsdfPdf(const ShadingMaterial& m, const V3f& wo, const V3f& wi);
 
 // Samples wi. u for the direction, uLobe in [0,1) for the lobe/Fresnel choice (independent of u).
 // false = no sample (absorbed / below horizon / wo.z <= 0 for two-sided materials / emitter).
-// Non-delta results: weight == bsdfEval * wi.z / bsdfPdf exactly as those functions compute it
-// (finite, >= 0), pdf == bsdfPdf(m, wo, wi) > 0.
+// Non-delta results: pdf == bsdfPdf(m, wo, wi) > 0 and weight == bsdfEval * wi.z / pdf (finite,
+// >= 0; bit for bit for glossy, up to float rounding for diffuse, whose weight is albedo exactly);
+// wi.z > 0. Glossy weights come from the mixture pdf (one-sample MIS over the two lobes).
 // Dielectric: +z is the FRONT side (vacuum); wo.z < 0 means wo is inside the medium of index ior.
 // Exact unpolarised Fresnel; reflect with probability F, else refract (total internal reflection
 // -> reflect, weight 1); radiance NOT scaled by eta^2, so the weight is always 1.

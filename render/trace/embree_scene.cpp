@@ -1,6 +1,10 @@
 #include "render/trace/embree_scene.h"
 
 #include <embree3/rtcore.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
 
 #include <stdexcept>
 #include <string>
@@ -64,7 +68,40 @@ EmbreeScene::EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3
 
 EmbreeScene::~EmbreeScene() = default;
 
+void EmbreeScene::record(const Ray& ray, bool shadow) const {
+    const int slot = tbb::this_task_arena::current_thread_index();
+    if (slot >= 0 && size_t(slot) < recorder_->perThread.size()) recorder_->perThread[size_t(slot)].push_back({ray, shadow});
+}
+
+size_t EmbreeScene::replay(const std::vector<RayRecorder::Entry>& rays) const {
+    std::atomic<size_t> hits{0};
+    RTCScene scene = impl_->scene.get();
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, rays.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        size_t local = 0;
+        for (size_t i = r.begin(); i != r.end(); ++i) {
+            if (rays[i].shadow) {
+                RTCRay ray;
+                fillRay(ray, rays[i].ray);
+                rtcOccluded1(scene, &context, &ray);
+                local += ray.tfar < 0.0f;
+            } else {
+                RTCRayHit rh;
+                fillRay(rh.ray, rays[i].ray);
+                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+                rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+                rtcIntersect1(scene, &context, &rh);
+                local += rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+            }
+        }
+        hits += local;
+    });
+    return hits;
+}
+
 RayHit EmbreeScene::intersect(const Ray& ray) const {
+    if (recorder_) [[unlikely]] record(ray, false);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -83,6 +120,7 @@ RayHit EmbreeScene::intersect(const Ray& ray) const {
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
+    if (recorder_) [[unlikely]] record(ray, true);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r;

@@ -26,6 +26,17 @@ struct RayHit {
     bool found() const { return triangle != kNone; }
 };
 
+// Every ray a tracer sends, for benchmarks that replay them through bare Embree calls. One list
+// per arena thread so that recording needs no lock.
+struct RayRecorder {
+    struct Entry {
+        Ray ray;
+        bool shadow;
+    };
+    explicit RayRecorder(int threads) : perThread(size_t(threads)) {}
+    std::vector<std::vector<Entry>> perThread;
+};
+
 class EmbreeScene {
 public:
     // Builds a BVH over the triangles (robust, high-quality build). Throws std::runtime_error if
@@ -44,7 +55,16 @@ public:
     // for camera rays and other bundles whose rays share an origin region and direction.
     void intersectCoherent(const Ray* rays, RayHit* hits, size_t count) const;
 
+    // Benchmarks only: while set, intersect() and occluded() append their rays to it.
+    void setRecorder(RayRecorder* recorder) { recorder_ = recorder; }
+    // Traces recorded rays with bare rtcIntersect1 / rtcOccluded1 calls, in parallel over the
+    // calling task arena. Returns the number of hits (so that the work cannot be optimised away).
+    size_t replay(const std::vector<RayRecorder::Entry>& rays) const;
+
 private:
+    void record(const Ray& ray, bool shadow) const;
+
+    RayRecorder* recorder_ = nullptr;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -46,6 +46,8 @@ public:
     // surface toward the other).
     bool unoccluded(const SurfacePoint& a, const SurfacePoint& b) const;
     bool occluded(const Ray& ray) const { return accel_->occluded(ray); }
+    // Benchmarks only: records every ray traced from now on (nullptr stops).
+    void setRayRecorder(RayRecorder* recorder) { accel_->setRecorder(recorder); }
 
     // Centre and radius of a sphere bounding the geometry (directional lights use it).
     const V3f& boundsCenter() const { return boundsCenter_; }

@@ -23,6 +23,29 @@ PathSettings PathSettings::fromOptions(const RenderSettings& settings) {
     return s;
 }
 
+void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint64_t seed, int pass, Film& film,
+                    TaskContext& ctx) {
+    const PinholeCamera& camera = scene.camera();
+    const int tile = settings.tileSize;
+    const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
+    const PathTracer tracer(scene, settings);
+    const int half = pass % 2;
+    const uint64_t passSeed = hashSeed(seed, uint64_t(pass));
+    ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
+        const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
+        const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
+                const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
+                Rgb L = tracer.radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng);
+                if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
+                film.addSample(half, x, y, L);
+            }
+    });
+    if (!ctx.isCancelled()) film.finishPass(half);
+}
+
 namespace {
 
 class PathBackend final : public ProgressiveBackend {
@@ -36,25 +59,7 @@ public:
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
-        const PinholeCamera& camera = scene_->camera();
-        const int tile = pathSettings_.tileSize;
-        const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
-        const PathTracer tracer(*scene_, pathSettings_);
-        const int half = pass % 2;
-        const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
-        ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
-            const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
-            const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
-            for (int y = y0; y < y1; ++y)
-                for (int x = x0; x < x1; ++x) {
-                    Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
-                    const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
-                    Rgb L = tracer.radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng);
-                    if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film; counted as lost energy
-                    film_->addSample(half, x, y, L);
-                }
-        });
-        if (!ctx.isCancelled()) film_->finishPass(half);
+        renderPathPass(*scene_, pathSettings_, settings_.seed, pass, *film_, ctx);
     }
 
     const Film& film() const override { return *film_; }

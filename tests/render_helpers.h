@@ -1,0 +1,44 @@
+#pragma once
+// Rendering from tests: a scene from JSON text, a backend by name, a fixed amount of work.
+
+#include "core/scene_io.h"
+#include "core/task_system.h"
+#include "render/progressive/backend.h"
+#include "render/progressive/progressive_render.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace lucerna::test {
+
+inline SceneSnapshot sceneFromJson(const std::string& json, const std::string& name = "test.json") {
+    return std::make_shared<const Scene>(parseScene(json, name));
+}
+
+inline RenderFrame renderFrame(const std::string& backendName, const SceneSnapshot& scene, const RenderSettings& settings,
+                               int threads = 0) {
+    const BackendInfo* info = findBackend(backendName);
+    if (!info) throw std::invalid_argument("no backend " + backendName);
+    auto backend = info->make(scene, settings);
+    TaskSystem tasks(threads);
+    RenderFrame frame;
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        backend->prepare(ctx);
+        frame = runProgressive(*backend, backendName, settings, ctx);
+    });
+    job->wait();
+    job->rethrowIfFailed();
+    return frame;
+}
+
+inline Image render(const std::string& backendName, const SceneSnapshot& scene, int spp, uint64_t seed = 1,
+                    int width = 0, int height = 0) {
+    RenderSettings s;
+    s.spp = spp;
+    s.seed = seed;
+    s.width = width;
+    s.height = height;
+    return renderFrame(backendName, scene, s).image;
+}
+
+}  // namespace lucerna::test

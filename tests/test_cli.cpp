@@ -1,0 +1,192 @@
+// The command line of SPEC.md section 2: exit codes, one-line errors, output files written whole
+// or not at all, an interrupted render leaving nothing behind.
+
+#include "core/exr_io.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfOutputFile.h>
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <csignal>
+
+using namespace lucerna;
+
+namespace {
+const QString kCornell = QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json";
+const QString kReference = QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.ref.exr";
+
+struct Run {
+    int exitCode = -1;
+    QString out, err;
+};
+
+Run runLucerna(const QStringList& args, int timeoutMs = 120000) {
+    QProcess p;
+    p.start(LUCERNA_BINARY, args);
+    p.waitForFinished(timeoutMs);
+    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
+            p.readAllStandardError()};
+}
+
+bool isOneLine(const QString& s) { return s.trimmed().count('\n') == 0 && !s.trimmed().isEmpty(); }
+}  // namespace
+
+class TestCli : public QObject {
+    Q_OBJECT
+private slots:
+    void renderWritesExrWithMetadata();
+    void renderBadUsage_data();
+    void renderBadUsage();
+    void badSceneIsOneLine();
+    void compareMetrics();
+    void compareErrors();
+    void infoPrintsStatistics();
+    void interruptedRenderLeavesNoFile_data();
+    void interruptedRenderLeavesNoFile();
+};
+
+void TestCli::renderWritesExrWithMetadata() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("cb.exr");
+    const Run r = runLucerna({"render", kCornell, "-o", out, "--backend", "path", "--spp", "2", "--width", "40",
+                           "--height", "30", "--seed", "5"});
+    QCOMPARE(r.exitCode, 0);
+    const Image img = readExr(out.toStdString());
+    QCOMPARE(img.width, 40);
+    QCOMPARE(img.height, 30);
+    QCOMPARE(img.attributes.at("lucerna:backend"), std::string("path"));
+    QCOMPARE(img.attributes.at("lucerna:spp"), std::string("2"));
+    QCOMPARE(img.attributes.at("lucerna:seed"), std::string("5"));
+    QVERIFY(img.attributes.count("lucerna:seconds"));
+    QVERIFY(img.mean() > 0.01);
+    // auto says what it chose and why.
+    const Run a = runLucerna({"render", kCornell, "-o", dir.filePath("auto.exr"), "--spp", "1", "--width", "8",
+                           "--height", "8"});
+    QCOMPARE(a.exitCode, 0);
+    QVERIFY(a.err.contains("auto: "));
+}
+
+void TestCli::renderBadUsage_data() {
+    QTest::addColumn<QStringList>("args");
+    QTest::newRow("no scene") << QStringList{"render"};
+    QTest::newRow("no output") << QStringList{"render", kCornell};
+    QTest::newRow("unknown backend") << QStringList{"render", kCornell, "-o", "x.exr", "--backend", "nope"};
+    QTest::newRow("bad spp") << QStringList{"render", kCornell, "-o", "x.exr", "--spp", "ten"};
+    QTest::newRow("zero spp") << QStringList{"render", kCornell, "-o", "x.exr", "--spp", "0"};
+    QTest::newRow("negative time") << QStringList{"render", kCornell, "-o", "x.exr", "--time", "-1"};
+    QTest::newRow("huge width") << QStringList{"render", kCornell, "-o", "x.exr", "--width", "20000"};
+    QTest::newRow("unknown option") << QStringList{"render", kCornell, "-o", "x.exr", "--fast"};
+    QTest::newRow("missing value") << QStringList{"render", kCornell, "-o", "x.exr", "--seed"};
+    QTest::newRow("missing scene") << QStringList{"render", "/nonexistent/scene.json", "-o", "x.exr"};
+    QTest::newRow("bad path option") << QStringList{"render", kCornell, "-o", "x.exr", "--option", "max_depth=-3"};
+}
+
+void TestCli::renderBadUsage() {
+    QFETCH(QStringList, args);
+    QTemporaryDir dir;
+    QProcess p;
+    p.setWorkingDirectory(dir.path());
+    p.start(LUCERNA_BINARY, args);
+    QVERIFY(p.waitForFinished(60000));
+    QCOMPARE(p.exitCode(), 2);
+    const QString err = p.readAllStandardError();
+    QVERIFY2(isOneLine(err), qPrintable(err));
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+void TestCli::badSceneIsOneLine() {
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("bad.json");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"lucerna": 1, "camera": {"position": [0,0,0], "target": [0,0,0], "fov_y": 40, "resolution": [8,8]},
+               "materials": {}, "objects": []})");
+    f.close();
+    for (const QStringList& args : {QStringList{"info", bad}, QStringList{"render", bad, "-o", dir.filePath("o.exr")}}) {
+        const Run r = runLucerna(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(isOneLine(r.err), qPrintable(r.err));
+        QVERIFY2(r.err.contains("bad.json") && r.err.contains("camera"), qPrintable(r.err));
+    }
+    QVERIFY(!QFile::exists(dir.filePath("o.exr")));
+}
+
+void TestCli::compareMetrics() {
+    const Run r = runLucerna({"compare", kReference, kReference});
+    QCOMPARE(r.exitCode, 0);
+    const QStringList lines = r.out.trimmed().split('\n');
+    QCOMPARE(lines.size(), 5);
+    QCOMPARE(lines[0], QString("rmse: 0"));
+    QCOMPARE(lines[1], QString("relmse: 0"));
+    QVERIFY(lines[2].startsWith("mean_test: 0.1199"));
+    QCOMPARE(lines[2].mid(11), lines[3].mid(10));
+    QCOMPARE(lines[4], QString("nonfinite: 0"));
+}
+
+void TestCli::compareErrors() {
+    QTemporaryDir dir;
+    // Different sizes.
+    const QString small = dir.filePath("small.exr");
+    writeExr(small.toStdString(), Image(4, 4));
+    Run r = runLucerna({"compare", small, kReference});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY(isOneLine(r.err));
+    // Unreadable and missing files.
+    QCOMPARE(runLucerna({"compare", dir.filePath("missing.exr"), kReference}).exitCode, 2);
+    QCOMPARE(runLucerna({"compare", kCornell, kReference}).exitCode, 2);
+    // A file without a B channel.
+    const QString rg = dir.filePath("rg.exr");
+    {
+        Imf::Header header(4, 4);
+        std::vector<float> data(16, 0.5f);
+        Imf::FrameBuffer fb;
+        for (const char* c : {"R", "G"}) {
+            header.channels().insert(c, Imf::Channel(Imf::FLOAT));
+            fb.insert(c, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(data.data()), sizeof(float), 4 * sizeof(float)));
+        }
+        Imf::OutputFile file(rg.toStdString().c_str(), header);
+        file.setFrameBuffer(fb);
+        file.writePixels(4);
+    }
+    r = runLucerna({"compare", rg, small});
+    QCOMPARE(r.exitCode, 2);
+    QVERIFY2(r.err.contains("B"), qPrintable(r.err));
+    QCOMPARE(runLucerna({"compare", small}).exitCode, 2);
+}
+
+void TestCli::infoPrintsStatistics() {
+    const Run r = runLucerna({"info", kCornell});
+    QCOMPARE(r.exitCode, 0);
+    QVERIFY(r.out.contains("triangles: 32"));
+    QVERIFY(r.out.contains("emitter triangles: 2"));
+    QVERIFY(r.out.contains("needs: diffuse area-lights"));
+}
+
+void TestCli::interruptedRenderLeavesNoFile_data() {
+    QTest::addColumn<int>("signal");
+    QTest::newRow("SIGINT") << int(SIGINT);
+    QTest::newRow("SIGTERM") << int(SIGTERM);
+}
+
+void TestCli::interruptedRenderLeavesNoFile() {
+    QFETCH(int, signal);
+    QTemporaryDir dir;
+    const QString out = dir.filePath("long.exr");
+    QProcess p;
+    p.start(LUCERNA_BINARY, {"render", kCornell, "-o", out, "--time", "60"});
+    QVERIFY(p.waitForStarted());
+    QTest::qWait(1500);  // loading done, rendering under way
+    QCOMPARE(p.state(), QProcess::Running);
+    ::kill(pid_t(p.processId()), signal);
+    QVERIFY(p.waitForFinished(10000));  // stops promptly, not after the budget
+    QCOMPARE(p.exitCode(), 130);
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+QTEST_GUILESS_MAIN(TestCli)
+#include "test_cli.moc"

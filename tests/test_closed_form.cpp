@@ -1,0 +1,117 @@
+// Closed-form checks of every physically based backend, each within 1% (SPEC.md conventions):
+// a diffuse plane under a rectangular emitter (Lambert's polygon formula), a point light over a
+// plane in a millimetre scene (E = I cos / r^2, r in metres), and a closed sphere with an
+// emitting cap (uniform radiance inside a sphere).
+
+#include "closed_form_scenes.h"
+#include "render_helpers.h"
+
+#include <QtTest>
+
+using namespace lucerna;
+using namespace lucerna::test;
+
+namespace {
+
+// Mean of the expected image, and the largest relative error of 8x8-pixel block means.
+struct FloorComparison {
+    double meanRelError = 0, worstBlockRelError = 0;
+};
+
+FloorComparison compareFloor(const Image& img, const std::vector<double>& expected) {
+    double sumT = 0, sumE = 0;
+    for (size_t i = 0; i < expected.size(); ++i) {
+        sumT += img.pixels[i].x + img.pixels[i].y + img.pixels[i].z;
+        sumE += 3 * expected[i];
+    }
+    FloorComparison c;
+    c.meanRelError = std::abs(sumT / sumE - 1.0);
+    const int b = 8;
+    for (int by = 0; by + b <= img.height; by += b)
+        for (int bx = 0; bx + b <= img.width; bx += b) {
+            double t = 0, e = 0;
+            for (int y = by; y < by + b; ++y)
+                for (int x = bx; x < bx + b; ++x) {
+                    t += img.at(x, y).y;
+                    e += expected[size_t(y) * img.width + x];
+                }
+            c.worstBlockRelError = std::max(c.worstBlockRelError, std::abs(t / e - 1.0));
+        }
+    return c;
+}
+
+}  // namespace
+
+class TestClosedForm : public QObject {
+    Q_OBJECT
+private slots:
+    void rectangleOverPlane_data() { backends(); }
+    void rectangleOverPlane();
+    void deltaLightOverPlane_data();
+    void deltaLightOverPlane();
+    void sphereWithEmittingCap_data() { backends(); }
+    void sphereWithEmittingCap();
+
+private:
+    // Every physically based backend, with the work it gets (samples per pixel).
+    void backends() {
+        QTest::addColumn<QString>("backend");
+        QTest::addColumn<int>("spp");
+        QTest::newRow("path") << "path" << 256;
+    }
+};
+
+void TestClosedForm::rectangleOverPlane() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    RectangleOverPlane s;
+    const Image img = render(backend.toStdString(), sceneFromJson(s.json()), spp);
+    const FloorComparison c = compareFloor(img, s.expected());
+    qInfo("mean error %.4f%%, worst 8x8 block %.4f%%", 100 * c.meanRelError, 100 * c.worstBlockRelError);
+    QVERIFY(c.meanRelError < 0.01);
+    QVERIFY(c.worstBlockRelError < 0.02);  // noise of 16k samples a block, plus the 1% bound
+}
+
+void TestClosedForm::deltaLightOverPlane_data() {
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<int>("spp");
+    QTest::addColumn<int>("kind");
+    for (const auto& [name, kind] : {std::pair{"point", DeltaLightOverPlane::Kind::Point},
+                                     std::pair{"spot", DeltaLightOverPlane::Kind::Spot},
+                                     std::pair{"directional", DeltaLightOverPlane::Kind::Directional}})
+        QTest::newRow(qPrintable(QString("path %1").arg(name))) << "path" << 64 << int(kind);
+}
+
+void TestClosedForm::deltaLightOverPlane() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    QFETCH(int, kind);
+    DeltaLightOverPlane s;
+    s.kind = DeltaLightOverPlane::Kind(kind);
+    const Image img = render(backend.toStdString(), sceneFromJson(s.json()), spp);
+    const auto expected = s.expected();
+    if (s.kind == DeltaLightOverPlane::Kind::Point)
+        QVERIFY(expected[expected.size() / 2 + 16] > 0.3);  // centre: 0.5/pi * 2 / 1 m^2 = 0.318
+    const FloorComparison c = compareFloor(img, expected);
+    qInfo("mean error %.4f%%, worst 8x8 block %.4f%%", 100 * c.meanRelError, 100 * c.worstBlockRelError);
+    QVERIFY(c.meanRelError < 0.01);
+    QVERIFY(c.worstBlockRelError < 0.01);
+}
+
+void TestClosedForm::sphereWithEmittingCap() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    for (double rho : {0.5, 0.8}) {
+        SphereWithEmittingCap s;
+        s.rho = rho;
+        const std::string json = s.json();
+        const Image img = render(backend.toStdString(), sceneFromJson(json), spp);
+        const double expected = s.expectedRadiance();
+        const double mean = img.mean();
+        qInfo("rho %.1f: mean %.6f, closed form %.6f, error %.3f%%", rho, mean, expected, 100 * (mean / expected - 1));
+        QVERIFY(std::abs(mean / expected - 1.0) < 0.01);
+    }
+}
+
+QTEST_GUILESS_MAIN(TestClosedForm)
+#include "test_closed_form.moc"

@@ -1,0 +1,173 @@
+// EXR input and output, atomic writes, the error metrics, the task system.
+
+#include "core/atomic_file.h"
+#include "core/exr_io.h"
+#include "core/image_metrics.h"
+#include "core/task_system.h"
+
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <atomic>
+#include <thread>
+
+using namespace lucerna;
+
+class TestCore : public QObject {
+    Q_OBJECT
+private slots:
+    void exrRoundTrip();
+    void exrMissingChannelAndGarbage();
+    void atomicWriteLeavesNothingOnFailure();
+    void metricsByHand();
+    void metricsExcludeNonFinite();
+    void taskRunsOffTheCallingThread();
+    void taskCancellationStopsParallelLoop();
+    void taskExceptionIsKept();
+    void latestKeepsNewest();
+};
+
+void TestCore::exrRoundTrip() {
+    QTemporaryDir dir;
+    Image img(7, 5);
+    for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) img.at(x, y) = Rgb(x * 0.5f, y * 1e-3f, 1e6f + x);
+    img.channels["albedo.R"] = std::vector<float>(35, 0.25f);
+    img.attributes["lucerna:backend"] = "path";
+    img.attributes["lucerna:spp"] = "16";
+    const std::string path = dir.filePath("a.exr").toStdString();
+    writeExr(path, img);
+    const Image back = readExr(path);
+    QCOMPARE(back.width, 7);
+    QCOMPARE(back.height, 5);
+    for (size_t i = 0; i < img.pixels.size(); ++i) QCOMPARE(back.pixels[i], img.pixels[i]);  // 32-bit float, exact
+    QCOMPARE(back.channels.at("albedo.R"), img.channels.at("albedo.R"));
+    QCOMPARE(back.attributes.at("lucerna:backend"), std::string("path"));
+    QCOMPARE(back.attributes.at("lucerna:spp"), std::string("16"));
+    // No temporary is left in the folder.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).size(), 1);
+}
+
+void TestCore::exrMissingChannelAndGarbage() {
+    QTemporaryDir dir;
+    const std::string garbage = dir.filePath("g.exr").toStdString();
+    {
+        QFile f(QString::fromStdString(garbage));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("not an exr file at all");
+    }
+    QVERIFY_THROWS_EXCEPTION(ImageError, readExr(garbage));
+    QVERIFY_THROWS_EXCEPTION(ImageError, readExr(dir.filePath("missing.exr").toStdString()));
+    try {
+        readExr(garbage);
+    } catch (const ImageError& e) {
+        QVERIFY(std::string(e.what()).find('\n') == std::string::npos);  // one line
+        QVERIFY(std::string(e.what()).find("g.exr") != std::string::npos);
+    }
+}
+
+void TestCore::atomicWriteLeavesNothingOnFailure() {
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("out.bin").toStdString();
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, writeAtomically(path, [](const std::string& temp) {
+        QFile f(QString::fromStdString(temp));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("half");
+        throw std::runtime_error("interrupted");
+    }));
+    QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+    // An existing file survives a failed rewrite untouched.
+    writeAtomically(path, [](const std::string& temp) {
+        QFile f(QString::fromStdString(temp));
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("whole");
+    });
+    try {
+        writeAtomically(path, [](const std::string&) { throw std::runtime_error("no"); });
+    } catch (const std::runtime_error&) {
+    }
+    QFile f(QString::fromStdString(path));
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.readAll(), QByteArray("whole"));
+}
+
+void TestCore::metricsByHand() {
+    Image t(2, 1), r(2, 1);
+    t.at(0, 0) = Rgb(1, 2, 3);
+    r.at(0, 0) = Rgb(1, 1, 1);
+    t.at(1, 0) = Rgb(0, 0, 0);
+    r.at(1, 0) = Rgb(0.1f, 0.1f, 0.1f);
+    const ImageMetrics m = compareImages(t, r);
+    // squared errors: 0, 1, 4, 0.01, 0.01, 0.01
+    QVERIFY(std::abs(m.rmse - std::sqrt(5.03 / 6)) < 1e-6);
+    const double rel = (0 + 1 / 1.01 + 4 / 1.01 + 3 * (0.01 / (0.01 + 0.01))) / 6;
+    QVERIFY(std::abs(m.relmse - rel) < 1e-6);
+    QVERIFY(std::abs(m.meanTest - 1.0) < 1e-9);
+    QVERIFY(std::abs(m.meanRef - 0.55) < 1e-6);
+    QCOMPARE(m.nonfinite, 0L);
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, compareImages(Image(2, 2), Image(2, 1)));
+    QCOMPARE(formatMetrics(m).substr(0, 6), std::string("rmse: "));
+}
+
+void TestCore::metricsExcludeNonFinite() {
+    Image t(3, 1), r(3, 1);
+    t.at(0, 0) = Rgb(NAN, 0, 0);
+    t.at(1, 0) = Rgb(1, 1, 1);
+    r.at(1, 0) = Rgb(1, 1, 1);
+    r.at(2, 0) = Rgb(INFINITY, 0, 0);
+    const ImageMetrics m = compareImages(t, r);
+    QCOMPARE(m.nonfinite, 1L);       // only the test image's non-finite pixels are counted
+    QCOMPARE(m.includedPixels, 1L);  // both are excluded
+    QCOMPARE(m.rmse, 0.0);
+}
+
+void TestCore::taskRunsOffTheCallingThread() {
+    TaskSystem tasks(2);
+    std::thread::id worker;
+    auto h = tasks.submit([&](TaskContext& ctx) {
+        worker = std::this_thread::get_id();
+        ctx.setProgress(1.0);
+    });
+    h->wait();
+    QVERIFY(h->isFinished());
+    QVERIFY(worker != std::this_thread::get_id());
+    QCOMPARE(h->progress(), 1.0);
+}
+
+void TestCore::taskCancellationStopsParallelLoop() {
+    TaskSystem tasks(2);
+    std::atomic<int> done{0};
+    std::atomic<bool> started{false};
+    auto h = tasks.submit([&](TaskContext& ctx) {
+        ctx.parallelFor(0, 100000, [&](int) {
+            started = true;
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+            ++done;
+        });
+    });
+    while (!started) std::this_thread::yield();
+    h->cancel();
+    h->wait();
+    QVERIFY(h->isCancelled());
+    QVERIFY2(done < 100000 / 2, qPrintable(QString::number(done)));
+}
+
+void TestCore::taskExceptionIsKept() {
+    TaskSystem tasks(1);
+    auto h = tasks.submit([](TaskContext&) { throw std::runtime_error("boom"); });
+    h->wait();
+    QVERIFY_THROWS_EXCEPTION(std::runtime_error, h->rethrowIfFailed());
+}
+
+void TestCore::latestKeepsNewest() {
+    Latest<int> latest;
+    QVERIFY(!latest.get());
+    latest.publish(std::make_shared<const int>(1));
+    latest.publish(std::make_shared<const int>(2));
+    QCOMPARE(*latest.get(), 2);
+    QCOMPARE(latest.version(), uint64_t(2));
+}
+
+QTEST_GUILESS_MAIN(TestCore)
+#include "test_core.moc"
