@@ -33,8 +33,9 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
 }  // namespace
 
 LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
-                           float sceneRadius, size_t triangleCount)
-    : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit) {
+                           const V3f& sceneCenter, float sceneRadius, size_t triangleCount)
+    : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit),
+      sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
     std::vector<double> weights;
     weights.reserve(emitters_.size() + deltas_.size());
     for (const auto& e : emitters_) weights.push_back(emitterPower(e));
@@ -104,6 +105,82 @@ bool LightSampler::sampleDelta(const DeltaLight& l, float selectPdf, const Surfa
     out.value = l.intensity * (factor / (dist2 * metersPerUnit_ * metersPerUnit_));
     const V3f from = ref.spawnOrigin(out.wi);
     out.shadowRay = Ray{from, l.position - from, 0.0f, kShadowRayEnd};
+    return true;
+}
+
+SurfacePoint EmissionSample::surface() const {
+    SurfacePoint sp;
+    sp.p = position;
+    sp.pError = pError;
+    sp.ng = normal;
+    sp.triangle = triangle;
+    return sp;
+}
+
+bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect,
+                                  EmissionSample& out) const {
+    if (select_.empty()) return false;
+    size_t index = 0;
+    float selectPdf = 1.0f;
+    if (select_.size() > 1) {
+        index = select_.sample(uSelect);
+        selectPdf = float(select_.pdf(index));
+    }
+    out = EmissionSample();
+    if (index < emitters_.size()) {
+        const EmitterTriangle& e = emitters_[index];
+        const V2f b = squareToUniformTriangle(uPosition);
+        const float b0 = 1.0f - b.x - b.y;
+        out.position = e.p0 * b0 + e.p1 * b.x + e.p2 * b.y;
+        out.pError = interpolationError(e.p0, e.p1, e.p2, b0, b.x, b.y);
+        out.normal = e.normal;
+        out.triangle = e.triangle;
+        const V3f local = squareToCosineHemisphere(uDirection);
+        if (local.z <= 0.0f) return false;
+        out.direction = Frame(e.normal).toWorld(local);
+        out.pdfPosition = selectPdf / e.area;
+        out.pdfDirection = cosineHemispherePdf(local);
+        // Le cos / (pdfPosition pdfDirection) = Le pi area / selectPdf.
+        out.power = e.radiance * (local.z / (out.pdfPosition * out.pdfDirection));
+        return true;
+    }
+    const DeltaLight& l = deltas_[index - emitters_.size()];
+    const float toScene = 1.0f / (metersPerUnit_ * metersPerUnit_);
+    switch (l.type) {
+    case LightType::Point:
+        out.position = l.position;
+        out.direction = squareToUniformSphere(uDirection);
+        out.pdfDirection = uniformSpherePdf();
+        out.power = l.intensity * (toScene / (selectPdf * out.pdfDirection));
+        break;
+    case LightType::Spot: {
+        out.position = l.position;
+        const V3f local = squareToUniformCone(uDirection, l.cosCone);
+        out.direction = Frame(l.direction).toWorld(local);
+        out.pdfDirection = uniformConePdf(l.cosCone);
+        const float factor = l.spotFactor(local.z);
+        if (factor <= 0.0f) return false;
+        out.power = l.intensity * (factor * toScene / (selectPdf * out.pdfDirection));
+        break;
+    }
+    case LightType::Directional: {
+        // A disk of the scene's radius, facing the light, just outside the scene.
+        const V2f d = squareToUniformDisk(uPosition) * sceneRadius_;
+        const Frame frame(l.direction);
+        out.position = sceneCenter_ - l.direction * sceneRadius_ + frame.s * d.x + frame.t * d.y;
+        out.direction = l.direction;
+        out.deltaDirection = true;
+        const float area = kPi * sceneRadius_ * sceneRadius_;
+        out.pdfPosition = selectPdf / area;
+        out.pdfDirection = 0.0f;
+        out.power = l.intensity * (area / selectPdf);
+        out.normal = l.direction;
+        return true;
+    }
+    }
+    out.normal = out.direction;
+    out.deltaPosition = true;
+    out.pdfPosition = selectPdf;
     return true;
 }
 

@@ -39,13 +39,32 @@ struct LightSample {
     Ray shadowRay;   // offset at both ends; occluded() on it decides visibility
 };
 
+// A light particle leaving a light, for light tracing, bidirectional methods and VPLs.
+//
+// Units: every backend works in scene units. A delta light's intensity is divided by
+// meters_per_unit^2 at emission (SPEC.md's E = I cos / (d mpu)^2 with d in scene units), so that
+// the flux of any particle, from any light, is in W per scene-unit^2 of the scene's area measure
+// and the geometric term cos cos / d^2 stays in scene units everywhere.
+struct EmissionSample {
+    V3f position;
+    V3f normal;          // the emitter's front normal; the direction itself for delta lights
+    V3f direction;       // unit, leaving the light
+    Rgb power;           // Le cos / (pdfPosition pdfDirection) or its delta-light equivalent
+    float pdfPosition = 0;   // area measure, light selection included (1 per selection for delta positions)
+    float pdfDirection = 0;  // solid angle (0 for the directional light's delta direction)
+    bool deltaPosition = false, deltaDirection = false;
+    uint32_t triangle = 0xffffffffu;  // the emissive triangle, if any
+    SurfacePoint surface() const;     // the point on an area light, for spawning the first ray
+    V3f pError;
+};
+
 class LightSampler {
 public:
     LightSampler() = default;
     // sceneRadius bounds the geometry (a directional light's power is its irradiance over the
     // scene's cross-section); triangleCount sizes the per-triangle pdf table for MIS.
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
-                 float sceneRadius, size_t triangleCount);
+                 const V3f& sceneCenter, float sceneRadius, size_t triangleCount);
 
     bool empty() const { return emitters_.empty() && deltas_.empty(); }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
@@ -54,6 +73,15 @@ public:
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
     // (back of an emitter, outside a spot's cone, zero power).
     bool sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const;
+
+    // Chooses a light in proportion to power and a particle leaving it: area lights by uniform
+    // position and cosine direction, point lights uniformly over the sphere, spots uniformly over
+    // their cone, directional lights over a disk of the scene's radius facing them. False for a
+    // scene without lights.
+    bool sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect, EmissionSample& out) const;
+    // Total emitted power in the scene's units (selection weights' sum): the normalisation of
+    // light tracing.
+    double totalPower() const { return select_.total(); }
 
     // Solid-angle pdf with which sample() yields the point q (unit normal nq) of emissive
     // triangle `triangle`, seen from p. 0 for a triangle that does not emit.
@@ -69,6 +97,8 @@ private:
     DiscreteDistribution select_;       // over emitters_ then deltas_; unused with one entry
     std::vector<float> areaPdf_;        // by render-scene triangle: selection pdf / area (0: not an emitter)
     float metersPerUnit_ = 1.0f;
+    V3f sceneCenter_{0, 0, 0};
+    float sceneRadius_ = 1.0f;
 };
 
 }  // namespace lucerna

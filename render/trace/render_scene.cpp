@@ -63,7 +63,8 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height)
         DeltaLight d = compileLight(l);
         if (!isBlack(d.intensity)) deltas.push_back(d);
     }
-    lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsRadius_, triangles_.size());
+    lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
+                           triangles_.size());
     accel_ = std::make_unique<EmbreeScene>(positions_, triangles_);
 }
 
