@@ -51,7 +51,10 @@ void MainWindow::showNewestFrame() {
     shownVersion_ = frames_.version();
     shown_ = frames_.get();
     if (!shown_) return;
-    view_->setPixmap(QPixmap::fromImage(toDisplayImage(shown_->image)));
+    // Fit the view, keeping the aspect ratio; upscaling stays sharp so that pixels can be read.
+    const QImage picture = toDisplayImage(shown_->image);
+    const QSize fitted = picture.size().scaled(view_->size(), Qt::KeepAspectRatio);
+    view_->setPixmap(QPixmap::fromImage(picture.scaled(fitted, Qt::IgnoreAspectRatio, Qt::FastTransformation)));
     statusBar()->showMessage(QStringLiteral("%1 spp, %2 s, estimated relmse %3")
                                  .arg(shown_->samplesPerPixel)
                                  .arg(shown_->seconds, 0, 'f', 1)

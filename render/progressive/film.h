@@ -6,9 +6,17 @@
 #include "core/image.h"
 
 #include <array>
+#include <span>
 #include <vector>
 
 namespace lucerna {
+
+// A light-tracing contribution (bidirectional t = 1 strategies) landing on pixel (x, y): the
+// pixel a light subpath's vertex projects to, not the pixel whose camera sample is running.
+struct FilmSplat {
+    int x = 0, y = 0;
+    Rgb value{0, 0, 0};
+};
 
 class Film {
 public:
@@ -22,6 +30,18 @@ public:
     void addSample(int half, int x, int y, const Rgb& radiance) {
         auto& s = sums_[half][size_t(y) * width_ + x];
         s[0] += radiance.x; s[1] += radiance.y; s[2] += radiance.z;
+    }
+    // Adds light-tracing splats to `half`. A pass that traces one light subpath per pixel adds
+    // its splats to the same half as its camera samples, so they share the normalisation: the
+    // half's sum is divided by its sample count like everything else in it. Not thread-safe by
+    // design: each task collects its own list while the pass runs (so tasks never contend), and
+    // the lists are added here after the pass in task order, which also keeps the rounding of
+    // the sums, and so the image, independent of the number of threads.
+    void addSplats(int half, std::span<const FilmSplat> splats) {
+        for (const FilmSplat& s : splats) {
+            auto& sum = sums_[half][size_t(s.y) * width_ + s.x];
+            sum[0] += s.value.x; sum[1] += s.value.y; sum[2] += s.value.z;
+        }
     }
     // Declares that every pixel of `half` received `samplesPerPixel` more samples.
     void finishPass(int half, double samplesPerPixel = 1.0) { samples_[half] += samplesPerPixel; }

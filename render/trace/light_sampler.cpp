@@ -55,6 +55,7 @@ bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, 
         index = select_.sample(uSelect);
         selectPdf = float(select_.pdf(index));
     }
+    out.light = uint32_t(index);
     if (index < emitters_.size()) return sampleEmitter(emitters_[index], selectPdf, ref, u, out);
     return sampleDelta(deltas_[index - emitters_.size()], selectPdf, ref, out);
 }
@@ -68,6 +69,7 @@ bool LightSampler::sampleEmitter(const EmitterTriangle& e, float selectPdf, cons
     q.pError = interpolationError(e.p0, e.p1, e.p2, b0, b.x, b.y);
     q.ng = e.normal;
     q.triangle = e.triangle;
+    out.position = q.p;
     const V3f toLight = q.p - ref.p;
     const float dist2 = toLight.length2();
     if (!(dist2 > 0.0f)) return false;
@@ -92,6 +94,7 @@ bool LightSampler::sampleDelta(const DeltaLight& l, float selectPdf, const Surfa
         out.shadowRay = Ray{ref.spawnOrigin(out.wi), out.wi};
         return true;
     }
+    out.position = l.position;
     const V3f toLight = l.position - ref.p;
     const float dist2 = toLight.length2();
     if (!(dist2 > 0.0f)) return false;
@@ -127,6 +130,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
         selectPdf = float(select_.pdf(index));
     }
     out = EmissionSample();
+    out.light = uint32_t(index);
     if (index < emitters_.size()) {
         const EmitterTriangle& e = emitters_[index];
         const V2f b = squareToUniformTriangle(uPosition);

@@ -37,6 +37,10 @@ struct LightSample {
     float pdf = 0;   // solid angle pdf (area lights), or the selection probability (delta lights)
     bool isDelta = false;
     Ray shadowRay;   // offset at both ends; occluded() on it decides visibility
+    // Which light: emitters()[light], or deltaLights()[light - emitters().size()]; and the point
+    // sampled on it (area, point, spot; unused for directional). Bidirectional MIS needs both.
+    uint32_t light = 0;
+    V3f position{0, 0, 0};
 };
 
 // A light particle leaving a light, for light tracing, bidirectional methods and VPLs.
@@ -55,7 +59,8 @@ struct EmissionSample {
     bool deltaPosition = false, deltaDirection = false;
     uint32_t triangle = 0xffffffffu;  // the emissive triangle, if any
     SurfacePoint surface() const;     // the point on an area light, for spawning the first ray
-    V3f pError;
+    V3f pError{0, 0, 0};              // error bound of position (area lights)
+    uint32_t light = 0;               // which light, numbered as LightSample::light
 };
 
 class LightSampler {

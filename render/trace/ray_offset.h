@@ -5,7 +5,9 @@
 
 #include "core/math.h"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace lucerna {
@@ -26,6 +28,15 @@ inline V3f interpolationError(const V3f& p0, const V3f& p1, const V3f& p2, float
     return (a(p0, b0) + a(p1, b1) + a(p2, b2) + V3f(scale)) * (2.0f * gammaBound(7));
 }
 
+// The next representable float away from zero in the direction of `sign` (finite inputs):
+// std::nextafter without the library call, which showed in profiles.
+inline float nextFloatToward(float v, float sign) {
+    if (v == 0.0f) return sign > 0 ? std::numeric_limits<float>::denorm_min() : -std::numeric_limits<float>::denorm_min();
+    const uint32_t bits = std::bit_cast<uint32_t>(v);
+    const bool away = (v > 0) == (sign > 0);  // moving away from zero increases the magnitude
+    return std::bit_cast<float>(away ? bits + 1 : bits - 1);
+}
+
 // Moves p off its surface (unit geometric normal n) to the side that direction w points to, far
 // enough that the offset point is certainly on that side despite rounding.
 inline V3f offsetRayOrigin(const V3f& p, const V3f& pError, const V3f& n, const V3f& w) {
@@ -33,10 +44,8 @@ inline V3f offsetRayOrigin(const V3f& p, const V3f& pError, const V3f& n, const 
     V3f offset = n * d;
     if (w.dot(n) < 0.0f) offset = -offset;
     V3f po = p + offset;
-    for (int i = 0; i < 3; ++i) {
-        if (offset[i] > 0) po[i] = std::nextafter(po[i], std::numeric_limits<float>::infinity());
-        else if (offset[i] < 0) po[i] = std::nextafter(po[i], -std::numeric_limits<float>::infinity());
-    }
+    for (int i = 0; i < 3; ++i)
+        if (offset[i] != 0.0f) po[i] = nextFloatToward(po[i], offset[i]);
     return po;
 }
 

@@ -3,12 +3,13 @@
 // which is what makes a render reproducible bit for bit with --seed and --threads 1.
 
 #include "core/math.h"
+#include "render/trace/sample_generator.h"
 
 #include <cstdint>
 
 namespace lucerna {
 
-class Rng {
+class Rng final : public SampleGenerator {
 public:
     Rng(uint64_t seed = 0x853c49e6748fea9bULL, uint64_t stream = 0xda3e39cb94b95bdbULL) { seedWith(seed, stream); }
 
@@ -29,8 +30,11 @@ public:
     }
 
     // Uniform in [0, 1), never 1.
-    float next1D() { return float(nextUint() >> 8) * 0x1p-24f; }
-    V2f next2D() { const float a = next1D(); return V2f(a, next1D()); }
+    float next1D() override { return float(nextUint() >> 8) * 0x1p-24f; }
+    V2f next2D() override {
+        const float a = next1D();
+        return V2f(a, next1D());
+    }
     double nextDouble() { return double(nextUint()) * 0x1p-32; }
 
 private:

@@ -6,9 +6,12 @@
 // lights a point y (scene units, no meters_per_unit: see EmissionSample) as a point light of
 // intensity power * f_x(incident, x->y) * cos_x, where f_x is the BSDF of x's material:
 //   L(y -> wo) = f_y(wo, y->x) * power * f_x(incident, x->y) * |cos_x| |cos_y| / |x - y|^2 * V(x, y).
-// VPLs on lights themselves (`onLight`) emit instead: power is the light's radiance-weighted flux and
-// f_x * cos_x is replaced by the emission profile (area light: cos_x / pi; point: 1/(4 pi) ...);
-// backends that treat direct light separately skip them.
+// vpl_contribution.h evaluates exactly this (with an optional clamp of the geometric term).
+//
+// VPLs sit only on non-delta, non-emitting surfaces (diffuse, glossy): never on lights, mirrors or
+// glass. The light a VPL set represents at a gathering point is therefore the INDIRECT light
+// (one bounce or more); direct light is the caller's business (next-event estimation in the CPU
+// backends, the preview's own direct pass).
 
 #include "core/math.h"
 
@@ -24,7 +27,9 @@ struct Vpl {
     Rgb power;             // W in scene units (see EmissionSample), per VPL of the set
     uint32_t material = 0; // render-scene material id of the surface at x
     uint32_t triangle = 0;
-    int bounce = 1;        // 1: lit directly by a light; 2: after one more bounce; ...
+    int bounce = 1;        // surface interactions of the light path up to x, x included:
+                           // 1: lit directly by a light; 2: after one more bounce; ...
+    V3f pError{0, 0, 0};   // floating-point error bound of position, for robust shadow-ray offsets
 };
 
 using VplSet = std::vector<Vpl>;

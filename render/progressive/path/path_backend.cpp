@@ -1,6 +1,7 @@
 #include "render/progressive/path/path_backend.h"
 
 #include "render/progressive/path/path_tracer.h"
+#include "render/trace/sobol_sampler.h"
 
 #include <charconv>
 #include <stdexcept>
@@ -30,15 +31,17 @@ void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint
     const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
     const PathTracer tracer(scene, settings);
     const int half = pass % 2;
-    const uint64_t passSeed = hashSeed(seed, uint64_t(pass));
     ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
         const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
         const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-                Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
-                const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
-                Rgb L = tracer.radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng);
+                // Each half of the film draws from its own scrambled sequence per pixel, so that
+                // the halves stay independent and their difference an honest error estimate.
+                SobolSampler sampler(hashSeed(seed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x), half),
+                                     uint32_t(pass / 2));
+                const V2f jitter = sampler.next2D();  // box filter: uniform over the pixel's square
+                Rgb L = tracer.radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), sampler);
                 if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
                 film.addSample(half, x, y, L);
             }

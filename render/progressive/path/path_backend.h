@@ -1,7 +1,7 @@
 #pragma once
 // The scheduling part of the path backend: tiles of the film rendered in parallel, one sample
-// per pixel per pass, each pixel's random stream fixed by (seed, pass, pixel) so that a render is
-// reproducible whatever the number of threads.
+// per pixel per pass. Each pixel draws from a scrambled Sobol sequence fixed by (seed, pixel,
+// film half), so that a render is reproducible whatever the number of threads.
 
 #include "render/progressive/backend.h"
 
@@ -12,7 +12,7 @@ class RenderScene;
 struct PathSettings;
 
 // One pass over the film: a path per pixel through a uniformly jittered point of the pixel,
-// tiles in parallel. The pixel's random stream depends only on (seed, pass, pixel).
+// tiles in parallel. The pixel's samples depend only on (seed, pass, pixel).
 void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint64_t seed, int pass, Film& film,
                     TaskContext& ctx);
 

@@ -12,7 +12,7 @@ V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
 }  // namespace
 
 Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial& mat, const Frame& frame,
-                                  const V3f& woLocal, Rng& rng) const {
+                                  const V3f& woLocal, SampleGenerator& rng) const {
     LightSample ls;
     const V2f u = rng.next2D();
     const float uSelect = rng.next1D();
@@ -25,7 +25,7 @@ Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial
     return unweighted * powerHeuristic(ls.pdf, bsdfPdf(mat, woLocal, wiLocal));
 }
 
-Rgb PathTracer::radiance(Ray ray, Rng& rng) const {
+Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng) const {
     Rgb L(0, 0, 0), throughput(1, 1, 1);
     bool specularBounce = true;  // the camera ray counts as one: emitters seen directly are not MIS-weighted
     float bsdfPdfPrev = 0.0f;
@@ -35,7 +35,7 @@ Rgb PathTracer::radiance(Ray ray, Rng& rng) const {
         const auto hit = scene_.intersect(ray);
         if (!hit) break;
         const ShadingMaterial& mat = scene_.material(hit->material);
-        const V3f wo = -ray.direction.normalized();
+        const V3f wo = -ray.direction;  // unit: camera and BSDF directions are
 
         if (mat.isEmitter()) {
             if (hit->ng.dot(wo) > 0.0f) {  // one-sided: only the front emits

@@ -5,7 +5,7 @@
 
 #include "render/progressive/path/path_settings.h"
 #include "render/trace/render_scene.h"
-#include "render/trace/rng.h"
+#include "render/trace/sample_generator.h"
 
 namespace lucerna {
 
@@ -14,11 +14,11 @@ public:
     PathTracer(const RenderScene& scene, const PathSettings& settings) : scene_(scene), settings_(settings) {}
 
     // Radiance arriving at the camera along `ray` (W sr^-1 m^-2 per channel).
-    Rgb radiance(Ray ray, Rng& rng) const;
+    Rgb radiance(Ray ray, SampleGenerator& rng) const;
 
 private:
     Rgb nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial& mat, const Frame& frame, const V3f& woLocal,
-                          Rng& rng) const;
+                          SampleGenerator& rng) const;
 
     const RenderScene& scene_;
     PathSettings settings_;

@@ -1,0 +1,198 @@
+#include "render/preview/preview.h"
+
+#include "render/preview/preview_state.h"
+#include "render/preview/preview_vpls.h"
+#include "render/trace/render_scene.h"
+#include "render/trace/rng.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace lucerna {
+
+using namespace preview_detail;
+
+std::string Preview::defaultShaderDirectory() { return std::string(LUCERNA_RESOURCE_DIR) + "/shaders/preview"; }
+
+Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>()), state_(std::make_unique<State>()) {
+    EglContext::ScopedCurrent current(*context_);
+    State& st = *state_;
+    st.shaderDir = std::move(shaderDir);
+    const std::string& d = st.shaderDir;
+    st.gbufferProgram = gl::loadProgram(d, "gbuffer.vert", "gbuffer.frag");
+    st.splitProgram = gl::loadProgram(d, "fullscreen.vert", "split.frag");
+    st.gatherProgram = gl::loadProgram(d, "fullscreen.vert", "gather.frag");
+    st.shadeProgram = gl::loadProgram(d, "fullscreen.vert", "shade_vpl.frag");
+    st.discontinuityProgram = gl::loadProgram(d, "fullscreen.vert", "discontinuity.frag");
+    st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
+    st.directProgram = gl::loadProgram(d, "fullscreen.vert", "direct.frag");
+    st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");
+    st.emptyVao = gl::makeVertexArray();
+    gl::checkErrors("Preview()");
+}
+
+Preview::~Preview() {
+    // GL names must go while the context is current; the context itself goes last.
+    EglContext::ScopedCurrent current(*context_);
+    state_.reset();
+}
+
+const PreviewTimings& Preview::timings() const { return state_->timings; }
+int Preview::vplSetGenerations() const { return state_->generations; }
+
+void Preview::setSettings(const PreviewSettings& s) {
+    const bool regenerateVpls =
+        s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces;
+    const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize;
+    const bool repartition = s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
+                             s.vplShadowSize != settings_.vplShadowSize || s.visibility != settings_.visibility;
+    if (s.patternX < 1 || s.patternY < 1 || s.vplCount < 0 || s.splitBlock < 1)
+        throw std::invalid_argument("preview: pattern, block and VPL count must be positive");
+    settings_ = s;
+    State& st = *state_;
+    st.seed = s.seed;
+    if (regenerateVpls && st.scene && !st.customVpls) regenerate(s.seed);
+    if (relight) st.lightsDirty = true;
+    if (repartition) st.vplsDirty = true;
+}
+
+void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
+    State& st = *state_;
+    st.snapshot = snapshot;
+    st.scene = std::make_unique<RenderScene>(snapshot, width, height);
+    st.camera = snapshot->camera;
+    st.width = st.scene->camera().width();
+    st.height = st.scene->camera().height();
+    st.deltas.clear();
+    for (const Light& l : snapshot->lights) st.deltas.push_back(compileDeltaLight(l));
+    st.customVpls = false;
+
+    // Geometry: non-indexed world-space triangles, per-triangle normal and material.
+    const RenderScene& rs = *st.scene;
+    std::vector<float> positions;
+    std::vector<std::array<float, 4>> tris;
+    positions.reserve(rs.triangleCount() * 9);
+    for (uint32_t i = 0; i < rs.triangleCount(); ++i) {
+        for (const V3f& v : rs.verticesOfTriangle(i)) positions.insert(positions.end(), {v.x, v.y, v.z});
+        const V3f n = rs.normalOfTriangle(i);
+        // The material id rides in a float: exact for any realistic number of materials.
+        const auto mat = uint32_t(&rs.materialOfTriangle(i) - &rs.material(0));
+        tris.push_back({n.x, n.y, n.z, float(mat)});
+    }
+    std::vector<GpuMaterial> mats;
+    for (uint32_t m = 0; m < snapshot->materials.size(); ++m) {
+        const ShadingMaterial& sm = rs.material(m);
+        GpuMaterial g{};
+        put(g.albedoKind, sm.albedo, materialKind(sm.type));
+        put(g.specularAlpha, sm.type == MaterialType::Glossy ? sm.specular : Rgb(0, 0, 0), sm.alpha);
+        put(g.radiance, sm.radiance, 0);
+        mats.push_back(g);
+    }
+    {
+        EglContext::ScopedCurrent current(*context_);
+        upload(st.vertices, positions);
+        upload(st.triangles, tris);
+        upload(st.materials, mats);
+        st.vertexCount = GLsizei(positions.size() / 3);
+        st.sceneVao = gl::makeVertexArray();
+        glVertexArrayVertexBuffer(st.sceneVao.id(), 0, st.vertices.id(), 0, 3 * sizeof(float));
+        glEnableVertexArrayAttrib(st.sceneVao.id(), 0);
+        glVertexArrayAttribFormat(st.sceneVao.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(st.sceneVao.id(), 0, 0);
+    }
+    regenerate(settings_.seed);
+}
+
+void Preview::setCamera(const Camera& camera) {
+    state_->camera = camera;  // the resolution stays what setScene chose
+}
+
+namespace {
+
+// Each light's share of the VPL budget, in proportion to its power (at least one per
+// sub-buffer, so that no sub-buffer misses a light entirely).
+int vplShare(double power, double totalPower, int budget, int subsets) {
+    if (power <= 0 || totalPower <= 0) return 0;
+    return std::max(subsets, int(std::lround(budget * power / totalPower)));
+}
+
+}  // namespace
+
+void Preview::regenerate(uint64_t seed) {
+    State& st = *state_;
+    st.seed = seed;
+    if (!st.scene) return;
+    if (st.customVpls) {
+        st.lightsDirty = true;
+        return;
+    }
+    const int subsets = settings_.patternX * settings_.patternY;
+    std::vector<LightSampler> samplers;
+    std::vector<int> indices;
+    if (!st.scene->lights().emitters().empty()) {
+        samplers.push_back(singleLightSampler(*st.scene, nullptr));
+        indices.push_back(-1);
+    }
+    for (size_t i = 0; i < st.deltas.size(); ++i) {
+        samplers.push_back(singleLightSampler(*st.scene, &st.deltas[i]));
+        indices.push_back(int(i));
+    }
+    double total = 0;
+    for (const LightSampler& s : samplers) total += s.totalPower();
+    st.sets.clear();
+    for (size_t i = 0; i < samplers.size(); ++i) {
+        LightVpls set;
+        set.lightIndex = indices[i];
+        set.count = vplShare(samplers[i].totalPower(), total, settings_.indirect ? settings_.vplCount : 0, subsets);
+        set.vpls = traceVpls(*st.scene, samplers[i], set.count, hashSeed(seed, uint64_t(set.lightIndex + 2)),
+                             settings_.maxBounces);
+        ++st.generations;
+        st.sets.push_back(std::move(set));
+    }
+    st.vplsDirty = st.lightsDirty = true;
+}
+
+void Preview::setLight(size_t index, const Light& light) {
+    State& st = *state_;
+    if (index >= st.deltas.size()) throw std::out_of_range("preview: no light " + std::to_string(index));
+    st.deltas[index] = compileDeltaLight(light);
+    st.lightsDirty = true;
+    if (st.customVpls) return;
+    const LightSampler sampler = singleLightSampler(*st.scene, &st.deltas[index]);
+    double total = 0;
+    for (const LightVpls& s : st.sets)
+        total += s.lightIndex == -1 ? singleLightSampler(*st.scene, nullptr).totalPower()
+                                    : singleLightSampler(*st.scene, &st.deltas[size_t(s.lightIndex)]).totalPower();
+    for (LightVpls& set : st.sets) {
+        if (set.lightIndex != int(index)) continue;
+        set.count = vplShare(sampler.totalPower(), total, settings_.indirect ? settings_.vplCount : 0,
+                             settings_.patternX * settings_.patternY);
+        set.vpls = traceVpls(*st.scene, sampler, set.count, hashSeed(st.seed, uint64_t(index + 2)), settings_.maxBounces);
+        ++st.generations;
+    }
+    st.vplsDirty = true;
+}
+
+void Preview::setVpls(VplSet vpls) {
+    State& st = *state_;
+    st.customVpls = true;
+    st.sets.clear();
+    LightVpls set;
+    set.lightIndex = -2;
+    set.count = int(vpls.size());
+    set.vpls = std::move(vpls);
+    st.sets.push_back(std::move(set));
+    st.vplsDirty = true;
+}
+
+VplSet Preview::vpls() const {
+    VplSet all;
+    for (const LightVpls& s : state_->sets) all.insert(all.end(), s.vpls.begin(), s.vpls.end());
+    return all;
+}
+
+}  // namespace lucerna

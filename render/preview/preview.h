@@ -1,0 +1,103 @@
+#pragma once
+// The interactive preview (seed 002, slides 80 to 95; DESIGN.md "Interleaved sampling with
+// deferred shading"): OpenGL 4.5 core through its own EGL context, a G-buffer drawn once per
+// frame, split into n x m sub-buffers (two passes), each sub-buffer shaded with its own subset of
+// the VPLs in one draw, gathered, blurred over continuous regions, and blended with direct light
+// from shadow-mapped lights. One object serves the GUI and the command line.
+//
+// Threading: the object may be used from any one thread at a time; each call makes the context
+// current and releases it, so task threads can take turns.
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "render/preview/egl_context.h"
+#include "render/vpl/vpl.h"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+
+namespace lucerna {
+
+struct PreviewSettings {
+    int vplCount = 256;            // indirect VPLs over all lights
+    int patternX = 4, patternY = 4;  // interleaving n x m (1 x 1: no interleaving)
+    // The VPL geometric term's 1/d^2 is clamped at this distance, a fraction of the scene's
+    // bounding radius (0: no clamping). It removes the bright spots near VPLs and loses some energy.
+    float clampDistance = 0.05f;
+    bool visibility = false;       // VPL shadow maps (low-resolution cube maps per VPL)
+    int vplShadowSize = 32;        // per cube face
+    bool blur = true;              // the n x m box blur over continuous regions
+    bool twoPassSplit = true;      // split in two passes (blocks, then translation) or in one
+    int splitBlock = 8;            // B of the two-pass split
+    bool direct = true, indirect = true;
+    int areaLightSamples = 16;     // point samples standing for the emissive triangles' direct light
+    int shadowSize = 256;          // direct lights' cube shadow maps, per face
+    int maxBounces = 8;
+    uint64_t seed = 1;
+};
+
+// Milliseconds of the last render(), per pass (glFinish between passes, so they add up).
+struct PreviewTimings {
+    double shadows = 0, gbuffer = 0, split = 0, shading = 0, gather = 0, blur = 0, direct = 0, readback = 0;
+    double total = 0;  // the whole render() call
+};
+
+class Preview {
+public:
+    // The folder holding resources/shaders/preview. Throws std::runtime_error when EGL cannot
+    // give an OpenGL 4.5 core context or a shader does not compile.
+    explicit Preview(std::string shaderDir = defaultShaderDirectory());
+    ~Preview();
+    Preview(const Preview&) = delete;
+    Preview& operator=(const Preview&) = delete;
+
+    static std::string defaultShaderDirectory();
+    const EglContext& context() const { return *context_; }
+
+    // Regenerates VPLs only when what they depend on changes (count, seed, bounces).
+    void setSettings(const PreviewSettings& settings);
+    const PreviewSettings& settings() const { return settings_; }
+
+    // Takes a new scene: geometry, materials, lights; generates every light's VPLs.
+    // width/height override the camera's resolution (0: keep).
+    void setScene(SceneSnapshot scene, int width = 0, int height = 0);
+    // A camera move: no VPL is regenerated.
+    void setCamera(const Camera& camera);
+    // Light `index` of the scene changed (same type of edit as the GUI's): only its VPLs and its
+    // shadow map are regenerated.
+    void setLight(size_t index, const Light& light);
+    // New VPL sets and area-light samples for every light from this seed (progressive passes).
+    void regenerate(uint64_t seed);
+    // Replaces the generated VPLs with exactly these (tests, and MIR's VPLs): one set, split
+    // among the sub-buffers as the generated ones are.
+    void setVpls(VplSet vpls);
+    // Every VPL in use, all lights' sets together, with the power each set gave it.
+    VplSet vpls() const;
+    // How many per-light VPL sets have been generated so far (tests check what a change redoes).
+    int vplSetGenerations() const;
+
+    // Renders a frame with the pixel sample at (x + jitterX, y + jitterY): linear RGB radiance,
+    // SPEC.md conventions (converges to the box filter when passes jitter uniformly).
+    Image render(float jitterX = 0.5f, float jitterY = 0.5f);
+    const PreviewTimings& timings() const;
+
+    // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings and
+    // gathers it back. `split` is the split layout, `gathered` should equal `in`.
+    struct SplitCheck {
+        Image split, gathered;
+        int subWidth = 0, subHeight = 0;  // a tile's size in the split layout
+    };
+    SplitCheck splitAndGather(const Image& in);
+
+    // The GL objects and CPU-side scene data; opaque (defined in preview_state.h) and public
+    // only so that the passes' free functions can take it.
+    struct State;
+
+private:
+    std::unique_ptr<EglContext> context_;
+    std::unique_ptr<State> state_;
+    PreviewSettings settings_;
+};
+
+}  // namespace lucerna

@@ -1,0 +1,395 @@
+// The passes of one preview frame: shadow maps (only when lights or VPLs changed), G-buffer,
+// split, interleaved VPL shading, gather, discontinuity buffer and blur, direct light and blend.
+
+#include "render/preview/preview_state.h"
+#include "render/trace/rng.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace lucerna {
+
+using namespace preview_detail;
+
+namespace {
+
+void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
+    if (st.targetW == w && st.targetH == h && st.patternX == n && st.patternY == m && st.block == block && st.final)
+        return;
+    st.targetW = w;
+    st.targetH = h;
+    st.patternX = n;
+    st.patternY = m;
+    st.block = block;
+    // A tile holds ceil(W / n) x ceil(H / m) texels, rounded up to whole blocks of the two-pass
+    // split; the padding reads as "no surface".
+    st.subW = roundUp((w + n - 1) / n, block);
+    st.subH = roundUp((h + m - 1) / m, block);
+    const int sw = st.splitW(), sh = st.splitH();
+    for (int i = 0; i < 4; ++i) {
+        st.g[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, w, h);
+        st.s[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, sw, sh);
+        st.t[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, sw, sh);
+    }
+    st.depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, w, h);
+    st.gFbo = gl::makeFramebuffer({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id()}, st.depth.id());
+    st.sFbo = gl::makeFramebuffer({st.s[0].id(), st.s[1].id(), st.s[2].id(), st.s[3].id()});
+    st.tFbo = gl::makeFramebuffer({st.t[0].id(), st.t[1].id(), st.t[2].id(), st.t[3].id()});
+    st.indirectSplit = gl::makeTexture2D(GL_RGBA32F, sw, sh);
+    st.indirectSplitFbo = gl::makeFramebuffer({st.indirectSplit.id()});
+    st.indirect = gl::makeTexture2D(GL_RGBA32F, w, h);
+    st.indirectFbo = gl::makeFramebuffer({st.indirect.id()});
+    st.blurTemp = gl::makeTexture2D(GL_RGBA32F, w, h);
+    st.blurFbo = gl::makeFramebuffer({st.blurTemp.id()});
+    st.edges = gl::makeTexture2D(GL_R32F, w, h);
+    st.edgesFbo = gl::makeFramebuffer({st.edges.id()});
+    st.final = gl::makeTexture2D(GL_RGBA32F, w, h);
+    st.finalFbo = gl::makeFramebuffer({st.final.id()});
+    gl::checkErrors("preview targets");
+}
+
+// Draws every centre's six cube faces in one instanced draw (the geometry shader picks layers).
+void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vector<std::array<float, 4>>& centres,
+                       int faceSize) {
+    if (centres.empty()) return;
+    GLint maxLayers = 0;
+    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+    if (int(centres.size()) * 6 > maxLayers)
+        throw std::runtime_error("preview: at most " + std::to_string(maxLayers / 6) +
+                                 " shadow-mapped lights or VPLs on this GPU");
+    target.ensure(faceSize, int(centres.size()));
+    upload(st.shadowCentres, centres);
+    const float radius = st.scene->boundsRadius();
+    const auto faces = cubeFaceMatrices(radius * 1e-3f, radius * 4.0f);
+    glProgramUniformMatrix4fv(st.shadowProgram.id(), loc(st.shadowProgram, "faceProj"), 6, GL_FALSE,
+                              faces[0].m.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
+    glViewport(0, 0, faceSize, faceSize);
+    const float far[4] = {1e30f, 1e30f, 1e30f, 1e30f};
+    glClearNamedFramebufferfv(target.fbo.id(), GL_COLOR, 0, far);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(st.shadowProgram.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.shadowCentres.id());
+    glBindVertexArray(st.sceneVao.id());
+    glDrawArraysInstanced(GL_TRIANGLES, 0, st.vertexCount, GLsizei(centres.size()));
+    glDisable(GL_DEPTH_TEST);
+}
+
+// Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
+// power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
+// estimates all the indirect light.
+void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
+    const int subsets = st.patternX * st.patternY;
+    std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(size_t(subsets));
+    Rng rng(st.seed, 0xde41ULL);
+    int offset = 0;
+    for (const LightVpls& set : st.sets) {
+        std::vector<const Vpl*> order;
+        for (const Vpl& v : set.vpls) order.push_back(&v);
+        for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.nextUint() % i]);
+        std::vector<int> counts(size_t(subsets), 0);
+        for (size_t j = 0; j < order.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
+        for (size_t j = 0; j < order.size(); ++j) {
+            const size_t k = (j + size_t(offset)) % size_t(subsets);
+            buckets[k].push_back({order[j], float(order.size()) / float(counts[k])});
+        }
+        offset += int(order.size());
+    }
+    std::vector<GpuVpl> gpu;
+    std::vector<int> ranges;
+    std::vector<std::array<float, 4>> centres;
+    const float lift = st.scene->boundsRadius() * 1e-4f;
+    for (const auto& bucket : buckets) {
+        ranges.push_back(int(gpu.size()));
+        ranges.push_back(int(bucket.size()));
+        for (const auto& [v, scale] : bucket) {
+            const ShadingMaterial& m = st.scene->material(v->material);
+            GpuVpl g{};
+            put(g.positionIndex, v->position, float(gpu.size()));
+            put(g.normalAlpha, v->normal, m.alpha);
+            put(g.incident, v->incident, 0);
+            put(g.power, v->power * scale, 0);
+            put(g.albedo, m.albedo, 0);
+            put(g.specular, m.type == MaterialType::Glossy ? m.specular : Rgb(0, 0, 0), 0);
+            // The shadow map's centre sits just off the surface so the surface does not shadow it.
+            const V3f c = v->position + v->normal * lift;
+            centres.push_back({c.x, c.y, c.z, float(gpu.size())});
+            gpu.push_back(g);
+        }
+    }
+    upload(st.vplBuffer, gpu);
+    upload(st.rangeBuffer, ranges);
+    st.uploadedVplCount = int(gpu.size());
+    if (settings.visibility) renderCubeShadows(st, st.vplShadows, centres, settings.vplShadowSize);
+    st.vplsDirty = false;
+}
+
+// Direct lights: the scene's delta lights, and point samples on the emissive triangles chosen in
+// proportion to area times luminance, stratified, each lighting as Le / (samples pdf_area).
+void uploadLights(Preview::State& st, const PreviewSettings& settings) {
+    std::vector<GpuLight> lights;
+    std::vector<std::array<float, 4>> centres;
+    const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
+    for (const DeltaLight& d : st.deltas) {
+        GpuLight g{};
+        const float kind = d.type == LightType::Point ? 0.0f : d.type == LightType::Spot ? 1.0f : 2.0f;
+        put(g.positionKind, d.position, kind);
+        put(g.directionCosCone, d.direction, d.cosCone);
+        put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
+            d.cosFalloffStart);
+        // No shadow map for a directional light yet (it would need an orthographic one).
+        float layer = -1.0f;
+        if (d.type != LightType::Directional) {
+            layer = float(centres.size());
+            centres.push_back({d.position.x, d.position.y, d.position.z, layer});
+        }
+        put(g.normalShadow, V3f(0, 0, 0), layer);
+        lights.push_back(g);
+    }
+    const auto& emitters = st.scene->lights().emitters();
+    if (!emitters.empty() && settings.areaLightSamples > 0) {
+        std::vector<double> cdf;
+        double total = 0;
+        for (const EmitterTriangle& e : emitters) cdf.push_back(total += e.area * std::max(1e-6f, luminance(e.radiance)));
+        Rng rng(st.seed, 0xa4ea11ULL);
+        const int n = settings.areaLightSamples;
+        const float lift = st.scene->boundsRadius() * 1e-4f;
+        for (int i = 0; i < n; ++i) {
+            const double u = (i + rng.nextDouble()) / n;  // stratified over the emitters' power
+            const size_t k = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), u * total) - cdf.begin()),
+                                      emitters.size() - 1);
+            const EmitterTriangle& e = emitters[k];
+            float b1 = rng.next1D(), b2 = rng.next1D();
+            if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
+            const V3f p = e.p0 * (1.0f - b1 - b2) + e.p1 * b1 + e.p2 * b2;
+            const double weight = e.area * std::max(1e-6f, luminance(e.radiance));
+            const float pdfArea = float(weight / total / e.area);
+            GpuLight g{};
+            put(g.positionKind, p, 3.0f);
+            put(g.intensityCosFalloff, e.radiance * (1.0f / (float(n) * pdfArea)), 0);
+            const float layer = float(centres.size());
+            const V3f c = p + e.normal * lift;
+            centres.push_back({c.x, c.y, c.z, layer});
+            put(g.normalShadow, e.normal, layer);
+            lights.push_back(g);
+        }
+    }
+    upload(st.lightBuffer, lights);
+    st.directLights = std::move(lights);
+    renderCubeShadows(st, st.directShadows, centres, settings.shadowSize);
+    st.directShadowCubes = int(centres.size());
+    st.lightsDirty = false;
+}
+
+// The SPEC.md pinhole projection: pixel (i, j) shows the raster point (i + jx, j + jy). Rows are
+// stored top first (NDC y is flipped), so texel rows match Image rows.
+Mat4 viewProjection(const Camera& camera, int w, int h, float jx, float jy, float nearZ, float farZ) {
+    const V3d fd = (camera.target - camera.position).normalized();
+    const V3d rd = fd.cross(camera.up).normalized();
+    const V3d ud = rd.cross(fd);
+    const float t = float(std::tan(radians(camera.fovYDeg) * 0.5));
+    const float aspect = float(w) / float(h);
+    const V3f f = toFloat(fd), r = toFloat(rd), u = toFloat(ud), e = toFloat(camera.position);
+    const float ox = (1.0f - 2.0f * jx) / float(w), oy = (1.0f - 2.0f * jy) / float(h);
+    const float a = (farZ + nearZ) / (farZ - nearZ), b = -2.0f * farZ * nearZ / (farZ - nearZ);
+    Mat4 m;
+    const V3f row0 = r / (t * aspect) + f * ox, row1 = -u / t + f * oy;
+    m.setRow(0, row0, -row0.dot(e));
+    m.setRow(1, row1, -row1.dot(e));
+    m.setRow(2, f * a, -a * f.dot(e) + b);
+    m.setRow(3, f, -f.dot(e));
+    return m;
+}
+
+void bindTextures(std::initializer_list<GLuint> textures) {
+    GLuint unit = 0;
+    for (GLuint t : textures) glBindTextureUnit(unit++, t);
+}
+
+void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH) {
+    const gl::Program& p = st.splitProgram;
+    glUseProgram(p.id());
+    setIvec2(p, "pattern", st.patternX, st.patternY);
+    setIvec2(p, "subSize", st.subW, st.subH);
+    setInt(p, "blockSize", st.block);
+    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id()});
+    if (!twoPass) {
+        setInt(p, "mode", 0);
+        setIvec2(p, "sourceSize", sourceW, sourceH);
+        drawFullscreen(st.sFbo.id(), st.splitW(), st.splitH());
+        return;
+    }
+    setInt(p, "mode", 1);
+    setIvec2(p, "sourceSize", sourceW, sourceH);
+    drawFullscreen(st.tFbo.id(), st.splitW(), st.splitH());
+    setInt(p, "mode", 2);
+    setIvec2(p, "sourceSize", st.splitW(), st.splitH());
+    bindTextures({st.t[0].id(), st.t[1].id(), st.t[2].id(), st.t[3].id()});
+    drawFullscreen(st.sFbo.id(), st.splitW(), st.splitH());
+}
+
+void runGather(Preview::State& st, GLuint splitTexture) {
+    const gl::Program& p = st.gatherProgram;
+    glUseProgram(p.id());
+    setIvec2(p, "pattern", st.patternX, st.patternY);
+    setIvec2(p, "subSize", st.subW, st.subH);
+    bindTextures({splitTexture});
+    drawFullscreen(st.indirectFbo.id(), st.targetW, st.targetH);
+}
+
+Image readBack(GLuint texture, int w, int h) {
+    std::vector<float> rgba(size_t(w) * size_t(h) * 4);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    Image img(w, h);
+    for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Rgb(rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]);
+    return img;
+}
+
+}  // namespace
+
+Image Preview::render(float jitterX, float jitterY) {
+    State& st = *state_;
+    if (!st.scene) throw std::logic_error("preview: render() before setScene()");
+    EglContext::ScopedCurrent current(*context_);
+    const auto start = Clock::now();
+    auto mark = start;
+    const auto lap = [&](double& slot) {
+        glFinish();  // honest per-pass times: llvmpipe and GPUs both run asynchronously
+        const auto now = Clock::now();
+        slot = std::chrono::duration<double, std::milli>(now - mark).count();
+        mark = now;
+    };
+    PreviewTimings& tm = st.timings;
+    tm = PreviewTimings();
+    const PreviewSettings& s = settings_;
+    const int w = st.width, h = st.height;
+    const int subsets = s.patternX * s.patternY;
+    const bool interleaved = subsets > 1;
+    ensureTargets(st, w, h, s.patternX, s.patternY, s.twoPassSplit ? s.splitBlock : 1);
+    if (st.vplsDirty) uploadVpls(st, s);
+    if (st.lightsDirty) uploadLights(st, s);
+    lap(tm.shadows);
+
+    // G-buffer.
+    const float radius = st.scene->boundsRadius();
+    const float dist = (toFloat(st.camera.position) - st.scene->boundsCenter()).length();
+    const float farZ = dist + radius * 1.01f;
+    const float nearZ = std::max((dist - radius) * 0.9f, farZ * 1e-5f);
+    const Mat4 vp = viewProjection(st.camera, w, h, jitterX, jitterY, nearZ, farZ);
+    const V3f eye = toFloat(st.camera.position);
+    glBindFramebuffer(GL_FRAMEBUFFER, st.gFbo.id());
+    glViewport(0, 0, w, h);
+    const float zero[4] = {0, 0, 0, 0};
+    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(st.gFbo.id(), GL_COLOR, i, zero);
+    const float one = 1.0f;
+    glClearNamedFramebufferfv(st.gFbo.id(), GL_DEPTH, 0, &one);
+    glEnable(GL_DEPTH_TEST);
+    glUseProgram(st.gbufferProgram.id());
+    glProgramUniformMatrix4fv(st.gbufferProgram.id(), loc(st.gbufferProgram, "viewProj"), 1, GL_FALSE, vp.m.data());
+    setVec3(st.gbufferProgram, "cameraPos", eye);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.triangles.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.materials.id());
+    glBindVertexArray(st.sceneVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, st.vertexCount);
+    glDisable(GL_DEPTH_TEST);
+    glBindVertexArray(st.emptyVao.id());
+    lap(tm.gbuffer);
+
+    const bool indirect = s.indirect && st.uploadedVplCount > 0;
+    if (indirect) {
+        if (interleaved) runSplit(st, s.twoPassSplit, w, h);
+        lap(tm.split);
+
+        const gl::Program& p = st.shadeProgram;
+        glUseProgram(p.id());
+        setIvec2(p, "pattern", st.patternX, st.patternY);
+        setIvec2(p, "subSize", interleaved ? st.subW : w, interleaved ? st.subH : h);
+        setVec3(p, "cameraPos", eye);
+        const float clampDistance = s.clampDistance * radius;
+        setFloat(p, "clampDistance2", clampDistance * clampDistance);
+        setInt(p, "visibility", s.visibility ? 1 : 0);
+        setFloat(p, "shadowBias", 0.03f);
+        const auto& src = interleaved ? st.s : st.g;
+        bindTextures({src[0].id(), src[1].id(), src[2].id(), src[3].id(), st.vplShadows.distance.id()});
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.rangeBuffer.id());
+        if (interleaved)
+            drawFullscreen(st.indirectSplitFbo.id(), st.splitW(), st.splitH());
+        else
+            drawFullscreen(st.indirectFbo.id(), w, h);
+        lap(tm.shading);
+
+        if (interleaved) runGather(st, st.indirectSplit.id());
+        lap(tm.gather);
+
+        if (interleaved && s.blur) {
+            const gl::Program& d = st.discontinuityProgram;
+            glUseProgram(d.id());
+            setFloat(d, "depthTolerance", 0.05f);
+            setFloat(d, "normalTolerance", 0.9f);
+            bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id()});
+            drawFullscreen(st.edgesFbo.id(), w, h);
+            const gl::Program& b = st.blurProgram;
+            glUseProgram(b.id());
+            setIvec2(b, "axis", 1, 0);
+            setInt(b, "boxWidth", st.patternX);
+            bindTextures({st.indirect.id(), st.edges.id()});
+            drawFullscreen(st.blurFbo.id(), w, h);
+            setIvec2(b, "axis", 0, 1);
+            setInt(b, "boxWidth", st.patternY);
+            bindTextures({st.blurTemp.id(), st.edges.id()});
+            drawFullscreen(st.indirectFbo.id(), w, h);
+        }
+        lap(tm.blur);
+    }
+
+    const gl::Program& d = st.directProgram;
+    glUseProgram(d.id());
+    setInt(d, "lightCount", int(st.directLights.size()));
+    setVec3(d, "cameraPos", eye);
+    setFloat(d, "shadowBias", 0.02f);
+    setInt(d, "addIndirect", indirect ? 1 : 0);
+    setInt(d, "addDirect", s.direct ? 1 : 0);
+    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id(), st.indirect.id(), st.directShadows.distance.id()});
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
+    drawFullscreen(st.finalFbo.id(), w, h);
+    lap(tm.direct);
+
+    Image image = readBack(st.final.id(), w, h);
+    gl::checkErrors("Preview::render");
+    lap(tm.readback);
+    tm.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    image.attributes["lucerna:backend"] = "preview";
+    return image;
+}
+
+Preview::SplitCheck Preview::splitAndGather(const Image& in) {
+    State& st = *state_;
+    EglContext::ScopedCurrent current(*context_);
+    const PreviewSettings& s = settings_;
+    ensureTargets(st, in.width, in.height, s.patternX, s.patternY, s.twoPassSplit ? s.splitBlock : 1);
+    std::vector<float> rgba(in.pixels.size() * 4);
+    for (size_t i = 0; i < in.pixels.size(); ++i) {
+        rgba[i * 4] = in.pixels[i].x;
+        rgba[i * 4 + 1] = in.pixels[i].y;
+        rgba[i * 4 + 2] = in.pixels[i].z;
+        rgba[i * 4 + 3] = float(i);
+    }
+    for (int k = 0; k < 4; ++k)
+        glTextureSubImage2D(st.g[size_t(k)].id(), 0, 0, 0, in.width, in.height, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindVertexArray(st.emptyVao.id());
+    runSplit(st, s.twoPassSplit, in.width, in.height);
+    SplitCheck out;
+    out.split = readBack(st.s[0].id(), st.splitW(), st.splitH());
+    runGather(st, st.s[0].id());
+    out.gathered = readBack(st.indirect.id(), in.width, in.height);
+    out.subWidth = st.subW;
+    out.subHeight = st.subH;
+    gl::checkErrors("Preview::splitAndGather");
+    return out;
+}
+
+}  // namespace lucerna

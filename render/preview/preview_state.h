@@ -1,0 +1,157 @@
+#pragma once
+// Private to the preview's sources (preview.cpp: scene and VPLs; preview_frame.cpp: the passes):
+// the GL objects and CPU-side data behind Preview, and the GPU buffer layouts the shaders mirror.
+
+#include "render/preview/gl_objects.h"
+#include "render/preview/preview.h"
+#include "render/preview/preview_vpls.h"
+#include "render/trace/render_scene.h"
+
+#include <array>
+#include <chrono>
+#include <memory>
+#include <vector>
+
+namespace lucerna {
+
+namespace preview_detail {
+
+using Clock = std::chrono::steady_clock;
+
+// A 4x4 matrix for column vectors, stored column-major as GLSL expects.
+struct Mat4 {
+    std::array<float, 16> m{};
+    float& at(int row, int col) { return m[size_t(col * 4 + row)]; }
+    void setRow(int row, const V3f& v, float w) {
+        at(row, 0) = v.x;
+        at(row, 1) = v.y;
+        at(row, 2) = v.z;
+        at(row, 3) = w;
+    }
+};
+
+// The six cube faces' view-projections for a light at the origin, in GL's cube map order and
+// orientation, so that texture(samplerCubeArray, vec4(dir, i)) finds what was drawn along dir.
+inline std::array<Mat4, 6> cubeFaceMatrices(float nearZ, float farZ) {
+    const V3f fwd[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    const V3f up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    std::array<Mat4, 6> out;
+    const float a = (farZ + nearZ) / (farZ - nearZ), b = -2.0f * farZ * nearZ / (farZ - nearZ);
+    for (int i = 0; i < 6; ++i) {
+        const V3f f = fwd[i], s = f.cross(up[i]).normalized(), u = s.cross(f);
+        // 90 degrees, aspect 1: x_c = s.p, y_c = u.p, w_c = f.p.
+        out[i].setRow(0, s, 0);
+        out[i].setRow(1, u, 0);
+        out[i].setRow(2, f * a, b);
+        out[i].setRow(3, f, 0);
+    }
+    return out;
+}
+
+// GPU layouts (std430), mirrored by the shaders.
+struct GpuMaterial { float albedoKind[4], specularAlpha[4], radiance[4]; };
+struct GpuVpl { float positionIndex[4], normalAlpha[4], incident[4], power[4], albedo[4], specular[4]; };
+struct GpuLight { float positionKind[4], directionCosCone[4], intensityCosFalloff[4], normalShadow[4]; };
+
+inline void put(float* dst, const V3f& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
+inline void put(float* dst, const Rgb& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
+
+inline float materialKind(MaterialType t) {
+    switch (t) {
+    case MaterialType::Diffuse:
+    case MaterialType::Glossy: return 1.0f;
+    case MaterialType::Emitter: return 2.0f;
+    default: return 3.0f;  // mirror, glass: no preview model, drawn black
+    }
+}
+
+inline int roundUp(int v, int multiple) { return (v + multiple - 1) / multiple * multiple; }
+
+// Per light, the VPLs it gave: lightIndex -1 is all emissive triangles together, -2 a set given
+// by setVpls.
+struct LightVpls {
+    int lightIndex = -1;
+    int count = 0;
+    VplSet vpls;
+};
+
+// A cube-map-array shadow target: distances in R32F, depth for the z-test, layered.
+struct CubeShadows {
+    gl::Texture distance, depth;
+    gl::Framebuffer fbo;
+    int size = 0, cubes = 0;
+
+    void ensure(int faceSize, int cubeCount) {
+        if (faceSize == size && cubeCount <= cubes && distance) return;
+        size = faceSize;
+        cubes = std::max(cubeCount, 1);
+        distance = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
+        glTextureStorage3D(distance.id(), 1, GL_R32F, size, size, cubes * 6);
+        glTextureParameteri(distance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(distance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        depth = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
+        glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, cubes * 6);
+        fbo = gl::makeFramebuffer({distance.id()}, depth.id());
+    }
+};
+
+inline GLint loc(const gl::Program& p, const char* name) { return glGetUniformLocation(p.id(), name); }
+inline void setInt(const gl::Program& p, const char* n, int v) { glProgramUniform1i(p.id(), loc(p, n), v); }
+inline void setFloat(const gl::Program& p, const char* n, float v) { glProgramUniform1f(p.id(), loc(p, n), v); }
+inline void setIvec2(const gl::Program& p, const char* n, int a, int b) { glProgramUniform2i(p.id(), loc(p, n), a, b); }
+inline void setVec3(const gl::Program& p, const char* n, const V3f& v) { glProgramUniform3f(p.id(), loc(p, n), v.x, v.y, v.z); }
+
+inline void drawFullscreen(GLuint fbo, int w, int h) {
+    glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+    glViewport(0, 0, w, h);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+template <typename T>
+void upload(gl::Buffer& buffer, const std::vector<T>& data) {
+    // Fresh storage each time: sizes change with the scene, and immutable storage cannot grow.
+    buffer = gl::makeBuffer();
+    glNamedBufferStorage(buffer.id(), GLsizeiptr(std::max<size_t>(data.size() * sizeof(T), 16)),
+                         data.empty() ? nullptr : data.data(), 0);
+}
+
+}  // namespace preview_detail
+
+struct Preview::State {
+    std::string shaderDir;
+    gl::Program gbufferProgram, splitProgram, gatherProgram, shadeProgram, discontinuityProgram, blurProgram,
+        directProgram, shadowProgram;
+    gl::VertexArray emptyVao, sceneVao;
+    gl::Buffer vertices, triangles, materials, vplBuffer, rangeBuffer, lightBuffer, shadowCentres;
+    GLsizei vertexCount = 0;
+
+    // Scene.
+    SceneSnapshot snapshot;
+    std::unique_ptr<RenderScene> scene;
+    Camera camera;
+    int width = 0, height = 0;
+    std::vector<DeltaLight> deltas;  // by scene light index
+    std::vector<preview_detail::LightVpls> sets;
+    bool customVpls = false;
+    int generations = 0;
+    std::vector<preview_detail::GpuLight> directLights;
+    bool vplsDirty = true, lightsDirty = true;
+    uint64_t seed = 1;
+
+    // Frame targets.
+    int targetW = 0, targetH = 0, patternX = 0, patternY = 0, block = 0;
+    int subW = 0, subH = 0;
+    std::array<gl::Texture, 4> g, s, t;
+    gl::Texture depth, indirectSplit, indirect, blurTemp, edges, final;
+    gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, edgesFbo, finalFbo;
+    preview_detail::CubeShadows directShadows, vplShadows;
+    int directShadowCubes = 0;
+    std::vector<int> ranges;  // (first, count) per sub-buffer
+    int uploadedVplCount = 0;
+    PreviewTimings timings;
+
+    int splitW() const { return subW * patternX; }
+    int splitH() const { return subH * patternY; }
+};
+
+}  // namespace lucerna

@@ -1,0 +1,28 @@
+#pragma once
+// VPL generation for the preview, one set per light so that editing one light regenerates only
+// its set. Light particles are traced with Embree through the render scene; a VPL is stored at
+// every diffuse or glossy hit (the light that arrived there), so the sets stand for indirect
+// light only: the preview draws direct light itself, with shadow maps.
+//
+// Until the shared instant-radiosity generator (render/vpl/instant_radiosity.h) is in, this is the
+// preview's own small tracer; it follows the same Vpl conventions (render/vpl/vpl.h).
+
+#include "core/scene.h"
+#include "render/trace/light_sampler.h"
+#include "render/trace/render_scene.h"
+#include "render/vpl/vpl.h"
+
+namespace lucerna {
+
+// The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2).
+DeltaLight compileDeltaLight(const Light& light);
+
+// A light sampler over exactly one light: a delta light, or all emissive triangles together.
+LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delta);
+
+// Traces light paths from `source` until `count` VPLs are stored (or a path budget of 64 count
+// runs out) and divides every VPL's power by the number of paths traced, so the set's sum is an
+// estimate of the light's indirect contribution. Deterministic in seed.
+VplSet traceVpls(const RenderScene& scene, const LightSampler& source, int count, uint64_t seed, int maxBounces = 8);
+
+}  // namespace lucerna

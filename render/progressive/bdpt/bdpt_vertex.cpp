@@ -1,0 +1,109 @@
+#include "render/progressive/bdpt/bdpt_vertex.h"
+
+#include "render/trace/warp.h"
+
+namespace lucerna {
+
+VertexDensities::VertexDensities(const RenderScene& scene)
+    : scene_(scene), directionalDiskPdf_(1.0f / (kPi * scene.boundsRadius() * scene.boundsRadius())) {}
+
+float VertexDensities::toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
+    const V3f w = to.p() - from.p();
+    const float dist2 = w.length2();
+    if (!(dist2 > 0.0f)) return 0.0f;
+    float pdf = pdfSolidAngle / dist2;
+    if (to.onSurface()) pdf *= std::abs(to.sp.ng.dot(w)) / std::sqrt(dist2);
+    return pdf;
+}
+
+float VertexDensities::cameraPdfDirection(const V3f& dir) const {
+    const PinholeCamera& camera = scene_.camera();
+    float x, y;
+    if (!camera.rasterPoint(dir, x, y)) return 0.0f;
+    const float cosTheta = dir.dot(camera.forward());
+    return 1.0f / (camera.imagePlaneArea() * cosTheta * cosTheta * cosTheta);
+}
+
+float VertexDensities::bsdfPdf(const PathVertex& v, const V3f& wFrom, const V3f& wTo) const {
+    const ShadingMaterial& mat = scene_.material(v.sp.material);
+    const Frame frame(shadingNormalToward(mat, v.sp.ng, wFrom));
+    return lucerna::bsdfPdf(mat, frame.toLocal(wFrom), frame.toLocal(wTo));
+}
+
+Rgb VertexDensities::bsdf(const PathVertex& v, const V3f& wi) const {
+    const ShadingMaterial& mat = scene_.material(v.sp.material);
+    const Frame frame(shadingNormalToward(mat, v.sp.ng, v.wo));
+    return bsdfEval(mat, frame.toLocal(v.wo), frame.toLocal(wi));
+}
+
+float VertexDensities::pdf(const PathVertex& v, const PathVertex* prev, const PathVertex& next) const {
+    if (v.kind != VertexKind::Camera && v.kind != VertexKind::Surface) return pdfLight(v, next);
+    const V3f d = next.p() - v.p();
+    const float len = d.length();
+    if (!(len > 0.0f)) return 0.0f;
+    const V3f wn = d / len;
+    if (v.kind == VertexKind::Camera) return toArea(cameraPdfDirection(wn), v, next);
+    if (!prev) return 0.0f;
+    const V3f wp = (prev->p() - v.p()).normalized();
+    return toArea(bsdfPdf(v, wp, wn), v, next);
+}
+
+float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) const {
+    const V3f d = next.p() - v.p();
+    const float dist2 = d.length2();
+    if (!(dist2 > 0.0f)) return 0.0f;
+    const V3f w = d / std::sqrt(dist2);
+    float pdf = 0.0f;
+    switch (v.kind) {
+    case VertexKind::Surface:  // an emitter hit by a camera subpath: cosine-weighted emission
+    case VertexKind::AreaLight: {
+        const float cosLight = v.sp.ng.dot(w);
+        if (cosLight <= 0.0f) return 0.0f;
+        pdf = cosLight * kInvPi / dist2;
+        break;
+    }
+    case VertexKind::PointLight: pdf = uniformSpherePdf() / dist2; break;
+    case VertexKind::SpotLight: {
+        const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
+        if (w.dot(l.direction) < l.cosCone) return 0.0f;
+        pdf = uniformConePdf(l.cosCone) / dist2;
+        break;
+    }
+    case VertexKind::DirectionalLight: {
+        // Parallel rays from a disk: the area density on the disk, projected (no 1/d^2).
+        const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
+        return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(l.direction)) : directionalDiskPdf_;
+    }
+    case VertexKind::Camera: return 0.0f;
+    }
+    if (next.onSurface()) pdf *= std::abs(next.sp.ng.dot(w));
+    return pdf;
+}
+
+float VertexDensities::pdfLightOrigin(const PathVertex& v) const {
+    if (v.kind != VertexKind::AreaLight && v.kind != VertexKind::Surface) return 0.0f;
+    // pdfEmitter is selection / area * d^2 / cos; seen from one unit along the normal it is the
+    // area density itself, the same one sample() and sampleEmission() draw positions with.
+    return scene_.lights().pdfEmitter(v.sp.triangle, v.p() + v.sp.ng, v.p(), v.sp.ng);
+}
+
+Rgb VertexDensities::emitted(const PathVertex& v, const V3f& w) const {
+    const LightSampler& lights = scene_.lights();
+    switch (v.kind) {
+    case VertexKind::Surface:
+    case VertexKind::AreaLight: {
+        const ShadingMaterial& mat = scene_.materialOfTriangle(v.sp.triangle);
+        return mat.isEmitter() && v.sp.ng.dot(w) > 0.0f ? mat.radiance : Rgb(0, 0, 0);
+    }
+    case VertexKind::PointLight:
+    case VertexKind::SpotLight: {
+        const DeltaLight& l = lights.deltaLights()[v.light - lights.emitters().size()];
+        const float mpu = scene_.metersPerUnit();
+        const float factor = v.kind == VertexKind::SpotLight ? l.spotFactor(w.dot(l.direction)) : 1.0f;
+        return l.intensity * (factor / (mpu * mpu));
+    }
+    default: return Rgb(0, 0, 0);
+    }
+}
+
+}  // namespace lucerna

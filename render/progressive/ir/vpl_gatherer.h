@@ -1,0 +1,60 @@
+#pragma once
+// The camera side of instant radiosity, shared by `ir` and `mir`: the radiance along a camera ray
+// as
+//   L = (emitters seen directly or through mirrors and glass)
+//     + direct light at the first diffuse/glossy vertex x1 (next-event estimation and a BSDF
+//       sample, combined by the power heuristic, as the path backend does)
+//     + indirect light at x1 from the VPLs, geometric term clamped to maxG
+//     + the clamped-away residual (Kollig & Keller 2004): the same BSDF sample, when it hits a
+//       diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
+//       tracing; when it hits a mirror or glass, continued by path tracing unweighted (VPL
+//       connections are straight segments, so light reaching x1 through a specular surface is
+//       not in the VPL term).
+// Since  int f L G V dA = int f L min(G, b) V dA + int f L G max(0, 1 - b/G) V dA,  the sum is
+// consistent whatever the clamp: the VPLs estimate the first integral, the paths the second.
+
+#include "render/progressive/ir/ir_settings.h"
+#include "render/progressive/path/path_tracer.h"
+#include "render/trace/rng.h"
+#include "render/vpl/vpl_contribution.h"
+
+#include <span>
+
+namespace lucerna {
+
+// The first non-specular vertex of a camera path (through mirrors and glass).
+struct CameraVertex {
+    bool found = false;
+    VplReceiver receiver;         // x1, its material, the direction back along the path
+    Rgb throughput{1, 1, 1};      // of the specular chain before x1
+    Rgb emitted{0, 0, 0};         // emitters seen directly or through the specular chain
+};
+
+// Follows `ray` through delta surfaces (drawing 3 numbers per delta bounce from u) to the first
+// diffuse/glossy vertex.
+CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth);
+
+class VplGatherer {
+public:
+    VplGatherer(const RenderScene& scene, const GatherSettings& settings);
+
+    float maxG() const { return maxG_; }
+
+    // Radiance along a camera ray; the VPL term is sum_i scale[i] * contribution_i (scale empty:
+    // all 1).
+    Rgb radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
+
+    // Adds to perVpl[i] the luminance that VPL i (clamped, visibility included) sends along the
+    // camera ray: the image contribution of each VPL, for the Metropolis backend's normalisation.
+    void addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const;
+
+private:
+    Rgb directAndResidual(const CameraVertex& cv, Rng& rng) const;
+
+    const RenderScene& scene_;
+    GatherSettings settings_;
+    PathTracer pathTracer_;
+    float maxG_;
+};
+
+}  // namespace lucerna

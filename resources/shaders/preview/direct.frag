@@ -1,0 +1,65 @@
+#version 450 core
+// Direct light and the final blend: emitters show their radiance; shaded surfaces get the direct
+// light of every point, spot and directional light and of the area lights' point samples, with
+// cube shadow maps, plus the (blurred) indirect light.
+#include_brdf
+// kind: 0 point, 1 spot, 2 directional, 3 area-light sample. intensity is W/sr in scene units
+// (divided by meters_per_unit^2), irradiance for a directional light, and for an area sample
+// Le / (samples pdf_area) so that it lights like a one-sided cos-weighted point light.
+struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
+layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
+uniform int lightCount;
+uniform vec3 cameraPos;
+uniform float shadowBias;
+uniform int addIndirect;
+uniform int addDirect;
+layout(binding = 0) uniform sampler2D g0Tex;
+layout(binding = 1) uniform sampler2D g1Tex;
+layout(binding = 2) uniform sampler2D g2Tex;
+layout(binding = 3) uniform sampler2D g3Tex;
+layout(binding = 4) uniform sampler2D indirectTex;
+layout(binding = 5) uniform samplerCubeArray shadows;
+layout(location = 0) out vec4 result;
+
+float spotFactor(float cosTheta, float cosCone, float cosFalloff) {
+    if (cosFalloff <= cosCone) return cosTheta >= cosCone ? 1.0 : 0.0;  // a hard edge
+    const float t = clamp((cosTheta - cosCone) / (cosFalloff - cosCone), 0.0, 1.0);
+    return t * t * (3.0 - 2.0 * t);
+}
+
+void main() {
+    const ivec2 p = ivec2(gl_FragCoord.xy);
+    const vec4 g0 = texelFetch(g0Tex, p, 0);
+    const vec4 g2 = texelFetch(g2Tex, p, 0);
+    if (g0.w == 2.0) { result = vec4(g2.rgb, 1.0); return; }
+    if (g0.w != 1.0) { result = vec4(0.0, 0.0, 0.0, 1.0); return; }
+    const vec4 g1 = texelFetch(g1Tex, p, 0), g3 = texelFetch(g3Tex, p, 0);
+    const vec3 y = g0.xyz, n = g1.xyz, wo = normalize(cameraPos - y);
+    vec3 sum = addIndirect != 0 ? texelFetch(indirectTex, p, 0).rgb : vec3(0.0);
+    for (int i = 0; i < lightCount * addDirect; ++i) {
+        const Light l = lights[i];
+        const int kind = int(l.positionKind.w);
+        vec3 wi;
+        float scale;
+        if (kind == 2) {
+            wi = -l.directionCosCone.xyz;
+            scale = 1.0;
+        } else {
+            const vec3 d = l.positionKind.xyz - y;
+            const float d2 = dot(d, d);
+            wi = d * inversesqrt(d2);
+            scale = 1.0 / d2;
+            if (kind == 1) scale *= spotFactor(-dot(wi, l.directionCosCone.xyz), l.directionCosCone.w, l.intensityCosFalloff.w);
+            if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
+            const float layer = l.normalShadow.w;
+            if (scale > 0.0 && layer >= 0.0) {
+                const float stored = texture(shadows, vec4(-wi, layer)).r;
+                if (sqrt(d2) * (1.0 - shadowBias) > stored) scale = 0.0;
+            }
+        }
+        const float cosY = dot(n, wi);
+        if (cosY <= 0.0 || scale <= 0.0) continue;
+        sum += evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * scale);
+    }
+    result = vec4(sum, 1.0);
+}
