@@ -6,7 +6,10 @@
 
 #include <QFileInfo>
 
+#include <cstring>
+#include <fstream>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 
 namespace lucerna {
@@ -82,6 +85,63 @@ std::mutex& openMeshLock() {
     return lock;
 }
 
+// OpenMesh trusts headers: a PLY header without its end_header line makes its reader loop
+// forever, and element counts beyond the file's size make it reserve absurd amounts of memory.
+// Such files are refused before OpenMesh sees them. Returns the problem, or nothing.
+std::string headerProblem(const std::string& path, const std::string& ext, long long fileSize) {
+    if (ext != "ply" && ext != "off") return {};
+    std::ifstream in(path, std::ios::binary);
+    std::string head(size_t(std::min<long long>(fileSize, 1 << 16)), '\0');
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    // Every element needs at least one byte, so no count can exceed the file's size.
+    const auto implausible = [&](long double count) { return !(count >= 0 && count <= fileSize); };
+
+    if (ext == "ply") {
+        if (head.rfind("ply", 0) != 0) return "not a PLY file (it does not start with \"ply\")";
+        const size_t end = head.find("end_header");
+        if (end == std::string::npos) return "the PLY header has no end_header line";
+        std::istringstream lines(head.substr(0, end));
+        for (std::string line; std::getline(lines, line);) {
+            std::istringstream words(line);
+            std::string keyword, name;
+            long double count = -1;
+            if (words >> keyword && keyword == "element" && (!(words >> name >> count) || implausible(count)))
+                return "the PLY header has an implausible element line \"" + line.substr(0, 60) + "\"";
+        }
+        return {};
+    }
+
+    // OFF: a keyword ending in OFF (COFF, NOFF, STOFF, ...), optionally BINARY, then the vertex
+    // and face counts, as text or as 32-bit integers; '#' starts a comment.
+    std::istringstream text(head);
+    std::string word;
+    while (text >> word && word[0] == '#') std::getline(text, word);
+    if (word.size() < 3 || word.compare(word.size() - 3, 3, "OFF") != 0) return "not an OFF file (no OFF keyword)";
+    if (word.find('n') != std::string::npos) text >> word;  // nOFF: the dimension comes first
+    long double counts[2] = {-1, -1};
+    const std::streampos afterKeyword = text.tellg();
+    if (text >> word && word == "BINARY") {
+        const size_t at = head.find('\n', size_t(text.tellg()));
+        if (at == std::string::npos || at + 1 + 8 > head.size()) return "the binary OFF header is cut short";
+        for (int i = 0; i < 2; ++i) {
+            int32_t n = 0;
+            std::memcpy(&n, head.data() + at + 1 + 4 * i, 4);
+            counts[i] = n;
+        }
+    } else {
+        text.clear();
+        text.seekg(afterKeyword);
+        for (long double& c : counts) {
+            while (text >> word && word[0] == '#') std::getline(text, word);
+            std::istringstream number(word);
+            number >> c;
+        }
+    }
+    if (implausible(counts[0]) || implausible(counts[1])) return "the OFF header's vertex or face count is implausible";
+    return {};
+}
+
 }  // namespace
 
 TriangleMesh readMeshFile(const std::string& absolutePath) {
@@ -95,14 +155,21 @@ TriangleMesh readMeshFile(const std::string& absolutePath) {
     if (ext != "obj" && ext != "ply" && ext != "off" && ext != "stl")
         fail("unsupported mesh format \"" + ext + "\" (expected obj, ply, off or stl)");
 
+    if (const std::string problem = headerProblem(absolutePath, ext, info.size()); !problem.empty()) fail(problem);
+
     PolyMesh mesh;
     RecordingImporter importer(mesh);
+    bool read = false;
     {
         std::lock_guard guard(openMeshLock());
         OpenMesh::IO::Options options;  // positions and faces only: no normals, colours, UVs
-        if (!OpenMesh::IO::IOManager().read(absolutePath, importer, options))
-            fail("not a valid " + ext + " file (OpenMesh could not read it)");
+        try {
+            read = OpenMesh::IO::IOManager().read(absolutePath, importer, options);
+        } catch (const std::exception&) {
+            read = false;  // bad_alloc or length_error on counts that passed the checks above
+        }
     }
+    if (!read) fail("not a valid " + ext + " file (OpenMesh could not read it)");
     if (importer.badIndex) fail("a face refers to a vertex that does not exist");
     if (importer.polygons.empty()) fail("the file has no faces");
 

@@ -31,7 +31,7 @@ EGLDisplay openDisplay(std::string& platform) {
             reinterpret_cast<PFNEGLQUERYDEVICESTRINGEXTPROC>(eglGetProcAddress("eglQueryDeviceStringEXT"));
         EGLint count = 0;
         if (queryDevices && queryDevices(0, nullptr, &count) && count > 0) {
-            std::vector<EGLDeviceEXT> devices(size_t(count));
+            std::vector<EGLDeviceEXT> devices(static_cast<size_t>(count), EGLDeviceEXT{});
             queryDevices(count, devices.data(), &count);
             for (EGLDeviceEXT d : devices) {
                 // Mesa lists its software device too; that one is what surfaceless gives anyway.

@@ -22,8 +22,9 @@ namespace lucerna {
 struct PreviewSettings {
     int vplCount = 256;            // indirect VPLs over all lights
     int patternX = 4, patternY = 4;  // interleaving n x m (1 x 1: no interleaving)
-    // The VPL geometric term's 1/d^2 is clamped at this distance, a fraction of the scene's
-    // bounding radius (0: no clamping). It removes the bright spots near VPLs and loses some energy.
+    // The VPL geometric term is clamped as geometricClampBound (render/vpl/vpl_contribution.h):
+    // at 1 / (this fraction of the scene's bounding radius)^2; 0: no clamping. It removes the
+    // bright spots near VPLs and loses some energy.
     float clampDistance = 0.05f;
     bool visibility = false;       // VPL shadow maps (low-resolution cube maps per VPL)
     int vplShadowSize = 32;        // per cube face

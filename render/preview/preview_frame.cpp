@@ -3,6 +3,7 @@
 
 #include "render/preview/preview_state.h"
 #include "render/trace/rng.h"
+#include "render/vpl/vpl_contribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -83,7 +84,7 @@ void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vecto
 // estimates all the indirect light.
 void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     const int subsets = st.patternX * st.patternY;
-    std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(size_t(subsets));
+    std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(static_cast<size_t>(subsets));
     Rng rng(st.seed, 0xde41ULL);
     int offset = 0;
     for (const LightVpls& set : st.sets) {
@@ -308,8 +309,7 @@ Image Preview::render(float jitterX, float jitterY) {
         setIvec2(p, "pattern", st.patternX, st.patternY);
         setIvec2(p, "subSize", interleaved ? st.subW : w, interleaved ? st.subH : h);
         setVec3(p, "cameraPos", eye);
-        const float clampDistance = s.clampDistance * radius;
-        setFloat(p, "clampDistance2", clampDistance * clampDistance);
+        setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
         setInt(p, "visibility", s.visibility ? 1 : 0);
         setFloat(p, "shadowBias", 0.03f);
         const auto& src = interleaved ? st.s : st.g;

@@ -1,6 +1,8 @@
 #include "render/preview/preview_vpls.h"
 
 #include "render/trace/rng.h"
+#include "render/trace/sample_generator.h"
+#include "render/vpl/instant_radiosity.h"
 
 namespace lucerna {
 
@@ -28,56 +30,43 @@ LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delt
                         scene.boundsRadius(), scene.triangleCount());
 }
 
+namespace {
+// Independent uniform numbers for the shared light tracer.
+class RngGenerator final : public SampleGenerator {
+public:
+    explicit RngGenerator(uint64_t seed) : rng_(seed, 0x5eedULL) {}
+    float next1D() override { return rng_.next1D(); }
+    V2f next2D() override { return rng_.next2D(); }
+    uint32_t nextUint() { return rng_.nextUint(); }
+
+private:
+    Rng rng_;
+};
+}  // namespace
+
 VplSet traceVpls(const RenderScene& scene, const LightSampler& source, int count, uint64_t seed, int maxBounces) {
     VplSet vpls;
     if (source.empty() || count <= 0) return vpls;
-    vpls.reserve(size_t(count));
-    Rng rng(seed, 0x5eedULL);
+    VplOptions options;
+    options.maxBounces = maxBounces;
+    RngGenerator u(seed);
+    // Paths until `count` VPLs are stored: the count, not the path number, sets a frame's cost.
     const long maxPaths = 64L * count;
     long paths = 0;
     while (int(vpls.size()) < count && paths < maxPaths) {
         ++paths;
-        EmissionSample e;
-        const V2f u0 = rng.next2D(), u1 = rng.next2D();
-        if (!source.sampleEmission(u0, u1, rng.next1D(), e)) continue;
-        Rgb beta = e.power;
-        Ray ray{e.triangle != 0xffffffffu ? e.surface().spawnOrigin(e.direction) : e.position, e.direction};
-        for (int bounce = 1; bounce <= maxBounces && int(vpls.size()) < count; ++bounce) {
-            const auto hit = scene.intersect(ray);
-            if (!hit) break;
-            const ShadingMaterial& m = scene.material(hit->material);
-            if (m.isEmitter()) break;
-            const V3f wo = -ray.direction;
-            // Two-sided: the frame faces the side the light arrived on.
-            const V3f n = hit->ng.dot(wo) >= 0 ? hit->ng : -hit->ng;
-            if (!m.isDelta()) {
-                Vpl v;
-                v.position = hit->p;
-                v.normal = n;
-                v.incident = wo;
-                v.power = beta;  // divided by the path count at the end
-                v.material = hit->material;
-                v.triangle = hit->triangle;
-                v.bounce = bounce;
-                vpls.push_back(v);
-            }
-            const Frame frame(n);
-            BsdfSample s;
-            if (!bsdfSample(m, frame.toLocal(wo), rng.next2D(), rng.next1D(), s)) break;
-            beta *= s.weight;
-            // Russian roulette after the third bounce keeps long paths cheap and unbiased.
-            if (bounce >= 3) {
-                const float q = std::min(0.95f, std::max({beta.x, beta.y, beta.z}) /
-                                                     std::max(1e-30f, std::max({e.power.x, e.power.y, e.power.z})));
-                if (rng.next1D() >= q) break;
-                beta /= q;
-            }
-            const V3f wi = frame.toWorld(s.wi);
-            ray = Ray{hit->spawnOrigin(wi), wi};
-        }
+        traceLightPath(scene, source, u, 1.0f, options, [&](const Vpl& v) { vpls.push_back(v); });
     }
-    const float inv = 1.0f / float(paths);
-    for (Vpl& v : vpls) v.power *= inv;
+    // A path may leave several VPLs: dropping a uniformly chosen surplus and scaling the rest up
+    // keeps the set's expectation (the last path's VPLs would otherwise overshoot the count).
+    double keepScale = 1.0;
+    if (int(vpls.size()) > count) {
+        for (size_t i = 0; i < size_t(count); ++i) std::swap(vpls[i], vpls[i + u.nextUint() % (vpls.size() - i)]);
+        keepScale = double(vpls.size()) / double(count);
+        vpls.resize(size_t(count));
+    }
+    const float scale = float(keepScale / double(paths));
+    for (Vpl& v : vpls) v.power *= scale;
     return vpls;
 }
 

@@ -4,8 +4,9 @@
 // every diffuse or glossy hit (the light that arrived there), so the sets stand for indirect
 // light only: the preview draws direct light itself, with shadow maps.
 //
-// Until the shared instant-radiosity generator (render/vpl/instant_radiosity.h) is in, this is the
-// preview's own small tracer; it follows the same Vpl conventions (render/vpl/vpl.h).
+// The particles are traced by the shared instant-radiosity tracer (render/vpl/instant_radiosity.h,
+// traceLightPath); this file only drives it per light from the preview's own copy of the lights,
+// so that an edited light needs no new RenderScene (no BVH rebuild).
 
 #include "core/scene.h"
 #include "render/trace/light_sampler.h"
@@ -21,8 +22,9 @@ DeltaLight compileDeltaLight(const Light& light);
 LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delta);
 
 // Traces light paths from `source` until `count` VPLs are stored (or a path budget of 64 count
-// runs out) and divides every VPL's power by the number of paths traced, so the set's sum is an
-// estimate of the light's indirect contribution. Deterministic in seed.
+// runs out), keeps exactly `count` of them (a uniform choice, powers scaled to make up) and
+// divides by the number of paths traced, so the set's sum estimates the light's indirect
+// contribution. Deterministic in seed.
 VplSet traceVpls(const RenderScene& scene, const LightSampler& source, int count, uint64_t seed, int maxBounces = 8);
 
 }  // namespace lucerna

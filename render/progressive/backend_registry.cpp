@@ -1,6 +1,9 @@
 #include "render/progressive/backend.h"
 
+#include "render/progressive/bdpt/bdpt_backend.h"
+#include "render/progressive/ir/ir_backend.h"
 #include "render/progressive/path/path_backend.h"
+#include "render/preview/preview_backend.h"
 
 namespace lucerna {
 
@@ -8,6 +11,9 @@ namespace {
 // The explicit factory table: one row per backend.
 const BackendInfo kBackends[] = {
     {"path", "unidirectional path tracing with next-event estimation and MIS", &makePathBackend},
+    {"bdpt", "bidirectional path tracing: every connection strategy, light-tracing splats, power-heuristic MIS", &makeBdptBackend},
+    {"ir", "instant radiosity: fresh VPLs per pass, clamped gathering with path-traced bias compensation", &makeIrBackend},
+    {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend},
 };
 }  // namespace
 

@@ -42,11 +42,29 @@ inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
 
 // Sobol dimension 0 (van der Corput) and dimension 1; together a (0,2)-sequence.
 inline uint32_t dimension0(uint32_t i) { return reverseBits(i); }
+// Dimension 1 is a linear map over GF(2) of the index bits (its generator matrix has the columns
+// v_k, v_0 = 2^31, v_k+1 = v_k ^ (v_k >> 1)); evaluated byte by byte from tables, since the
+// shuffled indices use all 32 bits.
+struct Dimension1Tables {
+    uint32_t byte[4][256];
+    constexpr Dimension1Tables() : byte{} {
+        uint32_t columns[32] = {};
+        uint32_t v = 1u << 31;
+        for (int k = 0; k < 32; ++k, v ^= v >> 1) columns[k] = v;
+        for (int b = 0; b < 4; ++b)
+            for (uint32_t x = 0; x < 256; ++x) {
+                uint32_t r = 0;
+                for (int k = 0; k < 8; ++k)
+                    if (x & (1u << k)) r ^= columns[8 * b + k];
+                byte[b][x] = r;
+            }
+    }
+};
+inline constexpr Dimension1Tables kDimension1Tables;
+
 inline uint32_t dimension1(uint32_t i) {
-    uint32_t r = 0;
-    for (uint32_t v = 1u << 31; i; i >>= 1, v ^= v >> 1)
-        if (i & 1u) r ^= v;
-    return r;
+    const auto& t = kDimension1Tables.byte;
+    return t[0][i & 255u] ^ t[1][(i >> 8) & 255u] ^ t[2][(i >> 16) & 255u] ^ t[3][i >> 24];
 }
 
 inline float toUnit(uint32_t x) { return float(x >> 8) * 0x1p-24f; }

@@ -4,8 +4,9 @@
 // VPL buffer, which the CPU ordered by subset with powers already scaled (by about n m) so that each
 // subset alone estimates the whole indirect light.
 // Lighting y from a VPL at x (render/vpl/vpl.h):
-//   f_y(wo, y->x) power f_x(incident, x->y) cos_x cos_y / max(d^2, clampDistance^2) V(x, y);
-// the clamp bounds the 1/d^2 singularity (the energy it loses is reported by the benchmarks).
+//   f_y(wo, y->x) power f_x(incident, x->y) min(cos_x cos_y / d^2, maxG) V(x, y),
+// the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
+// reported by the benchmarks).
 #include_brdf
 struct Vpl { vec4 positionIndex; vec4 normalAlpha; vec4 incident; vec4 power; vec4 albedo; vec4 specular; };
 layout(std430, binding = 0) readonly buffer Vpls { Vpl vpls[]; };
@@ -13,7 +14,7 @@ layout(std430, binding = 1) readonly buffer Ranges { ivec2 ranges[]; };
 uniform ivec2 pattern;
 uniform ivec2 subSize;
 uniform vec3 cameraPos;
-uniform float clampDistance2;
+uniform float maxG;
 uniform int visibility;         // 1: look up each VPL's cube shadow map
 uniform float shadowBias;       // relative
 layout(binding = 0) uniform sampler2D g0Tex;
@@ -45,7 +46,7 @@ void main() {
         }
         const vec3 fy = evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w);
         const vec3 fx = evalBsdf(v.normalAlpha.xyz, v.incident.xyz, -wi, v.albedo.rgb, v.specular.rgb, v.normalAlpha.w);
-        sum += fy * fx * v.power.rgb * (cosX * cosY / max(d2, clampDistance2));
+        sum += fy * fx * v.power.rgb * min(cosX * cosY / d2, maxG);
     }
     result = vec4(sum, 1.0);
 }

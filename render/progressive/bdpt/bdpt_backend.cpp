@@ -1,0 +1,117 @@
+#include "render/progressive/bdpt/bdpt_backend.h"
+
+#include "render/progressive/bdpt/bdpt_tracer.h"
+#include "render/trace/rng.h"
+
+#include <charconv>
+#include <cstdio>
+#include <stdexcept>
+
+namespace lucerna {
+
+BdptSettings BdptSettings::fromOptions(const RenderSettings& settings) {
+    BdptSettings s;
+    const auto readInt = [&](const char* key, int& value, int lo) {
+        const auto it = settings.options.find(key);
+        if (it == settings.options.end()) return;
+        int v = 0;
+        const auto [ptr, ec] = std::from_chars(it->second.data(), it->second.data() + it->second.size(), v);
+        if (ec != std::errc() || ptr != it->second.data() + it->second.size() || v < lo)
+            throw std::invalid_argument(std::string("option ") + key + " must be an integer >= " + std::to_string(lo));
+        value = v;
+    };
+    readInt("max_depth", s.maxDepth, 1);
+    readInt("rr_depth", s.rouletteStartDepth, 1);
+    if (const auto it = settings.options.find("strategies"); it != settings.options.end()) {
+        if (it->second == "all") s.strategies = BdptSettings::Strategies::All;
+        else if (it->second == "light_tracing") s.strategies = BdptSettings::Strategies::LightTracing;
+        else throw std::invalid_argument("option strategies must be all or light_tracing, got '" + it->second + "'");
+    }
+    return s;
+}
+
+void renderBdptPass(const RenderScene& scene, const BdptSettings& settings, uint64_t seed, int pass, Film& film,
+                    TaskContext& ctx) {
+    const PinholeCamera& camera = scene.camera();
+    const int tile = settings.tileSize;
+    const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
+    const int half = pass % 2;
+    const uint64_t passSeed = hashSeed(seed, uint64_t(pass), 0xb1d1u);
+    // One splat list per tile: no contention while the pass runs, a fixed order afterwards.
+    std::vector<std::vector<FilmSplat>> splats(size_t(tilesX) * tilesY);
+    ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
+        BdptTracer tracer(scene, settings);
+        std::vector<FilmSplat>& tileSplats = splats[size_t(t)];
+        const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
+        const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) {
+                Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
+                const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
+                Rgb L = tracer.sample(float(x) + jitter.x, float(y) + jitter.y, rng, tileSplats);
+                if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
+                film.addSample(half, x, y, L);
+            }
+    });
+    if (ctx.isCancelled()) return;
+    for (const auto& list : splats) film.addSplats(half, list);
+    film.finishPass(half);
+}
+
+CameraPower cameraPower(const Film& film) {
+    CameraPower pc;
+    const Image img = film.image();
+    for (const Rgb& p : img.pixels) pc.rgb += Rgbd(p.x, p.y, p.z);
+    if (!img.pixels.empty()) pc.rgb /= double(img.pixels.size());
+    pc.luminance = luminance(pc.rgb);
+    pc.samplesPerPixel = film.samplesPerPixel();
+    return pc;
+}
+
+CameraPower estimateCameraPower(const RenderScene& scene, const BdptSettings& settings, uint64_t seed, int passes,
+                                TaskContext& ctx) {
+    Film film(scene.camera().width(), scene.camera().height());
+    for (int p = 0; p < passes && !ctx.isCancelled(); ++p) renderBdptPass(scene, settings, seed, p, film, ctx);
+    return cameraPower(film);
+}
+
+namespace {
+
+class BdptBackend final : public ProgressiveBackend {
+public:
+    BdptBackend(SceneSnapshot scene, const RenderSettings& settings)
+        : snapshot_(std::move(scene)), settings_(settings), bdptSettings_(BdptSettings::fromOptions(settings)) {}
+
+    void prepare(TaskContext&) override {
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+    }
+
+    void renderPass(TaskContext& ctx, int pass) override {
+        renderBdptPass(*scene_, bdptSettings_, settings_.seed, pass, *film_, ctx);
+    }
+
+    const Film& film() const override { return *film_; }
+
+    std::map<std::string, std::string> diagnostics() const override {
+        const CameraPower pc = cameraPower(*film_);
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g", pc.rgb.x, pc.rgb.y, pc.rgb.z);
+        return {{"pc", buf}};
+    }
+
+private:
+    SceneSnapshot snapshot_;
+    RenderSettings settings_;
+    BdptSettings bdptSettings_;
+    std::unique_ptr<RenderScene> scene_;
+    std::unique_ptr<Film> film_;
+};
+
+}  // namespace
+
+std::unique_ptr<ProgressiveBackend> makeBdptBackend(SceneSnapshot scene, const RenderSettings& settings) {
+    return std::make_unique<BdptBackend>(std::move(scene), settings);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,272 @@
+#include "render/progressive/bdpt/bdpt_tracer.h"
+
+namespace lucerna {
+
+BdptTracer::BdptTracer(const RenderScene& scene, const BdptSettings& settings)
+    : scene_(scene), settings_(settings), densities_(scene) {
+    camera_.reserve(16);
+    light_.reserve(16);
+}
+
+PathVertex BdptTracer::cameraVertex() const {
+    PathVertex c;
+    c.kind = VertexKind::Camera;
+    c.sp.p = scene_.camera().position();
+    c.sp.pError = V3f(0, 0, 0);
+    c.sp.ng = scene_.camera().forward();
+    c.beta = Rgb(1, 1, 1);
+    return c;
+}
+
+bool BdptTracer::connectible(const PathVertex& v) const {
+    if (v.kind == VertexKind::Camera || v.kind == VertexKind::AreaLight) return true;
+    if (v.kind != VertexKind::Surface || v.delta) return false;
+    const ShadingMaterial& mat = scene_.material(v.sp.material);
+    return !mat.isDelta() && !mat.isEmitter();
+}
+
+void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool cameraSide, SampleGenerator& rng,
+                            std::vector<PathVertex>& path) const {
+    const float beta0 = maxComponent(beta);
+    if (maxAdded <= 0 || !(beta0 > 0.0f)) return;
+    for (int bounces = 0;;) {
+        const auto hit = scene_.intersect(ray);
+        if (!hit) break;
+        PathVertex v;
+        v.kind = VertexKind::Surface;
+        v.sp = *hit;
+        v.wo = -ray.direction.normalized();
+        v.beta = beta;
+        v.pdfFwd = VertexDensities::toArea(pdfDir, path.back(), v);
+        const ShadingMaterial& mat = scene_.material(hit->material);
+        // Emitters reflect nothing: the walk ends there. A camera subpath keeps the vertex for
+        // the s = 0 strategy; a light subpath has no use for it.
+        if (mat.isEmitter()) {
+            if (cameraSide) path.push_back(v);
+            break;
+        }
+        path.push_back(v);
+        if (++bounces >= maxAdded) break;
+
+        const Frame frame(shadingNormalToward(mat, v.sp.ng, v.wo));
+        const V3f woLocal = frame.toLocal(v.wo);
+        BsdfSample bs;
+        const V2f u = rng.next2D();
+        const float uLobe = rng.next1D();
+        if (!bsdfSample(mat, woLocal, u, uLobe, bs)) break;
+        float pdfRev = 0.0f;
+        if (bs.isDelta) {
+            // A delta lobe has no density another strategy could match: both sides get 0.
+            path.back().delta = true;
+            pdfDir = 0.0f;
+        } else {
+            pdfDir = bs.pdf;
+            pdfRev = bsdfPdf(mat, bs.wi, woLocal);  // the same lobe, walked the other way
+        }
+        const size_t n = path.size();
+        if (n >= 2) path[n - 2].pdfRev = VertexDensities::toArea(pdfRev, path[n - 1], path[n - 2]);
+        beta *= bs.weight;  // symmetric BSDFs (no eta^2, geometric normals): no adjoint correction
+        if (isBlack(beta) || !isFinite(beta)) break;
+        if (bounces >= settings_.rouletteStartDepth) {
+            // Relative to the subpath's start, so that light subpaths (whose beta carries the
+            // light's power) are rouletted like camera subpaths.
+            const float survive = std::min(0.95f, maxComponent(beta) / beta0);
+            if (rng.next1D() >= survive) break;
+            beta /= survive;
+        }
+        const V3f wi = frame.toWorld(bs.wi);
+        ray = Ray{hit->spawnOrigin(wi), wi};
+    }
+}
+
+void BdptTracer::traceCameraSubpath(float x, float y, SampleGenerator& rng) {
+    camera_.push_back(cameraVertex());
+    const Ray ray = scene_.camera().ray(x, y);
+    randomWalk(ray, Rgb(1, 1, 1), densities_.cameraPdfDirection(ray.direction), settings_.maxDepth + 1, true, rng,
+               camera_);
+}
+
+void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
+    const LightSampler& lights = scene_.lights();
+    EmissionSample es;
+    const V2f uPosition = rng.next2D(), uDirection = rng.next2D();
+    const float uSelect = rng.next1D();
+    if (!lights.sampleEmission(uPosition, uDirection, uSelect, es) || !(es.pdfPosition > 0.0f)) return;
+    PathVertex v0;
+    v0.sp = es.surface();
+    v0.light = es.light;
+    if (es.triangle != 0xffffffffu) {
+        v0.kind = VertexKind::AreaLight;
+        v0.sp.material = 0;
+        v0.pdfFwd = es.pdfPosition;
+    } else if (es.deltaDirection) {
+        v0.kind = VertexKind::DirectionalLight;
+    } else {
+        const DeltaLight& l = lights.deltaLights()[es.light - lights.emitters().size()];
+        v0.kind = l.type == LightType::Spot ? VertexKind::SpotLight : VertexKind::PointLight;
+    }
+    // beta of a light vertex is 1 / (its selection-and-position density); the emission itself
+    // enters as the vertex's "BSDF" when it is connected (s = 1, t = 1 only), and as es.power
+    // once the particle leaves.
+    v0.beta = Rgb(1.0f / es.pdfPosition);
+    light_.push_back(v0);
+    const V3f origin = v0.kind == VertexKind::AreaLight ? v0.sp.spawnOrigin(es.direction) : es.position;
+    randomWalk(Ray{origin, es.direction}, es.power, es.pdfDirection, settings_.maxDepth, false, rng, light_);
+    // Parallel particles: the first hit's density is the disk's, projected (pbrt-v3 16.3.2).
+    if (v0.kind == VertexKind::DirectionalLight && light_.size() >= 2)
+        light_[1].pdfFwd = densities_.pdfLight(light_[0], light_[1]);
+}
+
+Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY) const {
+    Rgb L(0, 0, 0);
+    PathVertex sampled;
+    const PathVertex* sampledPtr = nullptr;
+    if (s == 0) {
+        const PathVertex& pt = camera_[t - 1];
+        if (pt.kind != VertexKind::Surface || !scene_.material(pt.sp.material).isEmitter()) return L;
+        L = pt.beta * densities_.emitted(pt, pt.wo);
+    } else if (t == 1) {
+        const PathVertex& qs = light_[s - 1];
+        if (!connectible(qs) || qs.kind == VertexKind::Camera) return L;
+        sampled = cameraVertex();
+        sampledPtr = &sampled;
+        const V3f d = sampled.p() - qs.p();
+        const float dist2 = d.length2();
+        if (!(dist2 > 0.0f)) return L;
+        const V3f w = d / std::sqrt(dist2);  // from the light vertex to the pinhole
+        if (!scene_.camera().rasterPoint(-w, rasterX, rasterY)) return L;
+        const Rgb f = qs.kind == VertexKind::AreaLight ? densities_.emitted(qs, w) : densities_.bsdf(qs, w);
+        // beta f |cos| G We: the pinhole has no cosine of its own; We cos = 1 / (A cos^3).
+        L = qs.beta * f * (std::abs(qs.sp.ng.dot(w)) * densities_.cameraImportance(-w) / dist2);
+        if (isBlack(L)) return L;
+        const V3f from = qs.sp.spawnOrigin(w);
+        if (scene_.occluded(Ray{from, sampled.p() - from, 0.0f, kShadowRayEnd})) return Rgb(0, 0, 0);
+    } else if (s == 1) {
+        const PathVertex& pt = camera_[t - 1];
+        if (!connectible(pt)) return L;
+        LightSample ls;
+        const V2f u = rng.next2D();
+        const float uSelect = rng.next1D();
+        if (!scene_.lights().sample(pt.sp, u, uSelect, ls)) return L;
+        const LightSampler& lights = scene_.lights();
+        sampled.light = ls.light;
+        sampled.sp.p = ls.position;
+        if (ls.light < lights.emitters().size()) {
+            const EmitterTriangle& e = lights.emitters()[ls.light];
+            sampled.kind = VertexKind::AreaLight;
+            sampled.sp.ng = e.normal;
+            sampled.sp.triangle = e.triangle;
+            sampled.pdfFwd = densities_.pdfLightOrigin(sampled);
+        } else {
+            const DeltaLight& l = lights.deltaLights()[ls.light - lights.emitters().size()];
+            sampled.kind = l.type == LightType::Point ? VertexKind::PointLight
+                           : l.type == LightType::Spot ? VertexKind::SpotLight
+                                                       : VertexKind::DirectionalLight;
+            sampled.sp.ng = l.direction;
+            if (l.type == LightType::Directional)  // somewhere up the light's beam, outside the scene
+                sampled.sp.p = pt.p() + ls.wi * (2.0f * scene_.boundsRadius() + (pt.p() - scene_.boundsCenter()).length());
+        }
+        sampledPtr = &sampled;
+        L = pt.beta * densities_.bsdf(pt, ls.wi) * ls.value * (std::abs(pt.sp.ng.dot(ls.wi)) / ls.pdf);
+        if (isBlack(L)) return L;
+        if (scene_.occluded(ls.shadowRay)) return Rgb(0, 0, 0);
+    } else {
+        const PathVertex &qs = light_[s - 1], &pt = camera_[t - 1];
+        if (!connectible(qs) || !connectible(pt)) return L;
+        const V3f d = pt.p() - qs.p();
+        const float dist2 = d.length2();
+        if (!(dist2 > 0.0f)) return L;
+        const V3f w = d / std::sqrt(dist2);
+        // beta_s f_s G f_t beta_t with G = |cos_s| |cos_t| / d^2 (eq. 10.8).
+        const float g = std::abs(qs.sp.ng.dot(w)) * std::abs(pt.sp.ng.dot(w)) / dist2;
+        L = qs.beta * densities_.bsdf(qs, w) * densities_.bsdf(pt, -w) * pt.beta * g;
+        if (isBlack(L)) return L;
+        if (!scene_.unoccluded(qs.sp, pt.sp)) return Rgb(0, 0, 0);
+    }
+    if (!weighted) return L;
+    return L * misWeight(s, t, sampledPtr);
+}
+
+float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
+    if (s + t == 2) return 1.0f;  // the only strategy used for paths of one edge (s = 1, t = 1 is skipped)
+    const auto lightAt = [&](int i) -> const PathVertex& { return s == 1 && i == 0 ? *sampled : light_[size_t(i)]; };
+    const auto cameraAt = [&](int i) -> const PathVertex& { return t == 1 && i == 0 ? *sampled : camera_[size_t(i)]; };
+    const PathVertex* qs = s > 0 ? &lightAt(s - 1) : nullptr;
+    const PathVertex& pt = cameraAt(t - 1);
+    const PathVertex* qsMinus = s > 1 ? &lightAt(s - 2) : nullptr;
+    const PathVertex* ptMinus = t > 1 ? &cameraAt(t - 2) : nullptr;
+
+    // The reverse densities of the (up to) four vertices beside the connection, as they are in
+    // this strategy's path (pbrt-v3's scoped assignments, without mutating the subpaths).
+    const float ptRev = qs ? densities_.pdf(*qs, qsMinus, pt) : densities_.pdfLightOrigin(pt);
+    const float ptMinusRev = !ptMinus ? 0.0f : qs ? densities_.pdf(pt, qs, *ptMinus) : densities_.pdfLight(pt, *ptMinus);
+    const float qsRev = qs ? densities_.pdf(pt, ptMinus, *qs) : 0.0f;
+    const float qsMinusRev = qsMinus ? densities_.pdf(*qs, &pt, *qsMinus) : 0.0f;
+
+    // sum over the other strategies i of (p_i / p_s)^2, each ratio built vertex by vertex
+    // outward from the connection (eq. 10.9); a zero density is a delta one and cancels (remap).
+    const auto remap = [](float f) { return f != 0.0f ? f : 1.0f; };
+    double sumRatios = 0.0, ratio = 1.0;
+    for (int i = t - 1; i > 0; --i) {
+        const PathVertex& v = cameraAt(i);
+        const float rev = i == t - 1 ? ptRev : i == t - 2 ? ptMinusRev : v.pdfRev;
+        const double r = double(remap(rev)) / double(remap(v.pdfFwd));
+        ratio *= r * r;
+        const bool deltaHere = i == t - 1 ? false : v.delta;
+        if (!deltaHere && !cameraAt(i - 1).delta) sumRatios += ratio;
+    }
+    ratio = 1.0;
+    for (int i = s - 1; i >= 0; --i) {
+        const PathVertex& v = lightAt(i);
+        const float rev = i == s - 1 ? qsRev : i == s - 2 ? qsMinusRev : v.pdfRev;
+        const double r = double(remap(rev)) / double(remap(v.pdfFwd));
+        ratio *= r * r;
+        const bool deltaHere = i == s - 1 ? false : v.delta;
+        const bool deltaBefore = i > 0 ? lightAt(i - 1).delta : lightAt(0).isDeltaLight();
+        if (!deltaHere && !deltaBefore) sumRatios += ratio;
+    }
+    const double w = 1.0 / (1.0 + sumRatios);
+    return std::isfinite(w) ? float(w) : 0.0f;
+}
+
+Rgb BdptTracer::sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+    camera_.clear();
+    light_.clear();
+    const bool lightTracingOnly = settings_.strategies == BdptSettings::Strategies::LightTracing;
+    if (!lightTracingOnly) traceCameraSubpath(x, y, rng);
+    traceLightSubpath(rng);
+
+    const PinholeCamera& camera = scene_.camera();
+    const auto splat = [&](const Rgb& value, float rx, float ry) {
+        if (isBlack(value) || !isFinite(value)) return;
+        const int px = std::clamp(int(rx), 0, camera.width() - 1), py = std::clamp(int(ry), 0, camera.height() - 1);
+        splats.push_back(FilmSplat{px, py, value});
+    };
+    const int nLight = int(light_.size());
+    if (lightTracingOnly) {
+        // Every light vertex to the pinhole, weight 1; s = 1 too (emitters seen directly), but
+        // not for delta lights, which no camera ray can see (SPEC.md).
+        for (int s = 1; s <= std::min(nLight, settings_.maxDepth + 1); ++s) {
+            float rx = 0, ry = 0;
+            if (s == 1 && light_[0].kind != VertexKind::AreaLight) continue;
+            splat(connect(s, 1, false, rng, rx, ry), rx, ry);
+        }
+        return Rgb(0, 0, 0);
+    }
+
+    Rgb L(0, 0, 0);
+    const int nCamera = int(camera_.size());
+    for (int t = 1; t <= nCamera; ++t)
+        for (int s = 0; s <= std::max(nLight, 1); ++s) {
+            const int depth = s + t - 2;
+            if ((s == 1 && t == 1) || depth < 0 || depth > settings_.maxDepth) continue;
+            if (s >= 2 && s > nLight) continue;
+            float rx = 0, ry = 0;
+            const Rgb c = connect(s, t, true, rng, rx, ry);
+            if (t == 1) splat(c, rx, ry);
+            else if (isFinite(c)) L += c;
+        }
+    return L;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,56 @@
+#pragma once
+// The per-thread part of the bdpt backend: bidirectional path tracing (Veach & Guibas 1994;
+// Veach 1997, chapter 10; modelled on pbrt-v3 chapter 16). A camera subpath and a light subpath
+// are traced, then every prefix pair (s light vertices, t camera vertices) is connected:
+//   s = 0   the camera subpath itself hits the front of an emitter;
+//   s = 1   next-event estimation: a fresh point on a light, joined to camera vertex t-1;
+//   t = 1   light tracing: light vertex s-1 joined to the pinhole and splatted onto the film;
+//   else    light vertex s-1 joined to camera vertex t-1 by a shadow ray.
+// Each contribution is weighted by the power heuristic over all strategies that could have made
+// the same path (eq. 10.9 with beta = 2), computed from the per-vertex densities pdfFwd/pdfRev
+// so that nothing is counted twice. Delta lights (no s = 0), delta BSDFs (mirror, glass: never a
+// connection vertex) and one-sided emitters are handled as the path backend handles them.
+
+#include "render/progressive/bdpt/bdpt_settings.h"
+#include "render/progressive/bdpt/bdpt_vertex.h"
+#include "render/progressive/film.h"
+#include "render/trace/sample_generator.h"
+
+#include <vector>
+
+namespace lucerna {
+
+class BdptTracer {
+public:
+    BdptTracer(const RenderScene& scene, const BdptSettings& settings);
+
+    // One bidirectional sample: a camera subpath through raster point (x, y) and one light
+    // subpath. Returns the radiance estimate for the camera sample's own pixel (strategies with
+    // t >= 2) and appends the light-tracing contributions (t = 1) to `splats`, already divided
+    // by nothing: a pass that traces one light subpath per pixel normalises them like its
+    // camera samples (see cameraImportance). Non-finite contributions are dropped.
+    Rgb sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats);
+
+private:
+    void traceCameraSubpath(float x, float y, SampleGenerator& rng);
+    void traceLightSubpath(SampleGenerator& rng);
+    // Extends `path` from its last vertex along `ray`, adding at most maxAdded vertices; pdfDir
+    // is the solid-angle density of the ray's direction at the last vertex (pbrt's RandomWalk).
+    void randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool cameraSide, SampleGenerator& rng,
+                    std::vector<PathVertex>& path) const;
+    // Unweighted contribution of strategy (s, t), times its MIS weight when `weighted`. For
+    // t = 1 it writes the raster point it lands on.
+    Rgb connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY) const;
+    // Power-heuristic weight of strategy (s, t); `sampled` is the fresh light vertex (s = 1) or
+    // the pinhole (t = 1) that replaces the subpath's own.
+    float misWeight(int s, int t, const PathVertex* sampled) const;
+    bool connectible(const PathVertex& v) const;
+    PathVertex cameraVertex() const;
+
+    const RenderScene& scene_;
+    BdptSettings settings_;
+    VertexDensities densities_;
+    std::vector<PathVertex> camera_, light_;  // reused from sample to sample
+};
+
+}  // namespace lucerna
