@@ -6,6 +6,8 @@
 
 #include <QFileInfo>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <mutex>
@@ -85,32 +87,76 @@ std::mutex& openMeshLock() {
     return lock;
 }
 
-// OpenMesh trusts headers: a PLY header without its end_header line makes its reader loop
-// forever, and element counts beyond the file's size make it reserve absurd amounts of memory.
-// Such files are refused before OpenMesh sees them. Returns the problem, or nothing.
+bool isPlyScalar(const std::string& type) {
+    static const char* const kTypes[] = {"char", "uchar", "short", "ushort", "int", "uint", "float", "double",
+                                         "int8", "uint8", "int16", "uint16", "int32", "uint32", "float32", "float64"};
+    for (const char* t : kTypes)
+        if (type == t) return true;
+    return false;
+}
+
+// OpenMesh's PLY reader trusts its header: a malformed line crashes it, and a header without its
+// end_header line makes it loop forever. So the header is parsed strictly here first.
+std::string plyHeaderProblem(const std::string& head, long long fileSize) {
+    const size_t end = head.find("\nend_header");
+    if (head.rfind("ply", 0) != 0) return "not a PLY file (it does not start with \"ply\")";
+    if (end == std::string::npos) return "the PLY header has no end_header line";
+    std::istringstream lines(head.substr(0, end + 1));
+    std::string line;
+    std::getline(lines, line);  // "ply"
+    bool format = false, vertex = false, face = false;
+    std::string element;
+    std::vector<std::string> vertexProperties;
+    for (int number = 2; std::getline(lines, line); ++number) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::istringstream words(line);
+        std::vector<std::string> w;
+        for (std::string word; words >> word;) w.push_back(word);
+        const auto bad = [&] { return "line " + std::to_string(number) + " of the PLY header is malformed"; };
+        if (w.empty()) return bad();
+        if (w[0] == "comment" || w[0] == "obj_info") continue;
+        if (w[0] == "format") {
+            if (w.size() != 3 || format || !element.empty() ||
+                (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
+                return bad();
+            format = true;
+        } else if (w[0] == "element") {
+            long double count = -1;
+            if (w.size() != 3 || !(std::istringstream(w[2]) >> count) || !(count >= 0 && count <= fileSize) ||
+                count != std::floor(count))
+                return bad();
+            element = w[1];
+            vertex = vertex || element == "vertex";
+        } else if (w[0] == "property" && !element.empty()) {
+            const bool list = w.size() == 5 && w[1] == "list" && isPlyScalar(w[2]) && isPlyScalar(w[3]);
+            if (!list && !(w.size() == 3 && isPlyScalar(w[1]))) return bad();
+            if (element == "vertex") vertexProperties.push_back(list ? std::string() : w[2]);
+            if (element == "face" && list && (w[4] == "vertex_indices" || w[4] == "vertex_index")) face = true;
+        } else {
+            return bad();
+        }
+    }
+    if (!format) return "the PLY header has no format line";
+    const auto has = [&](const char* name) {
+        return std::find(vertexProperties.begin(), vertexProperties.end(), name) != vertexProperties.end();
+    };
+    if (!vertex || !has("x") || !has("y") || !has("z")) return "the PLY file has no vertex positions (x, y, z)";
+    if (!face) return "the PLY file has no faces (no vertex_indices list)";
+    return {};
+}
+
+// Element counts beyond the file's size would make OpenMesh reserve absurd amounts of memory, and
+// malformed PLY headers crash it; such files are refused before OpenMesh sees them. Returns the
+// problem, or nothing.
 std::string headerProblem(const std::string& path, const std::string& ext, long long fileSize) {
     if (ext != "ply" && ext != "off") return {};
     std::ifstream in(path, std::ios::binary);
     std::string head(size_t(std::min<long long>(fileSize, 1 << 16)), '\0');
     in.read(head.data(), std::streamsize(head.size()));
     head.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    if (ext == "ply") return plyHeaderProblem(head, fileSize);
     // Every element needs at least one byte, so no count can exceed the file's size.
     const auto implausible = [&](long double count) { return !(count >= 0 && count <= fileSize); };
-
-    if (ext == "ply") {
-        if (head.rfind("ply", 0) != 0) return "not a PLY file (it does not start with \"ply\")";
-        const size_t end = head.find("end_header");
-        if (end == std::string::npos) return "the PLY header has no end_header line";
-        std::istringstream lines(head.substr(0, end));
-        for (std::string line; std::getline(lines, line);) {
-            std::istringstream words(line);
-            std::string keyword, name;
-            long double count = -1;
-            if (words >> keyword && keyword == "element" && (!(words >> name >> count) || implausible(count)))
-                return "the PLY header has an implausible element line \"" + line.substr(0, 60) + "\"";
-        }
-        return {};
-    }
 
     // OFF: a keyword ending in OFF (COFF, NOFF, STOFF, ...), optionally BINARY, then the vertex
     // and face counts, as text or as 32-bit integers; '#' starts a comment.

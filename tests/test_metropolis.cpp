@@ -83,10 +83,10 @@ void TestMetropolis::stationaryDensity_data() {
     QTest::addColumn<int>("tries");
     QTest::addColumn<float>("largeStep");
     QTest::addColumn<int>("steps");
-    QTest::newRow("MH, small steps only") << 1 << 0.0f << 4;
-    QTest::newRow("MH, large steps 0.3") << 1 << 0.3f << 4;
-    QTest::newRow("MTM 4 tries, small steps only") << 4 << 0.0f << 4;
-    QTest::newRow("MTM 4 tries, large steps 0.3") << 4 << 0.3f << 4;
+    QTest::newRow("MH, small steps only") << 1 << 0.0f << 16;
+    QTest::newRow("MH, large steps 0.3") << 1 << 0.3f << 16;
+    QTest::newRow("MTM 4 tries, small steps only") << 4 << 0.0f << 16;
+    QTest::newRow("MTM 4 tries, large steps 0.3") << 4 << 0.3f << 16;
 }
 
 void TestMetropolis::stationaryDensity() {

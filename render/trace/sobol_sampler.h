@@ -83,21 +83,23 @@ public:
         if (dimension_ >= kStratifiedDimensions) return padding_.next1D();
         const uint32_t s = dimensionSeed();
         ++dimension_;
-        const uint32_t i = sobol::nestedUniformScramble(index_, s);
-        return sobol::toUnit(sobol::nestedUniformScramble(sobol::dimension0(i), s ^ 0x9e3779b9u));
+        // Owen-scrambled van der Corput: nestedUniformScramble(reverseBits(i)) = reverseBits(laineKarras(i)).
+        return sobol::toUnit(sobol::reverseBits(sobol::laineKarras(shuffledIndex(s), s ^ 0x9e3779b9u)));
     }
 
     V2f next2D() override {
         if (dimension_ + 1 >= kStratifiedDimensions) return padding_.next2D();
         const uint32_t s = dimensionSeed();
         dimension_ += 2;
-        const uint32_t i = sobol::nestedUniformScramble(index_, s);
-        return V2f(sobol::toUnit(sobol::nestedUniformScramble(sobol::dimension0(i), s ^ 0x9e3779b9u)),
+        const uint32_t i = shuffledIndex(s);
+        return V2f(sobol::toUnit(sobol::reverseBits(sobol::laineKarras(i, s ^ 0x9e3779b9u))),
                    sobol::toUnit(sobol::nestedUniformScramble(sobol::dimension1(i), s ^ 0x7f4a7c15u)));
     }
 
 private:
     uint32_t dimensionSeed() const { return uint32_t(hashSeed(seed_, dimension_)); }
+    // Burley's shuffle: each dimension (pair) visits the sequence in its own random order.
+    uint32_t shuffledIndex(uint32_t s) const { return sobol::nestedUniformScramble(index_, s); }
 
     uint64_t seed_;
     uint32_t index_;

@@ -249,7 +249,8 @@ Rgb BdptTracer::sample(float x, float y, SampleGenerator& rng, std::vector<FilmS
         for (int s = 1; s <= std::min(nLight, settings_.maxDepth + 1); ++s) {
             float rx = 0, ry = 0;
             if (s == 1 && light_[0].kind != VertexKind::AreaLight) continue;
-            splat(connect(s, 1, false, rng, rx, ry), rx, ry);
+            const Rgb c = connect(s, 1, false, rng, rx, ry);  // before reading rx, ry
+            splat(c, rx, ry);
         }
         return Rgb(0, 0, 0);
     }
