@@ -10,16 +10,114 @@ void Document::setPath(std::string path) {
     emit pathChanged();
 }
 
-void Document::modify(const std::function<void(Scene&)>& edit) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    edit(*copy);
+void Document::publish(std::shared_ptr<Scene> copy) {
     scene_ = std::move(copy);
     emit changed(++version_);
 }
 
+void Document::modify(const std::function<void(Scene&)>& edit) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    edit(*copy);
+    publish(std::move(copy));
+}
+
 void Document::reset(Scene scene) {
+    undo_.clear();
     scene_ = std::make_shared<const Scene>(std::move(scene));
+    undo_.setClean();
     emit changed(++version_);
+    emit structureChanged();
+    emit cameraChanged();
+}
+
+void Document::setLight(int index, Light light) {
+    const bool renamed = scene_->lights.at(size_t(index)).name != light.name;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights[size_t(index)] = std::move(light);
+    publish(std::move(copy));
+    emit lightChanged(index);
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertLight(int index, Light light) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights.insert(copy->lights.begin() + index, std::move(light));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeLight(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights.erase(copy->lights.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setMaterial(int index, Material material) {
+    const bool renamed = scene_->materials.at(size_t(index)).name != material.name;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials[size_t(index)] = std::move(material);
+    publish(std::move(copy));
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertMaterial(int index, Material material) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials.insert(copy->materials.begin() + index, std::move(material));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeMaterial(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials.erase(copy->materials.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setObject(int index, Object object) {
+    const bool renamed = scene_->objects.at(size_t(index)).name != object.name;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects[size_t(index)] = std::move(object);
+    publish(std::move(copy));
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertObject(int index, Object object) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects.insert(copy->objects.begin() + index, std::move(object));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeObject(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects.erase(copy->objects.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setCamera(const Camera& camera) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->camera = camera;
+    publish(std::move(copy));
+    emit cameraChanged();
+}
+
+bool Document::nameInUse(const std::string& name) const {
+    for (const Object& o : scene_->objects)
+        if (o.name == name) return true;
+    for (const Light& l : scene_->lights)
+        if (l.name == name) return true;
+    return false;
+}
+
+std::string Document::uniqueName(const std::string& base) const {
+    if (!nameInUse(base)) return base;
+    for (int i = 2;; ++i) {
+        std::string candidate = base + "-" + std::to_string(i);
+        if (!nameInUse(candidate)) return candidate;
+    }
 }
 
 }  // namespace lucerna

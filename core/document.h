@@ -1,12 +1,15 @@
 #pragma once
-// The editable scene (DESIGN.md, "The flow of data"). Every change goes through a setter that
-// replaces the scene by an edited copy, bumps the version and emits changed(); backends only ever
-// hold the immutable snapshots it hands out. Mesh data is shared between copies, so a copy per
-// edit costs little.
+// The editable scene (DESIGN.md, "The flow of data"), in the house style of Tiled: the document
+// wraps the scene, owns the undo stack and emits a signal from each setter. Every setter replaces
+// the scene by an edited copy, bumps the version and emits changed(); backends only ever hold the
+// immutable snapshots it hands out. Mesh data is shared between copies, so a copy per edit costs
+// little. The setters are what the undo commands (ui/commands/) call; nothing else in the UI
+// edits the scene, so every edit is undoable.
 
 #include "core/scene.h"
 
 #include <QObject>
+#include <QUndoStack>
 
 #include <functional>
 
@@ -23,20 +26,52 @@ public:
     const std::string& path() const { return path_; }
     void setPath(std::string path);
 
+    QUndoStack* undoStack() { return &undo_; }
+    // Unsaved changes: the undo stack is away from the state last saved or opened.
+    bool isModified() const { return !undo_.isClean(); }
+    // After a save: the current state is the saved one.
+    void markSaved() { undo_.setClean(); }
+
     // Applies edit to a copy of the scene and publishes the copy. The edit must leave the scene
-    // valid (meshes resolved); the undo commands of the UI are built on this.
+    // valid (meshes resolved). Not undoable by itself: commands call it or the setters below.
     void modify(const std::function<void(Scene&)>& edit);
-    // Replaces the whole scene (open, revert).
+    // Replaces the whole scene (open, revert, recovery) and clears the undo history.
     void reset(Scene scene);
+
+    // Typed setters for the undo commands. Indices must be valid (insert: at most the size).
+    void setLight(int index, Light light);
+    void insertLight(int index, Light light);
+    void removeLight(int index);
+    void setMaterial(int index, Material material);
+    void insertMaterial(int index, Material material);
+    void removeMaterial(int index);
+    // The object must carry its resolved worldMesh (the commands resolve it once, not per redo).
+    void setObject(int index, Object object);
+    void insertObject(int index, Object object);
+    void removeObject(int index);
+    void setCamera(const Camera& camera);
+
+    // A name not used by any object or light (SPEC.md: names are unique across both): base,
+    // or base-2, base-3, ...
+    std::string uniqueName(const std::string& base) const;
+    bool nameInUse(const std::string& name) const;
 
 signals:
     void changed(uint64_t version);
+    // Finer signals so that views redo only what changed (the preview re-lights one light).
+    void lightChanged(int index);
+    void cameraChanged();
+    // Objects, lights or materials were added or removed, or renamed: lists must be rebuilt.
+    void structureChanged();
     void pathChanged();
 
 private:
+    void publish(std::shared_ptr<Scene> copy);
+
     SceneSnapshot scene_;
     uint64_t version_ = 1;
     std::string path_;
+    QUndoStack undo_;
 };
 
 }  // namespace lucerna

@@ -100,7 +100,9 @@ bool isPlyScalar(const std::string& type) {
 std::string plyHeaderProblem(const std::string& head, long long fileSize) {
     const size_t end = head.find("\nend_header");
     if (head.rfind("ply", 0) != 0) return "not a PLY file (it does not start with \"ply\")";
-    if (end == std::string::npos) return "the PLY header has no end_header line";
+    const std::string_view after = std::string_view(head).substr(std::min(head.size(), end + 11), 2);
+    if (end == std::string::npos || !(after.starts_with('\n') || after == "\r\n"))
+        return "the PLY header has no end_header line";
     std::istringstream lines(head.substr(0, end + 1));
     std::string line;
     std::getline(lines, line);  // "ply"
@@ -116,7 +118,7 @@ std::string plyHeaderProblem(const std::string& head, long long fileSize) {
         if (w.empty()) return bad();
         if (w[0] == "comment" || w[0] == "obj_info") continue;
         if (w[0] == "format") {
-            if (w.size() != 3 || format || !element.empty() ||
+            if (w.size() != 3 || w[2] != "1.0" || format || !element.empty() ||
                 (w[1] != "ascii" && w[1] != "binary_little_endian" && w[1] != "binary_big_endian"))
                 return bad();
             format = true;

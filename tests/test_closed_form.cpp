@@ -26,7 +26,12 @@ FloorComparison compareFloor(const Image& img, const std::vector<double>& expect
     }
     FloorComparison c;
     c.meanRelError = std::abs(sumT / sumE - 1.0);
+    // Blocks whose expected mean is under 5% of the brightest block's are skipped: there (a
+    // spot's cone edge crossing a corner block) a relative error measures how well 36 points
+    // integrate a pixel that the edge barely touches, not the renderer.
     const int b = 8;
+    std::vector<std::pair<double, double>> blocks;  // (rendered, expected) block sums
+    double brightest = 0;
     for (int by = 0; by + b <= img.height; by += b)
         for (int bx = 0; bx + b <= img.width; bx += b) {
             double t = 0, e = 0;
@@ -35,8 +40,11 @@ FloorComparison compareFloor(const Image& img, const std::vector<double>& expect
                     t += img.at(x, y).y;
                     e += expected[size_t(y) * img.width + x];
                 }
-            c.worstBlockRelError = std::max(c.worstBlockRelError, std::abs(t / e - 1.0));
+            blocks.emplace_back(t, e);
+            brightest = std::max(brightest, e);
         }
+    for (const auto& [t, e] : blocks)
+        if (e >= 0.05 * brightest) c.worstBlockRelError = std::max(c.worstBlockRelError, std::abs(t / e - 1.0));
     return c;
 }
 
@@ -58,6 +66,9 @@ private:
         QTest::addColumn<QString>("backend");
         QTest::addColumn<int>("spp");
         QTest::newRow("path") << "path" << 256;
+        // Light-tracing splats add their own noise on top of the camera strategies: 256 spp keeps
+        // it well inside the same 1% (mean) and 2% (8x8 block) bounds.
+        QTest::newRow("bdpt") << "bdpt" << 256;
     }
 };
 
@@ -78,8 +89,12 @@ void TestClosedForm::deltaLightOverPlane_data() {
     QTest::addColumn<int>("kind");
     for (const auto& [name, kind] : {std::pair{"point", DeltaLightOverPlane::Kind::Point},
                                      std::pair{"spot", DeltaLightOverPlane::Kind::Spot},
-                                     std::pair{"directional", DeltaLightOverPlane::Kind::Directional}})
+                                     std::pair{"directional", DeltaLightOverPlane::Kind::Directional}}) {
         QTest::newRow(qPrintable(QString("path %1").arg(name))) << "path" << 64 << int(kind);
+        // bdpt: the light-tracing share of the weight is small here but noisy; 512 spp keeps
+        // the 8x8 blocks of the spot's falloff well within 1%.
+        QTest::newRow(qPrintable(QString("bdpt %1").arg(name))) << "bdpt" << 512 << int(kind);
+    }
 }
 
 void TestClosedForm::deltaLightOverPlane() {

@@ -1,12 +1,50 @@
 #pragma once
-// Linear radiance to a displayable picture: exposure, then the sRGB transfer curve.
+// Linear radiance to a displayable picture: exposure, a tone curve (linear sRGB or a filmic
+// curve), or false colour of luminance in cd/m^2 (683 * Y, SPEC.md) on a log scale; and the
+// difference of two images in false colour. All views and the PNG export use these, so what is
+// exported is what the screen shows.
 
 #include "core/image.h"
 
 #include <QImage>
+#include <QString>
+
+class QPainter;
+class QRect;
 
 namespace lucerna {
 
+enum class ToneCurve { LinearSrgb, Filmic };
+
+struct DisplaySettings {
+    float exposureStops = 0.0f;
+    ToneCurve curve = ToneCurve::LinearSrgb;
+    bool falseColour = false;
+    // False-colour range of luminance, cd/m^2, mapped on a log scale.
+    double falseMin = 0.1, falseMax = 1000.0;
+    bool operator==(const DisplaySettings&) const = default;
+};
+
 QImage toDisplayImage(const Image& image, float exposureStops = 0.0f);
+QImage toDisplayImage(const Image& image, const DisplaySettings& settings);
+
+// The colour of t in [0, 1] on the false-colour ramp (blue, cyan, green, yellow, red, white).
+QColor falseColourRamp(double t);
+
+enum class DifferenceKind { Absolute, Relative };
+struct DifferenceImage {
+    QImage picture;
+    double maxValue = 0;  // the value at the top of the legend
+};
+// Per pixel, the mean over channels of |a - b| (absolute) or |a - b| / (|b| + 0.01) (relative),
+// in false colour from 0 to the 99th percentile. b is resampled to a's size when they differ.
+DifferenceImage differenceImage(const Image& a, const Image& b, DifferenceKind kind);
+
+// `image` resampled (nearest) to width x height: comparisons of a smaller preview with the
+// converged image.
+Image resampledNearest(const Image& image, int width, int height);
+
+// A vertical legend in `rect`: the ramp, and labels from lo to hi (log scale when logScale).
+void drawLegend(QPainter& painter, const QRect& rect, double lo, double hi, bool logScale, const QString& unit);
 
 }  // namespace lucerna

@@ -111,8 +111,10 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
             GpuVpl g{};
             put(g.positionIndex, v->position, float(gpu.size()));
             put(g.normalAlpha, v->normal, m.alpha);
-            put(g.incident, v->incident, 0);
-            put(g.power, v->power * scale, 0);
+            // A diffuse VPL's BSDF is albedo / pi whatever the direction: premultiplied here.
+            const bool glossy = m.type == MaterialType::Glossy && !isBlack(m.specular);
+            put(g.incident, v->incident, glossy ? 1.0f : 0.0f);
+            put(g.power, glossy ? v->power * scale : v->power * m.albedo * (scale / kPi), 0);
             put(g.albedo, m.albedo, 0);
             put(g.specular, m.type == MaterialType::Glossy ? m.specular : Rgb(0, 0, 0), 0);
             // The shadow map's centre sits just off the surface so the surface does not shadow it.

@@ -2,6 +2,7 @@
 
 #include "render/progressive/bdpt/bdpt_backend.h"
 #include "render/progressive/ir/ir_backend.h"
+#include "render/progressive/mir/mir_backend.h"
 #include "render/progressive/path/path_backend.h"
 #include "render/preview/preview_backend.h"
 
@@ -13,6 +14,7 @@ const BackendInfo kBackends[] = {
     {"path", "unidirectional path tracing with next-event estimation and MIS", &makePathBackend},
     {"bdpt", "bidirectional path tracing: every connection strategy, light-tracing splats, power-heuristic MIS", &makeBdptBackend},
     {"ir", "instant radiosity: fresh VPLs per pass, clamped gathering with path-traced bias compensation", &makeIrBackend},
+    {"mir", "Metropolis instant radiosity: VPLs from a multiple-try Metropolis chain over camera-to-light paths", &makeMirBackend},
     {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend},
 };
 }  // namespace

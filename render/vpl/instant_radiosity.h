@@ -25,7 +25,8 @@
 namespace lucerna {
 
 struct VplOptions {
-    int maxBounces = 16;       // surface interactions a particle may have (its last VPL's `bounce`)
+    int maxBounces = 1024;     // surface interactions a particle may have (its last VPL's `bounce`);
+                               // Russian roulette ends particles long before (a low cap is a bias)
     int minBounce = 1;         // VPLs with bounce < minBounce are not kept (the particle goes on);
                                // 2 drops the one-bounce indirect light, keeping longer paths only
     int rouletteStartBounce = 3;  // interactions before Russian roulette may end a particle

@@ -1,7 +1,7 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 
 #include "render/progressive/bdpt/bdpt_tracer.h"
-#include "render/trace/rng.h"
+#include "render/trace/sobol_sampler.h"
 
 #include <charconv>
 #include <cstdio>
@@ -36,7 +36,6 @@ void renderBdptPass(const RenderScene& scene, const BdptSettings& settings, uint
     const int tile = settings.tileSize;
     const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
     const int half = pass % 2;
-    const uint64_t passSeed = hashSeed(seed, uint64_t(pass), 0xb1d1u);
     // One splat list per tile: no contention while the pass runs, a fixed order afterwards.
     std::vector<std::vector<FilmSplat>> splats(size_t(tilesX) * tilesY);
     ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
@@ -46,9 +45,12 @@ void renderBdptPass(const RenderScene& scene, const BdptSettings& settings, uint
         const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
         for (int y = y0; y < y1; ++y)
             for (int x = x0; x < x1; ++x) {
-                Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
-                const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
-                Rgb L = tracer.sample(float(x) + jitter.x, float(y) + jitter.y, rng, tileSplats);
+                // Each half of the film draws from its own scrambled sequence per pixel (as the
+                // path backend does): stratified jitter and first bounces, independent halves.
+                SobolSampler sampler(hashSeed(seed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x), half),
+                                     uint32_t(pass / 2));
+                const V2f jitter = sampler.next2D();  // box filter: uniform over the pixel's square
+                Rgb L = tracer.sample(float(x) + jitter.x, float(y) + jitter.y, sampler, tileSplats);
                 if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
                 film.addSample(half, x, y, L);
             }

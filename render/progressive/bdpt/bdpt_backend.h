@@ -4,8 +4,8 @@
 //
 // A pass traces, for every pixel, one camera subpath through a uniformly jittered point of the
 // pixel and one light subpath, so `--spp N` is N camera samples per pixel plus N light subpaths
-// per pixel. Tiles run in parallel; each pixel's random stream depends only on (seed, pass,
-// pixel) and the light-tracing splats of each tile are added to the film in tile order after
+// per pixel. Tiles run in parallel; each pixel's samples (a scrambled Sobol sequence per pixel
+// and film half) depend only on (seed, pass, pixel) and the light-tracing splats of each tile are added to the film in tile order after
 // the pass, so a render is reproducible bit for bit whatever the number of threads.
 
 #include "render/progressive/backend.h"

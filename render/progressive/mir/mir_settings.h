@@ -1,0 +1,37 @@
+#pragma once
+// Settings of the Metropolis instant radiosity backend.
+
+#include "render/progressive/ir/ir_settings.h"
+#include "render/progressive/mir/metropolis.h"
+
+namespace lucerna {
+
+struct MirSettings {
+    GatherSettings gather;
+    VplOptions vpl;                // light sub-paths of the chain's paths
+    int pathVplsPerPass = 64;      // n: chain steps, hence path VPLs, per pass
+    int tries = 4;                 // multiple-try Metropolis trials per step (1: plain MH)
+    float largeStepProbability = 0.3f;
+    int startCandidates = 1024;    // uniform candidates the chain starts from (importance resampling)
+    int pcSamplesPerPass = 256;    // extra independent uniform path samples refining Pc each pass
+    int normalizationStride = 2;   // each VPL's image contribution is measured on one camera sample
+                                   // per stride x stride block of pixels (1: every pixel)
+
+    // Reads "vpl_paths", "tries", "large_step", "pc_samples", "norm_stride", "max_bounces",
+    // "clamp", "compensate"; throws std::invalid_argument on bad values.
+    static MirSettings fromOptions(const RenderSettings& settings);
+};
+
+inline MirSettings MirSettings::fromOptions(const RenderSettings& settings) {
+    MirSettings s;
+    s.gather = gatherSettingsFromOptions(settings);
+    readIntOption(settings, "vpl_paths", s.pathVplsPerPass, 1);
+    readIntOption(settings, "tries", s.tries, 1);
+    readFloatOption(settings, "large_step", s.largeStepProbability, 1e-3f, 1.0f);
+    readIntOption(settings, "pc_samples", s.pcSamplesPerPass, 0);
+    readIntOption(settings, "norm_stride", s.normalizationStride, 1);
+    readIntOption(settings, "max_bounces", s.vpl.maxBounces, 1);
+    return s;
+}
+
+}  // namespace lucerna
