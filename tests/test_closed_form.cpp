@@ -69,6 +69,11 @@ private:
         // Light-tracing splats add their own noise on top of the camera strategies: 256 spp keeps
         // it well inside the same 1% (mean) and 2% (8x8 block) bounds.
         QTest::newRow("bdpt") << "bdpt" << 256;
+        // ir and mir light these scenes directly by next-event estimation, as path does; in the
+        // sphere, indirect light comes from VPLs (a fresh set per pass for ir, the chain's for
+        // mir), whose pass-to-pass noise is shared by every pixel: more passes.
+        QTest::newRow("ir") << "ir" << 256;
+        QTest::newRow("mir") << "mir" << 256;
     }
 };
 
@@ -94,6 +99,8 @@ void TestClosedForm::deltaLightOverPlane_data() {
         // bdpt: the light-tracing share of the weight is small here but noisy; 512 spp keeps
         // the 8x8 blocks of the spot's falloff well within 1%.
         QTest::newRow(qPrintable(QString("bdpt %1").arg(name))) << "bdpt" << 512 << int(kind);
+        QTest::newRow(qPrintable(QString("ir %1").arg(name))) << "ir" << 64 << int(kind);
+        QTest::newRow(qPrintable(QString("mir %1").arg(name))) << "mir" << 64 << int(kind);
     }
 }
 
