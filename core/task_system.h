@@ -6,8 +6,13 @@
 // A job never runs on the thread that submits it: each submitted job gets a thread of its own that
 // enters the arena, so the GUI or the command line stays free to show progress and to cancel.
 
+// Qt defines `emit` as a macro and oneTBB has a member function of that name: keep the macro
+// away from TBB's headers, whichever is included first.
+#pragma push_macro("emit")
+#undef emit
 #include <tbb/task_arena.h>
 #include <tbb/task_group.h>
+#pragma pop_macro("emit")
 
 #include <atomic>
 #include <exception>

@@ -3,6 +3,7 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 #include "render/progressive/ir/ir_backend.h"
 #include "render/progressive/mir/mir_backend.h"
+#include "render/progressive/mlt/mlt_backend.h"
 #include "render/progressive/path/path_backend.h"
 #include "render/preview/preview_backend.h"
 
@@ -15,6 +16,7 @@ const BackendInfo kBackends[] = {
     {"bdpt", "bidirectional path tracing: every connection strategy, light-tracing splats, power-heuristic MIS", &makeBdptBackend},
     {"ir", "instant radiosity: fresh VPLs per pass, clamped gathering with path-traced bias compensation", &makeIrBackend},
     {"mir", "Metropolis instant radiosity: VPLs from a multiple-try Metropolis chain over camera-to-light paths", &makeMirBackend},
+    {"mlt", "Metropolis light transport: primary-sample-space chains driving the bidirectional sampler", &makeMltBackend},
     {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend},
 };
 }  // namespace

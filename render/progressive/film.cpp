@@ -14,7 +14,7 @@ Image Film::image() const {
     const double n = samplesPerPixel();
     if (n <= 0) return img;
     for (size_t i = 0; i < img.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) img.pixels[i][c] = float((sums_[0][i][c] + sums_[1][i][c]) / n);
+        for (int c = 0; c < 3; ++c) img.pixels[i][c] = float((scale_[0] * sums_[0][i][c] + scale_[1] * sums_[1][i][c]) / n);
     return img;
 }
 
@@ -23,7 +23,7 @@ Image Film::halfImage(int half) const {
     const double n = samples_[half];
     if (n <= 0) return img;
     for (size_t i = 0; i < img.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) img.pixels[i][c] = float(sums_[half][i][c] / n);
+        for (int c = 0; c < 3; ++c) img.pixels[i][c] = float(scale_[half] * sums_[half][i][c] / n);
     return img;
 }
 
@@ -34,8 +34,9 @@ double Film::estimatedRelmse() const {
     size_t count = 0;
     for (size_t i = 0; i < sums_[0].size(); ++i)
         for (int c = 0; c < 3; ++c) {
-            const double a = sums_[0][i][c] / samples_[0], b = sums_[1][i][c] / samples_[1];
-            const double m = (sums_[0][i][c] + sums_[1][i][c]) / n;
+            const double sa = scale_[0] * sums_[0][i][c], sb = scale_[1] * sums_[1][i][c];
+            const double a = sa / samples_[0], b = sb / samples_[1];
+            const double m = (sa + sb) / n;
             // With per-sample variance s^2, E[(a - b)^2] = s^2 (1/na + 1/nb) while the combined
             // mean has variance s^2 / n: the ratio is na nb / n^2 (1/4 for equal halves).
             const double mse = (a - b) * (a - b) * (samples_[0] / n) * (samples_[1] / n);

@@ -48,6 +48,11 @@ public:
 
     double samplesPerPixel() const { return samples_[0] + samples_[1]; }
 
+    // Multiplies everything `half` holds, past and future, by `scale` when the film is read: for
+    // Metropolis backends whose normalisation is refined as the render runs, so that old passes
+    // carry the newest estimate too. 1 unless set.
+    void setHalfScale(int half, double scale) { scale_[half] = scale; }
+
     // The combined estimate (mean of all samples).
     Image image() const;
     // One half's own estimate.
@@ -61,6 +66,7 @@ private:
     int width_, height_;
     std::array<std::vector<std::array<double, 3>>, 2> sums_;
     std::array<double, 2> samples_{0.0, 0.0};
+    std::array<double, 2> scale_{1.0, 1.0};
 };
 
 }  // namespace lucerna

@@ -1,0 +1,159 @@
+#include "render/progressive/mlt/mlt_backend.h"
+
+#include "render/progressive/film.h"
+#include "render/progressive/mlt/mlt_chain.h"
+#include "render/trace/discrete_distribution.h"
+#include "render/trace/render_scene.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace lucerna {
+
+namespace {
+
+std::string number(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+// One film half: its normalisation and its chains.
+struct ChainSet {
+    double bootstrapSum = 0;  // of f over the bootstrap samples
+    long long bootstrapCount = 0;
+    std::vector<std::unique_ptr<MltChain>> chains;
+
+    // b = int f du: the mean of f over every uniform sample so far, the bootstrap's and the
+    // chains' large steps'.
+    double b() const {
+        double sum = bootstrapSum;
+        long long count = bootstrapCount;
+        for (const auto& c : chains) {
+            sum += c->largeStepSum();
+            count += c->largeSteps();
+        }
+        return count > 0 ? sum / double(count) : 0.0;
+    }
+};
+
+class MltBackend final : public ProgressiveBackend {
+public:
+    MltBackend(SceneSnapshot scene, const RenderSettings& settings)
+        : snapshot_(std::move(scene)), settings_(settings), mlt_(MltSettings::fromOptions(settings)) {}
+
+    void prepare(TaskContext& ctx) override {
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        for (int half = 0; half < 2 && !ctx.isCancelled(); ++half) halves_[half] = bootstrap(ctx, half);
+    }
+
+    void renderPass(TaskContext& ctx, int pass) override {
+        const int half = pass % 2;
+        ChainSet& set = halves_[half];
+        const PinholeCamera& camera = scene_->camera();
+        const double pixels = double(camera.width()) * double(camera.height());
+        const int n = int(set.chains.size());
+        if (n == 0) {  // nothing reaches the camera: the image is black
+            film_->finishPass(half);
+            return;
+        }
+        const int perChain = std::max(1, int(std::ceil(double(mlt_.mutationsPerPixel) * pixels / n)));
+        const double scale = pixels / (double(perChain) * n);
+        std::vector<std::vector<FilmSplat>> deposits(static_cast<size_t>(n));
+        ctx.parallelFor(0, n, [&](int c) {
+            // Cancellation is checked between chains: a chain's share is a few milliseconds.
+            if (!ctx.isCancelled()) set.chains[size_t(c)]->run(perChain, scale, deposits[size_t(c)]);
+        });
+        if (ctx.isCancelled()) return;
+        for (const auto& list : deposits) film_->addSplats(half, list);
+        film_->finishPass(half);
+        film_->setHalfScale(half, set.b());
+    }
+
+    const Film& film() const override { return *film_; }
+
+    std::map<std::string, std::string> diagnostics() const override {
+        std::map<std::string, std::string> d;
+        long long steps = 0, accepted = 0, large = 0, largeAccepted = 0;
+        for (const ChainSet& set : halves_)
+            for (const auto& c : set.chains) {
+                steps += c->steps();
+                accepted += c->accepted();
+                large += c->largeSteps();
+                largeAccepted += c->largeAccepted();
+            }
+        const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
+        d["mlt_acceptance_small"] = number(rate(accepted - largeAccepted, steps - large));
+        d["mlt_acceptance_large"] = number(rate(largeAccepted, large));
+        d["mlt_b_half0"] = number(halves_[0].b());
+        d["mlt_b_half1"] = number(halves_[1].b());
+        d["mlt_chains"] = std::to_string(mlt_.chains);
+        return d;
+    }
+
+private:
+    // b = mean of f over uniform samples, and chains started from samples drawn in proportion to
+    // f among them (each replays its sample from the same seed).
+    ChainSet bootstrap(TaskContext& ctx, int half) {
+        const int n = mlt_.bootstrapSamples, blocks = 64;
+        std::vector<double> f(size_t(n), 0.0);
+        const auto seedOf = [&](int i) { return hashSeed(settings_.seed, uint64_t(half), uint64_t(i) + 1); };
+        ctx.parallelFor(0, blocks, [&](int block) {
+            BdptTracer tracer(*scene_, mlt_.bdpt);
+            PathContribution c;
+            for (int i = block; i < n && !ctx.isCancelled(); i += blocks) {
+                PssSampler sampler(seedOf(i), mlt_.sigma, mlt_.largeStepProbability);
+                sampler.startLargeStep();
+                evaluatePath(tracer, scene_->camera(), sampler, c);
+                f[size_t(i)] = c.f;
+            }
+        });
+        ChainSet set;
+        for (double v : f) set.bootstrapSum += v;
+        set.bootstrapCount = n;
+        const DiscreteDistribution distribution(f);
+        if (distribution.empty() || ctx.isCancelled()) return set;
+        Rng rng(hashSeed(settings_.seed, uint64_t(half), 0x6368));
+        for (int c = 0; c < mlt_.chains; ++c)
+            set.chains.push_back(
+                std::make_unique<MltChain>(*scene_, mlt_, seedOf(int(distribution.sample(rng.next1D())))));
+        return set;
+    }
+
+    SceneSnapshot snapshot_;
+    RenderSettings settings_;
+    MltSettings mlt_;
+    std::unique_ptr<RenderScene> scene_;
+    std::unique_ptr<Film> film_;
+    ChainSet halves_[2];
+};
+
+}  // namespace
+
+MltSettings MltSettings::fromOptions(const RenderSettings& settings) {
+    MltSettings s;
+    s.bdpt = BdptSettings::fromOptions(settings);
+    const auto read = [&](const char* key, auto& value, double lo, double hi) {
+        const auto it = settings.options.find(key);
+        if (it == settings.options.end()) return;
+        char* end = nullptr;
+        const double v = std::strtod(it->second.c_str(), &end);
+        if (end == it->second.c_str() || *end != '\0' || !(v >= lo && v <= hi))
+            throw std::invalid_argument(std::string("option ") + key + " must be a number in [" + number(lo) + ", " +
+                                        number(hi) + "], got '" + it->second + "'");
+        value = static_cast<std::remove_reference_t<decltype(value)>>(v);
+    };
+    read("bootstrap", s.bootstrapSamples, 1, 1e8);
+    read("chains", s.chains, 1, 1e6);
+    read("mutations", s.mutationsPerPixel, 1e-3, 1e4);
+    read("large_step", s.largeStepProbability, 0, 1);
+    read("sigma", s.sigma, 1e-5, 0.5);
+    return s;
+}
+
+std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings) {
+    return std::make_unique<MltBackend>(std::move(scene), settings);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,21 @@
+#pragma once
+// Settings of the Metropolis light transport backend.
+
+#include "render/progressive/bdpt/bdpt_settings.h"
+
+namespace lucerna {
+
+struct MltSettings {
+    BdptSettings bdpt;               // the bidirectional sampler the chains drive
+    int bootstrapSamples = 65536;    // uniform samples per film half: b = int f, and the chains' seeds
+    int chains = 128;                // independent chains per film half
+    float mutationsPerPixel = 1.0f;  // mutations per pass, per pixel of the image
+    float largeStepProbability = 0.3f;
+    float sigma = 0.01f;             // small steps: standard deviation in primary sample space
+
+    // Reads "bootstrap", "chains", "mutations", "large_step", "sigma" and bdpt's own options;
+    // throws std::invalid_argument on bad values.
+    static MltSettings fromOptions(const RenderSettings& settings);
+};
+
+}  // namespace lucerna
