@@ -29,13 +29,4 @@ const BackendInfo* findBackend(std::string_view name) {
     return nullptr;
 }
 
-AutoChoice chooseAutoBackend(const Scene& scene) {
-    // Only the path tracer exists so far; the choice between MIR and CMLT comes with them.
-    const SceneFeatures f = analyseFeatures(scene);
-    std::string reason = "path: the only progressive backend built so far (scene: ";
-    reason += f.hasSpecular() ? "specular" : (f.hasGlossy ? "glossy" : "diffuse only");
-    reason += ")";
-    return {"path", reason};
-}
-
 }  // namespace lucerna
