@@ -1,64 +1,293 @@
 #include "ui/main_window.h"
 
+#include "core/exr_io.h"
 #include "core/scene_io.h"
-#include "render/progressive/backend.h"
+#include "ui/commands/light_commands.h"
+#include "ui/commands/scene_commands.h"
+#include "ui/converging_render.h"
 #include "ui/display.h"
+#include "ui/light_properties.h"
+#include "ui/live_preview.h"
+#include "ui/outliner.h"
+#include "ui/render_panel.h"
+#include "ui/viewport.h"
 
+#include <QApplication>
+#include <QCloseEvent>
+#include <QDir>
+#include <QDockWidget>
+#include <QFileDialog>
 #include <QFileInfo>
+#include <QLabel>
+#include <QMenuBar>
+#include <QSettings>
 #include <QStatusBar>
+#include <QTimer>
+
+#include <filesystem>
 
 namespace lucerna {
 
-MainWindow::MainWindow(const std::string& scenePath, QWidget* parent) : QMainWindow(parent) {
-    view_ = new QLabel(this);
-    view_->setAlignment(Qt::AlignCenter);
-    view_->setMinimumSize(256, 256);
-    setCentralWidget(view_);
-    resize(900, 700);
-    connect(&refresh_, &QTimer::timeout, this, &MainWindow::showNewestFrame);
-    refresh_.start(200);
-    openScene(scenePath);
+MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
+    : QMainWindow(parent), doc_(std::make_unique<Document>(Scene{})),
+      render_(std::make_unique<ConvergingRender>(tasks_, gate_)),
+      preview_(std::make_unique<LivePreview>(gate_)) {
+    setObjectName("MainWindow");
+    viewport_ = new Viewport(doc_.get(), gate_, this);
+    viewport_->setObjectName("viewport");
+    setCentralWidget(viewport_);
+    createDocks();
+    createMenus();
+    previewInfo_ = new QLabel(this);
+    statusBar()->addPermanentWidget(previewInfo_);
+
+    // Every edit reaches both images: the preview draws the newest snapshot, the converging
+    // render restarts on it.
+    connect(doc_.get(), &Document::changed, this, [this] {
+        preview_->setScene(doc_->snapshot());
+        render_->setScene(doc_->snapshot());
+    });
+    connect(doc_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
+    connect(doc_.get(), &Document::pathChanged, this, &MainWindow::updateTitle);
+    connect(preview_.get(), &LivePreview::frameReady, this, &MainWindow::showPreviewFrame);
+
+    resize(1500, 900);
+    QSettings settings;
+    restoreGeometry(settings.value("window/geometry").toByteArray());
+    if (!restoreState(settings.value("window/state").toByteArray())) {
+        // First start: preview and converged image side by side at the same size. Dock sizes
+        // only take once the window has its layout, hence after the first turn of the loop.
+        QTimer::singleShot(0, this, [this] {
+            const int side = std::max(340, width() / 5);
+            resizeDocks({outlinerDock_, renderDock_}, {side, (width() - side) / 2}, Qt::Horizontal);
+        });
+    }
+    updateTitle();
+    if (!scenePath.isEmpty()) openFile(scenePath);
 }
 
 MainWindow::~MainWindow() {
-    if (job_) job_->cancel();
+    // The jobs first, while everything they report to is still there.
+    render_.reset();
+    preview_.reset();
 }
 
-void MainWindow::openScene(const std::string& path) {
-    if (job_) job_->cancel();
-    job_.reset();
-    setWindowTitle(QStringLiteral("%1 - Lucerna").arg(QFileInfo(QString::fromStdString(path)).fileName()));
-    SceneSnapshot scene;
+void MainWindow::createDocks() {
+    renderPanel_ = new RenderPanel(render_.get(), this);
+    outliner_ = new Outliner(doc_.get(), this);
+    outliner_->setObjectName("outliner");
+    properties_ = new LightProperties(doc_.get(), this);
+    properties_->setObjectName("lightProperties");
+    const auto dock = [this](QWidget* w, const QString& title, const QString& name, Qt::DockWidgetArea area) {
+        auto* d = new QDockWidget(title, this);
+        d->setObjectName(name);  // saveState() needs names
+        d->setWidget(w);
+        addDockWidget(area, d);
+        return d;
+    };
+    QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea);
+    QDockWidget* outlinerDock = dock(outliner_, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
+    dock(properties_, tr("Light properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    renderDock_ = renderDock;
+    outlinerDock_ = outlinerDock;
+
+    connect(outliner_, &Outliner::selectionChangedTo, this, [this](Outliner::Selection s) {
+        const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
+        properties_->setLight(light);
+        viewport_->setSelectedLight(light);
+    });
+    connect(viewport_, &Viewport::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
+}
+
+void MainWindow::createMenus() {
+    QMenu* file = menuBar()->addMenu(tr("&File"));
+    const auto add = [this](QMenu* menu, const QString& text, const QString& name, const QKeySequence& key,
+                            auto slot) {
+        QAction* a = menu->addAction(text, this, slot);
+        a->setObjectName(name);
+        a->setShortcut(key);
+        return a;
+    };
+    add(file, tr("&Open..."), "actionOpen", QKeySequence::Open, [this] {
+        if (!maybeSave()) return;
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {}, tr("Lucerna scenes (*.json)"));
+        if (!path.isEmpty() && !openFile(path)) QMessageBox::warning(this, tr("Open scene"), lastError_);
+    });
+    add(file, tr("&Save"), "actionSave", QKeySequence::Save, [this] {
+        if (!save() && !lastError_.isEmpty()) QMessageBox::warning(this, tr("Save scene"), lastError_);
+    });
+    add(file, tr("Save &As..."), "actionSaveAs", QKeySequence::SaveAs, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), {}, tr("Lucerna scenes (*.json)"));
+        if (!path.isEmpty() && !saveFileAs(path)) QMessageBox::warning(this, tr("Save scene"), lastError_);
+    });
+    file->addSeparator();
+    add(file, tr("&Export EXR..."), "actionExportExr", QKeySequence(tr("Ctrl+E")), [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the converged image"), {}, tr("OpenEXR (*.exr)"));
+        if (!path.isEmpty() && !exportExr(path)) QMessageBox::warning(this, tr("Export EXR"), lastError_);
+    });
+    file->addSeparator();
+    add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit, [this] { close(); });
+
+    QMenu* edit = menuBar()->addMenu(tr("&Edit"));
+    QAction* undo = doc_->undoStack()->createUndoAction(this, tr("&Undo"));
+    undo->setObjectName("actionUndo");
+    undo->setShortcut(QKeySequence::Undo);
+    QAction* redo = doc_->undoStack()->createRedoAction(this, tr("&Redo"));
+    redo->setObjectName("actionRedo");
+    redo->setShortcut(QKeySequence::Redo);
+    edit->addAction(undo);
+    edit->addAction(redo);
+    edit->addSeparator();
+    add(edit, tr("Add &Point Light"), "actionAddPointLight", QKeySequence(tr("Ctrl+Alt+P")),
+        [this] { addLight(LightType::Point); });
+    add(edit, tr("Add S&pot Light"), "actionAddSpotLight", QKeySequence(tr("Ctrl+Alt+S")),
+        [this] { addLight(LightType::Spot); });
+    add(edit, tr("Add &Directional Light"), "actionAddDirectionalLight", QKeySequence(tr("Ctrl+Alt+D")),
+        [this] { addLight(LightType::Directional); });
+    add(edit, tr("D&uplicate"), "actionDuplicate", QKeySequence(tr("Ctrl+D")), [this] { duplicateSelection(); });
+    add(edit, tr("&Delete"), "actionDelete", QKeySequence::Delete, [this] { deleteSelection(); });
+
+    QMenu* view = menuBar()->addMenu(tr("&View"));
+    for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
+}
+
+void MainWindow::fail(const QString& message) {
+    lastError_ = message;
+    statusBar()->showMessage(message);
+}
+
+bool MainWindow::openFile(const QString& path) {
+    Scene scene;
     try {
-        scene = std::make_shared<const Scene>(loadScene(path));
+        scene = loadScene(path.toStdString());
     } catch (const std::exception& e) {
-        statusBar()->showMessage(QString::fromStdString(e.what()));
+        fail(QString::fromStdString(e.what()));
+        return false;
+    }
+    doc_->reset(std::move(scene));
+    doc_->setPath(QFileInfo(path).absoluteFilePath().toStdString());
+    render_->start();
+    statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::save() {
+    if (doc_->path().empty()) {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Save scene"), {}, tr("Lucerna scenes (*.json)"));
+        return !path.isEmpty() && saveFileAs(path);
+    }
+    return saveFileAs(QString::fromStdString(doc_->path()));
+}
+
+bool MainWindow::saveFileAs(const QString& path) {
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    // Mesh files are named relative to the scene's folder: rebase them on the new folder, so that
+    // the saved file finds the same meshes.
+    Scene scene = doc_->scene();
+    const QDir newDir = QFileInfo(absolute).absoluteDir();
+    for (Object& o : scene.objects)
+        if (o.mesh.kind == MeshSource::Kind::File && !std::filesystem::path(o.mesh.file).is_absolute()) {
+            const QString meshPath = QDir(QString::fromStdString(scene.baseDir)).absoluteFilePath(QString::fromStdString(o.mesh.file));
+            o.mesh.file = newDir.relativeFilePath(meshPath).toStdString();
+        }
+    try {
+        saveScene(scene, absolute.toStdString());
+    } catch (const std::exception& e) {
+        fail(tr("Could not save %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    if (newDir.absolutePath() != QDir(QString::fromStdString(doc_->scene().baseDir)).absolutePath()) {
+        // Reload so that the document's folder and mesh paths are the saved file's. Not undoable
+        // across the save, as in any editor after Save As to another folder.
+        if (!openFile(absolute)) return false;
+    } else {
+        doc_->setPath(absolute.toStdString());
+        doc_->markSaved();
+    }
+    statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::exportExr(const QString& path) {
+    const auto frame = render_->frame();
+    if (!frame) {
+        fail(tr("Nothing to export yet: the converging render has no frame."));
+        return false;
+    }
+    try {
+        writeExr(path.toStdString(), frame->image);  // carries lucerna:backend, spp, seconds, seed
+    } catch (const std::exception& e) {
+        fail(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1 (%2 spp)").arg(path).arg(frame->samplesPerPixel), 5000);
+    return true;
+}
+
+bool MainWindow::maybeSave() {
+    if (!doc_->isModified()) return true;
+    const QMessageBox::StandardButton answer =
+        ask_ ? ask_()
+             : QMessageBox::warning(this, tr("Unsaved changes"), tr("The scene has unsaved changes. Save them?"),
+                                    QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
+    if (answer == QMessageBox::Save) return save();
+    return answer == QMessageBox::Discard;
+}
+
+int MainWindow::selectedLight() const {
+    const Outliner::Selection s = outliner_->selection();
+    return s.kind == Outliner::Kind::Light ? s.index : -1;
+}
+
+void MainWindow::addLight(LightType type) {
+    const char* base = type == LightType::Point ? "point" : type == LightType::Spot ? "spot" : "sun";
+    const int index = int(doc_->scene().lights.size());
+    Light light = defaultLight(doc_->scene(), type, doc_->uniqueName(base));
+    doc_->undoStack()->push(new AddLightCommand(doc_.get(), index, light,
+                                                tr("Add %1").arg(QString::fromStdString(light.name))));
+    outliner_->select(Outliner::Kind::Light, index);
+}
+
+void MainWindow::duplicateSelection() {
+    const int index = selectedLight();
+    if (index < 0) return;
+    Light light = doc_->scene().lights[size_t(index)];
+    light.name = doc_->uniqueName(light.name);
+    doc_->undoStack()->push(new AddLightCommand(doc_.get(), index + 1, light,
+                                                tr("Duplicate %1").arg(QString::fromStdString(light.name))));
+    outliner_->select(Outliner::Kind::Light, index + 1);
+}
+
+void MainWindow::deleteSelection() {
+    const Outliner::Selection s = outliner_->selection();
+    if (s.kind == Outliner::Kind::Light)
+        doc_->undoStack()->push(new DeleteLightCommand(doc_.get(), s.index));
+    else if (s.kind == Outliner::Kind::Object)
+        doc_->undoStack()->push(new DeleteObjectCommand(doc_.get(), s.index));
+}
+
+void MainWindow::showPreviewFrame() {
+    const auto frame = preview_->frame();
+    if (!frame) return;
+    viewport_->setImage(toDisplayImage(frame->image));
+    previewInfo_->setText(tr("Preview: %1, %2 ms").arg(preview_->engineDescription()).arg(frame->milliseconds, 0, 'f', 0));
+}
+
+void MainWindow::updateTitle() {
+    const QString name = doc_->path().empty() ? tr("untitled") : QFileInfo(QString::fromStdString(doc_->path())).fileName();
+    setWindowTitle(tr("%1[*] - Lucerna").arg(name));
+    setWindowModified(doc_->isModified());
+}
+
+void MainWindow::closeEvent(QCloseEvent* event) {
+    if (!maybeSave()) {
+        event->ignore();
         return;
     }
-    const AutoChoice choice = chooseAutoBackend(*scene);
-    RenderSettings settings;
-    settings.seconds = 1e9;  // converge until the scene changes or the window closes
-    statusBar()->showMessage(QString::fromStdString("auto: " + choice.reason));
-    job_ = tasks_.submit([this, scene, settings, name = choice.backend](TaskContext& ctx) {
-        auto backend = findBackend(name)->make(scene, settings);
-        backend->prepare(ctx);
-        runProgressive(*backend, name, settings, ctx, &frames_, 0.25);
-    });
-}
-
-void MainWindow::showNewestFrame() {
-    if (frames_.version() == shownVersion_) return;
-    shownVersion_ = frames_.version();
-    shown_ = frames_.get();
-    if (!shown_) return;
-    // Fit the view, keeping the aspect ratio; upscaling stays sharp so that pixels can be read.
-    const QImage picture = toDisplayImage(shown_->image);
-    const QSize fitted = picture.size().scaled(view_->size(), Qt::KeepAspectRatio);
-    view_->setPixmap(QPixmap::fromImage(picture.scaled(fitted, Qt::IgnoreAspectRatio, Qt::FastTransformation)));
-    statusBar()->showMessage(QStringLiteral("%1 spp, %2 s, estimated relmse %3")
-                                 .arg(shown_->samplesPerPixel)
-                                 .arg(shown_->seconds, 0, 'f', 1)
-                                 .arg(shown_->estimatedRelmse, 0, 'g', 3));
+    QSettings settings;
+    settings.setValue("window/geometry", saveGeometry());
+    settings.setValue("window/state", saveState());
+    event->accept();
 }
 
 }  // namespace lucerna

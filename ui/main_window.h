@@ -1,39 +1,91 @@
 #pragma once
-// The application window. For now: the scene's converging physically based render, with its
-// progress in the status bar.
+// The application window, in the shape of Tiled's: the document and its undo stack, the viewport
+// with the live preview in the middle, and docks for the converging render, the outliner and the
+// selected light's properties. The window only wires these together and runs the file menu;
+// each part is its own widget, and every edit is an undo command (ui/commands/).
 
+// oneTBB before any Qt header: Qt's `emit` macro breaks TBB's headers.
 #include "core/task_system.h"
-#include "render/progressive/progressive_render.h"
+#include "core/document.h"
+#include "ui/yield_gate.h"
 
-#include <QLabel>
 #include <QMainWindow>
-#include <QTimer>
+#include <QMessageBox>
 
+#include <functional>
 #include <memory>
-#include <string>
+
+class QDockWidget;
+class QLabel;
 
 namespace lucerna {
+
+class ConvergingRender;
+class LightProperties;
+class LivePreview;
+class Outliner;
+class RenderPanel;
+class Viewport;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 public:
-    explicit MainWindow(const std::string& scenePath, QWidget* parent = nullptr);
+    // Opens scenePath when given (a failure is reported in the status bar; the window stays).
+    explicit MainWindow(const QString& scenePath = {}, QWidget* parent = nullptr);
+    explicit MainWindow(const std::string& scenePath, QWidget* parent = nullptr)
+        : MainWindow(QString::fromStdString(scenePath), parent) {}
     ~MainWindow() override;
 
-    // The newest frame shown so far (null before the first).
-    std::shared_ptr<const RenderFrame> shownFrame() const { return shown_; }
+    // The file operations behind the menu, without dialogs. Each returns false and says why in
+    // the status bar (and lastError()) when it fails.
+    bool openFile(const QString& path);
+    bool save();                           // to the document's path; Save As when it has none
+    bool saveFileAs(const QString& path);
+    bool exportExr(const QString& path);   // the converging render's newest frame, SPEC.md section 3
+    // Before unsaved changes are lost: asks (Save, Discard, Cancel); true when it may go on.
+    bool maybeSave();
+    // Replaces the question maybeSave() asks (tests answer without a modal dialog).
+    void setSaveQuestion(std::function<QMessageBox::StandardButton()> ask) { ask_ = std::move(ask); }
+    QString lastError() const { return lastError_; }
+
+    // Edit menu operations on the selection.
+    void addLight(LightType type);
+    void duplicateSelection();
+    void deleteSelection();
+    int selectedLight() const;
+
+    Document* document() const { return doc_.get(); }
+    ConvergingRender* convergingRender() const { return render_.get(); }
+    LivePreview* livePreview() const { return preview_.get(); }
+    Viewport* viewport() const { return viewport_; }
+    RenderPanel* renderPanel() const { return renderPanel_; }
+    Outliner* outliner() const { return outliner_; }
+    LightProperties* lightProperties() const { return properties_; }
+
+protected:
+    void closeEvent(QCloseEvent* event) override;
 
 private:
-    void openScene(const std::string& path);
-    void showNewestFrame();
+    void createDocks();
+    void createMenus();
+    void showPreviewFrame();
+    void updateTitle();
+    void fail(const QString& message);
 
-    QLabel* view_ = nullptr;
-    QTimer refresh_;
+    std::unique_ptr<Document> doc_;
     TaskSystem tasks_;
-    Latest<RenderFrame> frames_;
-    std::shared_ptr<TaskHandle> job_;
-    std::shared_ptr<const RenderFrame> shown_;
-    uint64_t shownVersion_ = 0;
+    YieldGate gate_;
+    // After tasks_: their jobs run in its arena and end before it goes.
+    std::unique_ptr<ConvergingRender> render_;
+    std::unique_ptr<LivePreview> preview_;
+    Viewport* viewport_ = nullptr;
+    RenderPanel* renderPanel_ = nullptr;
+    Outliner* outliner_ = nullptr;
+    LightProperties* properties_ = nullptr;
+    QLabel* previewInfo_ = nullptr;
+    QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;
+    std::function<QMessageBox::StandardButton()> ask_;
+    QString lastError_;
 };
 
 }  // namespace lucerna

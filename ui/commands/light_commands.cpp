@@ -1,0 +1,69 @@
+#include "ui/commands/light_commands.h"
+
+#include "ui/scene_geometry.h"
+
+namespace lucerna {
+
+AddLightCommand::AddLightCommand(Document* doc, int index, Light light, const QString& text)
+    : QUndoCommand(text), doc_(doc), index_(index), light_(std::move(light)) {}
+
+void AddLightCommand::redo() { doc_->insertLight(index_, light_); }
+void AddLightCommand::undo() { doc_->removeLight(index_); }
+
+DeleteLightCommand::DeleteLightCommand(Document* doc, int index)
+    : QUndoCommand(QObject::tr("Delete %1").arg(QString::fromStdString(doc->scene().lights.at(size_t(index)).name))),
+      doc_(doc), index_(index), light_(doc->scene().lights.at(size_t(index))) {}
+
+void DeleteLightCommand::redo() { doc_->removeLight(index_); }
+void DeleteLightCommand::undo() { doc_->insertLight(index_, light_); }
+
+EditLightCommand::EditLightCommand(Document* doc, int index, Light after, int mergeKey, const QString& text)
+    : QUndoCommand(text), doc_(doc), index_(index), before_(doc->scene().lights.at(size_t(index))),
+      after_(std::move(after)), mergeKey_(mergeKey) {}
+
+void EditLightCommand::redo() { doc_->setLight(index_, after_); }
+void EditLightCommand::undo() { doc_->setLight(index_, before_); }
+
+bool EditLightCommand::mergeWith(const QUndoCommand* other) {
+    const auto* o = static_cast<const EditLightCommand*>(other);
+    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_ || o->index_ != index_) return false;
+    after_ = o->after_;
+    return true;
+}
+
+QString lightTypeName(LightType type) {
+    switch (type) {
+    case LightType::Point: return QObject::tr("Point light");
+    case LightType::Spot: return QObject::tr("Spot light");
+    case LightType::Directional: return QObject::tr("Directional light");
+    }
+    return {};
+}
+
+Light defaultLight(const Scene& scene, LightType type, const std::string& name) {
+    const SceneBounds b = sceneBounds(scene);
+    Light l;
+    l.name = name;
+    l.type = type;
+    // Above the middle of the scene, a fifth of its size below the top.
+    l.position = V3d(b.center.x, b.hi.y - 0.2 * (b.hi.y - b.lo.y), b.center.z);
+    l.direction = V3d(0, -1, 0);
+    // Intensity that gives a few W/m^2 at the scene's scale: I = E d^2 with d in metres.
+    const double d = std::max(b.radius * scene.metersPerUnit, 1e-6);
+    const double intensity = 2.0 * d * d;
+    switch (type) {
+    case LightType::Point: l.intensity = Rgbd(intensity, intensity, intensity); break;
+    case LightType::Spot:
+        l.intensity = Rgbd(3 * intensity, 3 * intensity, 3 * intensity);
+        l.coneAngleDeg = 30;
+        l.falloffStartDeg = 25;
+        break;
+    case LightType::Directional:
+        l.direction = V3d(-0.3, -1, 0.2);
+        l.irradiance = Rgbd(2, 2, 2);
+        break;
+    }
+    return l;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,172 @@
+#include "ui/converging_render.h"
+
+#include "render/progressive/backend.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <thread>
+
+namespace lucerna {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+
+std::string formatNumber(double v) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.9g", v);
+    return buf;
+}
+
+// Passes until cancelled, holding between passes while paused or while the gate is held. Render
+// time excludes the held time, so the error plot is against time actually spent rendering.
+void runUntilCancelled(ProgressiveBackend& backend, const std::string& name, const RenderSettings& settings,
+                       TaskContext& ctx, Latest<RenderFrame>& latest, const std::atomic<bool>& paused,
+                       const std::atomic<int>& gate) {
+    double rendered = 0, lastPublish = -1;
+    int passes = 0;
+    const auto publish = [&] {
+        RenderFrame f;
+        f.image = backend.film().image();
+        f.seconds = rendered;
+        f.samplesPerPixel = backend.film().samplesPerPixel();
+        f.passes = passes;
+        f.estimatedRelmse = backend.film().estimatedRelmse();
+        f.image.attributes["lucerna:backend"] = name;
+        f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
+        f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
+        f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
+        for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
+        latest.publish(std::make_shared<const RenderFrame>(std::move(f)));
+        lastPublish = rendered;
+    };
+    while (!ctx.isCancelled()) {
+        if (paused.load() || gate.load() > 0) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            continue;
+        }
+        const auto t0 = Clock::now();
+        backend.renderPass(ctx, passes);
+        if (ctx.isCancelled()) break;
+        ++passes;
+        rendered += std::chrono::duration<double>(Clock::now() - t0).count();
+        // Frequent frames at first (the picture changes most), then every half second.
+        if (passes <= 4 || rendered - lastPublish >= 0.5) publish();
+    }
+}
+}  // namespace
+
+ConvergingRender::ConvergingRender(TaskSystem& tasks, const YieldGate& gate, QObject* parent)
+    : QObject(parent), tasks_(tasks), gate_(gate) {
+    connect(&poll_, &QTimer::timeout, this, &ConvergingRender::poll);
+    poll_.start(100);
+}
+
+ConvergingRender::~ConvergingRender() { stop(); }
+
+void ConvergingRender::setScene(SceneSnapshot scene) {
+    scene_ = std::move(scene);
+    if (!isRunning()) return;
+    // From now on frame() is only ever of the new scene: forget the old run's frames at once,
+    // though its job ends a moment later (the panel keeps its last picture until a new one).
+    frame_.reset();
+    history_.clear();
+    latest_ = std::make_shared<Latest<RenderFrame>>();
+    shownVersion_ = 0;
+    if (restartPending_) return;
+    restartPending_ = true;
+    QTimer::singleShot(0, this, [this] {
+        restartPending_ = false;
+        if (isRunning()) relaunch();
+    });
+}
+
+void ConvergingRender::setBackend(const std::string& name) {
+    if (name == choice_) return;
+    choice_ = name;
+    if (isRunning()) relaunch();
+    emit stateChanged();
+}
+
+void ConvergingRender::start() {
+    if (isRunning()) {
+        setPaused(false);
+        return;
+    }
+    restart();
+}
+
+void ConvergingRender::setPaused(bool paused) {
+    paused_->store(paused);
+    emit stateChanged();
+}
+
+void ConvergingRender::stop() {
+    if (job_) job_->cancel();
+    job_.reset();  // the handle waits for the job: no frame of the old run arrives afterwards
+    emit stateChanged();
+}
+
+void ConvergingRender::restart() {
+    paused_->store(false);
+    relaunch();
+}
+
+void ConvergingRender::relaunch() {
+    if (job_) job_->cancel();
+    job_.reset();
+    frame_.reset();
+    history_.clear();
+    error_.clear();
+    shownVersion_ = 0;
+    if (!scene_) {
+        emit stateChanged();
+        return;
+    }
+    reason_.clear();
+    inUse_ = choice_;
+    if (choice_ == "auto") {
+        const AutoChoice c = chooseAutoBackend(*scene_);
+        inUse_ = c.backend;
+        reason_ = c.reason;
+    }
+    const BackendInfo* info = findBackend(inUse_);
+    if (!info) {
+        error_ = tr("no backend named %1").arg(QString::fromStdString(inUse_));
+        emit stateChanged();
+        return;
+    }
+    latest_ = std::make_shared<Latest<RenderFrame>>();
+    RenderSettings settings;
+    settings.seed = 1;
+    job_ = tasks_.submit([scene = scene_, settings, name = inUse_, make = info->make, latest = latest_,
+                          paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
+        auto backend = make(scene, settings);
+        backend->prepare(ctx);
+        runUntilCancelled(*backend, name, settings, ctx, *latest, *paused, *gate);
+    });
+    emit stateChanged();
+}
+
+void ConvergingRender::poll() {
+    if (!job_ || !latest_) return;
+    if (job_->isFinished()) {
+        try {
+            job_->rethrowIfFailed();
+        } catch (const std::exception& e) {
+            error_ = QString::fromStdString(e.what());
+            job_.reset();
+            emit stateChanged();
+            return;
+        }
+    }
+    if (latest_->version() == shownVersion_) return;
+    shownVersion_ = latest_->version();
+    frame_ = latest_->get();
+    if (!frame_) return;
+    if (std::isfinite(frame_->estimatedRelmse) && frame_->estimatedRelmse > 0)
+        history_.emplace_back(frame_->seconds, frame_->estimatedRelmse);
+    emit frameReady();
+}
+
+}  // namespace lucerna

@@ -1,0 +1,95 @@
+#include "ui/render_panel.h"
+
+#include "render/progressive/backend.h"
+#include "ui/display.h"
+#include "ui/error_plot.h"
+#include "ui/image_view.h"
+
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace lucerna {
+
+RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(parent), render_(render) {
+    view_ = new ImageView(this);
+    view_->setObjectName("convergingView");
+    view_->setPlaceholder(tr("The converging render appears here."));
+    start_ = new QPushButton(tr("Start"), this);
+    start_->setObjectName("renderStart");
+    pause_ = new QPushButton(tr("Pause"), this);
+    pause_->setObjectName("renderPause");
+    pause_->setCheckable(true);
+    restart_ = new QPushButton(tr("Restart"), this);
+    restart_->setObjectName("renderRestart");
+    backend_ = new QComboBox(this);
+    backend_->setObjectName("renderBackend");
+    backend_->addItem(tr("auto"), QStringLiteral("auto"));
+    for (const BackendInfo& b : backendTable())
+        backend_->addItem(QString::fromUtf8(b.name.data(), int(b.name.size())),
+                          QString::fromUtf8(b.name.data(), int(b.name.size())));
+    reason_ = new QLabel(this);
+    reason_->setObjectName("renderReason");
+    reason_->setWordWrap(true);
+    figures_ = new QLabel(this);
+    figures_->setObjectName("renderFigures");
+    plot_ = new ErrorPlot(this);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(start_);
+    buttons->addWidget(pause_);
+    buttons->addWidget(restart_);
+    buttons->addWidget(backend_, 1);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(view_, 1);
+    layout->addLayout(buttons);
+    layout->addWidget(reason_);
+    layout->addWidget(figures_);
+    layout->addWidget(plot_);
+
+    connect(start_, &QPushButton::clicked, render_, &ConvergingRender::start);
+    connect(pause_, &QPushButton::toggled, render_, &ConvergingRender::setPaused);
+    connect(restart_, &QPushButton::clicked, render_, &ConvergingRender::restart);
+    connect(backend_, &QComboBox::currentIndexChanged, this,
+            [this] { render_->setBackend(backend_->currentData().toString().toStdString()); });
+    connect(render_, &ConvergingRender::frameReady, this, &RenderPanel::showFrame);
+    connect(render_, &ConvergingRender::stateChanged, this, &RenderPanel::showState);
+    showState();
+}
+
+void RenderPanel::showFrame() {
+    const auto frame = render_->frame();
+    if (!frame) return;
+    view_->setImage(toDisplayImage(frame->image));
+    const double err = frame->estimatedRelmse;
+    figures_->setText(tr("%1 s   %2 spp   estimated relmse %3")
+                          .arg(frame->seconds, 0, 'f', 1)
+                          .arg(frame->samplesPerPixel, 0, 'g', 4)
+                          .arg(std::isfinite(err) ? QString::number(err, 'g', 3) : tr("(after two passes)")));
+    plot_->setPoints(render_->history());
+}
+
+void RenderPanel::showState() {
+    const bool running = render_->isRunning();
+    start_->setEnabled(!running || render_->isPaused());
+    pause_->setEnabled(running);
+    {
+        const QSignalBlocker block(pause_);
+        pause_->setChecked(render_->isPaused());
+    }
+    QString text;
+    if (!render_->error().isEmpty())
+        text = tr("Error: %1").arg(render_->error());
+    else if (!render_->backendInUse().empty())
+        text = render_->autoReason().empty()
+                   ? tr("Backend: %1").arg(QString::fromStdString(render_->backendInUse()))
+                   : tr("auto: %1").arg(QString::fromStdString(render_->autoReason()));
+    if (running && render_->isPaused()) text += tr(" (paused)");
+    reason_->setText(text);
+}
+
+}  // namespace lucerna

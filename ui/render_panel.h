@@ -1,0 +1,40 @@
+#pragma once
+// The converging render's panel: its image, start / pause / restart, the backend choice (auto,
+// with the reason it gives, and every backend of the table), and the convergence figures:
+// elapsed render time, samples per pixel, the error estimated from the half-buffers, and their
+// plot against time.
+
+#include "ui/converging_render.h"
+
+#include <QWidget>
+
+class QComboBox;
+class QLabel;
+class QPushButton;
+
+namespace lucerna {
+
+class ErrorPlot;
+class ImageView;
+
+class RenderPanel : public QWidget {
+    Q_OBJECT
+public:
+    RenderPanel(ConvergingRender* render, QWidget* parent = nullptr);
+
+    ImageView* view() const { return view_; }
+    QLabel* figures() const { return figures_; }
+
+private:
+    void showFrame();
+    void showState();
+
+    ConvergingRender* render_;
+    ImageView* view_;
+    QPushButton *start_, *pause_, *restart_;
+    QComboBox* backend_;
+    QLabel *reason_, *figures_;
+    ErrorPlot* plot_;
+};
+
+}  // namespace lucerna
