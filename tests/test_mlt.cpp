@@ -1,10 +1,10 @@
-// The mlt backend (render/progressive/mlt/) and its primary sample space sampler
-// (render/trace/pss_sampler.h):
+// The mlt and cmlt backends (render/progressive/mlt/, cmlt/) and their primary sample space
+// sampler (render/trace/pss_sampler.h):
 //   - the sampler's mutations keep a target's density: many independent chains, each started
 //     from an exact sample of a small 2D target and advanced k steps, compared by chi-square
 //     (one state per chain: states along a chain are correlated); a chain that forgets to
 //     restore rejected coordinates fails the same test;
-//   - the backend: no NaN on the hard cases, independent film halves, the closed-form sphere.
+//   - the backends: no NaN on the hard cases, independent film halves, the closed-form sphere.
 
 #include "closed_form_scenes.h"
 #include "hard_case_scenes.h"
@@ -72,9 +72,19 @@ class TestMlt : public QObject {
 private slots:
     void stationaryDensity_data();
     void stationaryDensity();
+    void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
+    void halvesAreIndependent_data() { backends(); }
     void halvesAreIndependent();
+    void sphereWithEmittingCap_data() { backends(); }
     void sphereWithEmittingCap();
+
+private:
+    static void backends() {
+        QTest::addColumn<QString>("backend");
+        QTest::newRow("mlt") << "mlt";
+        QTest::newRow("cmlt") << "cmlt";
+    }
 };
 
 void TestMlt::stationaryDensity_data() {
@@ -105,12 +115,13 @@ void TestMlt::stationaryDensity() {
 }
 
 void TestMlt::hardCasesStayFinite() {
+    QFETCH(QString, backend);
     for (const HardCase& c : hardCaseScenes()) {
         RenderSettings s;
         s.spp = 2;
         s.seed = 3;
         s.options["bootstrap"] = "4096";
-        const Image img = renderFrame("mlt", sceneFromJson(c.json), s).image;
+        const Image img = renderFrame(backend.toStdString(), sceneFromJson(c.json), s).image;
         long nonfinite = 0;
         for (const Rgb& p : img.pixels) nonfinite += isFinite(p) ? 0 : 1;
         qInfo("%s: mean %g", c.name.c_str(), img.mean());
@@ -121,13 +132,14 @@ void TestMlt::hardCasesStayFinite() {
 void TestMlt::halvesAreIndependent() {
     // Each half has its own bootstrap (b) and chains: their images differ, and both are close to
     // the same answer.
+    QFETCH(QString, backend);
     SphereWithEmittingCap sphere;
     sphere.resolution = 16;
     const auto scene = sceneFromJson(sphere.json());
     RenderSettings s;
     s.spp = 8;
     s.seed = 9;
-    const RenderFrame frame = renderFrame("mlt", scene, s);
+    const RenderFrame frame = renderFrame(backend.toStdString(), scene, s);
     const auto& a = frame.image.attributes;
     QVERIFY(a.count("lucerna:mlt_b_half0") && a.count("lucerna:mlt_b_half1"));
     QVERIFY(a.at("lucerna:mlt_b_half0") != a.at("lucerna:mlt_b_half1"));
@@ -136,13 +148,14 @@ void TestMlt::halvesAreIndependent() {
 
 void TestMlt::sphereWithEmittingCap() {
     // Uniform radiance inside the sphere (closed form, closed_form_scenes.h): the mean within 1%.
+    QFETCH(QString, backend);
     for (double rho : {0.5, 0.8}) {
         SphereWithEmittingCap sphere;
         sphere.rho = rho;
         sphere.resolution = 24;
         const auto scene = sceneFromJson(sphere.json());
         const double expected = sphere.expectedRadiance();
-        const Image img = render("mlt", scene, 64, 4);
+        const Image img = render(backend.toStdString(), scene, 64, 4);
         const double error = img.mean() / expected - 1.0;
         qInfo("rho %.1f: mean %.6f, closed form %.6f, error %+.3f%%", rho, img.mean(), expected, 100 * error);
         QVERIFY(std::abs(error) < 0.01);

@@ -88,6 +88,13 @@ std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t) con
     return surfacePoint(hit.triangle, hit.b1, hit.b2);
 }
 
+void RenderScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfacePoint>> hits) const {
+    std::vector<RayHit> raw(rays.size());
+    accel_->intersectCoherent(rays.data(), raw.data(), rays.size());
+    for (size_t i = 0; i < rays.size(); ++i)
+        hits[i] = raw[i].found() ? std::optional(surfacePoint(raw[i].triangle, raw[i].b1, raw[i].b2)) : std::nullopt;
+}
+
 bool RenderScene::unoccluded(const SurfacePoint& a, const SurfacePoint& b) const {
     const V3f d = b.p - a.p;
     const V3f from = a.spawnOrigin(d);

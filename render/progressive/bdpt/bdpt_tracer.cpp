@@ -26,11 +26,11 @@ bool BdptTracer::connectible(const PathVertex& v) const {
 }
 
 void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool cameraSide, SampleGenerator& rng,
-                            std::vector<PathVertex>& path) const {
+                            std::vector<PathVertex>& path, const std::optional<SurfacePoint>* firstHit) const {
     const float beta0 = maxComponent(beta);
     if (maxAdded <= 0 || !(beta0 > 0.0f)) return;
     for (int bounces = 0;;) {
-        const auto hit = scene_.intersect(ray);
+        const auto hit = bounces == 0 && firstHit ? *firstHit : scene_.intersect(ray);
         if (!hit) break;
         PathVertex v;
         v.kind = VertexKind::Surface;
@@ -79,11 +79,12 @@ void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool 
     }
 }
 
-void BdptTracer::traceCameraSubpath(float x, float y, SampleGenerator& rng) {
+void BdptTracer::traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit,
+                                    SampleGenerator& rng) {
     camera_.push_back(cameraVertex());
     const Ray ray = scene_.camera().ray(x, y);
     randomWalk(ray, Rgb(1, 1, 1), densities_.cameraPdfDirection(ray.direction), settings_.maxDepth + 1, true, rng,
-               camera_);
+               camera_, primaryHit);
 }
 
 void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
@@ -230,11 +231,26 @@ float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
 }
 
 Rgb BdptTracer::sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+    return sampleTraced(x, y, nullptr, false, rng, splats);
+}
+
+Rgb BdptTracer::sample(float x, float y, const std::optional<SurfacePoint>& primaryHit, bool reuseLightSubpath,
+                       SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+    return sampleTraced(x, y, &primaryHit, reuseLightSubpath, rng, splats);
+}
+
+Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, bool reuseLightSubpath,
+                             SampleGenerator& rng, std::vector<FilmSplat>& splats) {
     camera_.clear();
-    light_.clear();
     const bool lightTracingOnly = settings_.strategies == BdptSettings::Strategies::LightTracing;
-    if (!lightTracingOnly) traceCameraSubpath(x, y, rng);
-    traceLightSubpath(rng);
+    rng.beginStream(SampleStream::Camera);
+    if (!lightTracingOnly) traceCameraSubpath(x, y, primaryHit, rng);
+    if (!reuseLightSubpath) {
+        light_.clear();
+        rng.beginStream(SampleStream::Light);
+        traceLightSubpath(rng);
+    }
+    rng.beginStream(SampleStream::Connection);
 
     const PinholeCamera& camera = scene_.camera();
     const auto splat = [&](const Rgb& value, float rx, float ry) {

@@ -16,6 +16,7 @@
 #include "render/progressive/film.h"
 #include "render/trace/sample_generator.h"
 
+#include <optional>
 #include <vector>
 
 namespace lucerna {
@@ -30,14 +31,25 @@ public:
     // by nothing: a pass that traces one light subpath per pixel normalises them like its
     // camera samples (see cameraImportance). Non-finite contributions are dropped.
     Rgb sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats);
+    // The same, with the camera ray's closest hit already traced (as part of a packet of
+    // coherent camera rays); `primaryHit` must be what RenderScene::intersect gives for the
+    // camera ray through (x, y). With reuseLightSubpath, the light subpath of the previous call
+    // is used again instead of being traced from rng's light stream: for a caller whose
+    // generator would give the same light numbers (a Metropolis kernel that moves only the
+    // camera side).
+    Rgb sample(float x, float y, const std::optional<SurfacePoint>& primaryHit, bool reuseLightSubpath,
+               SampleGenerator& rng, std::vector<FilmSplat>& splats);
 
 private:
-    void traceCameraSubpath(float x, float y, SampleGenerator& rng);
+    Rgb sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, bool reuseLightSubpath,
+                     SampleGenerator& rng, std::vector<FilmSplat>& splats);
+    void traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit, SampleGenerator& rng);
     void traceLightSubpath(SampleGenerator& rng);
     // Extends `path` from its last vertex along `ray`, adding at most maxAdded vertices; pdfDir
     // is the solid-angle density of the ray's direction at the last vertex (pbrt's RandomWalk).
+    // firstHit, when given, is the closest hit of `ray`, already traced.
     void randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool cameraSide, SampleGenerator& rng,
-                    std::vector<PathVertex>& path) const;
+                    std::vector<PathVertex>& path, const std::optional<SurfacePoint>* firstHit = nullptr) const;
     // Unweighted contribution of strategy (s, t), times its MIS weight when `weighted`. For
     // t = 1 it writes the raster point it lands on.
     Rgb connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY) const;

@@ -24,23 +24,24 @@ struct ChainSet {
     long long bootstrapCount = 0;
     std::vector<std::unique_ptr<MltChain>> chains;
 
+    ChainCounters counters() const {
+        ChainCounters total;
+        for (const auto& c : chains) total += c->counters();
+        return total;
+    }
     // b = int f du: the mean of f over every uniform sample so far, the bootstrap's and the
     // chains' large steps'.
     double b() const {
-        double sum = bootstrapSum;
-        long long count = bootstrapCount;
-        for (const auto& c : chains) {
-            sum += c->largeStepSum();
-            count += c->largeSteps();
-        }
-        return count > 0 ? sum / double(count) : 0.0;
+        const ChainCounters c = counters();
+        const long long count = bootstrapCount + c.largeSteps;
+        return count > 0 ? (bootstrapSum + c.largeStepSum) / double(count) : 0.0;
     }
 };
 
-class MltBackend final : public ProgressiveBackend {
+class MetropolisBackend final : public ProgressiveBackend {
 public:
-    MltBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), mlt_(MltSettings::fromOptions(settings)) {}
+    MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make)
+        : snapshot_(std::move(scene)), settings_(settings), mlt_(mlt), makeChain_(std::move(make)) {}
 
     void prepare(TaskContext& ctx) override {
         scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
@@ -59,14 +60,21 @@ public:
             return;
         }
         const int perChain = std::max(1, int(std::ceil(double(mlt_.mutationsPerPixel) * pixels / n)));
-        const double scale = pixels / (double(perChain) * n);
+        // Deposits carry weight 1 per step; the pass's image is W H / (steps made) times their sum.
         std::vector<std::vector<FilmSplat>> deposits(static_cast<size_t>(n));
+        std::vector<int> made(static_cast<size_t>(n), 0);
         ctx.parallelFor(0, n, [&](int c) {
             // Cancellation is checked between chains: a chain's share is a few milliseconds.
-            if (!ctx.isCancelled()) set.chains[size_t(c)]->run(perChain, scale, deposits[size_t(c)]);
+            if (!ctx.isCancelled()) made[size_t(c)] = set.chains[size_t(c)]->run(perChain, 1.0, deposits[size_t(c)]);
         });
         if (ctx.isCancelled()) return;
-        for (const auto& list : deposits) film_->addSplats(half, list);
+        long long steps = 0;
+        for (int m : made) steps += m;
+        const float scale = float(pixels / double(std::max(1LL, steps)));
+        for (auto& list : deposits) {
+            for (FilmSplat& d : list) d.value *= scale;
+            film_->addSplats(half, list);
+        }
         film_->finishPass(half);
         film_->setHalfScale(half, set.b());
     }
@@ -75,17 +83,13 @@ public:
 
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
-        long long steps = 0, accepted = 0, large = 0, largeAccepted = 0;
-        for (const ChainSet& set : halves_)
-            for (const auto& c : set.chains) {
-                steps += c->steps();
-                accepted += c->accepted();
-                large += c->largeSteps();
-                largeAccepted += c->largeAccepted();
-            }
+        ChainCounters c = halves_[0].counters();
+        c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
-        d["mlt_acceptance_small"] = number(rate(accepted - largeAccepted, steps - large));
-        d["mlt_acceptance_large"] = number(rate(largeAccepted, large));
+        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps;
+        d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted, smallSteps));
+        d["mlt_acceptance_large"] = number(rate(c.largeAccepted, c.largeSteps));
+        if (c.lensSteps > 0) d["mlt_acceptance_lens"] = number(rate(c.lensAccepted, c.lensSteps));
         d["mlt_b_half0"] = number(halves_[0].b());
         d["mlt_b_half1"] = number(halves_[1].b());
         d["mlt_chains"] = std::to_string(mlt_.chains);
@@ -116,14 +120,14 @@ private:
         if (distribution.empty() || ctx.isCancelled()) return set;
         Rng rng(hashSeed(settings_.seed, uint64_t(half), 0x6368));
         for (int c = 0; c < mlt_.chains; ++c)
-            set.chains.push_back(
-                std::make_unique<MltChain>(*scene_, mlt_, seedOf(int(distribution.sample(rng.next1D())))));
+            set.chains.push_back(makeChain_(*scene_, seedOf(int(distribution.sample(rng.next1D())))));
         return set;
     }
 
     SceneSnapshot snapshot_;
     RenderSettings settings_;
     MltSettings mlt_;
+    ChainFactory makeChain_;
     std::unique_ptr<RenderScene> scene_;
     std::unique_ptr<Film> film_;
     ChainSet halves_[2];
@@ -152,8 +156,16 @@ MltSettings MltSettings::fromOptions(const RenderSettings& settings) {
     return s;
 }
 
+std::unique_ptr<ProgressiveBackend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
+                                                          const MltSettings& mlt, ChainFactory makeChain) {
+    return std::make_unique<MetropolisBackend>(std::move(scene), settings, mlt, std::move(makeChain));
+}
+
 std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings) {
-    return std::make_unique<MltBackend>(std::move(scene), settings);
+    const MltSettings mlt = MltSettings::fromOptions(settings);
+    return makeMetropolisBackend(std::move(scene), settings, mlt, [mlt](const RenderScene& s, uint64_t seed) {
+        return std::make_unique<MltChain>(s, mlt, seed);
+    });
 }
 
 }  // namespace lucerna

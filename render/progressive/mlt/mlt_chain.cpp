@@ -7,10 +7,31 @@
 
 namespace lucerna {
 
-namespace {
-void deposit(const PathContribution& c, double weight, std::vector<FilmSplat>& out) {
+ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
+    steps += o.steps;
+    accepted += o.accepted;
+    largeSteps += o.largeSteps;
+    largeAccepted += o.largeAccepted;
+    lensSteps += o.lensSteps;
+    lensAccepted += o.lensAccepted;
+    largeStepSum += o.largeStepSum;
+    return *this;
+}
+
+void depositContribution(const PathContribution& c, double weight, std::vector<FilmSplat>& out) {
     if (!(weight > 0.0)) return;
     for (const FilmSplat& s : c.deposits) out.push_back({s.x, s.y, s.value * float(weight)});
+}
+
+namespace {
+// The pixel deposit of the camera strategies, the target f, and no non-finite value.
+void finish(const Rgb& L, float x, float y, PathContribution& out) {
+    if (isFinite(L) && !isBlack(L)) out.deposits.push_back({int(x), int(y), L});
+    for (const FilmSplat& s : out.deposits) out.f += std::max(0.0, double(luminance(s.value)));
+    if (!std::isfinite(out.f)) {
+        out.deposits.clear();
+        out.f = 0;
+    }
 }
 }  // namespace
 
@@ -20,13 +41,15 @@ void evaluatePath(BdptTracer& tracer, const PinholeCamera& camera, PssSampler& s
     const V2f r = sampler.next2D();
     const float x = std::min(r.x * float(camera.width()), float(camera.width()) - 0.5f);
     const float y = std::min(r.y * float(camera.height()), float(camera.height()) - 0.5f);
-    const Rgb L = tracer.sample(x, y, sampler, out.deposits);  // appends the light splats
-    if (isFinite(L) && !isBlack(L)) out.deposits.push_back({int(x), int(y), L});
-    for (const FilmSplat& s : out.deposits) out.f += std::max(0.0, double(luminance(s.value)));
-    if (!std::isfinite(out.f)) {
-        out.deposits.clear();
-        out.f = 0;
-    }
+    finish(tracer.sample(x, y, sampler, out.deposits), x, y, out);  // sample() appends the light splats
+}
+
+void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,
+                    bool reuseLightSubpath, PssSampler& sampler, PathContribution& out) {
+    out.deposits.clear();
+    out.f = 0;
+    sampler.next2D();  // the raster point's numbers: keeps every later dimension where it was
+    finish(tracer.sample(x, y, primaryHit, reuseLightSubpath, sampler, out.deposits), x, y, out);
 }
 
 MltChain::MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed)
@@ -37,26 +60,29 @@ MltChain::MltChain(const RenderScene& scene, const MltSettings& settings, uint64
     sampler_.accept();
 }
 
-void MltChain::run(int mutations, double scale, std::vector<FilmSplat>& out) {
-    for (int i = 0; i < mutations; ++i) {
-        sampler_.startIteration();
-        const bool large = sampler_.largeStep();
-        evaluatePath(tracer_, camera_, sampler_, proposed_);
-        // A chain that started on f = 0 (a black scene) moves to anything.
-        const double a = current_.f > 0 ? std::min(1.0, proposed_.f / current_.f) : 1.0;
-        if (proposed_.f > 0) deposit(proposed_, scale * a / proposed_.f, out);
-        if (current_.f > 0) deposit(current_, scale * (1.0 - a) / current_.f, out);
-        ++steps_;
-        largeSteps_ += large;
-        if (large) largeStepSum_ += proposed_.f;
-        if (sampler_.rng().nextDouble() < a) {
-            sampler_.accept();
-            std::swap(current_, proposed_);
-            ++accepted_;
-            largeAccepted_ += large;
-        } else {
-            sampler_.reject();
-        }
+int MltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
+    for (int i = 0; i < steps; ++i) mutate(scale, out);
+    return steps;
+}
+
+void MltChain::mutate(double scale, std::vector<FilmSplat>& out) {
+    sampler_.startIteration();
+    const bool large = sampler_.largeStep();
+    evaluatePath(tracer_, camera_, sampler_, proposed_);
+    // A chain that started on f = 0 (a black scene) moves to anything.
+    const double a = current_.f > 0 ? std::min(1.0, proposed_.f / current_.f) : 1.0;
+    if (proposed_.f > 0) depositContribution(proposed_, scale * a / proposed_.f, out);
+    if (current_.f > 0) depositContribution(current_, scale * (1.0 - a) / current_.f, out);
+    ++counters_.steps;
+    counters_.largeSteps += large;
+    if (large) counters_.largeStepSum += proposed_.f;
+    if (sampler_.rng().nextDouble() < a) {
+        sampler_.accept();
+        std::swap(current_, proposed_);
+        ++counters_.accepted;
+        counters_.largeAccepted += large;
+    } else {
+        sampler_.reject();
     }
 }
 

@@ -29,32 +29,54 @@ struct PathContribution {
 
 // Evaluates the BDPT sample that `sampler`'s current iteration maps to.
 void evaluatePath(BdptTracer& tracer, const PinholeCamera& camera, PssSampler& sampler, PathContribution& out);
+// The same with the raster point (x, y) (pixels) and its camera ray's closest hit given: the
+// sampler's first two numbers, which would have chosen the raster point, are read and ignored;
+// with reuseLightSubpath, the tracer's previous light subpath stands for the light stream's.
+void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,
+                    bool reuseLightSubpath, PssSampler& sampler, PathContribution& out);
+
+// Appends c's deposits times `weight` to `out` (nothing when weight is 0).
+void depositContribution(const PathContribution& c, double weight, std::vector<FilmSplat>& out);
+
+// Counts of a chain's steps, summed over chains for the render's diagnostics.
+struct ChainCounters {
+    long long steps = 0, accepted = 0;            // every step that deposits (weight 1 each)
+    long long largeSteps = 0, largeAccepted = 0;  // of those, Kelemen's large steps
+    long long lensSteps = 0, lensAccepted = 0;    // cmlt's lens sub-chain steps
+    double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
+    ChainCounters& operator+=(const ChainCounters& o);
+};
 
 class MltChain {
 public:
     // A chain whose first state is the bootstrap sample drawn with seed `bootstrapSeed` (the
     // sampler's first large step replays it exactly).
     MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed);
+    virtual ~MltChain() = default;
 
-    // `mutations` steps; appends the expected-value deposits, each scaled by `scale`
-    // (W H / M; the film applies b), to `out`.
-    void run(int mutations, double scale, std::vector<FilmSplat>& out);
+    // At least `steps` steps, each depositing its expected value (total weight 1) scaled by
+    // `scale` (W H / M; the film applies b), into `out`; returns the steps made. Variants
+    // (cmlt) interleave their own kernels, which leave the same density invariant.
+    virtual int run(int steps, double scale, std::vector<FilmSplat>& out);
+    // One step.
+    void mutate(double scale, std::vector<FilmSplat>& out);
 
-    long long accepted() const { return accepted_; }
-    long long largeSteps() const { return largeSteps_; }
-    long long largeAccepted() const { return largeAccepted_; }
-    long long steps() const { return steps_; }
-    // Sum of f over the large steps' proposals: uniform samples, independent of the chain, that
-    // refine b.
-    double largeStepSum() const { return largeStepSum_; }
+    // The chain's state, for kernels that extend it (cmlt's lens sub-chains): after changing the
+    // sampler's state they must set current() to its contribution.
+    PssSampler& sampler() { return sampler_; }
+    BdptTracer& tracer() { return tracer_; }
+    PathContribution& current() { return current_; }
+
+    const ChainCounters& counters() const { return counters_; }
+
+protected:
+    const PinholeCamera& camera_;
+    ChainCounters counters_;
 
 private:
-    const PinholeCamera& camera_;
     BdptTracer tracer_;
     PssSampler sampler_;
     PathContribution current_, proposed_;
-    long long steps_ = 0, accepted_ = 0, largeSteps_ = 0, largeAccepted_ = 0;
-    double largeStepSum_ = 0;
 };
 
 }  // namespace lucerna

@@ -1,0 +1,11 @@
+#pragma once
+// The cmlt backend: the Metropolis scheduler of mlt (mlt_backend.h) with coherent lens
+// sub-chains (cmlt_chain.h).
+
+#include "render/progressive/backend.h"
+
+namespace lucerna {
+
+std::unique_ptr<ProgressiveBackend> makeCmltBackend(SceneSnapshot scene, const RenderSettings& settings);
+
+}  // namespace lucerna

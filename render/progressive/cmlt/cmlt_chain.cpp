@@ -1,0 +1,90 @@
+#include "render/progressive/cmlt/cmlt_chain.h"
+
+#include "render/trace/render_scene.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace lucerna {
+
+namespace {
+// Box-Muller: two independent standard normal numbers.
+V2f gaussian2(Rng& rng) {
+    const double r = std::sqrt(-2.0 * std::log(1.0 - rng.nextDouble()));
+    const double phi = 2.0 * std::numbers::pi * rng.nextDouble();
+    return V2f(float(r * std::cos(phi)), float(r * std::sin(phi)));
+}
+
+// Wrapped into [0, size): the torus keeps the perturbation symmetric at the image's edges.
+float wrap(float v, float size) {
+    v = std::fmod(v, size);
+    if (v < 0.0f) v += size;
+    return v < size ? v : 0.0f;
+}
+}  // namespace
+
+CmltChain::CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed)
+    : MltChain(scene, settings.mlt, bootstrapSeed), scene_(scene), settings_(settings) {}
+
+int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
+    int made = 0;
+    while (made < steps) {
+        mutate(scale, out);  // step 1: a new seed
+        ++made;
+        for (int i = 0; i < settings_.lensSteps && current().f > 0; ++i) made += lensStep(scale, out);
+    }
+    return made;
+}
+
+int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
+    PssSampler& sampler = this->sampler();
+    const float w = float(camera_.width()), h = float(camera_.height());
+    // The current raster point, from the state's first two numbers.
+    sampler.startReplay();
+    const V2f u = sampler.next2D();
+    const V2f x(u.x * w, u.y * h);
+
+    const int p = std::max(1, settings_.tries);
+    rasters_.resize(size_t(p));
+    rays_.resize(size_t(p));
+    hits_.resize(size_t(p));
+    candidates_.resize(size_t(p));
+    for (int i = 0; i < p; ++i) {
+        const V2f g = gaussian2(sampler.rng()) * settings_.sigmaPixels;
+        rasters_[size_t(i)] = V2f(std::min(wrap(x.x + g.x, w), w - 0.5f), std::min(wrap(x.y + g.y, h), h - 0.5f));
+        rays_[size_t(i)] = camera_.ray(rasters_[size_t(i)].x, rasters_[size_t(i)].y);
+    }
+    scene_.intersectCoherent(rays_, hits_);  // step 2: the candidates' camera rays as one packet
+    for (int i = 0; i < p; ++i) {
+        sampler.startReplay();
+        // Only the camera side moves: the first candidate traces the light subpath, the others
+        // reuse it.
+        evaluatePathAt(tracer(), rasters_[size_t(i)].x, rasters_[size_t(i)].y, hits_[size_t(i)], i > 0, sampler,
+                       candidates_[size_t(i)]);
+    }
+
+    // Step 3: every candidate and its competitor by their expected values.
+    const PathContribution& cur = current();
+    double keep = 0;  // the competitor's total weight
+    for (const PathContribution& c : candidates_) {
+        const double a = std::min(1.0, c.f / cur.f);
+        if (c.f > 0) depositContribution(c, scale * a / c.f, out);
+        keep += 1.0 - a;
+    }
+    depositContribution(cur, scale * keep / cur.f, out);
+
+    counters_.steps += p;
+    counters_.lensSteps += p;
+    const int chosen = std::min(p - 1, int(sampler.rng().next1D() * float(p)));
+    const PathContribution& y = candidates_[size_t(chosen)];
+    if (sampler.rng().nextDouble() < std::min(1.0, y.f / cur.f)) {
+        sampler.setCoordinate(SampleStream::Camera, 0, rasters_[size_t(chosen)].x / w);
+        sampler.setCoordinate(SampleStream::Camera, 1, rasters_[size_t(chosen)].y / h);
+        current() = y;
+        counters_.accepted += p;
+        counters_.lensAccepted += p;
+    }
+    return p;
+}
+
+}  // namespace lucerna

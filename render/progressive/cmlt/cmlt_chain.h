@@ -1,0 +1,50 @@
+#pragma once
+// The per-thread part of the cmlt backend: coherent Metropolis light transport (Segovia et al.
+// 2007, "Coherent Metropolis Light Transport with Multiple-Try Mutations"), in primary sample
+// space over the bidirectional sampler.
+//
+//   1. The MLT chain (mlt_chain.h) explores path space; each of its states is a seed, distributed
+//      in proportion to its image contribution f.
+//   2. Around each seed, a sub-chain of lens mutations: only the raster point moves, by a
+//      Gaussian of sigmaPixels (wrapped around the image, so symmetric), every other number of
+//      the state stays; the path behind the pixel follows (for E S* D ... paths this is the lens
+//      perturbation). Each step draws `tries` candidates from the current state together; their
+//      camera rays are neighbours and are traced as one coherent Embree packet.
+//   3. Every candidate is accumulated with its expected value: candidate y_i with
+//      a_i / f(y_i), its competitor (the current state x) with (1 - a_i) / f(x),
+//      a_i = min(1, f(y_i) / f(x)). Each pair is one step's expected deposit from x, so the lens
+//      step counts as `tries` steps of weight 1. The chain then moves to one candidate chosen
+//      uniformly, accepted with its a_i: a Metropolis-Hastings step with a symmetric kernel, so
+//      the sub-chain keeps the density f and the seeds' distribution.
+// Every step deposits total weight 1, so the scheduler's W H / steps normalisation holds. The
+// candidates share the light subpath (the light stream does not move) and their camera rays are
+// one packet: a candidate costs a camera subpath and the connections.
+//
+// Not built: Segovia's caustic perturbation (moving the light side of E S* D S* L paths); here
+// only the camera side moves.
+
+#include "render/progressive/cmlt/cmlt_settings.h"
+#include "render/progressive/mlt/mlt_chain.h"
+
+namespace lucerna {
+
+class CmltChain final : public MltChain {
+public:
+    CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed);
+
+    // Alternates one MLT step (a new seed) with settings.lensSteps lens steps, until `steps`.
+    int run(int steps, double scale, std::vector<FilmSplat>& out) override;
+
+private:
+    // One lens step; returns the steps it counts for (tries: one per candidate evaluated).
+    int lensStep(double scale, std::vector<FilmSplat>& out);
+
+    const RenderScene& scene_;
+    CmltSettings settings_;
+    std::vector<V2f> rasters_;
+    std::vector<Ray> rays_;
+    std::vector<std::optional<SurfacePoint>> hits_;
+    std::vector<PathContribution> candidates_;
+};
+
+}  // namespace lucerna
