@@ -4,7 +4,8 @@
 //     from an exact sample of a small 2D target and advanced k steps, compared by chi-square
 //     (one state per chain: states along a chain are correlated); a chain that forgets to
 //     restore rejected coordinates fails the same test;
-//   - the backends: no NaN on the hard cases, independent film halves, the closed-form sphere.
+//   - the backends: no NaN on the hard cases, independent film halves (their closed-form checks
+//     are in test_closed_form).
 
 #include "closed_form_scenes.h"
 #include "hard_case_scenes.h"
@@ -76,8 +77,6 @@ private slots:
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
     void halvesAreIndependent();
-    void sphereWithEmittingCap_data() { backends(); }
-    void sphereWithEmittingCap();
 
 private:
     static void backends() {
@@ -144,22 +143,6 @@ void TestMlt::halvesAreIndependent() {
     QVERIFY(a.count("lucerna:mlt_b_half0") && a.count("lucerna:mlt_b_half1"));
     QVERIFY(a.at("lucerna:mlt_b_half0") != a.at("lucerna:mlt_b_half1"));
     QVERIFY(std::isfinite(frame.estimatedRelmse) && frame.estimatedRelmse > 0);
-}
-
-void TestMlt::sphereWithEmittingCap() {
-    // Uniform radiance inside the sphere (closed form, closed_form_scenes.h): the mean within 1%.
-    QFETCH(QString, backend);
-    for (double rho : {0.5, 0.8}) {
-        SphereWithEmittingCap sphere;
-        sphere.rho = rho;
-        sphere.resolution = 24;
-        const auto scene = sceneFromJson(sphere.json());
-        const double expected = sphere.expectedRadiance();
-        const Image img = render(backend.toStdString(), scene, 64, 4);
-        const double error = img.mean() / expected - 1.0;
-        qInfo("rho %.1f: mean %.6f, closed form %.6f, error %+.3f%%", rho, img.mean(), expected, 100 * error);
-        QVERIFY(std::abs(error) < 0.01);
-    }
 }
 
 QTEST_GUILESS_MAIN(TestMlt)
