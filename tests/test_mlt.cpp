@@ -142,6 +142,8 @@ void TestMlt::halvesAreIndependent() {
     const auto& a = frame.image.attributes;
     QVERIFY(a.count("lucerna:mlt_b_half0") && a.count("lucerna:mlt_b_half1"));
     QVERIFY(a.at("lucerna:mlt_b_half0") != a.at("lucerna:mlt_b_half1"));
+    QVERIFY(a.count("lucerna:mlt_half_mean_spread") && a.count("lucerna:mlt_acceptance_small"));
+    QVERIFY(std::stod(a.at("lucerna:mlt_half_mean_spread")) < 0.1);
     QVERIFY(std::isfinite(frame.estimatedRelmse) && frame.estimatedRelmse > 0);
 }
 

@@ -90,6 +90,10 @@ public:
         d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted, smallSteps));
         d["mlt_acceptance_large"] = number(rate(c.largeAccepted, c.largeSteps));
         if (c.lensSteps > 0) d["mlt_acceptance_lens"] = number(rate(c.lensAccepted, c.lensSteps));
+        // The spread between the independent halves (each its own chains and b): how far their
+        // image means disagree, relative to the combined mean.
+        const double m0 = film_->halfImage(0).mean(), m1 = film_->halfImage(1).mean();
+        if (m0 + m1 > 0) d["mlt_half_mean_spread"] = number(std::abs(m0 - m1) / (0.5 * (m0 + m1)));
         d["mlt_b_half0"] = number(halves_[0].b());
         d["mlt_b_half1"] = number(halves_[1].b());
         d["mlt_chains"] = std::to_string(mlt_.chains);
