@@ -259,6 +259,9 @@ void printUsage() {
                  "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
                  "  lucerna info SCENE.json                   validate and print statistics\n"
                  "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"
+                 "  lucerna bench SCENE.json --reference REF.exr --backends NAME[:k=v],... --time SECONDS\n"
+                 "                [--out DIR] [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
+                 "                error against time per backend: DIR/bench.csv and DIR/bench.svg\n"
                  "backends: auto";
     for (const BackendInfo& b : backendTable()) std::cout << ", " << b.name;
     std::cout << "\n";

@@ -1,5 +1,6 @@
 // lucerna: the application, or one of the headless commands of SPEC.md section 2.
 
+#include "app/bench_command.h"
 #include "app/cli.h"
 #include "ui/main_window.h"
 
@@ -18,11 +19,13 @@ int main(int argc, char** argv) {
     if (argc >= 2) {
         const std::string command = argv[1];
         const std::vector<std::string> rest(argv + 2, argv + argc);
-        if (command == "render" || command == "compare" || command == "info" || command == "convert") {
+        if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
+            command == "bench") {
             QCoreApplication app(argc, argv);  // Qt's file and image helpers; no display needed
             if (command == "render") return lucerna::cli::render(rest);
             if (command == "compare") return lucerna::cli::compare(rest);
             if (command == "convert") return lucerna::cli::convert(rest);
+            if (command == "bench") return lucerna::cli::bench(rest);
             return lucerna::cli::info(rest);
         }
         if (command == "-h" || command == "--help" || command == "help") {

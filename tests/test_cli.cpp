@@ -12,6 +12,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <array>
+#include <cmath>
 #include <csignal>
 
 using namespace lucerna;
@@ -48,6 +50,8 @@ private slots:
     void infoPrintsStatistics();
     void interruptedRenderLeavesNoFile_data();
     void interruptedRenderLeavesNoFile();
+    void benchWritesCsvAndPlot();
+    void benchBadUsage();
 };
 
 void TestCli::renderWritesExrWithMetadata() {
@@ -186,6 +190,73 @@ void TestCli::interruptedRenderLeavesNoFile() {
     QVERIFY(p.waitForFinished(10000));  // stops promptly, not after the budget
     QCOMPARE(p.exitCode(), 130);
     QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+// A reference of our own at a small size (so the budget buys many passes), then two backends for
+// a second each: every row parses, the curves fall, and the plot names both.
+void TestCli::benchWritesCsvAndPlot() {
+    QTemporaryDir dir;
+    const QString ref = dir.filePath("ref.exr");
+    QCOMPARE(runLucerna({"render", kCornell, "-o", ref, "--backend", "path", "--spp", "512", "--width", "24",
+                         "--height", "24", "--seed", "3"})
+                 .exitCode,
+             0);
+    const QString out = dir.filePath("bench");
+    const Run r = runLucerna({"bench", kCornell, "--reference", ref, "--backends", "path,mir:tries=2", "--time", "1",
+                              "--start", "0.01", "--out", out, "--seed", "9"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QFile csv(out + "/bench.csv");
+    QVERIFY(csv.open(QIODevice::ReadOnly));
+    const QStringList lines = QString(csv.readAll()).trimmed().split('\n');
+    QCOMPARE(lines.value(0), QString("backend,seconds,spp,rmse,relmse,estimated_relmse"));
+    QMap<QString, QList<std::array<double, 3>>> curves;  // seconds, spp, relmse per backend
+    for (const QString& line : lines.mid(1)) {
+        const QStringList f = line.split(',');
+        QCOMPARE(f.size(), 6);
+        std::array<double, 5> v{};
+        for (int i = 0; i < 5; ++i) {
+            bool ok = false;
+            v[size_t(i)] = f[i + 1].toDouble(&ok);
+            QVERIFY2(ok && std::isfinite(v[size_t(i)]) && v[size_t(i)] >= 0, qPrintable(line));
+        }
+        curves[f[0]].append({v[0], v[1], v[3]});
+    }
+    QCOMPARE(curves.keys(), (QList<QString>{"mir:tries=2", "path"}));
+    for (const auto& c : curves) {
+        QVERIFY(c.size() >= 4);  // log-spaced from 0.01 s to 1 s
+        for (int i = 1; i < c.size(); ++i) QVERIFY(c[i][0] > c[i - 1][0] && c[i][1] >= c[i - 1][1]);
+        QVERIFY(c.last()[0] <= 1.5);
+        QVERIFY2(c.last()[2] < 0.5 * c.first()[2], qPrintable(QString::number(c.first()[2]) + " -> " +
+                                                             QString::number(c.last()[2])));
+    }
+    QFile svg(out + "/bench.svg");
+    QVERIFY(svg.open(QIODevice::ReadOnly));
+    const QString text = svg.readAll();
+    QVERIFY(text.startsWith("<svg") && text.trimmed().endsWith("</svg>"));
+    QCOMPARE(text.count("<polyline"), 4);  // two backends, relmse and rmse panels
+    QVERIFY(text.contains(">mir:tries=2<") && text.contains(">path<") && text.contains("time (s)"));
+}
+
+void TestCli::benchBadUsage() {
+    QTemporaryDir dir;
+    const QString small = dir.filePath("small.exr");
+    writeExr(small.toStdString(), Image(4, 4));
+    const QList<QStringList> cases = {
+        {"bench", kCornell, "--backends", "path", "--time", "1"},                             // no reference
+        {"bench", kCornell, "--reference", small, "--time", "1"},                             // no backends
+        {"bench", kCornell, "--reference", small, "--backends", "path"},                      // no budget
+        {"bench", kCornell, "--reference", small, "--backends", "path,nope", "--time", "1"},  // unknown backend
+        {"bench", kCornell, "--reference", small, "--backends", "mir:tries", "--time", "1"},  // not name=value
+        {"bench", kCornell, "--reference", dir.filePath("missing.exr"), "--backends", "path", "--time", "1"},
+        {"bench", kCornell, "--reference", small, "--backends", "path", "--time", "1", "--width", "8", "--height", "8"},
+        {"bench", kCornell, "--reference", small, "--backends", "mir:tries=0", "--time", "1"},  // bad option
+    };
+    for (const QStringList& args : cases) {
+        const Run r = runLucerna(args);
+        QVERIFY2(r.exitCode == 2, qPrintable(args.join(' ')));
+        QVERIFY2(isOneLine(r.err), qPrintable(r.err));
+    }
+    QVERIFY(!QFile::exists("bench.csv"));
 }
 
 QTEST_GUILESS_MAIN(TestCli)

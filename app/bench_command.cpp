@@ -1,0 +1,272 @@
+#include "app/bench_command.h"
+
+#include "app/bench_plot.h"
+#include "core/atomic_file.h"
+#include "core/exr_io.h"
+#include "core/image_metrics.h"
+#include "core/scene_io.h"
+#include "core/task_system.h"
+#include "render/progressive/backend.h"
+#include "render/progressive/progressive_render.h"
+
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+namespace lucerna::cli {
+
+namespace {
+
+// Bad usage or bad input: exit status 2 with this one line.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+volatile std::sig_atomic_t gInterrupted = 0;  // set by SIGINT/SIGTERM only
+extern "C" void onBenchInterrupt(int) { gInterrupted = 1; }
+
+template <class T>
+T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
+    T value{};
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || ptr != text.data() + text.size() || !(value >= lo && value <= hi))
+        throw UsageError(option + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                         "], got '" + text + "'");
+    return value;
+}
+
+// "name=value" into options, or a usage error naming where it came from.
+void addOption(std::map<std::string, std::string>& options, const std::string& kv, const std::string& where) {
+    const auto eq = kv.find('=');
+    if (eq == std::string::npos || eq == 0) throw UsageError(where + " expects name=value, got '" + kv + "'");
+    options[kv.substr(0, eq)] = kv.substr(eq + 1);
+}
+
+struct BenchRun {
+    std::string label;  // as given in --backends: the curve's name in the CSV and the plot
+    std::string backend;
+    std::map<std::string, std::string> options;  // this entry's own, over --option
+};
+
+struct BenchArgs {
+    std::string scene, reference, outDir = ".";
+    std::vector<BenchRun> runs;
+    RenderSettings settings;  // seconds, seed, size and the shared options
+    int threads = 0;
+    int perDecade = 12;
+    double start = 0.1;
+};
+
+std::vector<BenchRun> parseBackends(const std::string& list) {
+    std::vector<BenchRun> runs;
+    size_t begin = 0;
+    while (begin <= list.size()) {
+        const size_t end = std::min(list.find(',', begin), list.size());
+        const std::string entry = list.substr(begin, end - begin);
+        if (entry.empty()) throw UsageError("--backends: empty entry in '" + list + "'");
+        BenchRun run{entry, {}, {}};
+        size_t colon = entry.find(':');
+        run.backend = entry.substr(0, colon);
+        while (colon != std::string::npos) {
+            const size_t next = entry.find(':', colon + 1);
+            addOption(run.options, entry.substr(colon + 1, next == std::string::npos ? next : next - colon - 1),
+                      "--backends entry '" + entry + "'");
+            colon = next;
+        }
+        if (!findBackend(run.backend)) {
+            std::string names;
+            for (const BackendInfo& b : backendTable()) names += (names.empty() ? "" : ", ") + std::string(b.name);
+            throw UsageError("unknown backend '" + run.backend + "' (available: " + names + ")");
+        }
+        runs.push_back(std::move(run));
+        begin = end + 1;
+    }
+    return runs;
+}
+
+BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
+    BenchArgs b;
+    std::string backends;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "--reference") b.reference = value();
+        else if (a == "--backends") backends = value();
+        else if (a == "--time") b.settings.seconds = parseNumber<double>(a, value(), 1e-3, 1e7);
+        else if (a == "--out") b.outDir = value();
+        else if (a == "--seed") b.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--threads") b.threads = parseNumber<int>(a, value(), 1, 4096);
+        else if (a == "--width") b.settings.width = parseNumber<int>(a, value(), 1, 16384);
+        else if (a == "--height") b.settings.height = parseNumber<int>(a, value(), 1, 16384);
+        else if (a == "--per-decade") b.perDecade = parseNumber<int>(a, value(), 1, 1000);
+        else if (a == "--start") b.start = parseNumber<double>(a, value(), 1e-4, 1e6);
+        else if (a == "--option") addOption(b.settings.options, value(), "--option");
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
+        else if (b.scene.empty()) b.scene = a;
+        else throw UsageError("unexpected argument '" + a + "'");
+    }
+    if (b.scene.empty()) throw UsageError("bench: no scene file given");
+    if (b.reference.empty()) throw UsageError("bench: no reference image given (--reference REF.exr)");
+    if (backends.empty()) throw UsageError("bench: no backends given (--backends path,bdpt,...)");
+    if (!(b.settings.seconds > 0)) throw UsageError("bench: no time budget given (--time SECONDS)");
+    if ((b.settings.width > 0) != (b.settings.height > 0)) throw UsageError("bench: --width and --height go together");
+    b.runs = parseBackends(backends);
+    return b;
+}
+
+std::string formatValue(double v) {
+    if (!std::isfinite(v)) return "nan";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+// One backend for the budget. The driver publishes a frame after every pass (publishSeconds 0:
+// copying the film is cheap next to a pass); this thread wakes every few milliseconds and measures
+// the newest frame once it has passed the next log-spaced time. Each sample carries the frame's
+// own time, so a slow pass shows as a sparser curve, never as a wrong time.
+std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const SceneSnapshot& scene,
+                                const Image& reference, TaskSystem& tasks) {
+    RenderSettings settings = b.settings;
+    for (const auto& [k, v] : run.options) settings.options[k] = v;
+    std::unique_ptr<ProgressiveBackend> backend;
+    try {
+        backend = findBackend(run.backend)->make(scene, settings);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(run.label + ": " + e.what());
+    }
+    Latest<RenderFrame> latest;
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        backend->prepare(ctx);
+        if (ctx.isCancelled()) return;
+        runProgressive(*backend, run.backend, settings, ctx, &latest, 0.0);
+    });
+
+    std::vector<BenchSample> samples;
+    int k = 0;  // index of the next log-spaced time: start * 10^(k / perDecade)
+    const auto nextTime = [&] { return b.start * std::pow(10.0, double(k) / b.perDecade); };
+    uint64_t seen = 0;
+    const auto measure = [&](const RenderFrame& f) {
+        const ImageMetrics m = compareImages(f.image, reference);
+        samples.push_back({run.label, f.seconds, f.samplesPerPixel, m.rmse, m.relmse, f.estimatedRelmse, m.meanTest, m.meanRef});
+        while (nextTime() <= f.seconds) ++k;
+    };
+    const auto poll = [&](bool last) {
+        if (latest.version() == seen) return;
+        seen = latest.version();
+        const auto frame = latest.get();
+        if (frame && frame->passes > 0 && (last || frame->seconds >= nextTime())) measure(*frame);
+    };
+    while (!job->isFinished()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(3));
+        if (gInterrupted) job->cancel();
+        poll(false);
+    }
+    job->wait();
+    job->rethrowIfFailed();
+    if (gInterrupted) return samples;
+    // The final frame (published at the end) closes every curve at the budget.
+    const auto final = latest.get();
+    if (final && final->passes > 0 && (samples.empty() || samples.back().seconds < final->seconds)) measure(*final);
+    return samples;
+}
+
+void writeText(const std::string& path, const std::string& text) {
+    try {
+        writeAtomically(path, [&](const std::string& temp) {
+            std::ofstream f(temp, std::ios::binary);
+            f << text;
+            f.close();
+            if (!f) throw std::runtime_error(path + ": cannot write");
+        });
+    } catch (const std::runtime_error& e) {
+        throw UsageError(e.what());
+    }
+}
+
+int benchImpl(const std::vector<std::string>& args) {
+    BenchArgs b = parseBenchArgs(args);
+    Image reference;
+    try {
+        reference = readExr(b.reference);
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());
+    }
+    if (b.settings.width == 0) b.settings.width = reference.width, b.settings.height = reference.height;
+    if (b.settings.width != reference.width || b.settings.height != reference.height)
+        throw UsageError("bench: --width/--height " + std::to_string(b.settings.width) + "x" +
+                         std::to_string(b.settings.height) + " differ from the reference's " +
+                         std::to_string(reference.width) + "x" + std::to_string(reference.height));
+    LoadReport report;
+    SceneSnapshot scene;
+    try {
+        scene = std::make_shared<const Scene>(loadScene(b.scene, &report));
+    } catch (const SceneError& e) {
+        throw UsageError(e.what());
+    }
+    for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+    std::error_code ec;
+    std::filesystem::create_directories(b.outDir, ec);
+    if (!std::filesystem::is_directory(b.outDir)) throw UsageError("--out: cannot create folder " + b.outDir);
+
+    std::signal(SIGINT, onBenchInterrupt);
+    std::signal(SIGTERM, onBenchInterrupt);
+    TaskSystem tasks(b.threads);
+    std::vector<BenchSample> all;
+    std::printf("%-24s %10s %10s %14s %14s %14s %12s\n", "backend", "seconds", "spp", "rmse", "relmse",
+                "est. relmse", "mean/ref");
+    for (const BenchRun& run : b.runs) {
+        const std::vector<BenchSample> samples = runOne(b, run, scene, reference, tasks);
+        if (gInterrupted) {
+            std::cerr << "bench interrupted; no file written\n";
+            return 130;
+        }
+        all.insert(all.end(), samples.begin(), samples.end());
+        if (samples.empty()) continue;
+        // The final figures, and the mean against the reference's (the bias a converged run keeps).
+        const BenchSample& s = samples.back();
+        std::printf("%-24s %10.3f %10.6g %14.6g %14.6g %14s %12.6f\n", run.label.c_str(), s.seconds, s.spp, s.rmse,
+                    s.relmse, formatValue(s.estimatedRelmse).c_str(), s.meanRef > 0 ? s.meanTest / s.meanRef : NAN);
+        std::fflush(stdout);
+    }
+
+    std::string csv = "backend,seconds,spp,rmse,relmse,estimated_relmse\n";
+    for (const BenchSample& s : all)
+        csv += s.backend + "," + formatValue(s.seconds) + "," + formatValue(s.spp) + "," + formatValue(s.rmse) + "," +
+               formatValue(s.relmse) + "," + formatValue(s.estimatedRelmse) + "\n";
+    const std::filesystem::path out(b.outDir);
+    writeText((out / "bench.csv").string(), csv);
+    const std::string title = std::filesystem::path(b.scene).filename().string() + ", " +
+                              std::to_string(reference.width) + "x" + std::to_string(reference.height) + ", " +
+                              formatValue(b.settings.seconds) + " s per backend";
+    writeText((out / "bench.svg").string(), errorPlotSvg(all, title));
+    std::fprintf(stderr, "wrote %s and %s\n", (out / "bench.csv").c_str(), (out / "bench.svg").c_str());
+    return 0;
+}
+
+}  // namespace
+
+int bench(const std::vector<std::string>& args) {
+    try {
+        return benchImpl(args);
+    } catch (const UsageError& e) {
+        std::cerr << "lucerna: " << e.what() << "\n";
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "lucerna: internal error: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace lucerna::cli
