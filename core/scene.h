@@ -3,6 +3,7 @@
 // save(load(file)) loses nothing, plus the resolved world-space triangle meshes that backends use.
 
 #include "core/math.h"
+#include "core/photometry.h"
 
 #include <memory>
 #include <optional>
@@ -99,6 +100,9 @@ struct Light {
     Rgbd irradiance{0, 0, 0};// directional: W/m^2 on a surface facing it
     double coneAngleDeg = 45;         // spot: half-angle, degrees
     std::optional<double> falloffStartDeg;  // spot: half-angle, degrees; absent = hard edge
+    // Point, spot: given in lumens or candela instead of `intensity` (README); `intensity` then
+    // holds the converted value, and the file is written back as it was given while the two agree.
+    std::optional<PhotometricSpec> photometric;
 
     bool operator==(const Light&) const = default;
 };

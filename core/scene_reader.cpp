@@ -378,10 +378,11 @@ private:
         const std::string what = "a " + type + " light";
         if (type == "point") {
             l.type = LightType::Point;
-            checkKeys(v, place, {"name", "type", "position", "intensity"}, what);
+            checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature"}, what);
         } else if (type == "spot") {
             l.type = LightType::Spot;
-            checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start"}, what);
+            checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start",
+                                 "lumens", "candela", "color", "temperature"}, what);
         } else if (type == "directional") {
             l.type = LightType::Directional;
             checkKeys(v, place, {"name", "type", "direction", "irradiance"}, what);
@@ -391,7 +392,8 @@ private:
         l.name = parseName(v, place);
         if (l.type != LightType::Directional) {
             l.position = vec3(required(v, place, "position"), member(place, "position"));
-            l.intensity = colour(required(v, place, "intensity"), member(place, "intensity"), false);
+            l.photometric = parsePhotometric(v, place);
+            if (!l.photometric) l.intensity = colour(required(v, place, "intensity"), member(place, "intensity"), false);
         }
         if (l.type != LightType::Point) l.direction = direction(required(v, place, "direction"), member(place, "direction"));
         if (l.type == LightType::Directional)
@@ -402,7 +404,40 @@ private:
                 l.falloffStartDeg = numberIn(*f, member(place, "falloff_start"), 0, true, l.coneAngleDeg, false,
                                              " degrees (at most cone_angle)");
         }
+        if (l.photometric)
+            l.intensity = photometricIntensity(*l.photometric, l.type == LightType::Spot
+                                                                   ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg)
+                                                                   : pointSolidAngle());
         return l;
+    }
+
+    // The photometric keys of a point or spot light (README): exactly one of intensity, lumens
+    // and candela; with lumens or candela, at most one of color and temperature.
+    std::optional<PhotometricSpec> parsePhotometric(const Value& v, const std::string& place) const {
+        const Value* lumens = v.find("lumens");
+        const Value* candela = v.find("candela");
+        const Value* colourValue = v.find("color");
+        const Value* temperature = v.find("temperature");
+        const int given = (v.find("intensity") ? 1 : 0) + (lumens ? 1 : 0) + (candela ? 1 : 0);
+        if (given > 1) fail(place, "give one of intensity, lumens and candela, not several");
+        if (!lumens && !candela) {
+            if (colourValue || temperature)
+                fail(member(place, colourValue ? "color" : "temperature"), "only with lumens or candela");
+            return std::nullopt;
+        }
+        PhotometricSpec p;
+        p.quantity = lumens ? PhotometricSpec::Quantity::Lumens : PhotometricSpec::Quantity::Candela;
+        const std::string key = lumens ? "lumens" : "candela";
+        p.value = number(lumens ? *lumens : *candela, member(place, key));
+        if (!(p.value >= 0)) fail(member(place, key), "must be at least 0, got " + formatNumber(p.value));
+        if (colourValue && temperature) fail(place, "give color or temperature, not both");
+        if (colourValue) {
+            p.colour = colour(*colourValue, member(place, "color"), false);
+            if (!(luminance(*p.colour) > 0)) fail(member(place, "color"), "must have a positive luminance");
+        }
+        if (temperature)
+            p.temperatureK = numberIn(*temperature, member(place, "temperature"), 1000, false, 40000, false, " kelvin");
+        return p;
     }
 
     std::string file_;

@@ -7,7 +7,9 @@
 
 #include <QSaveFile>
 
+#include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -129,15 +131,35 @@ std::string transform(const Transform& t) {
     return out + "}";
 }
 
+// A point or spot light's output: its photometric keys while they still give its intensity (an
+// edit of the intensity leaves them stale, and then the intensity is what counts).
+std::string emission(const Light& l) {
+    if (l.photometric) {
+        const PhotometricSpec& p = *l.photometric;
+        const double omega = l.type == LightType::Spot ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg) : pointSolidAngle();
+        const Rgbd i = photometricIntensity(p, omega);
+        const double scale = std::max({std::abs(l.intensity.x), std::abs(l.intensity.y), std::abs(l.intensity.z), 1e-300});
+        if (std::max({std::abs(i.x - l.intensity.x), std::abs(i.y - l.intensity.y), std::abs(i.z - l.intensity.z)}) <=
+            1e-12 * scale) {
+            std::string out = std::string(p.quantity == PhotometricSpec::Quantity::Lumens ? "\"lumens\": " : "\"candela\": ") +
+                              num(p.value);
+            if (p.colour) out += ", \"color\": " + rgb(*p.colour);
+            if (p.temperatureK) out += ", \"temperature\": " + num(*p.temperatureK);
+            return out;
+        }
+    }
+    return "\"intensity\": " + rgb(l.intensity);
+}
+
 std::string light(const Light& l) {
     std::string out = "{\"name\": " + str(l.name) + ", \"type\": ";
     switch (l.type) {
     case LightType::Point:
-        out += "\"point\", \"position\": " + vec(l.position) + ", \"intensity\": " + rgb(l.intensity);
+        out += "\"point\", \"position\": " + vec(l.position) + ", " + emission(l);
         break;
     case LightType::Spot:
         out += "\"spot\", \"position\": " + vec(l.position) + ", \"direction\": " + vec(l.direction) +
-               ", \"intensity\": " + rgb(l.intensity) + ", \"cone_angle\": " + num(l.coneAngleDeg);
+               ", " + emission(l) + ", \"cone_angle\": " + num(l.coneAngleDeg);
         if (l.falloffStartDeg) out += ", \"falloff_start\": " + num(*l.falloffStartDeg);
         break;
     case LightType::Directional:
