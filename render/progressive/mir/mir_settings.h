@@ -10,7 +10,8 @@ struct MirSettings {
     GatherSettings gather;
     VplOptions vpl;                // light sub-paths of the chain's paths
     int pathVplsPerPass = 64;      // n: chain steps, hence path VPLs, per pass
-    int tries = 4;                 // multiple-try Metropolis trials per step (1: plain MH)
+    int tries = 1;                 // multiple-try Metropolis trials per step (1: plain MH); MH beat
+                                   // 4-try MTM at equal time on the door and Cornell scenes (BENCHMARKS.md)
     float largeStepProbability = 0.3f;
     int startCandidates = 1024;    // uniform candidates the chain starts from (importance resampling)
     int pcSamplesPerPass = 256;    // extra independent uniform path samples refining Pc each pass
