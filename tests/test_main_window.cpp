@@ -6,7 +6,11 @@
 
 #include "core/exr_io.h"
 #include "core/scene_io.h"
+#include "core/image_metrics.h"
 #include "ui/camera_navigation.h"
+#include "ui/compare_canvas.h"
+#include "ui/compare_view.h"
+#include "ui/display.h"
 #include "ui/converging_render.h"
 #include "ui/light_properties.h"
 #include "ui/live_preview.h"
@@ -18,9 +22,11 @@
 #include <QAction>
 #include <QApplication>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QFile>
 #include <QLabel>
+#include <QMenu>
 #include <QLineEdit>
 #include <QMouseEvent>
 #include <QPushButton>
@@ -94,6 +100,7 @@ private slots:
     void cameraNavigationKeepsTheCameraValid();
     void editingSession();
     void convergingRenderControls();
+    void comparisonOfPreviewAndRender();
     void askBeforeLosingChanges();
     void badSceneShowsErrorAndKeepsRunning();
 
@@ -342,6 +349,61 @@ void TestMainWindow::convergingRenderControls() {
     QVERIFY(r->frame() == nullptr || r->frame()->passes >= 0);
     QTRY_VERIFY_WITH_TIMEOUT(r->frame() != nullptr, kTimeout);
     w.document()->markSaved();  // nothing to ask about on close
+}
+
+void TestMainWindow::comparisonOfPreviewAndRender() {
+    MainWindow w(cornellPath());
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    // The comparison is a dock behind the render panel, reachable from the View menu.
+    auto* dock = w.findChild<QDockWidget*>("compareDock");
+    QVERIFY(dock);
+    bool inMenu = false;
+    for (QMenu* menu : w.findChildren<QMenu*>()) inMenu = inMenu || menu->actions().contains(dock->toggleViewAction());
+    QVERIFY(inMenu);
+    CompareView* compare = w.compareView();
+    QVERIFY(compare);
+    dock->raise();
+    QTRY_VERIFY_WITH_TIMEOUT(w.convergingRender()->frame() && w.convergingRender()->frame()->samplesPerPixel >= 16,
+                             kTimeout);
+    // Hold the render so that both images stay as they are while they are compared.
+    w.findChild<QPushButton*>("renderPause")->click();
+    QTRY_VERIFY_WITH_TIMEOUT(w.convergingRender()->isPaused(), kTimeout);
+    QVERIFY(previewOfCurrent(w));
+    // The number shown is compareImages' of the frames shown (a frame under way when the pause
+    // came may still arrive: compare with the newest).
+    const auto expectedNow = [&] {
+        const Image& c = w.convergingRender()->frame()->image;
+        return compareImages(resampledNearest(w.livePreview()->frame()->image, c.width, c.height), c).relmse;
+    };
+    QTRY_VERIFY_WITH_TIMEOUT(compare->relmse() && *compare->relmse() == expectedNow(), kTimeout);
+    const double expected = *compare->relmse();
+    const auto convergedFrame = w.convergingRender()->frame();
+    const auto previewFrame = w.livePreview()->frame();
+    const Image& converged = convergedFrame->image;
+    const Image& preview = previewFrame->image;
+    // The preview is an approximation of the same picture: close, not equal.
+    QVERIFY2(expected > 0 && expected < 1, qPrintable(QString::number(expected)));
+    compare->setMode(CompareView::Mode::Split);
+    screenshot(w, "main_window_compare_split.png");
+    screenshot(*compare, "compare_split_cornell.png");
+    compare->setMode(CompareView::Mode::SideBySide);
+    screenshot(*compare, "compare_side_by_side_cornell.png");
+    compare->setMode(CompareView::Mode::RelativeDifference);
+    screenshot(*compare, "compare_difference_cornell.png");
+    // The display settings of the comparison apply to every view: one stop brighter in the
+    // render panel too.
+    DisplaySettings brighter;
+    brighter.exposureStops = 1;
+    compare->setDisplaySettings(brighter);
+    QCOMPARE(w.renderPanel()->view()->image(), toDisplayImage(converged, brighter));
+    QCOMPARE(w.viewport()->image(), toDisplayImage(preview, brighter));
+    DisplaySettings falseColour;
+    falseColour.falseColour = true;
+    compare->setDisplaySettings(falseColour);
+    compare->setMode(CompareView::Mode::SideBySide);
+    screenshot(w, "main_window_false_colour.png");
+    w.document()->markSaved();
 }
 
 void TestMainWindow::askBeforeLosingChanges() {

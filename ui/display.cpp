@@ -122,7 +122,8 @@ DifferenceImage differenceImage(const Image& a, const Image& bIn, DifferenceKind
 
 void drawLegend(QPainter& painter, const QRect& rect, double lo, double hi, bool logScale, const QString& unit) {
     painter.save();
-    painter.fillRect(rect.adjusted(-4, -14, 70, 14), QColor(0, 0, 0, 170));
+    // Room above the ramp for the unit, clear of the top tick's label.
+    painter.fillRect(rect.adjusted(-4, -26, 70, 14), QColor(0, 0, 0, 170));
     const int h = rect.height();
     for (int i = 0; i < h; ++i) painter.fillRect(rect.x(), rect.bottom() - i, rect.width(), 1, falseColourRamp(double(i) / h));
     painter.setPen(Qt::white);
@@ -134,9 +135,10 @@ void drawLegend(QPainter& painter, const QRect& rect, double lo, double hi, bool
         const double t = double(i) / (ticks - 1);
         const double v = logScale ? std::pow(10.0, std::log10(lo) + t * (std::log10(hi) - std::log10(lo))) : lo + t * (hi - lo);
         const int y = rect.bottom() - int(t * h);
-        painter.drawText(rect.right() + 4, y + 4, QString::number(v, 'g', 3));
+        // 4 digits write 1000 as such; beyond, the exponent is shorter.
+        painter.drawText(rect.right() + 4, y + 4, QString::number(v, 'g', std::abs(v) >= 1e4 ? 3 : 4));
     }
-    painter.drawText(rect.x(), rect.y() - 3, unit);
+    painter.drawText(rect.x(), rect.y() - 12, unit);
     painter.restore();
 }
 

@@ -19,6 +19,11 @@ void ImageView::setPlaceholder(const QString& text) {
     update();
 }
 
+void ImageView::setLegend(std::optional<Legend> legend) {
+    legend_ = std::move(legend);
+    update();
+}
+
 QRectF ImageView::imageRect() const {
     if (image_.isNull()) return {};
     const QSizeF fitted = QSizeF(image_.size()).scaled(QSizeF(size()), Qt::KeepAspectRatio);
@@ -38,6 +43,7 @@ void ImageView::paintEvent(QPaintEvent*) {
     painter.setRenderHint(QPainter::SmoothPixmapTransform, target.width() < image_.width());
     painter.drawImage(target, image_);
     paintOverlay(painter);
+    if (legend_) paintLegend(painter, rect(), *legend_);
 }
 
 }  // namespace lucerna

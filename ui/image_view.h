@@ -4,6 +4,8 @@
 // plain QWidget rather than a QOpenGLWidget: the frames are images already, and Qt's offscreen
 // platform, which the tests use, cannot run a QOpenGLWidget.
 
+#include "ui/false_colour.h"
+
 #include <QImage>
 #include <QWidget>
 
@@ -20,6 +22,8 @@ public:
     QRectF imageRect() const;
     // Text shown while there is no picture yet.
     void setPlaceholder(const QString& text);
+    // A false-colour legend drawn over the picture (when it is false colour).
+    void setLegend(std::optional<Legend> legend);
 
     QSize sizeHint() const override { return {420, 420}; }
 
@@ -31,6 +35,7 @@ protected:
 private:
     QImage image_;
     QString placeholder_;
+    std::optional<Legend> legend_;
 };
 
 }  // namespace lucerna

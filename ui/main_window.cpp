@@ -4,8 +4,10 @@
 #include "core/scene_io.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/scene_commands.h"
+#include "ui/compare_view.h"
 #include "ui/converging_render.h"
 #include "ui/display.h"
+#include "ui/false_colour.h"
 #include "ui/light_properties.h"
 #include "ui/live_preview.h"
 #include "ui/outliner.h"
@@ -88,6 +90,12 @@ void MainWindow::createDocks() {
     QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea);
     QDockWidget* outlinerDock = dock(outliner_, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     dock(properties_, tr("Light properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    // The comparison shares the render's side, a tab behind it.
+    compare_ = new CompareView(this);
+    compare_->setObjectName("compareView");
+    QDockWidget* compareDock = dock(compare_, tr("Comparison"), "compareDock", Qt::RightDockWidgetArea);
+    tabifyDockWidget(renderDock, compareDock);
+    renderDock->raise();
     renderDock_ = renderDock;
     outlinerDock_ = outlinerDock;
 
@@ -95,6 +103,14 @@ void MainWindow::createDocks() {
         const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
         properties_->setLight(light);
         viewport_->setSelectedLight(light);
+    });
+    connect(render_.get(), &ConvergingRender::frameReady, this, [this] {
+        if (const auto frame = render_->frame()) compare_->setConverged(frame->image);
+    });
+    connect(compare_, &CompareView::displaySettingsChanged, this, [this](const DisplaySettings& s) {
+        renderPanel_->setDisplaySettings(s);
+        viewport_->setLegend(luminanceLegend(s));
+        showPreviewFrame();
     });
     connect(viewport_, &Viewport::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
 }
@@ -269,7 +285,8 @@ void MainWindow::deleteSelection() {
 void MainWindow::showPreviewFrame() {
     const auto frame = preview_->frame();
     if (!frame) return;
-    viewport_->setImage(toDisplayImage(frame->image));
+    viewport_->setImage(toDisplayImage(frame->image, compare_->displaySettings()));
+    compare_->setPreview(frame->image);
     previewInfo_->setText(tr("Preview: %1, %2 ms").arg(preview_->engineDescription()).arg(frame->milliseconds, 0, 'f', 0));
 }
 

@@ -20,6 +20,7 @@ class QLabel;
 
 namespace lucerna {
 
+class CompareView;
 class ConvergingRender;
 class LightProperties;
 class LivePreview;
@@ -61,6 +62,7 @@ public:
     RenderPanel* renderPanel() const { return renderPanel_; }
     Outliner* outliner() const { return outliner_; }
     LightProperties* lightProperties() const { return properties_; }
+    CompareView* compareView() const { return compare_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -82,6 +84,7 @@ private:
     RenderPanel* renderPanel_ = nullptr;
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;
+    CompareView* compare_ = nullptr;  // also holds the display settings of every view
     QLabel* previewInfo_ = nullptr;
     QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;
     std::function<QMessageBox::StandardButton()> ask_;

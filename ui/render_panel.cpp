@@ -2,6 +2,7 @@
 
 #include "render/progressive/backend.h"
 #include "ui/display.h"
+#include "ui/false_colour.h"
 #include "ui/error_plot.h"
 #include "ui/image_view.h"
 
@@ -61,10 +62,16 @@ RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(pa
     showState();
 }
 
+void RenderPanel::setDisplaySettings(const DisplaySettings& settings) {
+    display_ = settings;
+    view_->setLegend(luminanceLegend(settings));
+    showFrame();
+}
+
 void RenderPanel::showFrame() {
     const auto frame = render_->frame();
     if (!frame) return;
-    view_->setImage(toDisplayImage(frame->image));
+    view_->setImage(toDisplayImage(frame->image, display_));
     const double err = frame->estimatedRelmse;
     figures_->setText(tr("%1 s   %2 spp   estimated relmse %3")
                           .arg(frame->seconds, 0, 'f', 1)

@@ -5,6 +5,7 @@
 // plot against time.
 
 #include "ui/converging_render.h"
+#include "ui/display.h"
 
 #include <QWidget>
 
@@ -24,6 +25,8 @@ public:
 
     ImageView* view() const { return view_; }
     QLabel* figures() const { return figures_; }
+    // How the converged radiance is shown (the comparison's display controls set it).
+    void setDisplaySettings(const DisplaySettings& settings);
 
 private:
     void showFrame();
@@ -35,6 +38,7 @@ private:
     QComboBox* backend_;
     QLabel *reason_, *figures_;
     ErrorPlot* plot_;
+    DisplaySettings display_;
 };
 
 }  // namespace lucerna

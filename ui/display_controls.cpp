@@ -1,0 +1,88 @@
+#include "ui/display_controls.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+
+#include <algorithm>
+
+namespace lucerna {
+
+namespace {
+enum Mode { Linear, Filmic, FalseColour };
+}
+
+DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
+    auto* layout = new QHBoxLayout(this);
+    layout->setContentsMargins(0, 0, 0, 0);
+    exposure_ = new QDoubleSpinBox(this);
+    exposure_->setObjectName("exposure");
+    exposure_->setRange(-16, 16);
+    exposure_->setSingleStep(0.5);
+    exposure_->setDecimals(1);
+    exposure_->setSuffix(tr(" stops"));
+    exposure_->setToolTip(tr("Exposure: each stop doubles the displayed radiance"));
+    mode_ = new QComboBox(this);
+    mode_->setObjectName("toneMapping");
+    mode_->addItems({tr("Linear sRGB"), tr("Filmic"), tr("False colour cd/m\u00b2")});
+    // The false-colour range; a log scale, so decades are the natural steps.
+    const auto range = [this](const char* name, double value) {
+        auto* spin = new QDoubleSpinBox(this);
+        spin->setObjectName(name);
+        spin->setRange(1e-4, 1e7);
+        spin->setDecimals(4);
+        spin->setValue(value);
+        spin->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+        spin->setSuffix(tr(" cd/m\u00b2"));
+        return spin;
+    };
+    falseMin_ = range("falseMin", settings_.falseMin);
+    falseMax_ = range("falseMax", settings_.falseMax);
+    layout->addWidget(new QLabel(tr("Exposure"), this));
+    layout->addWidget(exposure_);
+    layout->addWidget(mode_);
+    layout->addWidget(falseMin_);
+    rangeTo_ = new QLabel(tr("to"), this);
+    layout->addWidget(rangeTo_);
+    layout->addWidget(falseMax_);
+    layout->addStretch();
+    setSettings(settings_);
+
+    connect(exposure_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
+    connect(falseMin_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
+    connect(falseMax_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
+    connect(mode_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
+}
+
+void DisplayControls::setSettings(const DisplaySettings& s) {
+    {
+        const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_);
+        exposure_->setValue(s.exposureStops);
+        mode_->setCurrentIndex(s.falseColour ? FalseColour : s.curve == ToneCurve::Filmic ? Filmic : Linear);
+        falseMin_->setValue(s.falseMin);
+        falseMax_->setValue(s.falseMax);
+    }
+    read();
+}
+
+void DisplayControls::read() {
+    DisplaySettings s;
+    s.exposureStops = float(exposure_->value());
+    s.curve = mode_->currentIndex() == Filmic ? ToneCurve::Filmic : ToneCurve::LinearSrgb;
+    s.falseColour = mode_->currentIndex() == FalseColour;
+    // A range the wrong way round would divide by zero or flip the legend: keep a decade at least.
+    s.falseMin = falseMin_->value();
+    s.falseMax = std::max(falseMax_->value(), s.falseMin * 10);
+    // Exposure does not apply to absolute luminance, and the range only to false colour.
+    exposure_->setEnabled(!s.falseColour);
+    falseMin_->setVisible(s.falseColour);
+    falseMax_->setVisible(s.falseColour);
+    rangeTo_->setVisible(s.falseColour);
+    if (s == settings_) return;
+    settings_ = s;
+    emit settingsChanged(settings_);
+}
+
+}  // namespace lucerna
