@@ -1,4 +1,5 @@
 #include "app/bench_command.h"
+#include "app/cli_support.h"
 
 #include "app/bench_plot.h"
 #include "core/atomic_file.h"
@@ -24,24 +25,6 @@
 namespace lucerna::cli {
 
 namespace {
-
-// Bad usage or bad input: exit status 2 with this one line.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-volatile std::sig_atomic_t gInterrupted = 0;  // set by SIGINT/SIGTERM only
-extern "C" void onBenchInterrupt(int) { gInterrupted = 1; }
-
-template <class T>
-T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
-    T value{};
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || ptr != text.data() + text.size() || !(value >= lo && value <= hi))
-        throw UsageError(option + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                         "], got '" + text + "'");
-    return value;
-}
 
 // "name=value" into options, or a usage error naming where it came from.
 void addOption(std::map<std::string, std::string>& options, const std::string& kv, const std::string& where) {
@@ -170,12 +153,12 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
     };
     while (!job->isFinished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(3));
-        if (gInterrupted) job->cancel();
+        if (interrupted()) job->cancel();
         poll(false);
     }
     job->wait();
     job->rethrowIfFailed();
-    if (gInterrupted) return samples;
+    if (interrupted()) return samples;
     // The final frame (published at the end) closes every curve at the budget.
     const auto final = latest.get();
     if (final && final->passes > 0 && (samples.empty() || samples.back().seconds < final->seconds)) measure(*final);
@@ -220,15 +203,14 @@ int benchImpl(const std::vector<std::string>& args) {
     std::filesystem::create_directories(b.outDir, ec);
     if (!std::filesystem::is_directory(b.outDir)) throw UsageError("--out: cannot create folder " + b.outDir);
 
-    std::signal(SIGINT, onBenchInterrupt);
-    std::signal(SIGTERM, onBenchInterrupt);
+    catchInterrupts();
     TaskSystem tasks(b.threads);
     std::vector<BenchSample> all;
     std::printf("%-24s %10s %10s %14s %14s %14s %12s\n", "backend", "seconds", "spp", "rmse", "relmse",
                 "est. relmse", "mean/ref");
     for (const BenchRun& run : b.runs) {
         const std::vector<BenchSample> samples = runOne(b, run, scene, reference, tasks);
-        if (gInterrupted) {
+        if (interrupted()) {
             std::cerr << "bench interrupted; no file written\n";
             return 130;
         }
@@ -257,16 +239,6 @@ int benchImpl(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int bench(const std::vector<std::string>& args) {
-    try {
-        return benchImpl(args);
-    } catch (const UsageError& e) {
-        std::cerr << "lucerna: " << e.what() << "\n";
-        return 2;
-    } catch (const std::exception& e) {
-        std::cerr << "lucerna: internal error: " << e.what() << "\n";
-        return 1;
-    }
-}
+int bench(const std::vector<std::string>& args) { return runCommand(benchImpl, args); }
 
 }  // namespace lucerna::cli

@@ -1,4 +1,5 @@
 #include "app/cli.h"
+#include "app/cli_support.h"
 
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
@@ -22,24 +23,6 @@
 namespace lucerna::cli {
 
 namespace {
-
-// Bad usage or bad input: exit status 2 with this one line.
-struct UsageError : std::runtime_error {
-    using std::runtime_error::runtime_error;
-};
-
-volatile std::sig_atomic_t gInterrupted = 0;  // set by SIGINT/SIGTERM only
-extern "C" void onInterrupt(int) { gInterrupted = 1; }
-
-template <class T>
-T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
-    T value{};
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    if (ec != std::errc() || ptr != text.data() + text.size() || !(value >= lo && value <= hi))
-        throw UsageError(option + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
-                         "], got '" + text + "'");
-    return value;
-}
 
 struct RenderArgs {
     std::string scene, output, backend = "auto";
@@ -119,8 +102,7 @@ int renderImpl(const std::vector<std::string>& args) {
     }
     if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
 
-    std::signal(SIGINT, onInterrupt);
-    std::signal(SIGTERM, onInterrupt);
+    catchInterrupts();
     TaskSystem tasks(r.threads);
     std::optional<RenderFrame> result;
     auto job = tasks.submit([&](TaskContext& ctx) {
@@ -134,7 +116,7 @@ int renderImpl(const std::vector<std::string>& args) {
     const auto start = std::chrono::steady_clock::now();
     while (!job->isFinished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        if (gInterrupted) job->cancel();
+        if (interrupted()) job->cancel();
         if (tty) {
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const double p = job->progress();
@@ -146,7 +128,7 @@ int renderImpl(const std::vector<std::string>& args) {
     job->wait();
     if (tty) std::fputs("\n", stderr);
     job->rethrowIfFailed();
-    if (gInterrupted || !result) {
+    if (interrupted() || !result) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
@@ -232,24 +214,12 @@ int convertImpl(const std::vector<std::string>& args) {
     return 0;
 }
 
-int run(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args) {
-    try {
-        return impl(args);
-    } catch (const UsageError& e) {
-        std::cerr << "lucerna: " << e.what() << "\n";
-        return 2;
-    } catch (const std::exception& e) {
-        std::cerr << "lucerna: internal error: " << e.what() << "\n";
-        return 1;
-    }
-}
-
 }  // namespace
 
-int render(const std::vector<std::string>& args) { return run(renderImpl, args); }
-int compare(const std::vector<std::string>& args) { return run(compareImpl, args); }
-int info(const std::vector<std::string>& args) { return run(infoImpl, args); }
-int convert(const std::vector<std::string>& args) { return run(convertImpl, args); }
+int render(const std::vector<std::string>& args) { return runCommand(renderImpl, args); }
+int compare(const std::vector<std::string>& args) { return runCommand(compareImpl, args); }
+int info(const std::vector<std::string>& args) { return runCommand(infoImpl, args); }
+int convert(const std::vector<std::string>& args) { return runCommand(convertImpl, args); }
 
 void printUsage() {
     std::cout << "usage:\n"

@@ -1,0 +1,36 @@
+#pragma once
+// What the headless commands share: the one-line usage error (exit status 2), number parsing
+// for options, the Ctrl-C flag, and the wrapper that turns exceptions into exit statuses.
+
+#include <charconv>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lucerna::cli {
+
+// Bad usage or bad input: exit status 2 with this one line.
+struct UsageError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+template <class T>
+T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
+    T value{};
+    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
+    if (ec != std::errc() || ptr != text.data() + text.size() || !(value >= lo && value <= hi))
+        throw UsageError(option + ": expected a number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                         "], got '" + text + "'");
+    return value;
+}
+
+// Routes SIGINT and SIGTERM to a flag that long commands poll (they stop within a pass and
+// write nothing).
+void catchInterrupts();
+bool interrupted();
+
+// Runs a command: UsageError gives "lucerna: MESSAGE" and 2, any other exception "lucerna:
+// internal error: ..." and 1.
+int runCommand(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args);
+
+}  // namespace lucerna::cli
