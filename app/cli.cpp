@@ -11,11 +11,13 @@
 
 #include <QSaveFile>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <numbers>
 #include <optional>
 #include <thread>
 #include <unistd.h>
@@ -167,6 +169,45 @@ const char* materialTypeName(MaterialType t) {
     return "?";
 }
 
+// Each light's luminous output (683 lm/W, Rec.709 luminance; SPEC.md): the flux of point and spot
+// lights from their distribution's solid angle, of emissive objects pi A L (one-sided Lambertian,
+// A in m^2), and the illuminance a directional light gives a surface facing it.
+void printPhotometry(const Scene& scene) {
+    const auto lumens = [](double watts) {
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.6g", watts * kLumensPerWatt);
+        return std::string(buf);
+    };
+    for (const Light& l : scene.lights) {
+        std::cout << "  " << l.name << ": ";
+        switch (l.type) {
+        case LightType::Point:
+            std::cout << "point, " << lumens(luminance(l.intensity) * pointSolidAngle()) << " lm\n";
+            break;
+        case LightType::Spot:
+            std::cout << "spot, " << lumens(luminance(l.intensity) * spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg))
+                      << " lm (" << lumens(luminance(l.intensity)) << " cd on axis)\n";
+            break;
+        case LightType::Directional:
+            std::cout << "directional, " << lumens(luminance(l.irradiance)) << " lx on a surface facing it\n";
+            break;
+        }
+    }
+    const double m2 = scene.metersPerUnit * scene.metersPerUnit;
+    for (const Object& o : scene.objects) {
+        const auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
+                                     [&](const Material& m) { return m.name == o.material; });
+        if (it == scene.materials.end() || it->type != MaterialType::Emitter || !o.worldMesh) continue;
+        double area = 0;
+        for (const V3i& t : o.worldMesh->triangles) {
+            const V3d& a = o.worldMesh->vertices[size_t(t.x)];
+            area += 0.5 * (o.worldMesh->vertices[size_t(t.y)] - a).cross(o.worldMesh->vertices[size_t(t.z)] - a).length();
+        }
+        std::cout << "  " << o.name << ": emitter, " << lumens(std::numbers::pi * area * m2 * luminance(it->radiance))
+                  << " lm\n";
+    }
+}
+
 int infoImpl(const std::vector<std::string>& args) {
     if (args.size() != 1) throw UsageError("usage: lucerna info SCENE.json");
     LoadReport report;
@@ -185,6 +226,7 @@ int infoImpl(const std::vector<std::string>& args) {
     std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
               << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
               << ", directional " << f.directionalLights << ")\n";
+    printPhotometry(scene);
     std::string needs;
     if (f.hasDiffuse) needs += " diffuse";
     if (f.hasGlossy) needs += " glossy";

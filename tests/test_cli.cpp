@@ -169,6 +169,20 @@ void TestCli::infoPrintsStatistics() {
     QVERIFY(r.out.contains("triangles: 32"));
     QVERIFY(r.out.contains("emitter triangles: 2"));
     QVERIFY(r.out.contains("needs: diffuse area-lights"));
+    // The Cornell light: 130 x 105 mm of radiance (17, 12, 4): pi A Y(L) 683 = 366 lm.
+    QVERIFY2(r.out.contains("light: emitter, 365.684 lm"), qPrintable(r.out));
+    // A photometric bulb is reported with the flux it was given.
+    QTemporaryDir dir;
+    QFile f(dir.filePath("bulb.json"));
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"lucerna": 1, "camera": {"position": [0, 1, -3], "target": [0, 0, 0], "fov_y": 40, "resolution": [8, 8]},
+      "materials": {"white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]}},
+      "objects": [{"name": "floor", "material": "white", "mesh": {"quad": [[-2,0,-2],[-2,0,2],[2,0,2],[2,0,-2]]}}],
+      "lights": [{"name": "bulb", "type": "point", "position": [0, 2, 0], "lumens": 800, "temperature": 2700}]})");
+    f.close();
+    const Run b = runLucerna({"info", dir.filePath("bulb.json")});
+    QCOMPARE(b.exitCode, 0);
+    QVERIFY2(b.out.contains("bulb: point, 800 lm"), qPrintable(b.out));
 }
 
 void TestCli::interruptedRenderLeavesNoFile_data() {
