@@ -7,7 +7,10 @@
 //   same VPLs (render/vpl/vpl_contribution.h) at every pixel;
 // - a scene lit only directly (point, spot, area light over a floor) matches the path tracer;
 // - the closed sphere with an emitting cap has its mean within 3% of the closed form;
-// - a camera move regenerates no VPL, a light edit only that light's.
+// - a camera move regenerates no VPL, a light edit only that light's;
+// - a directional light's shadow (orthographic shadow map) matches the path tracer's;
+// - the MIR VPL source gives the same mean indirect light as instant radiosity, and a light edit
+//   regenerates its (single, all-lights) set.
 
 #include "closed_form_scenes.h"
 #include "render_helpers.h"
@@ -63,6 +66,16 @@ const char* kGlossyFloor = R"({"lucerna": 1, "camera": {"position": [0, 1, 0], "
                 "wall": {"type": "diffuse", "albedo": [0.8, 0.6, 0.4]}},
   "objects": [{"name": "floor", "material": "floor", "mesh": {"quad": [[-20,0,-20],[-20,0,20],[20,0,20],[20,0,-20]]}}]})";
 
+// A floor and a black card above it under a slanted sun: the card's shadow falls on the floor in
+// view; the card reflects nothing, so the path tracer's image is direct light only.
+const char* kSunAndCard = R"({"lucerna": 1, "camera": {"position": [0, 3, 0.01], "target": [0, 0, 0], "up": [0, 0, 1],
+  "fov_y": 50, "resolution": [64, 64]},
+  "materials": {"floor": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
+                "black": {"type": "diffuse", "albedo": [0, 0, 0]}},
+  "objects": [{"name": "floor", "material": "floor", "mesh": {"quad": [[-2,0,-2],[-2,0,2],[2,0,2],[2,0,-2]]}},
+              {"name": "card", "material": "black", "mesh": {"quad": [[-0.3,0.6,-0.3],[-0.3,0.6,0.3],[0.3,0.6,0.3],[0.3,0.6,-0.3]]}}],
+  "lights": [{"name": "sun", "type": "directional", "direction": [0.8, -1, 0.3], "irradiance": [2, 2, 2]}]})";
+
 }  // namespace
 
 class TestPreview : public QObject {
@@ -76,6 +89,8 @@ private slots:
     void directLightMatchesPathTracer();
     void sphereWithEmittingCap();
     void editsRegenerateOnlyWhatChanged();
+    void directionalShadowMatchesPathTracer();
+    void mirVplSource();
 };
 
 void TestPreview::eglContext() {
@@ -142,6 +157,7 @@ void TestPreview::oneByOneEqualsCpuSum() {
     s.blur = false;
     s.direct = false;
     s.clampDistance = 0.02f;
+    s.visibility = false;  // the CPU sum is unshadowed
     preview.setSettings(s);
     preview.setScene(scene);
     preview.setVpls(vpls);
@@ -271,6 +287,50 @@ void TestPreview::editsRegenerateOnlyWhatChanged() {
     QVERIFY(same > 0 && same < int(before.size()));
     const Image third = preview.render();
     QVERIFY(channelMean(third) > channelMean(second));
+}
+
+void TestPreview::directionalShadowMatchesPathTracer() {
+    const SceneSnapshot scene = sceneFromJson(kSunAndCard);
+    Preview preview;
+    preview.setScene(scene);
+    const Image img = averagedFrames(preview, 16);
+    const Image path = render("path", scene, 64, 7);
+    // The shadow is there: the darkest floor pixels are (almost) black in both images.
+    int shadowedPreview = 0, shadowedPath = 0;
+    for (size_t i = 0; i < img.pixels.size(); ++i) {
+        shadowedPreview += img.pixels[i].x < 0.02f;
+        shadowedPath += path.pixels[i].x < 0.02f;
+    }
+    const double rel = relmse(img, path);
+    qInfo("sun and card: dark pixels %d (preview) vs %d (path), relmse %.3g", shadowedPreview, shadowedPath, rel);
+    QVERIFY(shadowedPath > 200);
+    QVERIFY2(std::abs(shadowedPreview - shadowedPath) < shadowedPath / 10, "the shadow's area differs");
+    // Shadow-map edges (a 1024^2 map over the scene) differ from exact shadow rays by a pixel.
+    QVERIFY2(rel < 5e-3, qPrintable(QString::number(rel)));
+}
+
+void TestPreview::mirVplSource() {
+    const std::string path = std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json";
+    const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(path));
+    PreviewSettings s;
+    s.direct = false;  // indirect light only: what the VPL sources differ in
+    Preview preview;
+    preview.setSettings(s);
+    preview.setScene(scene, 64, 64);
+    const Image ir = averagedFrames(preview, 8);
+    const int before = preview.vplSetGenerations();
+    s.vplSource = VplSource::Metropolis;
+    preview.setSettings(s);
+    QCOMPARE(preview.vplSetGenerations(), before + 1);  // one set for all lights
+    QVERIFY(!preview.vpls().empty() && int(preview.vpls().size()) <= s.vplCount);
+    const Image mir = averagedFrames(preview, 8);
+    const double a = channelMean(ir), b = channelMean(mir);
+    qInfo("indirect mean: instant radiosity %.5f, MIR %.5f (%.2f%%)", a, b, 100.0 * (b / a - 1.0));
+    // Both estimate the same clamped indirect light; MIR's Pc and normalisation are noisier.
+    QVERIFY2(std::abs(b / a - 1.0) < 0.1, qPrintable(QString::number(b / a - 1.0)));
+    const int generations = preview.vplSetGenerations();
+    preview.setCamera(scene->camera);
+    QCOMPARE(preview.vplSetGenerations(), generations);
 }
 
 QTEST_GUILESS_MAIN(TestPreview)

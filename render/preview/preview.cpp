@@ -1,5 +1,6 @@
 #include "render/preview/preview.h"
 
+#include "render/preview/preview_mir_vpls.h"
 #include "render/preview/preview_state.h"
 #include "render/preview/preview_vpls.h"
 #include "render/trace/render_scene.h"
@@ -31,6 +32,7 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
     st.directProgram = gl::loadProgram(d, "fullscreen.vert", "direct.frag");
     st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");
+    st.dirShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "shadow_dir.frag");
     st.emptyVao = gl::makeVertexArray();
     gl::checkErrors("Preview()");
 }
@@ -46,8 +48,13 @@ int Preview::vplSetGenerations() const { return state_->generations; }
 
 void Preview::setSettings(const PreviewSettings& s) {
     const bool regenerateVpls =
-        s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces;
-    const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize;
+        s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces ||
+        s.vplSource != settings_.vplSource || s.indirect != settings_.indirect ||
+        // MIR's chain targets the clamped contribution, so its VPLs depend on the clamp.
+        (s.vplSource == VplSource::Metropolis && s.clampDistance != settings_.clampDistance);
+    // The area-light samples are dealt to the sub-buffers like VPLs: a new pattern redeals them.
+    const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize ||
+                         s.patternX != settings_.patternX || s.patternY != settings_.patternY;
     const bool repartition = s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
                              s.vplShadowSize != settings_.vplShadowSize || s.visibility != settings_.visibility;
     if (s.patternX < 1 || s.patternY < 1 || s.vplCount < 0 || s.splitBlock < 1)
@@ -130,6 +137,10 @@ void Preview::regenerate(uint64_t seed) {
         st.lightsDirty = true;
         return;
     }
+    if (settings_.vplSource == VplSource::Metropolis) {
+        regenerateMir();
+        return;
+    }
     const int subsets = settings_.patternX * settings_.patternY;
     std::vector<LightSampler> samplers;
     std::vector<int> indices;
@@ -162,6 +173,10 @@ void Preview::setLight(size_t index, const Light& light) {
     st.deltas[index] = compileDeltaLight(light);
     st.lightsDirty = true;
     if (st.customVpls) return;
+    if (settings_.vplSource == VplSource::Metropolis) {
+        regenerateMir();  // MIR's VPLs serve every light at once
+        return;
+    }
     const LightSampler sampler = singleLightSampler(*st.scene, &st.deltas[index]);
     double total = 0;
     for (const LightVpls& s : st.sets)
@@ -175,6 +190,24 @@ void Preview::setLight(size_t index, const Light& light) {
         ++st.generations;
     }
     st.vplsDirty = true;
+}
+
+void Preview::regenerateMir() {
+    State& st = *state_;
+    LightSampler all(st.scene->lights().emitters(), std::vector<DeltaLight>(st.deltas), st.scene->metersPerUnit(),
+                     st.scene->boundsCenter(), st.scene->boundsRadius(), st.scene->triangleCount());
+    MirVplSettings mir;
+    mir.pathVpls = settings_.indirect ? settings_.vplCount : 0;
+    mir.clampFraction = settings_.clampDistance;
+    mir.maxBounces = settings_.maxBounces;
+    LightVpls set;
+    set.lightIndex = -3;
+    set.vpls = generateMirVpls(*st.scene, all, st.camera, st.width, st.height, mir, hashSeed(st.seed, 0x4d4952ULL));
+    set.count = int(set.vpls.size());
+    ++st.generations;
+    st.sets.clear();
+    st.sets.push_back(std::move(set));
+    st.vplsDirty = st.lightsDirty = true;
 }
 
 void Preview::setVpls(VplSet vpls) {

@@ -1,9 +1,11 @@
 #pragma once
 // The interactive preview (seed 002, slides 80 to 95; DESIGN.md "Interleaved sampling with
 // deferred shading"): OpenGL 4.5 core through its own EGL context, a G-buffer drawn once per
-// frame, split into n x m sub-buffers (two passes), each sub-buffer shaded with its own subset of
-// the VPLs in one draw, gathered, blurred over continuous regions, and blended with direct light
-// from shadow-mapped lights. One object serves the GUI and the command line.
+// frame, split into n x m sub-buffers (in one pass or two), each sub-buffer shaded with its own
+// subset of the VPLs (and of the area-light samples) in one draw, gathered, blurred over
+// continuous regions, and blended with direct light from shadow-mapped lights. VPLs come from
+// instant radiosity (per light) or Metropolis instant radiosity (PreviewSettings::vplSource).
+// One object serves the GUI and the command line.
 //
 // Threading: the object may be used from any one thread at a time; each call makes the context
 // current and releases it, so task threads can take turns.
@@ -19,20 +21,35 @@
 
 namespace lucerna {
 
+// Where the indirect VPLs come from: instant radiosity light paths (per light, so that a light
+// edit regenerates only its set), or Metropolis instant radiosity (preview_mir_vpls.h: VPLs
+// where they light what the camera sees; one set for all lights).
+enum class VplSource { InstantRadiosity, Metropolis };
+
 struct PreviewSettings {
-    int vplCount = 256;            // indirect VPLs over all lights
+    int vplCount = 256;            // indirect VPLs over all lights (MIR: chain steps, at most this many)
+    VplSource vplSource = VplSource::InstantRadiosity;
     int patternX = 4, patternY = 4;  // interleaving n x m (1 x 1: no interleaving)
     // The VPL geometric term is clamped as geometricClampBound (render/vpl/vpl_contribution.h):
     // at 1 / (this fraction of the scene's bounding radius)^2; 0: no clamping. It removes the
     // bright spots near VPLs and loses some energy.
     float clampDistance = 0.05f;
-    bool visibility = false;       // VPL shadow maps (low-resolution cube maps per VPL)
+    // VPL visibility by low-resolution cube shadow maps per VPL; off is the thesis' fast mode. On
+    // by default: on llvmpipe it measured 4% of a 256-VPL 4x4 frame (plus the maps, redrawn only
+    // when lights or VPLs change) for a third of the error (BENCHMARKS.md, issue 5).
+    bool visibility = true;
     int vplShadowSize = 32;        // per cube face
     bool blur = true;              // the n x m box blur over continuous regions
-    bool twoPassSplit = true;      // split in two passes (blocks, then translation) or in one
+    // Split in two passes (blocks, then translation) or in one. One pass by default: on llvmpipe it
+    // measured twice as fast (BENCHMARKS.md, issue 5); the two passes win on GPUs (the thesis).
+    bool twoPassSplit = false;
     int splitBlock = 8;            // B of the two-pass split
     bool direct = true, indirect = true;
-    int areaLightSamples = 16;     // point samples standing for the emissive triangles' direct light
+    // Point samples (shadow-mapped) standing for the emissive triangles' direct light. With
+    // interleaving they are rounded up to a multiple of n m and dealt to the sub-buffers like
+    // VPLs ("area lights as VPLs of their own"): each pixel evaluates n m times fewer, and the
+    // box blur over continuous regions averages them back.
+    int areaLightSamples = 16;
     int shadowSize = 256;          // direct lights' cube shadow maps, per face
     int maxBounces = 8;
     uint64_t seed = 1;
@@ -63,7 +80,7 @@ public:
     // Takes a new scene: geometry, materials, lights; generates every light's VPLs.
     // width/height override the camera's resolution (0: keep).
     void setScene(SceneSnapshot scene, int width = 0, int height = 0);
-    // A camera move: no VPL is regenerated.
+    // A camera move: no VPL is regenerated (MIR's camera-dependent VPLs follow at regenerate()).
     void setCamera(const Camera& camera);
     // Light `index` of the scene changed (same type of edit as the GUI's): only its VPLs and its
     // shadow map are regenerated.
@@ -96,6 +113,8 @@ public:
     struct State;
 
 private:
+    void regenerateMir();
+
     std::unique_ptr<EglContext> context_;
     std::unique_ptr<State> state_;
     PreviewSettings settings_;

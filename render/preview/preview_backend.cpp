@@ -39,6 +39,9 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
         } else if (key == "visibility" || key == "blur") {
             if (value != "0" && value != "1") throw bad("0 or 1");
             (key == "blur" ? p.blur : p.visibility) = value == "1";
+        } else if (key == "vpl_source") {
+            if (value != "ir" && value != "mir") throw bad("ir or mir");
+            p.vplSource = value == "mir" ? VplSource::Metropolis : VplSource::InstantRadiosity;
         } else if (key == "area_samples") {
             if (!parseNumber(value, p.areaLightSamples) || p.areaLightSamples < 0) throw bad("an integer >= 0");
         }
@@ -88,6 +91,7 @@ public:
         auto d = lastTimings_;
         d["preview:renderer"] = preview_ ? preview_->context().renderer() : "";
         d["preview:vpls"] = std::to_string(previewSettings_.vplCount);
+        d["preview:vpl_source"] = previewSettings_.vplSource == VplSource::Metropolis ? "mir" : "ir";
         d["preview:pattern"] = std::to_string(previewSettings_.patternX) + "x" + std::to_string(previewSettings_.patternY);
         return d;
     }

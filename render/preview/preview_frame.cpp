@@ -79,6 +79,42 @@ void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vecto
     glDisable(GL_DEPTH_TEST);
 }
 
+// An orthographic view-projection along a directional light's travel direction, over the scene's
+// bounding sphere: clip x, y, z = the point's offsets along (side, up, direction) / radius.
+Mat4 directionalShadowMatrix(const V3f& direction, const V3f& centre, float radius) {
+    const V3f f = direction.normalized();
+    const V3f helper = std::abs(f.y) < 0.9f ? V3f(0, 1, 0) : V3f(1, 0, 0);
+    const V3f side = f.cross(helper).normalized(), up = side.cross(f);
+    Mat4 m;
+    const float k = 1.0f / (radius * 1.01f);
+    m.setRow(0, side * k, -side.dot(centre) * k);
+    m.setRow(1, up * k, -up.dot(centre) * k);
+    m.setRow(2, f * k, -f.dot(centre) * k);
+    m.setRow(3, V3f(0, 0, 0), 1.0f);
+    return m;
+}
+
+// One depth-only draw of the scene per directional light (at most kMaxLights have maps).
+void renderDirectionalShadows(Preview::State& st, int mapSize) {
+    DirectionalShadows& ds = st.dirShadows;
+    ds.ensure(mapSize, int(ds.matrices.size()));
+    if (ds.matrices.empty()) return;
+    glUseProgram(st.dirShadowProgram.id());
+    glBindVertexArray(st.sceneVao.id());
+    glEnable(GL_DEPTH_TEST);
+    glViewport(0, 0, ds.size, ds.size);
+    for (size_t i = 0; i < ds.matrices.size(); ++i) {
+        glNamedFramebufferTextureLayer(ds.fbo.id(), GL_DEPTH_ATTACHMENT, ds.depth.id(), 0, GLint(i));
+        glBindFramebuffer(GL_FRAMEBUFFER, ds.fbo.id());
+        const float one = 1.0f;
+        glClearNamedFramebufferfv(ds.fbo.id(), GL_DEPTH, 0, &one);
+        glProgramUniformMatrix4fv(st.dirShadowProgram.id(), loc(st.dirShadowProgram, "lightViewProj"), 1, GL_FALSE,
+                                  ds.matrices[i].m.data());
+        glDrawArrays(GL_TRIANGLES, 0, st.vertexCount);
+    }
+    glDisable(GL_DEPTH_TEST);
+}
+
 // Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
 // power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
 // estimates all the indirect light.
@@ -126,7 +162,23 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     upload(st.vplBuffer, gpu);
     upload(st.rangeBuffer, ranges);
     st.uploadedVplCount = int(gpu.size());
-    if (settings.visibility) renderCubeShadows(st, st.vplShadows, centres, settings.vplShadowSize);
+    if (settings.visibility && !centres.empty()) {
+        GLint maxLayers = 0;
+        glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
+        const int perChunk = std::max(1, int(maxLayers) / 6);
+        const int chunks = (int(centres.size()) + perChunk - 1) / perChunk;
+        if (chunks > Preview::State::kVplShadowChunks)
+            throw std::runtime_error("preview: VPL visibility supports at most " +
+                                     std::to_string(perChunk * Preview::State::kVplShadowChunks) + " VPLs on this GPU");
+        st.vplCubesPerChunk = perChunk;
+        for (int c = 0; c < chunks; ++c) {
+            const size_t first = size_t(c) * size_t(perChunk);
+            const size_t last = std::min(centres.size(), first + size_t(perChunk));
+            std::vector<std::array<float, 4>> part(centres.begin() + long(first), centres.begin() + long(last));
+            for (auto& centre : part) centre[3] -= float(first);  // the cube's index inside its array
+            renderCubeShadows(st, st.vplShadows[size_t(c)], part, settings.vplShadowSize);
+        }
+    }
     st.vplsDirty = false;
 }
 
@@ -135,6 +187,8 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
 void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     std::vector<GpuLight> lights;
     std::vector<std::array<float, 4>> centres;
+    st.dirShadows.matrices.clear();
+    st.firstAreaLight = st.areaLightCount = 0;
     const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
     for (const DeltaLight& d : st.deltas) {
         GpuLight g{};
@@ -143,11 +197,16 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
         put(g.directionCosCone, d.direction, d.cosCone);
         put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
             d.cosFalloffStart);
-        // No shadow map for a directional light yet (it would need an orthographic one).
+        // Point and spot lights: a cube map; directional lights: an orthographic map (beyond
+        // kMaxLights of them, unshadowed).
         float layer = -1.0f;
         if (d.type != LightType::Directional) {
             layer = float(centres.size());
             centres.push_back({d.position.x, d.position.y, d.position.z, layer});
+        } else if (st.dirShadows.matrices.size() < size_t(DirectionalShadows::kMaxLights)) {
+            layer = float(st.dirShadows.matrices.size());
+            st.dirShadows.matrices.push_back(
+                directionalShadowMatrix(d.direction, st.scene->boundsCenter(), st.scene->boundsRadius()));
         }
         put(g.normalShadow, V3f(0, 0, 0), layer);
         lights.push_back(g);
@@ -158,7 +217,11 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
         double total = 0;
         for (const EmitterTriangle& e : emitters) cdf.push_back(total += e.area * std::max(1e-6f, luminance(e.radiance)));
         Rng rng(st.seed, 0xa4ea11ULL);
-        const int n = settings.areaLightSamples;
+        // Interleaved: a multiple of the sub-buffer count, so every sub-buffer gets as many.
+        const int subsets = st.patternX * st.patternY;
+        const int n = subsets > 1 ? roundUp(settings.areaLightSamples, subsets) : settings.areaLightSamples;
+        st.firstAreaLight = int(lights.size());
+        st.areaLightCount = n;
         const float lift = st.scene->boundsRadius() * 1e-4f;
         for (int i = 0; i < n; ++i) {
             const double u = (i + rng.nextDouble()) / n;  // stratified over the emitters' power
@@ -179,10 +242,16 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
             put(g.normalShadow, e.normal, layer);
             lights.push_back(g);
         }
+        // Interleaved, sample i serves sub-buffer i mod (n m): shuffled, so that which part of the
+        // light a sub-buffer sees changes with every seed (where the blur box is cut short by an
+        // edge, a fixed assignment would be a bias that no number of frames averages away).
+        for (size_t i = size_t(n); i > 1; --i)
+            std::swap(lights[size_t(st.firstAreaLight) + i - 1], lights[size_t(st.firstAreaLight) + rng.nextUint() % i]);
     }
     upload(st.lightBuffer, lights);
     st.directLights = std::move(lights);
     renderCubeShadows(st, st.directShadows, centres, settings.shadowSize);
+    renderDirectionalShadows(st, settings.shadowSize * 4);
     st.directShadowCubes = int(centres.size());
     st.lightsDirty = false;
 }
@@ -302,7 +371,10 @@ Image Preview::render(float jitterX, float jitterY) {
     lap(tm.gbuffer);
 
     const bool indirect = s.indirect && st.uploadedVplCount > 0;
-    if (indirect) {
+    // Area lights, interleaved: their samples are shaded with the VPLs (shade_vpl.frag), so they
+    // are split, gathered and blurred with them.
+    const bool areaInterleaved = interleaved && s.direct && st.areaLightCount > 0;
+    if (indirect || areaInterleaved) {
         if (interleaved) runSplit(st, s.twoPassSplit, w, h);
         lap(tm.split);
 
@@ -313,11 +385,20 @@ Image Preview::render(float jitterX, float jitterY) {
         setVec3(p, "cameraPos", eye);
         setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
         setInt(p, "visibility", s.visibility ? 1 : 0);
+        setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
         setFloat(p, "shadowBias", 0.03f);
+        setInt(p, "firstArea", st.firstAreaLight);
+        setInt(p, "areaCount", areaInterleaved ? st.areaLightCount : 0);
+        setFloat(p, "areaShadowBias", 0.02f);
         const auto& src = interleaved ? st.s : st.g;
-        bindTextures({src[0].id(), src[1].id(), src[2].id(), src[3].id(), st.vplShadows.distance.id()});
+        setInt(p, "cubesPerChunk", st.vplCubesPerChunk);
+        bindTextures({src[0].id(), src[1].id(), src[2].id(), src[3].id(), st.vplShadows[0].distance.id(),
+                      st.directShadows.distance.id()});
+        for (int c = 1; c < Preview::State::kVplShadowChunks; ++c)
+            glBindTextureUnit(GLuint(5 + c), st.vplShadows[size_t(c)].distance.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.rangeBuffer.id());
+        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
         if (interleaved)
             drawFullscreen(st.indirectSplitFbo.id(), st.splitW(), st.splitH());
         else
@@ -326,26 +407,6 @@ Image Preview::render(float jitterX, float jitterY) {
 
         if (interleaved) runGather(st, st.indirectSplit.id());
         lap(tm.gather);
-
-        if (interleaved && s.blur) {
-            const gl::Program& d = st.discontinuityProgram;
-            glUseProgram(d.id());
-            setFloat(d, "depthTolerance", 0.05f);
-            setFloat(d, "normalTolerance", 0.9f);
-            bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id()});
-            drawFullscreen(st.edgesFbo.id(), w, h);
-            const gl::Program& b = st.blurProgram;
-            glUseProgram(b.id());
-            setIvec2(b, "axis", 1, 0);
-            setInt(b, "boxWidth", st.patternX);
-            bindTextures({st.indirect.id(), st.edges.id()});
-            drawFullscreen(st.blurFbo.id(), w, h);
-            setIvec2(b, "axis", 0, 1);
-            setInt(b, "boxWidth", st.patternY);
-            bindTextures({st.blurTemp.id(), st.edges.id()});
-            drawFullscreen(st.indirectFbo.id(), w, h);
-        }
-        lap(tm.blur);
     }
 
     const gl::Program& d = st.directProgram;
@@ -353,9 +414,45 @@ Image Preview::render(float jitterX, float jitterY) {
     setInt(d, "lightCount", int(st.directLights.size()));
     setVec3(d, "cameraPos", eye);
     setFloat(d, "shadowBias", 0.02f);
-    setInt(d, "addIndirect", indirect ? 1 : 0);
     setInt(d, "addDirect", s.direct ? 1 : 0);
-    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id(), st.indirect.id(), st.directShadows.distance.id()});
+    setInt(d, "firstArea", st.firstAreaLight);
+    {
+        const DirectionalShadows& ds = st.dirShadows;
+        if (!ds.matrices.empty())
+            glProgramUniformMatrix4fv(d.id(), loc(d, "dirShadowMatrix"), GLsizei(ds.matrices.size()), GL_FALSE,
+                                      ds.matrices[0].m.data());
+        // Two texels of the map along the normal, half a texel of depth (the map spans 2 radii).
+        setFloat(d, "dirNormalOffset", 2.0f * 2.0f * radius / float(std::max(ds.size, 1)));
+        setFloat(d, "dirDepthBias", 0.5f / float(std::max(ds.size, 1)));
+    }
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
+
+    const bool blurred = indirect || areaInterleaved;  // the indirect texture holds light
+    if (interleaved && s.blur && blurred) {
+        const gl::Program& e = st.discontinuityProgram;
+        glUseProgram(e.id());
+        setFloat(e, "depthTolerance", 0.05f);
+        setFloat(e, "normalTolerance", 0.9f);
+        bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id()});
+        drawFullscreen(st.edgesFbo.id(), w, h);
+        const gl::Program& b = st.blurProgram;
+        glUseProgram(b.id());
+        setIvec2(b, "axis", 1, 0);
+        setInt(b, "boxWidth", st.patternX);
+        bindTextures({st.indirect.id(), st.edges.id()});
+        drawFullscreen(st.blurFbo.id(), w, h);
+        setIvec2(b, "axis", 0, 1);
+        setInt(b, "boxWidth", st.patternY);
+        bindTextures({st.blurTemp.id(), st.edges.id()});
+        drawFullscreen(st.indirectFbo.id(), w, h);
+    }
+    lap(tm.blur);
+
+    glUseProgram(d.id());
+    setInt(d, "areaMode", areaInterleaved ? 1 : 0);
+    setInt(d, "addIndirect", blurred ? 1 : 0);
+    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id(), st.indirect.id(), st.directShadows.distance.id(),
+                  st.dirShadows.depth.id()});
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
     drawFullscreen(st.finalFbo.id(), w, h);
     lap(tm.direct);

@@ -68,7 +68,7 @@ inline float materialKind(MaterialType t) {
 inline int roundUp(int v, int multiple) { return (v + multiple - 1) / multiple * multiple; }
 
 // Per light, the VPLs it gave: lightIndex -1 is all emissive triangles together, -2 a set given
-// by setVpls.
+// by setVpls, -3 the MIR set of all lights.
 struct LightVpls {
     int lightIndex = -1;
     int count = 0;
@@ -92,6 +92,33 @@ struct CubeShadows {
         depth = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
         glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, cubes * 6);
         fbo = gl::makeFramebuffer({distance.id()}, depth.id());
+    }
+};
+
+// Orthographic depth maps of the directional lights, one layer each, compared in the lookup.
+struct DirectionalShadows {
+    static constexpr int kMaxLights = 4;  // direct.frag's MAX_DIRECTIONAL_SHADOWS
+    gl::Texture depth;
+    gl::Framebuffer fbo;
+    int size = 0, layers = 0;
+    std::vector<Mat4> matrices;
+
+    void ensure(int mapSize, int layerCount) {
+        layerCount = std::max(layerCount, 1);  // always something bound to the sampler
+        if (mapSize == size && layerCount <= layers && depth) return;
+        size = mapSize;
+        layers = layerCount;
+        depth = gl::makeTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
+        glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // 2 x 2 PCF
+        glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        fbo = gl::makeFramebuffer();
+        glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
+        glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
     }
 };
 
@@ -120,7 +147,7 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 struct Preview::State {
     std::string shaderDir;
     gl::Program gbufferProgram, splitProgram, gatherProgram, shadeProgram, discontinuityProgram, blurProgram,
-        directProgram, shadowProgram;
+        directProgram, shadowProgram, dirShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
     gl::Buffer vertices, triangles, materials, vplBuffer, rangeBuffer, lightBuffer, shadowCentres;
     GLsizei vertexCount = 0;
@@ -144,8 +171,16 @@ struct Preview::State {
     std::array<gl::Texture, 4> g, s, t;
     gl::Texture depth, indirectSplit, indirect, blurTemp, edges, final;
     gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, edgesFbo, finalFbo;
-    preview_detail::CubeShadows directShadows, vplShadows;
+    preview_detail::CubeShadows directShadows;
+    // VPL visibility: cube map arrays hold at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes (341 on
+    // llvmpipe), so the VPLs' maps are spread over up to kVplShadowChunks arrays
+    // (shade_vpl.frag picks the array by VPL index / vplCubesPerChunk).
+    static constexpr int kVplShadowChunks = 4;
+    std::array<preview_detail::CubeShadows, kVplShadowChunks> vplShadows;
+    int vplCubesPerChunk = 1;
+    preview_detail::DirectionalShadows dirShadows;
     int directShadowCubes = 0;
+    int firstAreaLight = 0, areaLightCount = 0;  // the area samples' range in directLights
     std::vector<int> ranges;  // (first, count) per sub-buffer
     int uploadedVplCount = 0;
     PreviewTimings timings;

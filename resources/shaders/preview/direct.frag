@@ -1,7 +1,8 @@
 #version 450 core
 // Direct light and the final blend: emitters show their radiance; shaded surfaces get the direct
-// light of every point, spot and directional light and of the area lights' point samples, with
-// cube shadow maps, plus the (blurred) indirect light.
+// light of every point and spot light (cube shadow maps), directional light (orthographic shadow
+// maps) and, without interleaving, of the area lights' point samples (cube shadow maps), plus the
+// (blurred) indirect light, which with interleaving also holds the area lights.
 #include_brdf
 // kind: 0 point, 1 spot, 2 directional, 3 area-light sample. intensity is W/sr in scene units
 // (divided by meters_per_unit^2), irradiance for a directional light, and for an area sample
@@ -13,18 +14,62 @@ uniform vec3 cameraPos;
 uniform float shadowBias;
 uniform int addIndirect;
 uniform int addDirect;
+// With interleaving, the area-light samples lights[firstArea ..] were shaded with the VPLs
+// (shade_vpl.frag) and are inside indirectTex: areaMode 1 leaves them out here; 0 shades them.
+uniform int areaMode;
+uniform int firstArea;
 layout(binding = 0) uniform sampler2D g0Tex;
 layout(binding = 1) uniform sampler2D g1Tex;
 layout(binding = 2) uniform sampler2D g2Tex;
 layout(binding = 3) uniform sampler2D g3Tex;
 layout(binding = 4) uniform sampler2D indirectTex;
 layout(binding = 5) uniform samplerCubeArray shadows;
+// Directional lights: orthographic depth maps (layer = normalShadow.w), looked up from the
+// surface point pushed along its normal (a normal offset, against acne at grazing light).
+const int MAX_DIRECTIONAL_SHADOWS = 4;
+uniform mat4 dirShadowMatrix[MAX_DIRECTIONAL_SHADOWS];
+uniform float dirNormalOffset;  // world units
+uniform float dirDepthBias;     // in [0, 1] depth
+layout(binding = 6) uniform sampler2DArrayShadow dirShadows;
 layout(location = 0) out vec4 result;
 
 float spotFactor(float cosTheta, float cosCone, float cosFalloff) {
     if (cosFalloff <= cosCone) return cosTheta >= cosCone ? 1.0 : 0.0;  // a hard edge
     const float t = clamp((cosTheta - cosCone) / (cosFalloff - cosCone), 0.0, 1.0);
     return t * t * (3.0 - 2.0 * t);
+}
+
+// Light i's direct contribution at y (normal n, towards wo), shadowed.
+vec3 lightContribution(int i, vec3 y, vec3 n, vec3 wo, vec4 g1, vec4 g2, vec4 g3) {
+    const Light l = lights[i];
+    const int kind = int(l.positionKind.w);
+    vec3 wi;
+    float scale;
+    if (kind == 2) {
+        wi = -l.directionCosCone.xyz;
+        scale = 1.0;
+        const int layer = int(l.normalShadow.w);
+        if (layer >= 0 && dot(n, wi) > 0.0) {
+            const vec4 q = dirShadowMatrix[layer] * vec4(y + n * dirNormalOffset, 1.0);
+            const vec3 c = q.xyz * 0.5 + 0.5;
+            scale = texture(dirShadows, vec4(c.xy, float(layer), c.z - dirDepthBias));
+        }
+    } else {
+        const vec3 d = l.positionKind.xyz - y;
+        const float d2 = dot(d, d);
+        wi = d * inversesqrt(d2);
+        scale = 1.0 / d2;
+        if (kind == 1) scale *= spotFactor(-dot(wi, l.directionCosCone.xyz), l.directionCosCone.w, l.intensityCosFalloff.w);
+        if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
+        const float layer = l.normalShadow.w;
+        if (scale > 0.0 && layer >= 0.0) {
+            const float stored = texture(shadows, vec4(-wi, layer)).r;
+            if (sqrt(d2) * (1.0 - shadowBias) > stored) scale = 0.0;
+        }
+    }
+    const float cosY = dot(n, wi);
+    if (cosY <= 0.0 || scale <= 0.0) return vec3(0.0);
+    return evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * scale);
 }
 
 void main() {
@@ -36,30 +81,7 @@ void main() {
     const vec4 g1 = texelFetch(g1Tex, p, 0), g3 = texelFetch(g3Tex, p, 0);
     const vec3 y = g0.xyz, n = g1.xyz, wo = normalize(cameraPos - y);
     vec3 sum = addIndirect != 0 ? texelFetch(indirectTex, p, 0).rgb : vec3(0.0);
-    for (int i = 0; i < lightCount * addDirect; ++i) {
-        const Light l = lights[i];
-        const int kind = int(l.positionKind.w);
-        vec3 wi;
-        float scale;
-        if (kind == 2) {
-            wi = -l.directionCosCone.xyz;
-            scale = 1.0;
-        } else {
-            const vec3 d = l.positionKind.xyz - y;
-            const float d2 = dot(d, d);
-            wi = d * inversesqrt(d2);
-            scale = 1.0 / d2;
-            if (kind == 1) scale *= spotFactor(-dot(wi, l.directionCosCone.xyz), l.directionCosCone.w, l.intensityCosFalloff.w);
-            if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
-            const float layer = l.normalShadow.w;
-            if (scale > 0.0 && layer >= 0.0) {
-                const float stored = texture(shadows, vec4(-wi, layer)).r;
-                if (sqrt(d2) * (1.0 - shadowBias) > stored) scale = 0.0;
-            }
-        }
-        const float cosY = dot(n, wi);
-        if (cosY <= 0.0 || scale <= 0.0) continue;
-        sum += evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * scale);
-    }
+    const int end = addDirect == 0 ? 0 : areaMode == 1 ? firstArea : lightCount;
+    for (int i = 0; i < end; ++i) sum += lightContribution(i, y, n, wo, g1, g2, g3);
     result = vec4(sum, 1.0);
 }

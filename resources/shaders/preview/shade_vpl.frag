@@ -17,12 +17,39 @@ uniform vec3 cameraPos;
 uniform float maxG;
 uniform int visibility;         // 1: look up each VPL's cube shadow map
 uniform float shadowBias;       // relative
+uniform float texelAngle;       // of the VPL cube maps, at a face's centre (radians)
 layout(binding = 0) uniform sampler2D g0Tex;
 layout(binding = 1) uniform sampler2D g1Tex;
 layout(binding = 2) uniform sampler2D g2Tex;
 layout(binding = 3) uniform sampler2D g3Tex;
-layout(binding = 4) uniform samplerCubeArray vplShadows;
+// VPL i's cube map: cube i mod cubesPerChunk of array i / cubesPerChunk (a cube map array holds
+// at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes). Samplers cannot be indexed by a non-uniform
+// value, hence the branches.
+uniform int cubesPerChunk;
+layout(binding = 4) uniform samplerCubeArray vplShadows0;
+layout(binding = 6) uniform samplerCubeArray vplShadows1;
+layout(binding = 7) uniform samplerCubeArray vplShadows2;
+layout(binding = 8) uniform samplerCubeArray vplShadows3;
+
+float vplShadowDistance(vec3 dir, int index) {
+    const int chunk = index / cubesPerChunk;
+    const vec4 c = vec4(dir, float(index - chunk * cubesPerChunk));
+    if (chunk == 0) return texture(vplShadows0, c).r;
+    if (chunk == 1) return texture(vplShadows1, c).r;
+    if (chunk == 2) return texture(vplShadows2, c).r;
+    return texture(vplShadows3, c).r;
+}
 layout(location = 0) out vec4 result;
+
+// Area lights "as VPLs of their own" (direct.frag's lights[]): with interleaving, sample i of
+// lights[firstArea .. firstArea + areaCount) lights sub-buffer i mod (n m) only, times n m, so
+// the box blur averages them back like the VPLs. Always shadowed (their cube maps), never clamped.
+struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
+layout(std430, binding = 2) readonly buffer Lights { Light lights[]; };
+uniform int firstArea;
+uniform int areaCount;           // 0: the direct pass does the area lights
+uniform float areaShadowBias;    // relative
+layout(binding = 5) uniform samplerCubeArray areaShadows;
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
@@ -38,22 +65,44 @@ void main() {
     const bool glossyY = max(g3.r, max(g3.g, g3.b)) > 0.0;
     vec3 sum = vec3(0.0);
     for (int i = range.x; i < range.x + range.y; ++i) {
-        const Vpl v = vpls[i];
-        const vec3 d = v.positionIndex.xyz - y;
+        // Fields read one by one, as they are needed: a diffuse VPL (the common case) costs three
+        // of its six vec4s, which matters to llvmpipe's memory traffic.
+        const vec4 pos = vpls[i].positionIndex;
+        const vec3 d = pos.xyz - y;
         const float d2 = dot(d, d);
         const vec3 wi = d * inversesqrt(d2);
-        const float cosY = dot(n, wi), cosX = -dot(v.normalAlpha.xyz, wi);
+        const vec4 nx = vpls[i].normalAlpha;
+        const float cosY = dot(n, wi), cosX = -dot(nx.xyz, wi);
         if (cosY <= 0.0 || cosX <= 0.0) continue;
         if (visibility != 0) {
-            const float stored = texture(vplShadows, vec4(-wi, v.positionIndex.w)).r;
-            if (sqrt(d2) * (1.0 - shadowBias) > stored) continue;
+            // Normal offset: the low-resolution map's texel spans a range of distances on a
+            // surface seen at a grazing angle; looking up from a point lifted off the surface by
+            // a texel's footprint (distance times the texel angle, over cos) removes that acne.
+            const float dist = sqrt(d2);
+            const vec3 lifted = y + n * (dist * texelAngle * min(2.0 / cosY, 8.0));
+            const vec3 e = lifted - pos.xyz;
+            const float stored = vplShadowDistance(e, int(pos.w));
+            if (length(e) * (1.0 - shadowBias) > stored) continue;
         }
-        vec3 c = v.power.rgb * min(cosX * cosY / d2, maxG);
-        if (v.incident.w != 0.0)
-            c *= evalBsdf(v.normalAlpha.xyz, v.incident.xyz, -wi, v.albedo.rgb, v.specular.rgb, v.normalAlpha.w);
+        vec3 c = vpls[i].power.rgb * min(cosX * cosY / d2, maxG);
+        const vec4 incident = vpls[i].incident;
+        if (incident.w != 0.0)
+            c *= evalBsdf(nx.xyz, incident.xyz, -wi, vpls[i].albedo.rgb, vpls[i].specular.rgb, nx.w);
         if (glossyY) c *= evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w);
         sum += c;
     }
     if (!glossyY) sum *= g2.rgb * (1.0 / PI);
-    result = vec4(sum, 1.0);
+    const int subsets = pattern.x * pattern.y;
+    vec3 area = vec3(0.0);
+    for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets) {
+        const Light l = lights[i];
+        const vec3 d = l.positionKind.xyz - y;
+        const float d2 = dot(d, d);
+        const vec3 wi = d * inversesqrt(d2);
+        const float cosY = dot(n, wi), cosE = -dot(wi, l.normalShadow.xyz);
+        if (cosY <= 0.0 || cosE <= 0.0) continue;
+        if (sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, l.normalShadow.w)).r) continue;
+        area += evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * cosE / d2);
+    }
+    result = vec4(sum + area * float(subsets), 1.0);
 }
