@@ -7,81 +7,9 @@
 #include "render/trace/rng.h"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
-#include <optional>
 
 namespace lucerna {
-
-namespace {
-
-// Reads a range of the chain's point u in order; past its end, numbers come from a PCG32 seeded
-// by a hash of the range, so a path stays a deterministic function of u (as mir_path.cpp does).
-class PrimarySampleStream final : public SampleGenerator {
-public:
-    PrimarySampleStream(const float* begin, const float* end) : begin_(begin), next_(begin), end_(end) {}
-    float next1D() override {
-        if (next_ < end_) return *next_++;
-        if (!padding_) {
-            uint64_t h = 0x70726576u;
-            for (const float* p = begin_; p < end_; ++p) h = hashSeed(h, std::bit_cast<uint32_t>(*p));
-            padding_.emplace(h, 0);
-        }
-        return padding_->next1D();
-    }
-    V2f next2D() override {
-        const float a = next1D();
-        return V2f(a, next1D());
-    }
-
-private:
-    const float* begin_;
-    const float* next_;
-    const float* end_;
-    std::optional<Rng> padding_;
-};
-
-// mir_path.cpp's evaluateMirPath with the preview's lights and camera: f(u) = sum_k c_k(u), the
-// luminance that the light sub-path's VPLs bring to the camera vertex.
-double evaluatePath(const RenderScene& scene, const LightSampler& lights, const PinholeCamera& camera,
-                    const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
-                    const std::vector<float>& u, MirPath& path) {
-    path.vpls.clear();
-    path.contribution.clear();
-    const float* cam = u.data();
-    const float* light = cam + layout.cameraDimensions;
-    PrimarySampleStream cameraStream(cam, light);
-    PrimarySampleStream lightStream(light, light + layout.lightDimensions);
-    const V2f raster = cameraStream.next2D();
-    const Ray ray = camera.ray(raster.x * float(camera.width()), raster.y * float(camera.height()));
-    const CameraVertex cv = traceCameraVertex(scene, ray, cameraStream, gather.maxSpecularDepth);
-    if (!cv.found) return 0.0;
-    traceLightPath(scene, lights, lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
-    double sum = 0;
-    for (const Vpl& v : path.vpls) {
-        const double ck = double(luminance(cv.throughput * vplContribution(scene, v, cv.receiver, maxG)));
-        path.contribution.push_back(std::isfinite(ck) && ck > 0 ? ck : 0.0);
-        sum += path.contribution.back();
-    }
-    return sum;
-}
-
-// Vertex k of the current path with probability c_k / f (-1 when f is 0).
-int chooseVertex(const MirPath& p, Rng& rng) {
-    double sum = 0;
-    for (double c : p.contribution) sum += c;
-    if (!(sum > 0)) return -1;
-    double t = rng.nextDouble() * sum;
-    for (size_t k = 0; k < p.contribution.size(); ++k) {
-        if (t < p.contribution[k]) return int(k);
-        t -= p.contribution[k];
-    }
-    for (size_t k = p.contribution.size(); k-- > 0;)
-        if (p.contribution[k] > 0) return int(k);
-    return -1;
-}
-
-}  // namespace
 
 VplSet generateMirVpls(const RenderScene& scene, const LightSampler& lights, const Camera& cameraDesc, int width,
                        int height, const MirVplSettings& settings, uint64_t seed) {
@@ -100,7 +28,7 @@ VplSet generateMirVpls(const RenderScene& scene, const LightSampler& lights, con
     params.tries = settings.tries;
     params.largeStepProbability = settings.largeStepProbability;
     MultipleTryMetropolis<MirPath> chain(params, [&](const std::vector<float>& u, MirPath& path) {
-        return evaluatePath(scene, lights, camera, gather, vplOptions, maxG, layout, u, path);
+        return evaluateMirPath(scene, lights, camera, gather, vplOptions, maxG, layout, u, path);
     });
     Rng rng(seed, 0x4d495250ULL);
     if (!chain.start(rng, settings.startCandidates)) return out;
@@ -112,7 +40,7 @@ VplSet generateMirVpls(const RenderScene& scene, const LightSampler& lights, con
     for (int i = 0; i < settings.pathVpls; ++i) {
         const bool moved = chain.step(rng);
         if (moved || chosen < 0 || out.empty()) {
-            if (moved || chosen < 0) chosen = chooseVertex(chain.payload(), rng);
+            if (moved || chosen < 0) chosen = choosePathVertex(chain.payload(), rng.nextDouble());
             if (chosen < 0) continue;
             out.push_back(chain.payload().vpls[size_t(chosen)]);
             counts.push_back(1);

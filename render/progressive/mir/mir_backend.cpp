@@ -45,7 +45,8 @@ public:
         const float maxG = gatherer_->maxG();
         for (int h = 0; h < 2; ++h) {
             auto target = [this, maxG](const std::vector<float>& u, MirPath& path) {
-                return evaluateMirPath(*scene_, mir_.gather, mir_.vpl, maxG, layout_, u, path);
+                return evaluateMirPath(*scene_, scene_->lights(), scene_->camera(), mir_.gather, mir_.vpl, maxG, layout_,
+                                       u, path);
             };
             chains_.push_back(std::make_unique<MirChain>(
                 MirChain{MultipleTryMetropolis<MirPath>(params, target), Rng(hashSeed(settings_.seed, h, 0x4d4952), 0)}));
@@ -94,7 +95,7 @@ private:
         for (int i = 0; i < mir_.pathVplsPerPass; ++i) {
             const bool moved = chain.mtm.step(chain.rng);
             if (moved || chain.chosen < 0 || geo.vpls.empty()) {
-                if (moved || chain.chosen < 0) chain.chosen = chooseVertex(chain);
+                if (moved || chain.chosen < 0) chain.chosen = choosePathVertex(chain.mtm.payload(), chain.rng.nextDouble());
                 if (chain.chosen < 0) continue;
                 geo.vpls.push_back(chain.mtm.payload().vpls[size_t(chain.chosen)]);
                 geo.counts.push_back(1);
@@ -103,22 +104,6 @@ private:
             }
         }
         return geo;
-    }
-
-    // Vertex k of the current path with probability c_k / f.
-    int chooseVertex(MirChain& chain) {
-        const MirPath& p = chain.mtm.payload();
-        double sum = 0;
-        for (double c : p.contribution) sum += c;
-        if (!(sum > 0)) return -1;
-        double t = chain.rng.nextDouble() * sum;
-        for (size_t k = 0; k < p.contribution.size(); ++k) {
-            if (t < p.contribution[k]) return int(k);
-            t -= p.contribution[k];
-        }
-        for (size_t k = p.contribution.size(); k-- > 0;)
-            if (p.contribution[k] > 0) return int(k);
-        return -1;
     }
 
     // Step 4: scale_i = (k_i Pc / n) / P'_i, P'_i measured on one camera sample per block.

@@ -45,22 +45,22 @@ MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl)
     return l;
 }
 
-double evaluateMirPath(const RenderScene& scene, const GatherSettings& gather, const VplOptions& vpl, float maxG,
-                       const MirPathLayout& layout, const std::vector<float>& u, MirPath& path) {
+double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const PinholeCamera& camera,
+                       const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
+                       const std::vector<float>& u, MirPath& path) {
     path.vpls.clear();
     path.contribution.clear();
     const float* cam = u.data();
     const float* light = cam + layout.cameraDimensions;
-    PrimarySampleStream camera(cam, light);
+    PrimarySampleStream cameraStream(cam, light);
     PrimarySampleStream lightStream(light, light + layout.lightDimensions);
 
-    const PinholeCamera& c = scene.camera();
-    const V2f raster = camera.next2D();
-    const Ray ray = c.ray(raster.x * float(c.width()), raster.y * float(c.height()));
-    const CameraVertex cv = traceCameraVertex(scene, ray, camera, gather.maxSpecularDepth);
+    const V2f raster = cameraStream.next2D();
+    const Ray ray = camera.ray(raster.x * float(camera.width()), raster.y * float(camera.height()));
+    const CameraVertex cv = traceCameraVertex(scene, ray, cameraStream, gather.maxSpecularDepth);
     if (!cv.found) return 0.0;
 
-    traceLightPath(scene, scene.lights(), lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
+    traceLightPath(scene, lights, lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
     double sum = 0;
     for (const Vpl& v : path.vpls) {
         const Rgb contribution = cv.throughput * vplContribution(scene, v, cv.receiver, maxG);
@@ -69,6 +69,20 @@ double evaluateMirPath(const RenderScene& scene, const GatherSettings& gather, c
         sum += path.contribution.back();
     }
     return sum;
+}
+
+int choosePathVertex(const MirPath& path, double u) {
+    double sum = 0;
+    for (double c : path.contribution) sum += c;
+    if (!(sum > 0)) return -1;
+    double t = u * sum;
+    for (size_t k = 0; k < path.contribution.size(); ++k) {
+        if (t < path.contribution[k]) return int(k);
+        t -= path.contribution[k];
+    }
+    for (size_t k = path.contribution.size(); k-- > 0;)  // rounding at the end of the sum
+        if (path.contribution[k] > 0) return int(k);
+    return -1;
 }
 
 }  // namespace lucerna

@@ -38,8 +38,14 @@ struct MirPathLayout {
 
 MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl);
 
-// f(u) = sum_k c_k(u); fills `path`. maxG: the gatherers' clamp bound.
-double evaluateMirPath(const RenderScene& scene, const GatherSettings& gather, const VplOptions& vpl, float maxG,
-                       const MirPathLayout& layout, const std::vector<float>& u, MirPath& path);
+// f(u) = sum_k c_k(u); fills `path`. maxG: the gatherers' clamp bound. The light sub-path
+// starts on `lights` and the camera ray leaves `camera` (the scene's own, or the interactive
+// preview's current ones).
+double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const PinholeCamera& camera,
+                       const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
+                       const std::vector<float>& u, MirPath& path);
+
+// Vertex k of the path with probability c_k / f, for u in [0, 1); -1 when f is 0.
+int choosePathVertex(const MirPath& path, double u);
 
 }  // namespace lucerna
