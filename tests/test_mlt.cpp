@@ -4,11 +4,13 @@
 //     from an exact sample of a small 2D target and advanced k steps, compared by chi-square
 //     (one state per chain: states along a chain are correlated); a chain that forgets to
 //     restore rejected coordinates fails the same test;
+//   - cmlt's lens kernel keeps the density too, and a greedy choice among the candidates fails;
 //   - the backends: no NaN on the hard cases, independent film halves (their closed-form checks
 //     are in test_closed_form).
 
 #include "closed_form_scenes.h"
 #include "hard_case_scenes.h"
+#include "render/progressive/cmlt/lens_mutation.h"
 #include "render/trace/pss_sampler.h"
 #include "render_helpers.h"
 #include "tests/chi_square.h"
@@ -73,6 +75,8 @@ class TestMlt : public QObject {
 private slots:
     void stationaryDensity_data();
     void stationaryDensity();
+    void lensKernelStationaryDensity_data();
+    void lensKernelStationaryDensity();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -109,6 +113,52 @@ void TestMlt::stationaryDensity() {
     };
     const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
     const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 3, 0.01 / 3);
+    qInfo("%s", r.message.c_str());
+    QCOMPARE(r.passed, shouldPass);
+}
+
+void TestMlt::lensKernelStationaryDensity_data() {
+    QTest::addColumn<int>("tries");
+    QTest::addColumn<bool>("greedy");
+    QTest::addColumn<bool>("shouldPass");
+    QTest::newRow("1 try") << 1 << false << true;
+    QTest::newRow("4 tries") << 4 << false << true;
+    QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
+}
+
+void TestMlt::lensKernelStationaryDensity() {
+    // cmlt's lens kernel (perturbRaster, chooseLensMove) on an "image" of 64 x 48 pixels whose
+    // contribution is the 2D target: chains from exact samples, 12 steps each, one state per
+    // chain. Sigma is large enough to cross the image's edges, so the wrap-around is exercised.
+    QFETCH(int, tries);
+    QFETCH(bool, greedy);
+    QFETCH(bool, shouldPass);
+    const float w = 64, h = 48;
+    const double norm = targetIntegral();
+    const auto f = [&](const V2f& r) { return target(r.x / w, r.y / h); };
+    std::vector<double> fs(static_cast<size_t>(tries));
+    std::vector<V2f> ys(static_cast<size_t>(tries));
+    const auto sample = [&](Rng& rng, V2f& out) {
+        const V2f s = exactSample(rng);
+        V2f x(s.x * w, s.y * h);
+        for (int k = 0; k < 12; ++k) {
+            for (int i = 0; i < tries; ++i) {
+                ys[size_t(i)] = perturbRaster(x, 6.0f, w, h, rng);
+                fs[size_t(i)] = f(ys[size_t(i)]);
+            }
+            if (greedy) {  // the bug: always the best candidate, then Metropolis on it
+                const size_t best = size_t(std::max_element(fs.begin(), fs.end()) - fs.begin());
+                if (rng.nextDouble() < std::min(1.0, fs[best] / f(x))) x = ys[best];
+                continue;
+            }
+            const LensMove m = chooseLensMove(fs, f(x), rng);
+            if (m.accepted) x = ys[size_t(m.candidate)];
+        }
+        out = V2f(x.x / w, x.y / h);
+        return true;
+    };
+    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
+    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 5, 0.01 / 3);
     qInfo("%s", r.message.c_str());
     QCOMPARE(r.passed, shouldPass);
 }

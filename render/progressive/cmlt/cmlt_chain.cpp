@@ -1,27 +1,12 @@
 #include "render/progressive/cmlt/cmlt_chain.h"
 
+#include "render/progressive/cmlt/lens_mutation.h"
+
 #include "render/trace/render_scene.h"
 
-#include <cmath>
-#include <numbers>
+#include <algorithm>
 
 namespace lucerna {
-
-namespace {
-// Box-Muller: two independent standard normal numbers.
-V2f gaussian2(Rng& rng) {
-    const double r = std::sqrt(-2.0 * std::log(1.0 - rng.nextDouble()));
-    const double phi = 2.0 * std::numbers::pi * rng.nextDouble();
-    return V2f(float(r * std::cos(phi)), float(r * std::sin(phi)));
-}
-
-// Wrapped into [0, size): the torus keeps the perturbation symmetric at the image's edges.
-float wrap(float v, float size) {
-    v = std::fmod(v, size);
-    if (v < 0.0f) v += size;
-    return v < size ? v : 0.0f;
-}
-}  // namespace
 
 CmltChain::CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed)
     : MltChain(scene, settings.mlt, bootstrapSeed), scene_(scene), settings_(settings) {}
@@ -50,8 +35,7 @@ int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
     hits_.resize(size_t(p));
     candidates_.resize(size_t(p));
     for (int i = 0; i < p; ++i) {
-        const V2f g = gaussian2(sampler.rng()) * settings_.sigmaPixels;
-        rasters_[size_t(i)] = V2f(std::min(wrap(x.x + g.x, w), w - 0.5f), std::min(wrap(x.y + g.y, h), h - 0.5f));
+        rasters_[size_t(i)] = perturbRaster(x, settings_.sigmaPixels, w, h, sampler.rng());
         rays_[size_t(i)] = camera_.ray(rasters_[size_t(i)].x, rasters_[size_t(i)].y);
     }
     scene_.intersectCoherent(rays_, hits_);  // step 2: the candidates' camera rays as one packet
@@ -75,9 +59,12 @@ int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
 
     counters_.steps += p;
     counters_.lensSteps += p;
-    const int chosen = std::min(p - 1, int(sampler.rng().next1D() * float(p)));
+    candidateF_.resize(size_t(p));
+    for (int i = 0; i < p; ++i) candidateF_[size_t(i)] = candidates_[size_t(i)].f;
+    const LensMove move = chooseLensMove(candidateF_, cur.f, sampler.rng());
+    const int chosen = move.candidate;
     const PathContribution& y = candidates_[size_t(chosen)];
-    if (sampler.rng().nextDouble() < std::min(1.0, y.f / cur.f)) {
+    if (move.accepted) {
         sampler.setCoordinate(SampleStream::Camera, 0, rasters_[size_t(chosen)].x / w);
         sampler.setCoordinate(SampleStream::Camera, 1, rasters_[size_t(chosen)].y / h);
         current() = y;

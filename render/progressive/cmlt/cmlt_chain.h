@@ -45,6 +45,7 @@ private:
     std::vector<Ray> rays_;
     std::vector<std::optional<SurfacePoint>> hits_;
     std::vector<PathContribution> candidates_;
+    std::vector<double> candidateF_;
 };
 
 }  // namespace lucerna
