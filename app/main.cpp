@@ -2,6 +2,7 @@
 
 #include "app/bench_command.h"
 #include "app/cli.h"
+#include "core/resources.h"
 #include "ui/main_window.h"
 
 #include <QApplication>
@@ -12,7 +13,7 @@
 #include <vector>
 
 namespace {
-std::string defaultScenePath() { return std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json"; }
+std::string defaultScenePath() { return lucerna::resourceDirectory() + "/scenes/cornell-box.json"; }
 }  // namespace
 
 int main(int argc, char** argv) {
