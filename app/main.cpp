@@ -3,6 +3,7 @@
 #include "app/bench_command.h"
 #include "app/cli.h"
 #include "core/resources.h"
+#include "ui/autosave.h"
 #include "ui/main_window.h"
 
 #include <QApplication>
@@ -43,5 +44,6 @@ int main(int argc, char** argv) {
     QApplication::setOrganizationName("Lucerna");
     lucerna::MainWindow window(argc >= 2 ? argv[1] : defaultScenePath());
     window.show();
+    window.startAutosave(lucerna::Autosave::defaultDirectory());
     return app.exec();
 }

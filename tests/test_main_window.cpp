@@ -6,6 +6,7 @@
 
 #include "core/exr_io.h"
 #include "core/scene_io.h"
+#include "ui/autosave.h"
 #include "core/image_metrics.h"
 #include "ui/camera_navigation.h"
 #include "ui/compare_canvas.h"
@@ -24,6 +25,7 @@
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QDir>
 #include <QFile>
 #include <QLabel>
 #include <QMenu>
@@ -102,6 +104,7 @@ private slots:
     void convergingRenderControls();
     void comparisonOfPreviewAndRender();
     void askBeforeLosingChanges();
+    void recoversAfterACrash();
     void badSceneShowsErrorAndKeepsRunning();
 
 private:
@@ -427,6 +430,55 @@ void TestMainWindow::askBeforeLosingChanges() {
     answer = QMessageBox::Discard;
     QVERIFY(w.close());
     QCOMPARE(asked, 2);
+}
+
+void TestMainWindow::recoversAfterACrash() {
+    // A session edits and autosaves, then "crashes" (the window goes without closing, so nothing
+    // removes the recovery file); the next session is offered the changes back.
+    const QString recovery = dir_.filePath("recovery");
+    const QString scene = dir_.filePath("crash.json");
+    QFile::remove(scene);
+    QVERIFY(QFile::copy(cornellPath(), scene));
+    size_t lightsAfterEdit = 0;
+    {
+        MainWindow w(scene);
+        QVERIFY(!w.startAutosave(recovery, 3600 * 1000));  // nothing to recover
+        QVERIFY(!w.autosave()->writeNow());                // nothing unsaved
+        trigger(w, "actionAddPointLight");
+        lightsAfterEdit = w.document()->scene().lights.size();
+        QVERIFY(w.autosave()->writeNow());
+        QVERIFY(QFile::exists(QDir(recovery).filePath("autosave.json")));
+    }  // no close(): a crash
+    {
+        MainWindow w(scene);
+        int asked = 0;
+        w.setRecoveryQuestion([&] {
+            ++asked;
+            return QMessageBox::Yes;
+        });
+        QVERIFY(w.startAutosave(recovery, 3600 * 1000));
+        QCOMPARE(asked, 1);
+        QCOMPARE(w.document()->scene().lights.size(), lightsAfterEdit);
+        QCOMPARE(QString::fromStdString(w.document()->path()), QFileInfo(scene).absoluteFilePath());
+        QVERIFY(w.document()->isModified());  // recovered work is unsaved until saved
+        QCOMPARE(w.document()->scene().objects.size(), size_t(8));  // meshes resolved as in the file
+        QVERIFY(!QFile::exists(QDir(recovery).filePath("autosave.json")));
+        // Autosave again, then a save: the recovery file goes, and the next start asks nothing.
+        QVERIFY(w.autosave()->writeNow());
+        QVERIFY(w.save());
+        QVERIFY(!QFile::exists(QDir(recovery).filePath("autosave.json")));
+        QCOMPARE(loadScene(scene.toStdString()).lights.size(), lightsAfterEdit);
+    }
+    {
+        MainWindow w(scene);
+        int asked = 0;
+        w.setRecoveryQuestion([&] {
+            ++asked;
+            return QMessageBox::Yes;
+        });
+        QVERIFY(!w.startAutosave(recovery, 3600 * 1000));
+        QCOMPARE(asked, 0);
+    }
 }
 
 void TestMainWindow::badSceneShowsErrorAndKeepsRunning() {

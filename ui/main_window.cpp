@@ -2,6 +2,7 @@
 
 #include "core/exr_io.h"
 #include "core/scene_io.h"
+#include "ui/autosave.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
@@ -220,6 +221,7 @@ bool MainWindow::saveFileAs(const QString& path) {
         doc_->setPath(absolute.toStdString());
         doc_->markSaved();
     }
+    if (autosave_) autosave_->discard();
     statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
     return true;
 }
@@ -238,6 +240,34 @@ bool MainWindow::exportExr(const QString& path) {
     }
     statusBar()->showMessage(tr("Exported %1 (%2 spp)").arg(path).arg(frame->samplesPerPixel), 5000);
     return true;
+}
+
+bool MainWindow::startAutosave(const QString& directory, int intervalMs) {
+    QString error;
+    std::optional<Autosave::Recovery> recovery = Autosave::pending(directory, &error);
+    if (!error.isEmpty()) fail(tr("A recovery file could not be read: %1").arg(error));
+    bool recovered = false;
+    if (recovery) {
+        const QString name = recovery->documentPath.empty() ? tr("an untitled scene")
+                                                            : QString::fromStdString(recovery->documentPath);
+        const QMessageBox::StandardButton answer =
+            askRecovery_ ? askRecovery_()
+                         : QMessageBox::question(this, tr("Recover unsaved changes"),
+                                                 tr("Lucerna did not close cleanly. Recover the unsaved changes to %1?")
+                                                     .arg(name),
+                                                 QMessageBox::Yes | QMessageBox::No);
+        if (answer == QMessageBox::Yes) {
+            doc_->reset(std::move(recovery->scene));
+            doc_->setPath(recovery->documentPath);
+            doc_->undoStack()->resetClean();  // recovered work is unsaved work
+            render_->start();
+            statusBar()->showMessage(tr("Recovered the unsaved changes to %1").arg(name), 5000);
+            recovered = true;
+        }
+        Autosave::discard(directory);
+    }
+    autosave_ = std::make_unique<Autosave>(*doc_, directory, intervalMs);
+    return recovered;
 }
 
 bool MainWindow::maybeSave() {
@@ -301,6 +331,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
         event->ignore();
         return;
     }
+    if (autosave_) autosave_->discard();  // closed cleanly: saved, or the changes discarded
     QSettings settings;
     settings.setValue("window/geometry", saveGeometry());
     settings.setValue("window/state", saveState());

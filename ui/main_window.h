@@ -20,6 +20,7 @@ class QLabel;
 
 namespace lucerna {
 
+class Autosave;
 class CompareView;
 class ConvergingRender;
 class LightProperties;
@@ -48,6 +49,13 @@ public:
     // Replaces the question maybeSave() asks (tests answer without a modal dialog).
     void setSaveQuestion(std::function<QMessageBox::StandardButton()> ask) { ask_ = std::move(ask); }
     QString lastError() const { return lastError_; }
+
+    // Crash recovery (ui/autosave.h): autosaves go to `directory` from now on; a recovery file a
+    // previous session left there is offered back (the question is replaceable for tests, like
+    // the save question). Returns true when the scene was recovered.
+    bool startAutosave(const QString& directory, int intervalMs = 60000);
+    void setRecoveryQuestion(std::function<QMessageBox::StandardButton()> ask) { askRecovery_ = std::move(ask); }
+    Autosave* autosave() const { return autosave_.get(); }
 
     // Edit menu operations on the selection.
     void addLight(LightType type);
@@ -87,7 +95,8 @@ private:
     CompareView* compare_ = nullptr;  // also holds the display settings of every view
     QLabel* previewInfo_ = nullptr;
     QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;
-    std::function<QMessageBox::StandardButton()> ask_;
+    std::function<QMessageBox::StandardButton()> ask_, askRecovery_;
+    std::unique_ptr<Autosave> autosave_;
     QString lastError_;
 };
 

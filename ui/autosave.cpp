@@ -1,0 +1,71 @@
+#include "ui/autosave.h"
+
+#include "core/scene_io.h"
+
+#include <QDir>
+#include <QFile>
+#include <QSaveFile>
+#include <QStandardPaths>
+
+namespace lucerna {
+
+namespace {
+// Two files: the scene as SPEC.md JSON (mesh paths as the document has them, relative to its
+// folder), and the path it is parsed against (the document's file, or a name in its folder for
+// an untitled scene) with the document's own path on the second line.
+QString sceneFile(const QString& dir) { return QDir(dir).filePath("autosave.json"); }
+QString originFile(const QString& dir) { return QDir(dir).filePath("autosave.origin"); }
+
+bool writeAtomically(const QString& path, const QByteArray& bytes) {
+    QSaveFile f(path);
+    return f.open(QIODevice::WriteOnly) && f.write(bytes) == bytes.size() && f.commit();
+}
+}  // namespace
+
+Autosave::Autosave(Document& document, QString directory, int intervalMs, QObject* parent)
+    : QObject(parent), document_(document), directory_(std::move(directory)) {
+    connect(&timer_, &QTimer::timeout, this, [this] { writeNow(); });
+    timer_.start(intervalMs);
+}
+
+bool Autosave::writeNow() {
+    if (!document_.isModified()) return false;
+    const Scene& scene = document_.scene();
+    const std::string parseAs =
+        document_.path().empty() ? QDir(QString::fromStdString(scene.baseDir)).filePath("untitled.json").toStdString()
+                                 : document_.path();
+    if (!QDir().mkpath(directory_)) return false;
+    // The origin first: a scene file without its origin is never read back.
+    return writeAtomically(originFile(directory_), QByteArray::fromStdString(parseAs + "\n" + document_.path() + "\n")) &&
+           writeAtomically(sceneFile(directory_), QByteArray::fromStdString(saveSceneToString(scene)));
+}
+
+void Autosave::discard() { discard(directory_); }
+
+void Autosave::discard(const QString& directory) {
+    QFile::remove(sceneFile(directory));
+    QFile::remove(originFile(directory));
+}
+
+std::optional<Autosave::Recovery> Autosave::pending(const QString& directory, QString* error) {
+    QFile scene(sceneFile(directory)), origin(originFile(directory));
+    if (!scene.exists() || !origin.exists() || !scene.open(QIODevice::ReadOnly) || !origin.open(QIODevice::ReadOnly))
+        return std::nullopt;
+    const QStringList lines = QString::fromUtf8(origin.readAll()).split('\n');
+    try {
+        Recovery r;
+        r.scene = parseScene(scene.readAll().toStdString(), lines.value(0).toStdString());
+        r.documentPath = lines.value(1).toStdString();
+        return r;
+    } catch (const std::exception& e) {
+        if (error) *error = QString::fromStdString(e.what());
+        discard(directory);
+        return std::nullopt;
+    }
+}
+
+QString Autosave::defaultDirectory() {
+    return QDir(QStandardPaths::writableLocation(QStandardPaths::AppDataLocation)).filePath("recovery");
+}
+
+}  // namespace lucerna
