@@ -15,6 +15,8 @@
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace lucerna {
@@ -24,7 +26,6 @@ namespace {
 struct CameraProbe {
     double seen = 0;           // camera rays that hit a non-emitting, non-specular surface
     double directlyLit = 0;    // of those, the ones whose light sample is unoccluded
-    int rays = 0;
 };
 
 // Camera rays on a coarse jittered grid; at each first diffuse/glossy hit one light sample
@@ -36,15 +37,13 @@ CameraProbe probeCamera(const RenderScene& scene) {
     Rng rng(0x6175746f, 0);
     for (int j = 0; j < ny; ++j)
         for (int i = 0; i < nx; ++i) {
-            ++p.rays;
             const V2f u = rng.next2D();
             const float x = (float(i) + u.x) / nx * float(camera.width());
             const float y = (float(j) + u.y) / ny * float(camera.height());
             const auto hit = scene.intersect(camera.ray(x, y));
             if (!hit) continue;
             const ShadingMaterial& mat = scene.material(hit->material);
-            if (mat.isEmitter()) continue;
-            if (mat.isDelta()) continue;
+            if (mat.isEmitter() || mat.isDelta()) continue;
             p.seen += 1;
             LightSample ls;
             const V2f ul = rng.next2D();
@@ -63,7 +62,9 @@ std::string percent(double part, double whole) {
 
 AutoChoice chooseAutoBackend(const Scene& scene) {
     const SceneFeatures f = analyseFeatures(scene);
-    const RenderScene render(std::make_shared<const Scene>(scene), 64, 48);
+    // A small image of the scene's own view (its aspect kept): only the probe's rays are traced.
+    const int width = 64, height = std::max(1, int(std::lround(64.0 * scene.camera.height / scene.camera.width)));
+    const RenderScene render(std::make_shared<const Scene>(scene), width, height);
     if (render.lights().empty()) return {"path", "path: the scene has no light, the image is black whatever renders it"};
     const CameraProbe probe = probeCamera(render);
     const std::string lit = percent(probe.directlyLit, probe.seen) + " of the surfaces the camera sees are lit directly";
