@@ -8,6 +8,7 @@
 #include "core/scene_io.h"
 #include "ui/autosave.h"
 #include "ui/commands/light_commands.h"
+#include "ui/recent_files.h"
 #include "core/image_metrics.h"
 #include "ui/camera_navigation.h"
 #include "ui/compare_canvas.h"
@@ -109,6 +110,7 @@ private slots:
     void comparisonOfPreviewAndRender();
     void askBeforeLosingChanges();
     void recoversAfterACrash();
+    void recentFiles();
     void thousandRandomEditsWhileRendering();
     void badSceneShowsErrorAndKeepsRunning();
 
@@ -435,6 +437,27 @@ void TestMainWindow::askBeforeLosingChanges() {
     answer = QMessageBox::Discard;
     QVERIFY(w.close());
     QCOMPARE(asked, 2);
+}
+
+void TestMainWindow::recentFiles() {
+    const QString a = dir_.filePath("recent_a.json"), b = dir_.filePath("recent_b.json");
+    for (const QString& p : {a, b}) {
+        QFile::remove(p);
+        QVERIFY(QFile::copy(cornellPath(), p));
+    }
+    MainWindow w(a);
+    QVERIFY(w.openFile(b));
+    RecentFilesMenu* menu = w.recentFiles();
+    QCOMPARE(menu->files().value(0), QFileInfo(b).absoluteFilePath());
+    QCOMPARE(menu->files().value(1), QFileInfo(a).absoluteFilePath());
+    QAction* second = menu->findChild<QAction*>("actionRecent2");
+    QVERIFY(second && second->text().contains("recent_a.json"));
+    second->trigger();  // nothing unsaved: no question
+    QCOMPARE(QString::fromStdString(w.document()->path()), QFileInfo(a).absoluteFilePath());
+    QCOMPARE(menu->files().value(0), QFileInfo(a).absoluteFilePath());
+    for (int i = 0; i < 12; ++i) menu->add(dir_.filePath(QString("many%1.json").arg(i)));
+    QCOMPARE(menu->files().size(), RecentFilesMenu::kMaxFiles);
+    QCOMPARE(menu->actions().size(), RecentFilesMenu::kMaxFiles);
 }
 
 void TestMainWindow::recoversAfterACrash() {

@@ -12,6 +12,7 @@
 #include "ui/light_properties.h"
 #include "ui/live_preview.h"
 #include "ui/outliner.h"
+#include "ui/recent_files.h"
 #include "ui/render_panel.h"
 #include "ui/viewport.h"
 
@@ -130,6 +131,12 @@ void MainWindow::createMenus() {
         const QString path = QFileDialog::getOpenFileName(this, tr("Open scene"), {}, tr("Lucerna scenes (*.json)"));
         if (!path.isEmpty() && !openFile(path)) QMessageBox::warning(this, tr("Open scene"), lastError_);
     });
+    recent_ = new RecentFilesMenu(
+        [this](const QString& path) {
+            if (maybeSave() && !openFile(path)) QMessageBox::warning(this, tr("Open scene"), lastError_);
+        },
+        this);
+    file->addMenu(recent_);
     add(file, tr("&Save"), "actionSave", QKeySequence::Save, [this] {
         if (!save() && !lastError_.isEmpty()) QMessageBox::warning(this, tr("Save scene"), lastError_);
     });
@@ -184,6 +191,7 @@ bool MainWindow::openFile(const QString& path) {
     doc_->reset(std::move(scene));
     doc_->setPath(QFileInfo(path).absoluteFilePath().toStdString());
     render_->start();
+    if (recent_) recent_->add(path);
     statusBar()->showMessage(tr("Opened %1").arg(path), 5000);
     return true;
 }
@@ -222,6 +230,7 @@ bool MainWindow::saveFileAs(const QString& path) {
         doc_->markSaved();
     }
     if (autosave_) autosave_->discard();
+    recent_->add(absolute);
     statusBar()->showMessage(tr("Saved %1").arg(path), 5000);
     return true;
 }

@@ -26,6 +26,7 @@ class ConvergingRender;
 class LightProperties;
 class LivePreview;
 class Outliner;
+class RecentFilesMenu;
 class RenderPanel;
 class Viewport;
 
@@ -71,6 +72,7 @@ public:
     Outliner* outliner() const { return outliner_; }
     LightProperties* lightProperties() const { return properties_; }
     CompareView* compareView() const { return compare_; }
+    RecentFilesMenu* recentFiles() const { return recent_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -93,6 +95,7 @@ private:
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;
     CompareView* compare_ = nullptr;  // also holds the display settings of every view
+    RecentFilesMenu* recent_ = nullptr;
     QLabel* previewInfo_ = nullptr;
     QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;
     std::function<QMessageBox::StandardButton()> ask_, askRecovery_;
