@@ -227,11 +227,11 @@ void TestCli::benchWritesCsvAndPlot() {
     for (const QString& line : lines.mid(1)) {
         const QStringList f = line.split(',');
         QCOMPARE(f.size(), 6);
-        std::array<double, 5> v{};
-        for (int i = 0; i < 5; ++i) {
-            bool ok = false;
-            v[size_t(i)] = f[i + 1].toDouble(&ok);
-            QVERIFY2(ok && std::isfinite(v[size_t(i)]) && v[size_t(i)] >= 0, qPrintable(line));
+        std::array<double, 5> v{};  // seconds, spp, rmse, relmse, estimated_relmse
+        for (size_t i = 0; i < v.size(); ++i) {
+            bool parsed = false;
+            v[i] = f.at(qsizetype(i) + 1).toDouble(&parsed);
+            QVERIFY2(parsed && std::isfinite(v[i]) && v[i] >= 0, qPrintable(line));
         }
         curves[f[0]].append({v[0], v[1], v[3]});
     }

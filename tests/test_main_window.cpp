@@ -39,6 +39,7 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 
+#include <cstdio>
 #include <malloc.h>
 #include <random>
 #include <QtTest>
@@ -514,8 +515,11 @@ double residentMiB() {
     malloc_trim(0);  // freed memory that malloc keeps for reuse is not a leak
     QFile f("/proc/self/status");
     if (!f.open(QIODevice::ReadOnly)) return 0;
-    for (const QByteArray& line : f.readAll().split('\n'))
-        if (line.startsWith("VmRSS:")) return line.mid(6).trimmed().split(' ').value(0).toDouble() / 1024.0;
+    // A line "VmRSS:    123456 kB".
+    for (const QByteArray& line : f.readAll().split('\n')) {
+        long kib = 0;
+        if (std::sscanf(line.constData(), "VmRSS: %ld kB", &kib) == 1) return double(kib) / 1024.0;
+    }
     return 0;
 }
 

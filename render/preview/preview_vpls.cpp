@@ -6,19 +6,6 @@
 
 namespace lucerna {
 
-DeltaLight compileDeltaLight(const Light& l) {
-    DeltaLight d;
-    d.type = l.type;
-    d.position = toFloat(l.position);
-    d.direction = toFloat(l.direction.normalized());
-    d.intensity = toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity);
-    if (l.type == LightType::Spot) {
-        d.cosCone = float(std::cos(radians(l.coneAngleDeg)));
-        d.cosFalloffStart = float(std::cos(radians(l.falloffStartDeg.value_or(l.coneAngleDeg))));
-    }
-    return d;
-}
-
 LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delta) {
     std::vector<EmitterTriangle> emitters;
     std::vector<DeltaLight> deltas;

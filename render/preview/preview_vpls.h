@@ -15,9 +15,6 @@
 
 namespace lucerna {
 
-// The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2).
-DeltaLight compileDeltaLight(const Light& light);
-
 // A light sampler over exactly one light: a delta light, or all emissive triangles together.
 LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delta);
 

@@ -5,13 +5,11 @@
 
 namespace lucerna {
 
-namespace {
-std::string formatNumber(double v) {
+std::string formatNumber(double v, int significantDigits) {
     char buf[64];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
+    std::snprintf(buf, sizeof buf, "%.*g", significantDigits, v);
     return buf;
 }
-}  // namespace
 
 RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
                            TaskContext& ctx, Latest<RenderFrame>* latest, double publishSeconds) {

@@ -15,6 +15,9 @@ struct RenderFrame {
     double estimatedRelmse = 0; // from the film's half-buffers (NaN before two passes)
 };
 
+// A number for an EXR header attribute or a diagnostic: %g with the given significant digits.
+std::string formatNumber(double v, int significantDigits = 9);
+
 // Runs passes of a prepared backend. With neither spp nor seconds set, 64 passes (SPEC.md).
 // Publishes a frame to `latest` (if given) at most every publishSeconds and at the end; sets the
 // context's progress. Returns the final frame (complete passes only).

@@ -4,6 +4,19 @@
 
 namespace lucerna {
 
+DeltaLight compileDeltaLight(const Light& l) {
+    DeltaLight d;
+    d.type = l.type;
+    d.position = toFloat(l.position);
+    d.direction = toFloat(l.direction.normalized());
+    d.intensity = toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity);
+    if (l.type == LightType::Spot) {
+        d.cosCone = float(std::cos(radians(l.coneAngleDeg)));
+        d.cosFalloffStart = float(std::cos(radians(l.falloffStartDeg.value_or(l.coneAngleDeg))));
+    }
+    return d;
+}
+
 float DeltaLight::spotFactor(float cosTheta) const {
     if (cosFalloffStart <= cosCone)  // equal angles: a hard edge
         return cosTheta >= cosCone ? 1.0f : 0.0f;

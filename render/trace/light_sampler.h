@@ -23,6 +23,9 @@ struct DeltaLight {
     float spotFactor(float cosTheta) const;
 };
 
+// The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2).
+DeltaLight compileDeltaLight(const Light& light);
+
 struct EmitterTriangle {
     uint32_t triangle = 0;   // index into the render scene's triangles
     V3f p0, p1, p2;

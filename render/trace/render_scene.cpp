@@ -2,21 +2,6 @@
 
 namespace lucerna {
 
-namespace {
-DeltaLight compileLight(const Light& l) {
-    DeltaLight d;
-    d.type = l.type;
-    d.position = toFloat(l.position);
-    d.direction = toFloat(l.direction.normalized());
-    d.intensity = toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity);
-    if (l.type == LightType::Spot) {
-        d.cosCone = float(std::cos(radians(l.coneAngleDeg)));
-        d.cosFalloffStart = float(std::cos(radians(l.falloffStartDeg.value_or(l.coneAngleDeg))));
-    }
-    return d;
-}
-}  // namespace
-
 RenderScene::RenderScene(SceneSnapshot scene, int width, int height)
     : scene_(std::move(scene)), features_(analyseFeatures(*scene_)) {
     const Scene& s = *scene_;
@@ -60,7 +45,7 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height)
 
     std::vector<DeltaLight> deltas;
     for (const Light& l : s.lights) {
-        DeltaLight d = compileLight(l);
+        DeltaLight d = compileDeltaLight(l);
         if (!isBlack(d.intensity)) deltas.push_back(d);
     }
     lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,

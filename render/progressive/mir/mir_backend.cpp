@@ -2,6 +2,7 @@
 
 #include "render/progressive/ir/pixel_loop.h"
 #include "render/progressive/mir/mir_path.h"
+#include "render/progressive/progressive_render.h"
 #include "render/progressive/mir/mir_settings.h"
 
 #include <cstdio>
@@ -22,11 +23,7 @@ struct MirChain {
     int chosen = -1;  // which vertex of the current path is its path VPL
 };
 
-std::string number(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string number(double v) { return formatNumber(v, 6); }
 
 class MirBackend final : public ProgressiveBackend {
 public:

@@ -1,6 +1,7 @@
 #include "render/progressive/mlt/mlt_backend.h"
 
 #include "render/progressive/film.h"
+#include "render/progressive/progressive_render.h"
 #include "render/progressive/mlt/mlt_chain.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/render_scene.h"
@@ -12,11 +13,7 @@ namespace lucerna {
 
 namespace {
 
-std::string number(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+std::string number(double v) { return formatNumber(v, 6); }
 
 // One film half: its normalisation and its chains.
 struct ChainSet {
