@@ -3,6 +3,7 @@
 // for options, the Ctrl-C flag, and the wrapper that turns exceptions into exit statuses.
 
 #include <charconv>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,6 +29,21 @@ T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
 // write nothing).
 void catchInterrupts();
 bool interrupted();
+
+// "12.3 s" or "4 min 05 s".
+std::string formatSeconds(double seconds);
+
+}  // namespace lucerna::cli
+
+namespace lucerna {
+class TaskHandle;
+}
+
+namespace lucerna::cli {
+
+// Waits for a job, cancelling it on Ctrl-C, and shows "LABEL: 42.0%  1.2 s elapsed, 3.4 s left"
+// on standard error while it runs when that is a terminal. Rethrows what the job threw.
+void waitShowingProgress(TaskHandle& job, const std::string& label);
 
 // Runs a command: UsageError gives "lucerna: MESSAGE" and 2, any other exception "lucerna:
 // internal error: ..." and 1.

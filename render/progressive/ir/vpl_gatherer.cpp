@@ -46,8 +46,7 @@ VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& setting
 
 // Direct light at x1 by next-event estimation and one BSDF sample (power heuristic); the same
 // BSDF sample estimates the residual of the clamp and the light arriving through specular surfaces.
-Rgb VplGatherer::directAndResidual(const CameraVertex& cv, Rng& rng) const {
-    const VplReceiver& r = cv.receiver;
+Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng) const {
     const ShadingMaterial& mat = *r.material;
     const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
     const V3f woLocal = frame.toLocal(r.wo);
@@ -104,8 +103,12 @@ Rgb VplGatherer::radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, s
     const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
     Rgb L = cv.emitted;
     if (!cv.found) return L;
-    L += cv.throughput * directAndResidual(cv, rng);
-    if (!vpls.empty()) L += cv.throughput * gatherVpls(scene_, vpls, scale, cv.receiver, maxG_);
+    return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
+}
+
+Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
+    Rgb L = directAndResidual(r, rng);
+    if (!vpls.empty()) L += gatherVpls(scene_, vpls, scale, r, maxG_);
     return L;
 }
 

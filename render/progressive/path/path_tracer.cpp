@@ -25,11 +25,12 @@ Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial
     return unweighted * powerHeuristic(ls.pdf, bsdfPdf(mat, woLocal, wiLocal));
 }
 
-Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng) const {
+Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* from) const {
     Rgb L(0, 0, 0), throughput(1, 1, 1);
-    bool specularBounce = true;  // the camera ray counts as one: emitters seen directly are not MIS-weighted
-    float bsdfPdfPrev = 0.0f;
-    V3f pPrev = ray.origin;
+    // The camera ray counts as a specular bounce: emitters seen directly are not MIS-weighted.
+    bool specularBounce = from == nullptr;
+    float bsdfPdfPrev = from ? from->pdf : 0.0f;
+    V3f pPrev = from ? from->origin : ray.origin;
 
     for (int depth = 0;; ++depth) {
         const auto hit = scene_.intersect(ray);

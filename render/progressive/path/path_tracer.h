@@ -13,8 +13,18 @@ class PathTracer {
 public:
     PathTracer(const RenderScene& scene, const PathSettings& settings) : scene_(scene), settings_(settings) {}
 
-    // Radiance arriving at the camera along `ray` (W sr^-1 m^-2 per channel).
-    Rgb radiance(Ray ray, SampleGenerator& rng) const;
+    // How the ray to trace was chosen, when it continues a path from a non-specular vertex at
+    // `origin` that sampled it with solid-angle pdf `pdf`: an emitter it hits is then weighted
+    // against next-event estimation done at `origin` (power heuristic), not counted whole.
+    struct ScatteredFrom {
+        V3f origin;
+        float pdf = 0;
+    };
+
+    // Radiance arriving at the camera along `ray` (W sr^-1 m^-2 per channel); with `from`, the
+    // radiance arriving at from->origin along the ray, MIS-weighted as the continuation of a path
+    // that did next-event estimation there.
+    Rgb radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* from = nullptr) const;
 
 private:
     Rgb nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial& mat, const Frame& frame, const V3f& woLocal,

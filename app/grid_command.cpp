@@ -1,0 +1,163 @@
+#include "app/grid_command.h"
+#include "app/cli_support.h"
+
+#include "core/atomic_file.h"
+#include "core/calculation_grid.h"
+#include "core/scene_io.h"
+#include "render/photometry/grid_calculation.h"
+#include "ui/scene_geometry.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <optional>
+
+namespace lucerna::cli {
+
+namespace {
+
+struct GridArgs {
+    std::string scene, csv;
+    CalculationGrid grid;
+    std::optional<double> workPlaneM;  // height above the lowest geometry, metres
+    double borderM = 0.5;              // EN 12464-1: the band along the walls left out
+    bool corner = false, u = false, v = false;
+    GridSettings settings;
+    int threads = 0;
+};
+
+V3d parseVector(const std::string& option, const std::string& text) {
+    V3d v;
+    size_t begin = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t end = i < 2 ? text.find(',', begin) : text.size();
+        if (end == std::string::npos) throw UsageError(option + ": expected X,Y,Z, got '" + text + "'");
+        v[i] = parseNumber<double>(option, text.substr(begin, end - begin), -1e30, 1e30);
+        begin = end + 1;
+    }
+    return v;
+}
+
+GridArgs parseGridArgs(const std::vector<std::string>& args) {
+    GridArgs g;
+    for (size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) throw UsageError(a + " needs a value");
+            return args[++i];
+        };
+        if (a == "--work-plane") g.workPlaneM = parseNumber<double>(a, value(), -1e6, 1e6);
+        else if (a == "--border") g.borderM = parseNumber<double>(a, value(), 0.0, 1e6);
+        else if (a == "--corner") g.grid.corner = parseVector(a, value()), g.corner = true;
+        else if (a == "--u") g.grid.edgeU = parseVector(a, value()), g.u = true;
+        else if (a == "--v") g.grid.edgeV = parseVector(a, value()), g.v = true;
+        else if (a == "--spacing") g.grid.spacingMeters = parseNumber<double>(a, value(), 1e-6, 1e6);
+        else if (a == "--name") g.grid.name = value();
+        else if (a == "--method") {
+            const std::string& m = value();
+            const auto method = gridMethodFromName(m);
+            if (!method) throw UsageError("--method: expected path or ir, got '" + m + "'");
+            g.settings.method = *method;
+        } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
+        else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);
+        else if (a == "--seed") g.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
+        else if (a == "--csv") g.csv = value();
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
+        else if (g.scene.empty()) g.scene = a;
+        else throw UsageError("unexpected argument '" + a + "'");
+    }
+    if (g.scene.empty()) throw UsageError("grid: no scene file given");
+    const bool rectangle = g.corner || g.u || g.v;
+    if (rectangle == g.workPlaneM.has_value())
+        throw UsageError("grid: give either --work-plane HEIGHT or --corner, --u and --v");
+    if (rectangle && !(g.corner && g.u && g.v)) throw UsageError("grid: --corner, --u and --v go together");
+    return g;
+}
+
+// The work plane of a room: the scene's extent in x and z less the border, at a height above the
+// lowest geometry (y is up), facing up.
+CalculationGrid workPlane(const Scene& scene, double heightM, double borderM, const std::string& name) {
+    const SceneBounds b = sceneBounds(scene);
+    const double border = borderM / scene.metersPerUnit;
+    const double x0 = b.lo.x + border, x1 = b.hi.x - border, z0 = b.lo.z + border, z1 = b.hi.z - border;
+    if (!(x1 > x0) || !(z1 > z0))
+        throw UsageError("grid: the scene is too small for a border of " + std::to_string(borderM) + " m");
+    CalculationGrid g;
+    g.name = name;
+    g.corner = V3d(x0, b.lo.y + heightM / scene.metersPerUnit, z1);
+    g.edgeU = V3d(x1 - x0, 0, 0);
+    g.edgeV = V3d(0, 0, z0 - z1);  // cross(u, v) = +y
+    return g;
+}
+
+void printTable(const GridLayout& layout, const std::vector<double>& lux) {
+    if (layout.nu > 16) return;  // a wide grid reads better from the CSV
+    for (int j = layout.nv - 1; j >= 0; --j) {
+        for (int i = 0; i < layout.nu; ++i) std::printf("%9.1f", lux[size_t(j) * layout.nu + i]);
+        std::printf("\n");
+    }
+}
+
+int gridImpl(const std::vector<std::string>& args) {
+    GridArgs g = parseGridArgs(args);
+    Scene loaded;
+    try {
+        loaded = loadScene(g.scene);
+    } catch (const SceneError& e) {
+        throw UsageError(e.what());
+    }
+    const SceneSnapshot scene = std::make_shared<const Scene>(std::move(loaded));
+    if (g.workPlaneM) {
+        const std::string name = g.grid.name;
+        const auto spacing = g.grid.spacingMeters;
+        g.grid = workPlane(*scene, *g.workPlaneM, g.borderM, name);
+        g.grid.spacingMeters = spacing;
+    }
+    GridLayout layout;
+    try {
+        layout = layoutGrid(g.grid, scene->metersPerUnit);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+
+    catchInterrupts();
+    TaskSystem tasks(g.threads);
+    std::optional<GridResult> result;
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        const RenderScene renderScene(scene, 16, 16);  // no image: the camera is unused
+        if (ctx.isCancelled()) return;
+        GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
+        if (!ctx.isCancelled()) result = std::move(r);
+    });
+    waitShowingProgress(*job, std::string("grid ") + gridMethodName(g.settings.method));
+    if (interrupted() || !result) {
+        std::cerr << "grid interrupted; no file written\n";
+        return 130;
+    }
+
+    const GridStatistics s = gridStatistics(result->lux);
+    std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s\n", g.grid.name.c_str(), layout.nu,
+                layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(g.settings.method));
+    std::printf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f\n", s.average, s.minimum, s.maximum, s.uniformity);
+    std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per point, %s%s\n",
+                100.0 * result->maxRelativeError, result->passes, result->samplesPerPoint,
+                formatSeconds(result->seconds).c_str(), result->converged ? "" : " (target not reached)");
+    printTable(layout, result->lux);
+    if (!g.csv.empty()) {
+        writeAtomically(g.csv, [&](const std::string& temp) {
+            std::ofstream out(temp);
+            out << gridCsv(layout, result->lux, result->errorLux);
+            if (!out.flush()) throw std::runtime_error("cannot write " + g.csv);
+        });
+        std::fprintf(stderr, "wrote %s\n", g.csv.c_str());
+    }
+    return 0;
+}
+
+}  // namespace
+
+int grid(const std::vector<std::string>& args) { return runCommand(gridImpl, args); }
+
+}  // namespace lucerna::cli

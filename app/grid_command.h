@@ -1,0 +1,17 @@
+#pragma once
+// `lucerna grid`: illuminance on a calculation grid (core/calculation_grid.h) with the figures of
+// EN 12464-1 (Eavg, Emin, Emax, U0) and a Monte Carlo error bar per point.
+
+#include <string>
+#include <vector>
+
+namespace lucerna::cli {
+
+// grid SCENE.json (--work-plane HEIGHT_M [--border M] | --corner X,Y,Z --u X,Y,Z --v X,Y,Z)
+//      [--spacing M] [--method path|ir] [--error FRACTION] [--time SECONDS] [--seed N]
+//      [--threads N] [--name NAME] [--csv OUT.csv]
+// Returns the exit status of SPEC.md section 2 (2 with one line for bad usage or input, 130 when
+// interrupted, with no file written).
+int grid(const std::vector<std::string>& args);
+
+}  // namespace lucerna::cli

@@ -1,0 +1,67 @@
+#include "core/calculation_grid.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <sstream>
+#include <stdexcept>
+
+namespace lucerna {
+
+V3d CalculationGrid::normal() const { return edgeU.cross(edgeV).normalized(); }
+
+double en12464Spacing(double dMeters) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(dMeters))); }
+
+GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int maxPoints) {
+    const double lu = grid.edgeU.length(), lv = grid.edgeV.length();
+    if (!(lu > 0) || !(lv > 0) || !std::isfinite(lu) || !std::isfinite(lv))
+        throw std::invalid_argument("grid '" + grid.name + "': its edges must have a positive, finite length");
+    if (std::abs(grid.edgeU.dot(grid.edgeV)) > 1e-6 * lu * lv)
+        throw std::invalid_argument("grid '" + grid.name + "': its edges must be perpendicular");
+    const double luM = lu * metersPerUnit, lvM = lv * metersPerUnit;
+    const double p = grid.spacingMeters ? *grid.spacingMeters : en12464Spacing(std::max(luM, lvM));
+    if (!(p > 0) || !std::isfinite(p))
+        throw std::invalid_argument("grid '" + grid.name + "': the spacing must be positive");
+    // A side shorter than the spacing still gets one point, at its middle.
+    const double nuD = std::max(1.0, std::ceil(luM / p - 1e-9)), nvD = std::max(1.0, std::ceil(lvM / p - 1e-9));
+    if (nuD * nvD > double(maxPoints))
+        throw std::invalid_argument("grid '" + grid.name + "': " + std::to_string(int64_t(nuD * nvD)) +
+                                    " points is more than " + std::to_string(maxPoints));
+    GridLayout g;
+    g.nu = int(nuD);
+    g.nv = int(nvD);
+    g.spacingUMeters = luM / g.nu;
+    g.spacingVMeters = lvM / g.nv;
+    g.points.reserve(size_t(g.nu) * size_t(g.nv));
+    for (int j = 0; j < g.nv; ++j)
+        for (int i = 0; i < g.nu; ++i)
+            g.points.push_back(grid.corner + grid.edgeU * ((i + 0.5) / g.nu) + grid.edgeV * ((j + 0.5) / g.nv));
+    return g;
+}
+
+GridStatistics gridStatistics(const std::vector<double>& lux) {
+    GridStatistics s;
+    if (lux.empty()) return s;
+    const auto [lo, hi] = std::minmax_element(lux.begin(), lux.end());
+    s.minimum = *lo;
+    s.maximum = *hi;
+    s.average = std::accumulate(lux.begin(), lux.end(), 0.0) / double(lux.size());
+    s.uniformity = s.average > 0 ? s.minimum / s.average : 0.0;
+    return s;
+}
+
+std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux) {
+    std::ostringstream out;
+    out.precision(9);
+    out << "i,j,x,y,z,illuminance_lux,error_lux\n";
+    for (int j = 0; j < layout.nv; ++j)
+        for (int i = 0; i < layout.nu; ++i) {
+            const size_t k = size_t(j) * size_t(layout.nu) + size_t(i);
+            const V3d& p = layout.points[k];
+            out << i << ',' << j << ',' << p.x << ',' << p.y << ',' << p.z << ',' << (k < lux.size() ? lux[k] : 0.0)
+                << ',' << (k < errorLux.size() ? errorLux[k] : 0.0) << '\n';
+        }
+    return out.str();
+}
+
+}  // namespace lucerna

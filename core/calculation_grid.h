@@ -1,0 +1,55 @@
+#pragma once
+// Calculation grids (EN 12464-1:2021, section 5.4 and annex): the points on a work plane, a wall
+// or the floor where illuminance is computed and checked against a standard, and the figures a
+// lighting designer reads off them.
+//
+// A grid is a rectangle given by a corner and two perpendicular edges (scene units). Its points
+// are the centres of an nu x nv array of equal cells (so the outer points lie half a cell from
+// the edges), with nu = ceil(|u| / p) and nv = ceil(|v| / p) for the spacing p: EN 12464-1's
+// p = 0.2 * 5^log10(d) metres (d the longer side in metres, p at most 10 m) unless given. The
+// illuminance is the one on the side the normal cross(u, v) faces.
+
+#include "core/math.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+struct CalculationGrid {
+    std::string name = "grid";
+    V3d corner{0, 0, 0};
+    V3d edgeU{1, 0, 0};   // scene units
+    V3d edgeV{0, 0, 1};   // scene units, perpendicular to edgeU
+    std::optional<double> spacingMeters;  // absent: EN 12464-1's rule
+
+    // Unit normal cross(u, v) / |cross(u, v)|: the side whose illuminance is computed.
+    V3d normal() const;
+};
+
+// EN 12464-1's maximum grid spacing for a longest side of dMeters: 0.2 * 5^log10(d), at most 10 m.
+double en12464Spacing(double dMeters);
+
+struct GridLayout {
+    int nu = 0, nv = 0;              // points along u and v
+    double spacingUMeters = 0, spacingVMeters = 0;  // the actual cell sizes
+    std::vector<V3d> points;         // row-major: index = j * nu + i, i along u (scene units)
+};
+
+// The points of a grid. Throws std::invalid_argument (one line) for a degenerate rectangle, edges
+// that are not perpendicular, a non-positive spacing or more than maxPoints points.
+GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int maxPoints = 100000);
+
+// The figures of EN 12464-1 over the grid's point values (lux).
+struct GridStatistics {
+    double average = 0, minimum = 0, maximum = 0;
+    double uniformity = 0;  // U0 = Emin / Eavg (0 when Eavg is 0)
+};
+GridStatistics gridStatistics(const std::vector<double>& lux);
+
+// The grid as CSV: a header line, then one row per point: i, j, x, y, z (scene units), the
+// illuminance in lux and its error bar in lux.
+std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux);
+
+}  // namespace lucerna

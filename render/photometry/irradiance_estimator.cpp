@@ -1,0 +1,73 @@
+#include "render/photometry/irradiance_estimator.h"
+
+#include "render/trace/warp.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace lucerna {
+
+namespace {
+ShadingMaterial whiteLambertian() {
+    Material m;
+    m.type = MaterialType::Diffuse;
+    m.albedo = Rgbd(1, 1, 1);
+    return ShadingMaterial::fromMaterial(m);
+}
+}  // namespace
+
+IrradianceEstimator::IrradianceEstimator(const RenderScene& scene, const GatherSettings& gather)
+    : scene_(scene), white_(whiteLambertian()), pathTracer_(scene, PathSettings{}), gatherer_(scene, gather) {
+    const V3f& c = scene.boundsCenter();
+    errorScale_ = std::max({std::abs(c.x), std::abs(c.y), std::abs(c.z)}) + scene.boundsRadius();
+}
+
+// The sensor as a point of a surface: a sensor lying on a wall or the floor must spawn its rays
+// off that surface, so its error bound is the one a surface point of this scene could have there.
+VplReceiver IrradianceEstimator::receiver(const IrradianceSensor& sensor) const {
+    VplReceiver r;
+    const V3f& p = sensor.position;
+    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), errorScale_});
+    r.x.p = p;
+    r.x.pError = V3f(scale * 4.0f * gammaBound(7));
+    r.x.ng = sensor.normal;
+    r.x.triangle = 0xffffffffu;  // no triangle: nothing in the scene is excluded from its rays
+    r.material = &white_;
+    r.wo = sensor.normal;        // the white surface reflects toward its normal: E = pi L_o
+    return r;
+}
+
+Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) const {
+    const VplReceiver r = receiver(sensor);
+    const Frame frame(sensor.normal);
+    const V3f woLocal(0, 0, 1);
+    Rgb Lo(0, 0, 0);
+
+    LightSample ls;
+    const V2f uLight = rng.next2D();
+    const float uSelect = rng.next1D();
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls)) {
+        const V3f wiLocal = frame.toLocal(ls.wi);
+        const Rgb f = bsdfEval(white_, woLocal, wiLocal);
+        if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
+            const Rgb unweighted = f * ls.value * (std::abs(wiLocal.z) / ls.pdf);
+            Lo += ls.isDelta ? unweighted : unweighted * powerHeuristic(ls.pdf, bsdfPdf(white_, woLocal, wiLocal));
+        }
+    }
+
+    BsdfSample bs;
+    const V2f u = rng.next2D();
+    const float uLobe = rng.next1D();
+    if (bsdfSample(white_, woLocal, u, uLobe, bs)) {
+        const V3f wi = frame.toWorld(bs.wi);
+        const PathTracer::ScatteredFrom from{r.x.p, bs.pdf};
+        Lo += bs.weight * pathTracer_.radiance(Ray{r.x.spawnOrigin(wi), wi}, rng, &from);
+    }
+    return Lo * float(std::numbers::pi);
+}
+
+Rgb IrradianceEstimator::sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const {
+    return gatherer_.reflected(receiver(sensor), rng, vpls) * float(std::numbers::pi);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,51 @@
+#pragma once
+// Irradiance at a point, for calculation grids and the illuminance layer: the light arriving on
+// one side of a small oriented sensor, E = int L_i(w) cos(theta) dw over the hemisphere of its
+// normal (W/m^2 per channel; independent of meters_per_unit, as SPEC.md says of irradiance from
+// emitters). Illuminance in lux is 683 * Y(E).
+//
+// A white Lambertian surface (albedo 1) at the point reflects L_o = E / pi whatever the
+// incident light, so E = pi L_o, and every estimator of reflected radiance the backends have
+// becomes an estimator of irradiance by putting that surface there:
+//   - Path: next-event estimation and a cosine-sampled continuation traced by the path
+//     tracer, combined by the power heuristic (the path backend's estimator).
+//   - Vpl: the same direct light, plus the indirect light gathered from a VPL set with the clamp
+//     and its path-traced residual (the ir backend's estimator; vpl_gatherer.h).
+// Both are unbiased for any point: on a surface (the floor) or in free space (a work plane).
+
+#include "render/progressive/ir/vpl_gatherer.h"
+#include "render/progressive/path/path_tracer.h"
+#include "render/trace/render_scene.h"
+#include "render/trace/rng.h"
+
+#include <span>
+
+namespace lucerna {
+
+// A point where irradiance is measured, and the unit normal of the side it is measured on.
+struct IrradianceSensor {
+    V3f position;
+    V3f normal;
+};
+
+class IrradianceEstimator {
+public:
+    explicit IrradianceEstimator(const RenderScene& scene, const GatherSettings& gather = {});
+
+    // One sample of E at the sensor by path tracing.
+    Rgb samplePath(const IrradianceSensor& sensor, Rng& rng) const;
+    // One sample of E at the sensor: direct light and the clamp residual by path tracing, the
+    // indirect light from `vpls` (an unbiased VPL set, instant_radiosity.h).
+    Rgb sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const;
+
+private:
+    VplReceiver receiver(const IrradianceSensor& sensor) const;
+
+    const RenderScene& scene_;
+    ShadingMaterial white_;
+    PathTracer pathTracer_;
+    VplGatherer gatherer_;
+    float errorScale_;  // for ray offsets: the magnitude of the scene's coordinates
+};
+
+}  // namespace lucerna

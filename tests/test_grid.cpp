@@ -1,0 +1,226 @@
+// Calculation grids (issue 7): EN 12464-1's layout and figures, and the illuminance of each
+// point against closed forms: a delta light over a floor (E = I cos / r^2, exact for both
+// estimators), a rectangular emitter (Lambert's formula, within the error bar), and the inside
+// of a closed sphere (indirect light only, uniform), for the path and the VPL estimators.
+
+#include "closed_form_scenes.h"
+#include "core/calculation_grid.h"
+#include "render/photometry/grid_calculation.h"
+#include "render_helpers.h"
+
+#include <QProcess>
+#include <QTemporaryDir>
+#include <QTest>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+using namespace lucerna;
+using namespace lucerna::test;
+
+namespace {
+
+GridResult computeGrid(const SceneSnapshot& scene, const std::vector<V3d>& points, const V3d& normal,
+                       const GridSettings& settings) {
+    const RenderScene renderScene(scene, 8, 8);
+    TaskSystem tasks(0);
+    GridResult result;
+    auto job = tasks.submit(
+        [&](TaskContext& ctx) { result = computeGridIlluminance(renderScene, points, normal, settings, ctx); });
+    job->wait();
+    job->rethrowIfFailed();
+    return result;
+}
+
+GridSettings settingsFor(GridMethod method, double target) {
+    GridSettings s;
+    s.method = method;
+    s.targetRelativeError = target;
+    s.timeLimitSeconds = 20;  // a guard; the targets here are reached in well under a second
+    return s;
+}
+
+}  // namespace
+
+class TestGrid : public QObject {
+    Q_OBJECT
+private slots:
+    void en12464Spacing_data() {
+        QTest::addColumn<double>("d");
+        QTest::addColumn<double>("p");
+        QTest::newRow("1 m") << 1.0 << 0.2;
+        QTest::newRow("10 m") << 10.0 << 1.0;
+        QTest::newRow("100 m") << 100.0 << 5.0;
+        QTest::newRow("capped") << 1e4 << 10.0;
+    }
+    void en12464Spacing() {
+        QFETCH(double, d);
+        QFETCH(double, p);
+        QVERIFY(std::abs(lucerna::en12464Spacing(d) - p) < 1e-12);
+    }
+
+    void layoutFollowsTheSpacingRule() {
+        CalculationGrid g;
+        g.corner = V3d(1, 0.8, 2);
+        g.edgeU = V3d(5000, 0, 0);  // millimetres: 5 m by 2 m
+        g.edgeV = V3d(0, 0, -2000);
+        const GridLayout l = layoutGrid(g, 0.001);
+        const double p = 0.2 * std::pow(5.0, std::log10(5.0));  // 0.617 m
+        QCOMPARE(l.nu, int(std::ceil(5.0 / p)));
+        QCOMPARE(l.nv, int(std::ceil(2.0 / p)));
+        QVERIFY(l.spacingUMeters <= p && l.spacingVMeters <= p);
+        QCOMPARE(int(l.points.size()), l.nu * l.nv);
+        // Cell centres: the first point half a cell in from the corner, the last half a cell from
+        // the far corner.
+        QVERIFY((l.points.front() - V3d(1 + 2500.0 / l.nu, 0.8, 2 - 1000.0 / l.nv)).length() < 1e-9);
+        QVERIFY((l.points.back() - V3d(1 + 5000 - 2500.0 / l.nu, 0.8, 2 - 2000 + 1000.0 / l.nv)).length() < 1e-9);
+        QVERIFY((g.normal() - V3d(0, 1, 0)).length() < 1e-12);
+
+        g.spacingMeters = 0.5;
+        const GridLayout fixed = layoutGrid(g, 0.001);
+        QCOMPARE(fixed.nu, 10);
+        QCOMPARE(fixed.nv, 4);
+    }
+
+    void badGridsAreRejected() {
+        CalculationGrid g;
+        g.edgeV = V3d(0.5, 0, 1);  // not perpendicular to u
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, layoutGrid(g, 1.0));
+        g.edgeV = V3d(0, 0, 0);
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, layoutGrid(g, 1.0));
+        g.edgeV = V3d(0, 0, 1);
+        g.spacingMeters = 1e-4;  // 10^8 points
+        QVERIFY_THROWS_EXCEPTION(std::invalid_argument, layoutGrid(g, 1.0));
+    }
+
+    void statistics() {
+        const GridStatistics s = gridStatistics({100, 200, 300, 400});
+        QCOMPARE(s.average, 250.0);
+        QCOMPARE(s.minimum, 100.0);
+        QCOMPARE(s.maximum, 400.0);
+        QCOMPARE(s.uniformity, 0.4);
+    }
+
+    // A point light 1 m over a floor in a millimetre scene: E = I cos / (d mpu)^2 at every point.
+    // Both estimators are exact here (the floor sees nothing but the light), so the tolerance is
+    // float rounding.
+    void pointLightIsExact_data() {
+        QTest::addColumn<int>("method");
+        QTest::newRow("path") << int(GridMethod::Path);
+        QTest::newRow("ir") << int(GridMethod::Vpl);
+    }
+    void pointLightIsExact() {
+        QFETCH(int, method);
+        DeltaLightOverPlane s;
+        const SceneSnapshot scene = sceneFromJson(s.json());
+        CalculationGrid g;
+        g.corner = V3d(-1500, 0, 1500);
+        g.edgeU = V3d(3000, 0, 0);
+        g.edgeV = V3d(0, 0, -3000);
+        g.spacingMeters = 0.5;
+        const GridLayout layout = layoutGrid(g, 0.001);
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        QVERIFY(r.converged);
+        for (size_t i = 0; i < layout.points.size(); ++i) {
+            const V3d d = V3d(0, s.h, 0) - layout.points[i];
+            const double r2 = d.length2() * 1e-6;  // m^2
+            const double expected = 683.0 * s.intensity * (s.h / d.length()) / r2;
+            QVERIFY2(std::abs(r.lux[i] / expected - 1) < 1e-4,
+                     qPrintable(QString("point %1: %2 lx, expected %3").arg(i).arg(r.lux[i]).arg(expected)));
+        }
+    }
+
+    // Under a square emitter: Lambert's formula, within the error bar (95%; checked at 2x so that
+    // the test fails about once in a million runs, not once in twenty).
+    void rectangularEmitterMatchesLambert_data() { pointLightIsExact_data(); }
+    void rectangularEmitterMatchesLambert() {
+        QFETCH(int, method);
+        RectangleOverPlane s;
+        const SceneSnapshot scene = sceneFromJson(s.json());
+        CalculationGrid g;
+        g.corner = V3d(-1, 0, 1);
+        g.edgeU = V3d(2, 0, 0);
+        g.edgeV = V3d(0, 0, -2);
+        g.spacingMeters = 0.5;
+        const GridLayout layout = layoutGrid(g, 1.0);
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        QVERIFY(r.converged);
+        for (size_t i = 0; i < layout.points.size(); ++i) {
+            const double expected =
+                683.0 * s.radiance * lambertPolygonIrradiance(layout.points[i], V3d(0, 1, 0), s.emitter());
+            QVERIFY2(std::abs(r.lux[i] - expected) <= 2 * r.errorLux[i] && r.errorLux[i] <= 0.0101 * r.lux[i],
+                     qPrintable(QString("point %1: %2 +- %3 lx, expected %4").arg(i).arg(r.lux[i]).arg(r.errorLux[i]).arg(expected)));
+        }
+    }
+
+    // The centre of a closed sphere with an emitting cap, facing away from the cap: only the
+    // shell is seen, whose radiance is uniform, so E = pi L_shell: all of it is indirect light,
+    // the VPLs' part for the ir estimator.
+    void sphereInteriorIsPiTimesShellRadiance_data() { pointLightIsExact_data(); }
+    void sphereInteriorIsPiTimesShellRadiance() {
+        QFETCH(int, method);
+        SphereWithEmittingCap s;
+        s.rings = 24;
+        s.segments = 48;
+        const SceneSnapshot scene = sceneFromJson(s.json());
+        const GridResult r = computeGrid(scene, {V3d(0, 0, 0)}, V3d(0, -1, 0), settingsFor(GridMethod(method), 0.01));
+        QVERIFY(r.converged);
+        const double expected = 683.0 * std::numbers::pi * s.expectedRadiance();
+        QVERIFY2(std::abs(r.lux[0] - expected) <= 2 * r.errorLux[0],
+                 qPrintable(QString("%1 +- %2 lx, expected %3").arg(r.lux[0]).arg(r.errorLux[0]).arg(expected)));
+    }
+
+    // Cancelling stops the calculation at a pass boundary, with what it had.
+    void cancellationStops() {
+        RectangleOverPlane s;
+        const RenderScene renderScene(sceneFromJson(s.json()), 8, 8);
+        GridSettings settings = settingsFor(GridMethod::Path, 1e-6);  // unreachable
+        settings.timeLimitSeconds = 0;
+        CancellationToken token;
+        TaskContext ctx(token);
+        int passes = 0;
+        const GridResult r = computeGridIlluminance(renderScene, {V3d(0, 0, 0)}, V3d(0, 1, 0), settings, ctx,
+                                                    [&](const GridResult&) {
+                                                        if (++passes == 3) token.cancel();
+                                                    });
+        QCOMPARE(r.passes, 3);
+        QVERIFY(!r.converged);
+    }
+
+    // The command line: figures on standard output, the CSV written, bad usage one line and 2.
+    void commandLine() {
+        QTemporaryDir dir;
+        RectangleOverPlane s;
+        const QString scenePath = dir.filePath("rect.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        const QString csv = dir.filePath("grid.csv");
+        QProcess p;
+        p.start(LUCERNA_BINARY, {"grid", scenePath, "--corner", "-1,0,1", "--u", "2,0,0", "--v", "0,0,-2", "--spacing",
+                                 "0.5", "--error", "0.05", "--csv", csv});
+        QVERIFY(p.waitForFinished(60000));
+        QCOMPARE(p.exitCode(), 0);
+        const QString out = QString::fromUtf8(p.readAllStandardOutput());
+        QVERIFY2(out.contains("4 x 4 points") && out.contains("Eavg") && out.contains("U0"), qPrintable(out));
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).trimmed().split('\n');
+        QCOMPARE(lines.size(), 17);
+        QCOMPARE(lines[0], QString("i,j,x,y,z,illuminance_lux,error_lux"));
+        // The point nearest the middle sees the emitter nearly whole: compare with Lambert.
+        const QStringList row = lines[1 + 1 * 4 + 1].split(',');  // i = 1, j = 1
+        const V3d x(row[2].toDouble(), row[3].toDouble(), row[4].toDouble());
+        const double expected = 683.0 * s.radiance * lambertPolygonIrradiance(x, V3d(0, 1, 0), s.emitter());
+        QVERIFY2(std::abs(row[5].toDouble() - expected) <= 2 * row[6].toDouble(), qPrintable(lines[6]));
+
+        QProcess bad;
+        bad.start(LUCERNA_BINARY, {"grid", scenePath, "--corner", "-1,0,1", "--u", "2,0,0"});
+        QVERIFY(bad.waitForFinished(30000));
+        QCOMPARE(bad.exitCode(), 2);
+        const QString err = QString::fromUtf8(bad.readAllStandardError()).trimmed();
+        QVERIFY2(!err.contains('\n') && err.contains("--v"), qPrintable(err));
+    }
+};
+
+QTEST_GUILESS_MAIN(TestGrid)
+#include "test_grid.moc"
