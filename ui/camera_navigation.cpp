@@ -58,6 +58,16 @@ Camera dollyCamera(const Camera& camera, double factor) {
     return c;
 }
 
+Camera flyCamera(const Camera& camera, double right, double up, double forward) {
+    const Basis b = basisOf(camera);
+    const double dist = (camera.target - camera.position).length();
+    const V3d shift = (b.r * right + camera.up.normalized() * up + b.f * forward) * dist;
+    Camera c = camera;
+    c.position += shift;
+    c.target += shift;
+    return c;
+}
+
 std::optional<V2f> projectToRaster(const Camera& camera, const V3d& point) {
     const Basis b = basisOf(camera);
     const V3d d = point - camera.position;

@@ -17,6 +17,10 @@ Camera orbitCamera(const Camera& camera, double yaw, double pitch);
 Camera panCamera(const Camera& camera, double dx, double dy);
 // Moves the position toward the target by `factor` of the distance (factor < 1 comes closer).
 Camera dollyCamera(const Camera& camera, double factor);
+// Flies the camera: slides position and target together by `right`, `up` (along the camera's
+// up vector) and `forward` (along the view), each in units of the distance to the target, so
+// that a step is the same share of the view whatever the scene's scale.
+Camera flyCamera(const Camera& camera, double right, double up, double forward);
 
 // Raster position (x right, y down, in [0, W] x [0, H] of the camera's resolution) of a world
 // point by SPEC.md's camera model; nothing when the point is behind the camera.

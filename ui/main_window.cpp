@@ -27,6 +27,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QTimer>
+#include <QToolBar>
 
 #include <filesystem>
 
@@ -105,6 +106,7 @@ void MainWindow::createDocks() {
         const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
         properties_->setLight(light);
         viewport_->setSelectedLight(light);
+        viewport_->setSelectedObject(s.kind == Outliner::Kind::Object ? s.index : -1);
     });
     connect(render_.get(), &ConvergingRender::frameReady, this, [this] {
         if (const auto frame = render_->frame()) compare_->setConverged(frame->image);
@@ -115,6 +117,9 @@ void MainWindow::createDocks() {
         showPreviewFrame();
     });
     connect(viewport_, &Viewport::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
+    connect(viewport_, &Viewport::lightPlaced, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
+    connect(viewport_, &Viewport::objectClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Object, i); });
+    connect(viewport_, &Viewport::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
 }
 
 void MainWindow::createMenus() {
@@ -170,6 +175,12 @@ void MainWindow::createMenus() {
         [this] { addLight(LightType::Directional); });
     add(edit, tr("D&uplicate"), "actionDuplicate", QKeySequence(tr("Ctrl+D")), [this] { duplicateSelection(); });
     add(edit, tr("&Delete"), "actionDelete", QKeySequence::Delete, [this] { deleteSelection(); });
+    // Placing and aiming by clicking a surface: the viewport's tools, also on a tool bar.
+    edit->addSeparator();
+    edit->addActions(viewport_->toolActions());
+    QToolBar* tools = addToolBar(tr("Tools"));
+    tools->setObjectName("toolsToolBar");
+    tools->addActions(viewport_->toolActions());
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
