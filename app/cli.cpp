@@ -3,6 +3,7 @@
 
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
+#include "core/luminaire.h"
 #include "core/scene_io.h"
 #include "core/task_system.h"
 #include "render/progressive/backend.h"
@@ -169,6 +170,38 @@ const char* materialTypeName(MaterialType t) {
     return "?";
 }
 
+std::string formatLumens(double lm) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6g", lm);
+    return buf;
+}
+
+// A luminaire's file against itself: the flux it states, the flux its table integrates to (exact
+// for the bilinear table), its peak; then what the scene makes of it. Files whose two fluxes
+// differ by more than 2% get a warning line (for IES files the stated flux is the lamps', so a
+// light output ratio under 98% shows here too).
+void printLuminaire(const Light& l) {
+    const LuminaireSpec& s = *l.luminaire;
+    std::cout << "luminaire, " << s.file;
+    if (!s.distribution) {
+        std::cout << " (not loaded)\n";
+        return;
+    }
+    const GoniometricDistribution& d = *s.distribution;
+    const double integrated = d.integratedFlux();
+    std::cout << ": file states ";
+    if (d.statedFluxLm > 0) std::cout << formatLumens(d.statedFluxLm) << " lm";
+    else std::cout << "no flux (absolute photometry)";
+    std::cout << ", distribution integrates to " << formatLumens(integrated) << " lm, max "
+              << formatLumens(d.maxIntensity()) << " cd; in the scene " << formatLumens(luminaireFlux(l)) << " lm\n";
+    if (d.statedFluxLm > 0 && std::abs(integrated - d.statedFluxLm) > 0.02 * d.statedFluxLm) {
+        char pct[32];
+        std::snprintf(pct, sizeof pct, "%+.0f%%", 100.0 * (integrated - d.statedFluxLm) / d.statedFluxLm);
+        std::cout << "  warning: luminaire '" << l.name << "': file states " << formatLumens(d.statedFluxLm)
+                  << " lm, distribution integrates to " << formatLumens(integrated) << " lm (" << pct << ")\n";
+    }
+}
+
 // Each light's luminous output (683 lm/W, Rec.709 luminance; SPEC.md): the flux of point and spot
 // lights from their distribution's solid angle, of emissive objects pi A L (one-sided Lambertian,
 // A in m^2), and the illuminance a directional light gives a surface facing it.
@@ -191,6 +224,7 @@ void printPhotometry(const Scene& scene) {
         case LightType::Directional:
             std::cout << "directional, " << lumens(luminance(l.irradiance)) << " lx on a surface facing it\n";
             break;
+        case LightType::Luminaire: printLuminaire(l); break;
         }
     }
     const double m2 = scene.metersPerUnit * scene.metersPerUnit;
@@ -225,7 +259,7 @@ int infoImpl(const std::vector<std::string>& args) {
     for (const Material& m : scene.materials) std::cout << "  " << m.name << ": " << materialTypeName(m.type) << "\n";
     std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
               << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
-              << ", directional " << f.directionalLights << ")\n";
+              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires << ")\n";
     printPhotometry(scene);
     std::string needs;
     if (f.hasDiffuse) needs += " diffuse";

@@ -91,6 +91,7 @@ SceneFeatures analyseFeatures(const Scene& scene) {
         case LightType::Point: ++f.pointLights; break;
         case LightType::Spot: ++f.spotLights; break;
         case LightType::Directional: ++f.directionalLights; break;
+        case LightType::Luminaire: ++f.luminaires; break;
         }
     }
     return f;

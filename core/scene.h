@@ -89,7 +89,29 @@ struct Object {
     }
 };
 
-enum class LightType { Point, Spot, Directional };
+enum class LightType { Point, Spot, Directional, Luminaire };
+
+struct GoniometricDistribution;
+
+// A goniometric luminaire's keys (README, "Luminaires"): the photometric file and how its
+// output is scaled and coloured. The light's `direction` is its nadir.
+struct LuminaireSpec {
+    std::string file;                    // IES or EULUMDAT, as written (relative to the scene's folder)
+    std::optional<double> rotationDeg;   // about the nadir, degrees (absent: 0)
+    std::optional<double> lumens;        // rescale the distribution to this total flux
+    std::optional<Rgbd> colour;          // normalised to luminance 1; white by default
+    std::optional<double> temperatureK;  // a blackbody's colour instead
+
+    // The file's distribution, read by the loader (resolveMeshes); shared between scene copies,
+    // never mutated once set. Null until then (the light is then dark).
+    std::shared_ptr<const GoniometricDistribution> distribution;
+
+    // Equality compares what the scene file says, not the loaded distribution.
+    bool operator==(const LuminaireSpec& o) const {
+        return file == o.file && rotationDeg == o.rotationDeg && lumens == o.lumens && colour == o.colour &&
+               temperatureK == o.temperatureK;
+    }
+};
 
 struct Light {
     std::string name;
@@ -103,6 +125,8 @@ struct Light {
     // Point, spot: given in lumens or candela instead of `intensity` (README); `intensity` then
     // holds the converted value, and the file is written back as it was given while the two agree.
     std::optional<PhotometricSpec> photometric;
+    // Luminaire only (type Luminaire; position, and direction = the nadir, as for a spot).
+    std::optional<LuminaireSpec> luminaire;
 
     bool operator==(const Light&) const = default;
 };
@@ -133,10 +157,10 @@ using SceneSnapshot = std::shared_ptr<const Scene>;
 struct SceneFeatures {
     bool hasDiffuse = false, hasGlossy = false, hasMirror = false, hasDielectric = false;
     int emitterTriangles = 0;
-    int pointLights = 0, spotLights = 0, directionalLights = 0;
+    int pointLights = 0, spotLights = 0, directionalLights = 0, luminaires = 0;
     size_t triangles = 0;
     bool hasSpecular() const { return hasMirror || hasDielectric; }
-    bool hasDeltaLights() const { return pointLights + spotLights + directionalLights > 0; }
+    bool hasDeltaLights() const { return pointLights + spotLights + directionalLights + luminaires > 0; }
 };
 SceneFeatures analyseFeatures(const Scene& scene);
 

@@ -3,6 +3,7 @@
 // "<file>: <JSON path>: <problem>".
 
 #include "core/json_reader.h"
+#include "core/luminaire.h"
 #include "core/mesh_file.h"
 #include "core/scene_io.h"
 
@@ -386,8 +387,18 @@ private:
         } else if (type == "directional") {
             l.type = LightType::Directional;
             checkKeys(v, place, {"name", "type", "direction", "irradiance"}, what);
+        } else if (type == "luminaire") {
+            l.type = LightType::Luminaire;
+            checkKeys(v, place, {"name", "type", "file", "position", "direction", "rotation", "lumens", "color",
+                                 "temperature"}, what);
+            l.name = parseName(v, place);
+            l.position = vec3(required(v, place, "position"), member(place, "position"));
+            l.direction = direction(required(v, place, "direction"), member(place, "direction"));
+            l.luminaire = parseLuminaire(v, place);
+            return l;
         } else {
-            fail(member(place, "type"), "unknown light type " + quote(type) + " (expected point, spot or directional)");
+            fail(member(place, "type"), "unknown light type " + quote(type) +
+                                            " (expected point, spot, directional or luminaire)");
         }
         l.name = parseName(v, place);
         if (l.type != LightType::Directional) {
@@ -409,6 +420,31 @@ private:
                                                                    ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg)
                                                                    : pointSolidAngle());
         return l;
+    }
+
+    // A luminaire's keys (README): its file, rotation about the nadir, and optional lumens and
+    // colour (color or temperature, not both). The file itself is read by resolve().
+    LuminaireSpec parseLuminaire(const Value& v, const std::string& place) const {
+        LuminaireSpec s;
+        const std::string filePlace = member(place, "file");
+        s.file = text(required(v, place, "file"), filePlace);
+        if (s.file.empty()) fail(filePlace, "luminaire file path is empty");
+        if (s.file.find('\0') != std::string::npos) fail(filePlace, "luminaire file path contains a NUL character");
+        if (const Value* r = v.find("rotation")) s.rotationDeg = number(*r, member(place, "rotation"));
+        if (const Value* lm = v.find("lumens")) {
+            s.lumens = number(*lm, member(place, "lumens"));
+            if (!(*s.lumens >= 0)) fail(member(place, "lumens"), "must be at least 0, got " + formatNumber(*s.lumens));
+        }
+        const Value* colourValue = v.find("color");
+        const Value* temperature = v.find("temperature");
+        if (colourValue && temperature) fail(place, "give color or temperature, not both");
+        if (colourValue) {
+            s.colour = colour(*colourValue, member(place, "color"), false);
+            if (!(luminance(*s.colour) > 0)) fail(member(place, "color"), "must have a positive luminance");
+        }
+        if (temperature)
+            s.temperatureK = numberIn(*temperature, member(place, "temperature"), 1000, false, 40000, false, " kelvin");
+        return s;
     }
 
     // The photometric keys of a point or spot light (README): exactly one of intensity, lumens
@@ -538,8 +574,28 @@ void resolve(Scene& scene, LoadReport* report, const std::string& label) {
             fail(item("objects", areaAndObject.second) + ".mesh",
                  "the objects of emitter material " + quote(name) + " have zero total area");
 
+    // Luminaire files, each read once however many lights use it.
+    std::map<std::string, std::shared_ptr<const GoniometricDistribution>> distributionFiles;
+    std::vector<std::shared_ptr<const GoniometricDistribution>> distributions(scene.lights.size());
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        if (l.type != LightType::Luminaire || !l.luminaire) continue;
+        const std::string path = base.absoluteFilePath(QString::fromStdString(l.luminaire->file)).toStdString();
+        auto it = distributionFiles.find(path);
+        if (it == distributionFiles.end()) {
+            try {
+                it = distributionFiles.emplace(path, std::make_shared<const GoniometricDistribution>(loadLuminaireFile(path))).first;
+            } catch (const LuminaireFileError& e) {
+                fail(item("lights", i) + ".file", std::string("cannot load luminaire file ") + e.what());
+            }
+        }
+        distributions[i] = it->second;
+    }
+
     // Only now that nothing can fail does the scene change.
     for (size_t i = 0; i < world.size(); ++i) scene.objects[i].worldMesh = std::move(world[i]);
+    for (size_t i = 0; i < distributions.size(); ++i)
+        if (distributions[i]) scene.lights[i].luminaire->distribution = std::move(distributions[i]);
     if (report) {
         report->degenerateTrianglesDropped += dropped;
         report->warnings.insert(report->warnings.end(), warnings.begin(), warnings.end());

@@ -165,6 +165,16 @@ std::string light(const Light& l) {
     case LightType::Directional:
         out += "\"directional\", \"direction\": " + vec(l.direction) + ", \"irradiance\": " + rgb(l.irradiance);
         break;
+    case LightType::Luminaire: {
+        const LuminaireSpec s = l.luminaire.value_or(LuminaireSpec());
+        out += "\"luminaire\", \"file\": " + str(s.file) + ", \"position\": " + vec(l.position) +
+               ", \"direction\": " + vec(l.direction);
+        if (s.rotationDeg) out += ", \"rotation\": " + num(*s.rotationDeg);
+        if (s.lumens) out += ", \"lumens\": " + num(*s.lumens);
+        if (s.colour) out += ", \"color\": " + rgb(*s.colour);
+        if (s.temperatureK) out += ", \"temperature\": " + num(*s.temperatureK);
+        break;
+    }
     }
     return out + "}";
 }

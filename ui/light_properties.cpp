@@ -1,5 +1,6 @@
 #include "ui/light_properties.h"
 
+#include "core/luminaire.h"
 #include "ui/commands/light_commands.h"
 #include "ui/scene_geometry.h"
 #include "ui/viewport.h"
@@ -28,6 +29,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     positionLabel_ = positionRow_->findChild<QLabel*>();
     positionLabel_->setObjectName("positionLabel");
     direction_ = makeTriple(directionRow_, Field::Direction, tr("Direction"));
+    directionLabel_ = directionRow_->findChild<QLabel*>();
     power_ = makeTriple(powerRow_, Field::Power, tr("Intensity"));
     powerLabel_ = powerRow_->findChild<QLabel*>();
     powerLabel_->setObjectName("powerLabel");
@@ -41,6 +43,21 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     falloff_->setObjectName("lightFalloff");
     coneRow_ = addRow(tr("Cone half-angle"), {cone_});
     falloffRow_ = addRow(tr("Falloff start"), {falloff_});
+    file_ = new QLabel(fields_);
+    file_->setObjectName("luminaireFile");
+    file_->setWordWrap(true);
+    fileRow_ = addRow(tr("Photometry"), {file_});
+    rotation_ = makeSpin(Field::Rotation);
+    rotation_->setRange(-360, 360);
+    rotation_->setSuffix(QStringLiteral(" °"));
+    rotation_->setObjectName("luminaireRotation");
+    rotationRow_ = addRow(tr("Rotation"), {rotation_});
+    lumens_ = makeSpin(Field::Lumens);
+    lumens_->setRange(0, 1e9);
+    lumens_->setDecimals(1);
+    lumens_->setSuffix(QStringLiteral(" lm"));
+    lumens_->setObjectName("luminaireLumens");
+    lumensRow_ = addRow(tr("Flux"), {lumens_});
     rows_->addStretch(1);
     for (int i = 0; i < 3; ++i) {
         position_[size_t(i)]->setObjectName(QStringLiteral("lightPosition%1").arg(i));
@@ -124,10 +141,27 @@ void LightProperties::refresh() {
     type_->setText(lightTypeName(l.type));
     const bool positioned = l.type != LightType::Directional;
     const bool spot = l.type == LightType::Spot;
+    const bool luminaire = l.type == LightType::Luminaire && l.luminaire;
     positionRow_->setVisible(positioned);
     directionRow_->setVisible(l.type != LightType::Point);
+    directionLabel_->setText(luminaire ? tr("Nadir") : tr("Direction"));
     coneRow_->setVisible(spot);
     falloffRow_->setVisible(spot);
+    // A luminaire's output is its file's distribution, scaled to a flux: no intensity field.
+    powerRow_->setVisible(!luminaire);
+    fileRow_->setVisible(luminaire);
+    rotationRow_->setVisible(luminaire);
+    lumensRow_->setVisible(luminaire);
+    if (luminaire) {
+        const LuminaireSpec& spec = *l.luminaire;
+        QString file = QString::fromStdString(spec.file);
+        if (spec.distribution && !spec.distribution->name.empty())
+            file += QStringLiteral(" (%1)").arg(QString::fromStdString(spec.distribution->name));
+        file_->setText(spec.distribution ? file : tr("%1 (not loaded)").arg(file));
+        rotation_->setValue(spec.rotationDeg.value_or(0.0));
+        lumens_->setValue(luminaireFlux(l));
+        lumens_->setEnabled(spec.distribution != nullptr);
+    }
     // Units in the labels: three values in a row leave no room for a suffix in each field.
     positionLabel_->setText(tr("Position (%1)").arg(lengthUnit(scene)));
     powerLabel_->setText(positioned ? tr("Intensity (W/sr)") : tr("Irradiance (W/m²)"));
@@ -178,6 +212,19 @@ void LightProperties::apply(Field field, QObject* sender) {
     case Field::Falloff:
         l.falloffStartDeg = std::min(falloff_->value(), l.coneAngleDeg);
         what = tr("Change falloff of %1");
+        break;
+    case Field::Rotation:
+        if (!l.luminaire) return;
+        l.luminaire->rotationDeg = rotation_->value();
+        what = tr("Turn %1");
+        break;
+    case Field::Lumens:
+        if (!l.luminaire) return;
+        // The flux shown is after the tilt multiplier; "lumens" is the flux before it.
+        if (const double tilt = l.luminaire->distribution ? l.luminaire->distribution->tiltMultiplier(
+                                    luminaireTiltDeg(l.direction)) : 0.0; tilt > 0)
+            l.luminaire->lumens = lumens_->value() / tilt;
+        what = tr("Change flux of %1");
         break;
     }
     if (l == scene.lights[size_t(index_)]) return;

@@ -1,7 +1,8 @@
 #pragma once
 // The property panel of the selected light: name, position, direction, intensity or irradiance
 // and the spot's cone, as typed fields with units (lengths in the scene's unit from
-// meters_per_unit; W/sr, W/m^2, degrees). Every change is an EditLightCommand: the arrow steps
+// meters_per_unit; W/sr, W/m^2, degrees); for a luminaire its file, rotation about the nadir and
+// total flux in lumens instead of the intensity. Every change is an EditLightCommand: the arrow steps
 // of one field merge into one undo step until the field's editing finishes.
 
 #include "core/document.h"
@@ -34,9 +35,11 @@ public:
     const std::array<QDoubleSpinBox*, 3>& powerFields() const { return power_; }
     QDoubleSpinBox* coneField() const { return cone_; }
     QDoubleSpinBox* falloffField() const { return falloff_; }
+    QDoubleSpinBox* rotationField() const { return rotation_; }
+    QDoubleSpinBox* lumensField() const { return lumens_; }
 
 private:
-    enum class Field { Position, Direction, Power, Cone, Falloff };
+    enum class Field { Position, Direction, Power, Cone, Falloff, Rotation, Lumens };
     QWidget* addRow(const QString& label, std::initializer_list<QWidget*> fields);
     std::array<QDoubleSpinBox*, 3> makeTriple(QWidget*& row, Field field, const QString& label);
     QDoubleSpinBox* makeSpin(Field field);
@@ -49,10 +52,13 @@ private:
     QLabel *empty_, *type_, *positionLabel_ = nullptr, *powerLabel_ = nullptr;
     QWidget *fields_, *positionRow_ = nullptr, *directionRow_ = nullptr, *powerRow_ = nullptr;
     QWidget *coneRow_ = nullptr, *falloffRow_ = nullptr;
+    QWidget *fileRow_ = nullptr, *rotationRow_ = nullptr, *lumensRow_ = nullptr;
+    QLabel* file_ = nullptr;
+    QLabel* directionLabel_ = nullptr;
     QVBoxLayout* rows_ = nullptr;
     QLineEdit* name_;
     std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
-    QDoubleSpinBox *cone_, *falloff_;
+    QDoubleSpinBox *cone_, *falloff_, *rotation_, *lumens_;
     // Merging: edits of the same field with the same key fold into one command.
     QObject* lastField_ = nullptr;
     int mergeKey_ = 0;

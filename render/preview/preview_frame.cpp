@@ -1,6 +1,7 @@
 // The passes of one preview frame: shadow maps (only when lights or VPLs changed), G-buffer,
 // split, interleaved VPL shading, gather, discontinuity buffer and blur, direct light and blend.
 
+#include "render/preview/preview_luminaires.h"
 #include "render/preview/preview_state.h"
 #include "render/trace/rng.h"
 #include "render/vpl/vpl_contribution.h"
@@ -190,11 +191,23 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     st.dirShadows.matrices.clear();
     st.firstAreaLight = st.areaLightCount = 0;
     const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
+    std::vector<const GoniometricDistribution*> tables;
+    GoniometricDistribution dark;  // for a luminaire whose file is not loaded
+    dark.cAngles = {0, 360};
+    dark.gammaAngles = {0, 180};
+    dark.candela = {0, 0, 0, 0};
     for (const DeltaLight& d : st.deltas) {
         GpuLight g{};
-        const float kind = d.type == LightType::Point ? 0.0f : d.type == LightType::Spot ? 1.0f : 2.0f;
+        const float kind = d.type == LightType::Point       ? 0.0f
+                           : d.type == LightType::Spot      ? 1.0f
+                           : d.type == LightType::Luminaire ? 4.0f
+                                                            : 2.0f;
         put(g.positionKind, d.position, kind);
         put(g.directionCosCone, d.direction, d.cosCone);
+        if (d.type == LightType::Luminaire) {  // its table's layer in place of the cone
+            put(g.directionCosCone, d.direction, float(tables.size()));
+            tables.push_back(d.goniometric ? &d.goniometric->distribution() : &dark);
+        }
         put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
             d.cosFalloffStart);
         // Point and spot lights: a cube map; directional lights: an orthographic map (beyond
@@ -208,9 +221,11 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
             st.dirShadows.matrices.push_back(
                 directionalShadowMatrix(d.direction, st.scene->boundsCenter(), st.scene->boundsRadius()));
         }
-        put(g.normalShadow, V3f(0, 0, 0), layer);
+        // A luminaire keeps its C0 direction where area samples keep their normal.
+        put(g.normalShadow, d.type == LightType::Luminaire ? d.c0 : V3f(0, 0, 0), layer);
         lights.push_back(g);
     }
+    st.luminaireTables = makeLuminaireTables(tables);
     const auto& emitters = st.scene->lights().emitters();
     if (!emitters.empty() && settings.areaLightSamples > 0) {
         std::vector<double> cdf;
@@ -452,7 +467,8 @@ Image Preview::render(float jitterX, float jitterY) {
     setInt(d, "areaMode", areaInterleaved ? 1 : 0);
     setInt(d, "addIndirect", blurred ? 1 : 0);
     bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id(), st.indirect.id(), st.directShadows.distance.id(),
-                  st.dirShadows.depth.id()});
+                  st.dirShadows.depth.id(), st.luminaireTables.id()});
+    setIvec2(d, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
     drawFullscreen(st.finalFbo.id(), w, h);
     lap(tm.direct);

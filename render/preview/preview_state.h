@@ -179,6 +179,7 @@ struct Preview::State {
     std::array<preview_detail::CubeShadows, kVplShadowChunks> vplShadows;
     int vplCubesPerChunk = 1;
     preview_detail::DirectionalShadows dirShadows;
+    gl::Texture luminaireTables;  // preview_luminaires.h: a layer per luminaire
     int directShadowCubes = 0;
     int firstAreaLight = 0, areaLightCount = 0;  // the area samples' range in directLights
     std::vector<int> ranges;  // (first, count) per sub-buffer

@@ -1,5 +1,6 @@
 #include "render/trace/light_sampler.h"
 
+#include "core/luminaire.h"
 #include "render/trace/warp.h"
 
 namespace lucerna {
@@ -14,7 +15,36 @@ DeltaLight compileDeltaLight(const Light& l) {
         d.cosCone = float(std::cos(radians(l.coneAngleDeg)));
         d.cosFalloffStart = float(std::cos(radians(l.falloffStartDeg.value_or(l.coneAngleDeg))));
     }
+    if (l.type == LightType::Luminaire) {
+        d.intensity = toFloat(luminaireRadiantScale(l));  // black until the file is loaded
+        const LuminaireFrame f = luminaireFrame(l.direction, l.luminaire ? l.luminaire->rotationDeg.value_or(0.0) : 0.0);
+        d.direction = toFloat(f.nadir);
+        d.c0 = toFloat(f.c0);
+        d.c90 = toFloat(f.c90);
+        if (l.luminaire && l.luminaire->distribution)
+            d.goniometric = std::make_shared<const GoniometricSampler>(l.luminaire->distribution);
+        else
+            d.intensity = Rgb(0, 0, 0);
+    }
     return d;
+}
+
+float DeltaLight::factor(const V3f& w) const {
+    switch (type) {
+    case LightType::Spot: return spotFactor(w.dot(direction));
+    case LightType::Luminaire: return goniometric ? goniometric->intensity(toLuminaire(w)) : 0.0f;
+    default: return 1.0f;
+    }
+}
+
+float DeltaLight::pdfDirection(const V3f& w) const {
+    switch (type) {
+    case LightType::Point: return uniformSpherePdf();
+    case LightType::Spot: return w.dot(direction) < cosCone ? 0.0f : uniformConePdf(cosCone);
+    case LightType::Luminaire: return goniometric ? goniometric->pdf(toLuminaire(w)) : 0.0f;
+    case LightType::Directional: return 0.0f;
+    }
+    return 0.0f;
 }
 
 float DeltaLight::spotFactor(float cosTheta) const {
@@ -39,6 +69,7 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
         const double c = 0.5 * (double(l.cosCone) + double(std::max(l.cosCone, l.cosFalloffStart)));
         return 2.0 * kPi * (1.0 - c) * y * toScene;
     }
+    case LightType::Luminaire: return l.goniometric ? l.goniometric->flux() * y * toScene : 0.0;
     case LightType::Directional: return kPi * double(sceneRadius) * sceneRadius * y;
     }
     return 0.0;
@@ -113,8 +144,8 @@ bool LightSampler::sampleDelta(const DeltaLight& l, float selectPdf, const Surfa
     if (!(dist2 > 0.0f)) return false;
     out.wi = toLight / std::sqrt(dist2);
     float factor = 1.0f;
-    if (l.type == LightType::Spot) {
-        factor = l.spotFactor(-out.wi.dot(l.direction));
+    if (l.type != LightType::Point) {
+        factor = l.factor(-out.wi);
         if (factor <= 0.0f) return false;
     }
     // SPEC.md: E = I cos / (d * meters_per_unit)^2.
@@ -178,6 +209,18 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
         const float factor = l.spotFactor(local.z);
         if (factor <= 0.0f) return false;
         out.power = l.intensity * (factor * toScene / (selectPdf * out.pdfDirection));
+        break;
+    }
+    case LightType::Luminaire: {
+        out.position = l.position;
+        V3f local(0, 0, 1);
+        float pdf = 0.0f;
+        if (!l.goniometric || !l.goniometric->sample(uDirection, local, pdf)) return false;
+        out.direction = (l.c0 * local.x + l.c90 * local.y + l.direction * local.z).normalized();
+        out.pdfDirection = pdf;
+        const float candela = l.goniometric->intensity(local);
+        if (candela <= 0.0f) return false;
+        out.power = l.intensity * (candela * toScene / (selectPdf * pdf));
         break;
     }
     case LightType::Directional: {

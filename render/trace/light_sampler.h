@@ -5,6 +5,7 @@
 
 #include "core/scene.h"
 #include "render/trace/discrete_distribution.h"
+#include "render/trace/goniometric_sampler.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/surface_point.h"
 
@@ -15,12 +16,21 @@ namespace lucerna {
 struct DeltaLight {
     LightType type = LightType::Point;
     V3f position;
-    V3f direction;    // unit: the spot's axis, or the direction a directional light travels
-    Rgb intensity;    // point, spot: W/sr (on axis); directional: irradiance, W/m^2
+    V3f direction;    // unit: the spot's axis, the luminaire's nadir, or the direction a directional light travels
+    Rgb intensity;    // point, spot: W/sr (on axis); luminaire: W/sr per candela of its table; directional: irradiance, W/m^2
     float cosCone = -1.0f, cosFalloffStart = -1.0f;  // spot only
+    V3f c0{1, 0, 0}, c90{0, 0, 1};                   // luminaire: its C0 and C90 directions (core/luminaire.h)
+    std::shared_ptr<const GoniometricSampler> goniometric;  // luminaire: its distribution
 
     // Spot: SPEC.md's smoothstep(cos(cone), cos(falloff_start), cos theta), 1 inside a hard cone.
     float spotFactor(float cosTheta) const;
+    // Point, spot, luminaire: the intensity toward unit world direction w (leaving the light) is
+    // intensity * factor(w); for a luminaire the factor is the table's candela.
+    float factor(const V3f& w) const;
+    // Point, spot, luminaire: the solid-angle density with which sampleEmission() leaves toward w.
+    float pdfDirection(const V3f& w) const;
+    // Luminaire: w in the (C0, C90, nadir) frame.
+    V3f toLuminaire(const V3f& w) const { return V3f(w.dot(c0), w.dot(c90), w.dot(direction)); }
 };
 
 // The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2).
@@ -84,7 +94,7 @@ public:
 
     // Chooses a light in proportion to power and a particle leaving it: area lights by uniform
     // position and cosine direction, point lights uniformly over the sphere, spots uniformly over
-    // their cone, directional lights over a disk of the scene's radius facing them. False for a
+    // their cone, luminaires by their distribution (GoniometricSampler), directional lights over a disk of the scene's radius facing them. False for a
     // scene without lights.
     bool sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect, EmissionSample& out) const;
     // Total emitted power in the scene's units (selection weights' sum): the normalisation of

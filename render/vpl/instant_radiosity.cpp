@@ -22,9 +22,8 @@ std::vector<size_t> objectTriangleStarts(const Scene& scene) {
     return starts;
 }
 
-bool lightIsBlack(const Light& l) {
-    return isBlack(toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity));
-}
+// As RenderScene decides which lights it keeps (a luminaire's intensity is its file's scale).
+bool lightIsBlack(const Light& l) { return isBlack(compileDeltaLight(l).intensity); }
 
 // The scene's light sampler restricted to one source (see the header).
 LightSampler samplerForSource(const RenderScene& scene, const VplLightSource& source) {

@@ -36,6 +36,7 @@ QString lightTypeName(LightType type) {
     case LightType::Point: return QObject::tr("Point light");
     case LightType::Spot: return QObject::tr("Spot light");
     case LightType::Directional: return QObject::tr("Directional light");
+    case LightType::Luminaire: return QObject::tr("Luminaire");
     }
     return {};
 }
@@ -62,6 +63,7 @@ Light defaultLight(const Scene& scene, LightType type, const std::string& name) 
         l.direction = V3d(-0.3, -1, 0.2);
         l.irradiance = Rgbd(2, 2, 2);
         break;
+    case LightType::Luminaire: break;  // needs a file: not made from the Edit menu
     }
     return l;
 }

@@ -104,7 +104,9 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
         v0.kind = VertexKind::DirectionalLight;
     } else {
         const DeltaLight& l = lights.deltaLights()[es.light - lights.emitters().size()];
-        v0.kind = l.type == LightType::Spot ? VertexKind::SpotLight : VertexKind::PointLight;
+        v0.kind = l.type == LightType::Spot        ? VertexKind::SpotLight
+                  : l.type == LightType::Luminaire ? VertexKind::Luminaire
+                                                   : VertexKind::PointLight;
     }
     // beta of a light vertex is 1 / (its selection-and-position density); the emission itself
     // enters as the vertex's "BSDF" when it is connected (s = 1, t = 1 only), and as es.power
@@ -160,9 +162,10 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
             sampled.pdfFwd = densities_.pdfLightOrigin(sampled);
         } else {
             const DeltaLight& l = lights.deltaLights()[ls.light - lights.emitters().size()];
-            sampled.kind = l.type == LightType::Point ? VertexKind::PointLight
-                           : l.type == LightType::Spot ? VertexKind::SpotLight
-                                                       : VertexKind::DirectionalLight;
+            sampled.kind = l.type == LightType::Point       ? VertexKind::PointLight
+                           : l.type == LightType::Spot      ? VertexKind::SpotLight
+                           : l.type == LightType::Luminaire ? VertexKind::Luminaire
+                                                            : VertexKind::DirectionalLight;
             sampled.sp.ng = l.direction;
             if (l.type == LightType::Directional)  // somewhere up the light's beam, outside the scene
                 sampled.sp.p = pt.p() + ls.wi * (2.0f * scene_.boundsRadius() + (pt.p() - scene_.boundsCenter()).length());

@@ -62,11 +62,12 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
         pdf = cosLight * kInvPi / dist2;
         break;
     }
-    case VertexKind::PointLight: pdf = uniformSpherePdf() / dist2; break;
-    case VertexKind::SpotLight: {
+    case VertexKind::PointLight:
+    case VertexKind::SpotLight:
+    case VertexKind::Luminaire: {
         const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
-        if (w.dot(l.direction) < l.cosCone) return 0.0f;
-        pdf = uniformConePdf(l.cosCone) / dist2;
+        pdf = l.pdfDirection(w) / dist2;
+        if (!(pdf > 0.0f)) return 0.0f;
         break;
     }
     case VertexKind::DirectionalLight: {
@@ -96,11 +97,11 @@ Rgb VertexDensities::emitted(const PathVertex& v, const V3f& w) const {
         return mat.isEmitter() && v.sp.ng.dot(w) > 0.0f ? mat.radiance : Rgb(0, 0, 0);
     }
     case VertexKind::PointLight:
-    case VertexKind::SpotLight: {
+    case VertexKind::SpotLight:
+    case VertexKind::Luminaire: {
         const DeltaLight& l = lights.deltaLights()[v.light - lights.emitters().size()];
         const float mpu = scene_.metersPerUnit();
-        const float factor = v.kind == VertexKind::SpotLight ? l.spotFactor(w.dot(l.direction)) : 1.0f;
-        return l.intensity * (factor / (mpu * mpu));
+        return l.intensity * (l.factor(w) / (mpu * mpu));
     }
     default: return Rgb(0, 0, 0);
     }

@@ -18,6 +18,7 @@ enum class VertexKind : uint8_t {
     AreaLight,         // a point on an emissive triangle where a light subpath starts
     PointLight,        // delta position
     SpotLight,         // delta position
+    Luminaire,         // delta position, a goniometric distribution
     DirectionalLight,  // delta direction; `sp.p` is a point on the disk the particles start from
 };
 
@@ -34,7 +35,8 @@ struct PathVertex {
     const V3f& p() const { return sp.p; }
     bool onSurface() const { return kind == VertexKind::Surface || kind == VertexKind::AreaLight; }
     bool isDeltaLight() const {
-        return kind == VertexKind::PointLight || kind == VertexKind::SpotLight || kind == VertexKind::DirectionalLight;
+        return kind == VertexKind::PointLight || kind == VertexKind::SpotLight || kind == VertexKind::Luminaire ||
+               kind == VertexKind::DirectionalLight;
     }
 };
 

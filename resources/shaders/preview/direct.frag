@@ -4,9 +4,11 @@
 // maps) and, without interleaving, of the area lights' point samples (cube shadow maps), plus the
 // (blurred) indirect light, which with interleaving also holds the area lights.
 #include_brdf
-// kind: 0 point, 1 spot, 2 directional, 3 area-light sample. intensity is W/sr in scene units
-// (divided by meters_per_unit^2), irradiance for a directional light, and for an area sample
-// Le / (samples pdf_area) so that it lights like a one-sided cos-weighted point light.
+// kind: 0 point, 1 spot, 2 directional, 3 area-light sample, 4 luminaire. intensity is W/sr in
+// scene units (divided by meters_per_unit^2; a luminaire's per candela of its table), irradiance
+// for a directional light, and for an area sample Le / (samples pdf_area) so that it lights like
+// a one-sided cos-weighted point light. A luminaire keeps its table's layer in directionCosCone.w
+// (direction = its nadir) and its C0 direction in normalShadow.xyz.
 struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
 layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
 uniform int lightCount;
@@ -31,7 +33,21 @@ uniform mat4 dirShadowMatrix[MAX_DIRECTIONAL_SHADOWS];
 uniform float dirNormalOffset;  // world units
 uniform float dirDepthBias;     // in [0, 1] depth
 layout(binding = 6) uniform sampler2DArrayShadow dirShadows;
+// Luminaire tables (preview_luminaires.h): candela over (C / 360, gamma / 180), a layer each.
+layout(binding = 7) uniform sampler2DArray luminaireTables;
+uniform ivec2 luminaireTableSize;
 layout(location = 0) out vec4 result;
+
+// The table's candela toward unit w (leaving the luminaire); C90 = C0 x nadir (core/luminaire.h).
+float luminaireCandela(vec3 w, vec3 nadir, vec3 c0, float layer) {
+    const vec3 c90 = cross(c0, nadir);
+    const float gammaDeg = degrees(acos(clamp(dot(w, nadir), -1.0, 1.0)));
+    float cDeg = degrees(atan(dot(w, c90), dot(w, c0)));
+    if (cDeg < 0.0) cDeg += 360.0;
+    const vec2 size = vec2(luminaireTableSize);
+    const vec2 uv = (vec2(cDeg / 360.0, gammaDeg / 180.0) * (size - 1.0) + 0.5) / size;
+    return texture(luminaireTables, vec3(uv, layer)).r;
+}
 
 float spotFactor(float cosTheta, float cosCone, float cosFalloff) {
     if (cosFalloff <= cosCone) return cosTheta >= cosCone ? 1.0 : 0.0;  // a hard edge
@@ -61,6 +77,7 @@ vec3 lightContribution(int i, vec3 y, vec3 n, vec3 wo, vec4 g1, vec4 g2, vec4 g3
         scale = 1.0 / d2;
         if (kind == 1) scale *= spotFactor(-dot(wi, l.directionCosCone.xyz), l.directionCosCone.w, l.intensityCosFalloff.w);
         if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
+        if (kind == 4) scale *= luminaireCandela(-wi, l.directionCosCone.xyz, l.normalShadow.xyz, l.directionCosCone.w);
         const float layer = l.normalShadow.w;
         if (scale > 0.0 && layer >= 0.0) {
             const float stored = texture(shadows, vec4(-wi, layer)).r;

@@ -1,0 +1,65 @@
+#pragma once
+// A luminaire's goniometric (luminous intensity) distribution in IES type C photometry: intensity
+// in candela tabulated over C planes (azimuth about the luminaire's nadir axis) and gamma angles
+// (from the nadir, 0 = straight down the axis, 180 = straight up). Read from IES LM-63 and
+// EULUMDAT files (core/ies_file.h, core/eulumdat_file.h); used by every backend through the
+// scene's "luminaire" lights (README).
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+// A luminaire file that cannot be read: what() is one line "file: line N: problem".
+class LuminaireFileError : public std::runtime_error {
+public:
+    using std::runtime_error::runtime_error;
+};
+
+struct GoniometricDistribution {
+    std::string name;                 // the luminaire's name or catalogue number, if the file gives one
+    std::vector<double> cAngles;      // degrees, strictly ascending, 0 first and 360 last (the circle closed)
+    std::vector<double> gammaAngles;  // degrees, strictly ascending, within [0, 180]; at least two
+    std::vector<double> candela;      // cd, candela[c * gammaAngles.size() + g]
+    // The flux the file states for what it describes, in lm: for IES the lamps' flux (lamps x
+    // lumens per lamp x ballast factor), for EULUMDAT the luminaire's (lamp flux x light output
+    // ratio); 0 when the file states none (IES absolute photometry, lumens per lamp -1).
+    double statedFluxLm = 0;
+    // IES TILT=INCLUDE: multipliers against the lamp's tilt angle (degrees); empty = no tilt table.
+    std::vector<double> tiltAngles, tiltMultipliers;
+
+    double at(size_t c, size_t g) const { return candela[c * gammaAngles.size() + g]; }
+
+    // Intensity (cd) at C (degrees, any value: periodic) and gamma (degrees, [0, 180]),
+    // bilinear in the two angles; 0 outside the tabulated gamma range.
+    double intensity(double cDeg, double gammaDeg) const;
+
+    // Luminous flux (lm = cd sr) of the cell between C planes c, c+1 and gamma angles g, g+1:
+    // the exact integral of the bilinear intensity against sin(gamma) dgamma dC.
+    double cellFlux(size_t c, size_t g) const;
+    // The distribution's total flux, the sum of cellFlux (exact for the bilinear interpolant).
+    double integratedFlux() const;
+    double maxIntensity() const;
+
+    // The TILT=INCLUDE multiplier at a tilt angle (degrees), linear between the table's angles
+    // and clamped at its ends; 1 without a table.
+    double tiltMultiplier(double angleDeg) const;
+};
+
+// One measured C plane: its angle and which of the file's columns it holds (a mirror image of a
+// measured plane names that plane's column).
+struct CPlane {
+    double angleDeg = 0;
+    size_t column = 0;
+};
+
+// Assembles the full 0..360 table from C planes (measured ones and the mirror images a symmetry
+// implies; duplicates of an angle keep the first) and the file's columns of gamma values. A plane
+// at 360 is added from the one at 0 when missing. Throws LuminaireFileError(label: problem) when
+// no plane lies at 0 or an angle is outside [0, 360].
+GoniometricDistribution assembleDistribution(std::vector<CPlane> planes, std::vector<double> gammaAngles,
+                                             const std::vector<std::vector<double>>& columns,
+                                             const std::string& label);
+
+}  // namespace lucerna
