@@ -442,15 +442,23 @@ void TestViewportEditing::selectAndFly() {
     w.outliner()->select(Outliner::Kind::None, -1);
     click(vp, *vp->lightMarker(0));
     QCOMPARE(w.selectedLight(), 0);
+    // Ctrl+click with a directional light selected: it falls straight onto the clicked floor.
+    trigger(w, "actionAddDirectionalLight");
+    QCOMPARE(w.selectedLight(), 1);
+    QVERIFY(doc->scene().lights[1].direction != V3d(0, -1, 0));
+    click(vp, widgetOf(vp, cam, V3d(450, 0, 100)), Qt::ControlModifier);
+    QCOMPARE(doc->scene().lights[1].direction, V3d(0, -1, 0));
+    trigger(w, "actionUndo");
+    QVERIFY(doc->scene().lights[1].direction != V3d(0, -1, 0));
 
     // Keys fly the camera: W forward by a twentieth of the distance to the target, target along.
-    const int steps = doc->undoStack()->count();
+    const int steps = doc->undoStack()->index();
     vp->setFocus();
     const double dist = (cam.target - cam.position).length();
     QTest::keyClick(vp, Qt::Key_W);
     QVERIFY(near(doc->scene().camera.position, cam.position + V3d(0, 0, 0.05 * dist), 1e-9));
     QVERIFY(near(doc->scene().camera.target, cam.target + V3d(0, 0, 0.05 * dist), 1e-9));
-    QCOMPARE(doc->undoStack()->count(), steps + 1);
+    QCOMPARE(doc->undoStack()->index(), steps + 1);
     // Held keys (auto-repeat) are one undo step: D (right is -x here) held for four steps,
     // E (up) joining while D is down.
     key(vp, QEvent::KeyPress, Qt::Key_D, false);
@@ -460,7 +468,7 @@ void TestViewportEditing::selectAndFly() {
     key(vp, QEvent::KeyRelease, Qt::Key_E, false);
     key(vp, QEvent::KeyPress, Qt::Key_D, true);
     key(vp, QEvent::KeyRelease, Qt::Key_D, false);
-    QCOMPARE(doc->undoStack()->count(), steps + 2);
+    QCOMPARE(doc->undoStack()->index(), steps + 2);
     const V3d flown = cam.position + V3d(0, 0, 0.05 * dist) + V3d(-4 * 0.05 * dist, 0.05 * dist, 0);
     QVERIFY2(near(doc->scene().camera.position, flown, 1e-9), qPrintable(str(doc->scene().camera.position)));
     trigger(w, "actionUndo");

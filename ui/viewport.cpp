@@ -502,6 +502,12 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         new EditCameraCommand(doc_, flyCamera(doc_->scene().camera, r * step, u * step, f * step), flyKey_, tr("Fly")));
 }
 
+void Viewport::focusOutEvent(QFocusEvent* event) {
+    // Releases that go to another widget never reach us: the next press starts a new step.
+    flyKeysHeld_.clear();
+    ImageView::focusOutEvent(event);
+}
+
 void Viewport::keyReleaseEvent(QKeyEvent* event) {
     if (!event->isAutoRepeat()) flyKeysHeld_.remove(event->key());
     ImageView::keyReleaseEvent(event);
