@@ -62,6 +62,8 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
         else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);
         else if (a == "--seed") g.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
+        else if (a == "--samples") g.settings.samplesPerPass = parseNumber<int>(a, value(), 1, 1 << 20);
+        else if (a == "--vpl-paths") g.settings.vplPathsPerPass = parseNumber<int>(a, value(), 1, 1 << 24);
         else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--csv") g.csv = value();
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
@@ -73,22 +75,6 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     if (rectangle == g.workPlaneM.has_value())
         throw UsageError("grid: give either --work-plane HEIGHT or --corner, --u and --v");
     if (rectangle && !(g.corner && g.u && g.v)) throw UsageError("grid: --corner, --u and --v go together");
-    return g;
-}
-
-// The work plane of a room: the scene's extent in x and z less the border, at a height above the
-// lowest geometry (y is up), facing up.
-CalculationGrid workPlane(const Scene& scene, double heightM, double borderM, const std::string& name) {
-    const SceneBounds b = sceneBounds(scene);
-    const double border = borderM / scene.metersPerUnit;
-    const double x0 = b.lo.x + border, x1 = b.hi.x - border, z0 = b.lo.z + border, z1 = b.hi.z - border;
-    if (!(x1 > x0) || !(z1 > z0))
-        throw UsageError("grid: the scene is too small for a border of " + std::to_string(borderM) + " m");
-    CalculationGrid g;
-    g.name = name;
-    g.corner = V3d(x0, b.lo.y + heightM / scene.metersPerUnit, z1);
-    g.edgeU = V3d(x1 - x0, 0, 0);
-    g.edgeV = V3d(0, 0, z0 - z1);  // cross(u, v) = +y
     return g;
 }
 
@@ -110,9 +96,15 @@ int gridImpl(const std::vector<std::string>& args) {
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(std::move(loaded));
     if (g.workPlaneM) {
+        const SceneBounds b = sceneBounds(*scene);
         const std::string name = g.grid.name;
         const auto spacing = g.grid.spacingMeters;
-        g.grid = workPlane(*scene, *g.workPlaneM, g.borderM, name);
+        try {
+            g.grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, *g.workPlaneM, g.borderM);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(std::string("grid: ") + e.what());
+        }
+        g.grid.name = name;
         g.grid.spacingMeters = spacing;
     }
     GridLayout layout;

@@ -9,7 +9,7 @@ namespace lucerna::cli {
 
 // grid SCENE.json (--work-plane HEIGHT_M [--border M] | --corner X,Y,Z --u X,Y,Z --v X,Y,Z)
 //      [--spacing M] [--method path|ir] [--error FRACTION] [--time SECONDS] [--seed N]
-//      [--threads N] [--name NAME] [--csv OUT.csv]
+//      [--samples N] [--vpl-paths N] [--threads N] [--name NAME] [--csv OUT.csv]
 // Returns the exit status of SPEC.md section 2 (2 with one line for bad usage or input, 130 when
 // interrupted, with no file written).
 int grid(const std::vector<std::string>& args);

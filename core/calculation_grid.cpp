@@ -10,6 +10,20 @@ namespace lucerna {
 
 V3d CalculationGrid::normal() const { return edgeU.cross(edgeV).normalized(); }
 
+CalculationGrid workPlaneGrid(const V3d& lo, const V3d& hi, double metersPerUnit, double heightMeters,
+                              double borderMeters) {
+    const double border = borderMeters / metersPerUnit;
+    const double x0 = lo.x + border, x1 = hi.x - border, z0 = lo.z + border, z1 = hi.z - border;
+    if (!(x1 > x0) || !(z1 > z0))
+        throw std::invalid_argument("the scene is too small for a border of " + std::to_string(borderMeters) + " m");
+    CalculationGrid g;
+    g.name = "work plane";
+    g.corner = V3d(x0, lo.y + heightMeters / metersPerUnit, z1);
+    g.edgeU = V3d(x1 - x0, 0, 0);
+    g.edgeV = V3d(0, 0, z0 - z1);  // cross(u, v) = +y
+    return g;
+}
+
 double en12464Spacing(double dMeters) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(dMeters))); }
 
 GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int maxPoints) {

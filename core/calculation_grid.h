@@ -28,6 +28,13 @@ struct CalculationGrid {
     V3d normal() const;
 };
 
+// The work plane of a room whose geometry spans [lo, hi] (scene units, y up): the extent in x and
+// z less a border (EN 12464-1 leaves out a band along the walls, 0.5 m unless stated), at a
+// height above the lowest geometry, facing up. Throws std::invalid_argument (one line) when the
+// border leaves nothing.
+CalculationGrid workPlaneGrid(const V3d& lo, const V3d& hi, double metersPerUnit, double heightMeters,
+                              double borderMeters);
+
 // EN 12464-1's maximum grid spacing for a longest side of dMeters: 0.2 * 5^log10(d), at most 10 m.
 double en12464Spacing(double dMeters);
 

@@ -6,6 +6,7 @@
 #include "ui/commands/light_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
+#include "ui/grid_panel.h"
 #include "ui/converging_render.h"
 #include "ui/display.h"
 #include "ui/false_colour.h"
@@ -98,6 +99,9 @@ void MainWindow::createDocks() {
     compare_->setObjectName("compareView");
     QDockWidget* compareDock = dock(compare_, tr("Comparison"), "compareDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(renderDock, compareDock);
+    gridPanel_ = new GridPanel(doc_.get(), tasks_, this);
+    gridPanel_->setObjectName("gridPanel");
+    tabifyDockWidget(renderDock, dock(gridPanel_, tr("Calculation grid"), "gridDock", Qt::RightDockWidgetArea));
     renderDock->raise();
     renderDock_ = renderDock;
     outlinerDock_ = outlinerDock;

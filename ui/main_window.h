@@ -23,6 +23,7 @@ namespace lucerna {
 class Autosave;
 class CompareView;
 class ConvergingRender;
+class GridPanel;
 class LightProperties;
 class LivePreview;
 class Outliner;
@@ -72,6 +73,7 @@ public:
     Outliner* outliner() const { return outliner_; }
     LightProperties* lightProperties() const { return properties_; }
     CompareView* compareView() const { return compare_; }
+    GridPanel* gridPanel() const { return gridPanel_; }
     RecentFilesMenu* recentFiles() const { return recent_; }
 
 protected:
@@ -95,6 +97,7 @@ private:
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;
     CompareView* compare_ = nullptr;  // also holds the display settings of every view
+    GridPanel* gridPanel_ = nullptr;
     RecentFilesMenu* recent_ = nullptr;
     QLabel* previewInfo_ = nullptr;
     QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;

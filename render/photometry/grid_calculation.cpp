@@ -58,6 +58,8 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     result.lux.assign(points.size(), 0.0);
     result.errorLux.assign(points.size(), std::numeric_limits<double>::infinity());
     const int pointsPerTask = 16;
+    const int samples =
+        settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;
 
     for (int pass = 0; !ctx.isCancelled(); ++pass) {
         VplSet vpls;
@@ -69,18 +71,18 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
                 const IrradianceSensor sensor{V3f(float(p.x), float(p.y), float(p.z)), n};
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
                 double sum = 0;
-                for (int s = 0; s < settings.samplesPerPass; ++s) {
+                for (int s = 0; s < samples; ++s) {
                     const Rgb E = settings.method == GridMethod::Path ? estimator.samplePath(sensor, rng)
                                                                       : estimator.sampleVpl(sensor, rng, vpls);
                     if (isFinite(E)) sum += kLumensPerWatt * double(luminance(E));
                 }
-                passMean[size_t(i)] = sum / settings.samplesPerPass;
+                passMean[size_t(i)] = sum / samples;
             }
         });
         if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
 
         result.passes = pass + 1;
-        result.samplesPerPoint = static_cast<long long>(result.passes) * settings.samplesPerPass;
+        result.samplesPerPoint = static_cast<long long>(result.passes) * samples;
         result.maxRelativeError = 0;
         for (size_t i = 0; i < points.size(); ++i) {
             batches[i].add(passMean[i]);

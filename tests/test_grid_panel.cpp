@@ -1,0 +1,131 @@
+// The calculation-grid dock driven through its widgets in the real window: a point light over a
+// floor (exact closed form, E = I cos / r^2), the table and the figures it shows, CSV export,
+// the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
+
+#include "closed_form_scenes.h"
+#include "core/calculation_grid.h"
+#include "ui/commands/light_commands.h"
+#include "ui/grid_panel.h"
+#include "ui/main_window.h"
+
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <fstream>
+
+using namespace lucerna;
+using namespace lucerna::test;
+
+namespace {
+constexpr int kTimeout = 60000;  // ms; generous for a loaded machine, never a timing assertion
+
+template <class T>
+T* child(QObject& parent, const char* name) {
+    T* w = parent.findChild<T*>(name);
+    if (!w) qFatal("no widget %s", name);
+    return w;
+}
+}  // namespace
+
+class TestGridPanel : public QObject {
+    Q_OBJECT
+private slots:
+    void initTestCase() {
+        QStandardPaths::setTestModeEnabled(true);
+        QCoreApplication::setOrganizationName("LucernaTest");
+        QCoreApplication::setApplicationName("test_grid_panel");
+        QSettings().clear();
+        QVERIFY(dir_.isValid());
+    }
+
+    void pointLightGridThroughTheDock() {
+        DeltaLightOverPlane s;  // millimetres; a 40 m floor, the light 1 m above its middle
+        const QString scenePath = dir_.filePath("point.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        MainWindow w(scenePath);
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        QVERIFY(panel);
+        w.findChild<QDockWidget*>("gridDock")->raise();
+
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);   // on the floor
+        child<QDoubleSpinBox>(*panel, "gridBorder")->setValue(18.0);  // the middle 4 m
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+
+        const auto result = panel->result();
+        QVERIFY(result && result->converged);
+        const GridLayout& layout = panel->layout();
+        QCOMPARE(layout.nu, 8);
+        QCOMPARE(layout.nv, 8);
+        auto* table = child<QTableWidget>(*panel, "gridTable");
+        QCOMPARE(table->rowCount(), 8);
+        QCOMPARE(table->columnCount(), 8);
+        double minLux = 1e300;
+        for (size_t k = 0; k < layout.points.size(); ++k) {
+            const V3d d = V3d(0, s.h, 0) - layout.points[k];
+            const double expected = 683.0 * s.intensity * (s.h / d.length()) / (d.length2() * 1e-6);
+            QVERIFY2(std::abs(result->lux[k] / expected - 1) < 1e-4, qPrintable(QString::number(k)));
+            minLux = std::min(minLux, expected);
+            // The table shows the plane from above: row 0 is the far row (largest j).
+            const int i = int(k) % layout.nu, j = int(k) / layout.nu;
+            QCOMPARE(table->item(layout.nv - 1 - j, i)->text(), QString::number(result->lux[k], 'f', 0));
+        }
+        const QString figures = child<QLabel>(*panel, "gridFigures")->text();
+        QVERIFY2(figures.contains(QString("Emin %1 lx").arg(minLux, 0, 'f', 1)), qPrintable(figures));
+        QTest::qWait(200);  // let the dock lay out before the screenshot
+        w.grab().save("grid_panel.png");
+
+        // CSV: a header and one row per point, values as computed.
+        const QString csv = dir_.filePath("grid.csv");
+        panel->exportCsv(csv);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).trimmed().split('\n');
+        QCOMPARE(lines.size(), 1 + 64);
+        QVERIFY(std::abs(lines[1].split(',')[5].toDouble() / result->lux[0] - 1) < 1e-8);
+
+        // An edit marks the result out of date; Compute again follows the edit.
+        Light brighter = w.document()->scene().lights[0];
+        brighter.intensity = brighter.intensity * 2.0;
+        w.document()->undoStack()->push(new EditLightCommand(w.document(), 0, brighter, 0, "brighter"));
+        QVERIFY(child<QLabel>(*panel, "gridStatus")->text().contains("changed"));
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QVERIFY(std::abs(panel->result()->lux[0] / result->lux[0] - 2) < 1e-4);
+    }
+
+    void cancelStopsACalculation() {
+        RectangleOverPlane s;
+        const QString scenePath = dir_.filePath("rect.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        MainWindow w(scenePath);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        w.findChild<QDockWidget*>("gridDock")->raise();
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(0.1);  // far beyond a few seconds
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QVERIFY2(panel->isComputing(), qPrintable(child<QLabel>(*panel, "gridStatus")->text()));
+        QTRY_VERIFY_WITH_TIMEOUT(panel->result() != nullptr, kTimeout);  // a first pass shown
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCancel"), Qt::LeftButton);
+        QVERIFY(!panel->isComputing());
+        QVERIFY(child<QPushButton>(*panel, "gridCompute")->isEnabled());
+        QVERIFY(!panel->result()->converged);
+    }
+
+private:
+    QTemporaryDir dir_;
+};
+
+QTEST_MAIN(TestGridPanel)
+#include "test_grid_panel.moc"

@@ -1,0 +1,228 @@
+#include "ui/grid_panel.h"
+
+#include "core/atomic_file.h"
+#include "ui/display.h"
+#include "ui/scene_geometry.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+#include <fstream>
+
+namespace lucerna {
+
+namespace {
+QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(lo, hi);
+    box->setDecimals(2);
+    box->setSingleStep(0.05);
+    box->setValue(value);
+    box->setSuffix(suffix);
+    return box;
+}
+}  // namespace
+
+GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidget(parent), doc_(doc), tasks_(tasks) {
+    height_ = lengthField(this, "gridHeight", 0.8, -1000, 1000, tr(" m"));
+    border_ = lengthField(this, "gridBorder", 0.5, 0, 1000, tr(" m"));
+    spacing_ = lengthField(this, "gridSpacing", 0, 0, 1000, tr(" m"));
+    spacing_->setSpecialValueText(tr("EN 12464-1"));  // 0: the standard's rule
+    target_ = lengthField(this, "gridTarget", 2, 0.1, 50, tr(" %"));
+    method_ = new QComboBox(this);
+    method_->setObjectName("gridMethod");
+    method_->addItem(tr("path"), int(GridMethod::Path));
+    method_->addItem(tr("ir"), int(GridMethod::Vpl));
+    compute_ = new QPushButton(tr("Compute"), this);
+    compute_->setObjectName("gridCompute");
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setObjectName("gridCancel");
+    cancel_->setEnabled(false);
+    export_ = new QPushButton(tr("Export CSV..."), this);
+    export_->setObjectName("gridExport");
+    export_->setEnabled(false);
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    progress_->setTextVisible(false);
+    figures_ = new QLabel(this);
+    figures_->setObjectName("gridFigures");
+    figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    status_ = new QLabel(this);
+    status_->setObjectName("gridStatus");
+    status_->setWordWrap(true);
+    table_ = new QTableWidget(this);
+    table_->setObjectName("gridTable");
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+
+    auto* form = new QFormLayout;
+    form->addRow(tr("Work plane height"), height_);
+    form->addRow(tr("Border"), border_);
+    form->addRow(tr("Spacing"), spacing_);
+    form->addRow(tr("Error bar (95%)"), target_);
+    form->addRow(tr("Estimator"), method_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(compute_);
+    buttons->addWidget(cancel_);
+    buttons->addWidget(export_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(buttons);
+    layout->addWidget(progress_);
+    layout->addWidget(figures_);
+    layout->addWidget(status_);
+    layout->addWidget(table_, 1);
+
+    connect(compute_, &QPushButton::clicked, this, &GridPanel::compute);
+    connect(cancel_, &QPushButton::clicked, this, &GridPanel::cancel);
+    connect(export_, &QPushButton::clicked, this, &GridPanel::exportClicked);
+    connect(doc_, &Document::changed, this, [this] {
+        if (shown_ && !stale_) {
+            stale_ = true;
+            status_->setText(tr("The scene changed since this result: Compute again to update it."));
+        }
+    });
+    poll_.setInterval(100);
+    connect(&poll_, &QTimer::timeout, this, &GridPanel::poll);
+}
+
+GridPanel::~GridPanel() { cancel(); }
+
+void GridPanel::compute() {
+    cancel();
+    const SceneSnapshot scene = doc_->snapshot();
+    CalculationGrid grid;
+    try {
+        const SceneBounds b = sceneBounds(*scene);
+        grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), border_->value());
+        if (spacing_->value() > 0) grid.spacingMeters = spacing_->value();
+        layout_ = layoutGrid(grid, scene->metersPerUnit);
+    } catch (const std::invalid_argument& e) {
+        status_->setText(QString::fromStdString(e.what()));
+        return;
+    }
+    GridSettings settings;
+    settings.method = GridMethod(method_->currentData().toInt());
+    settings.targetRelativeError = target_->value() / 100.0;
+    latest_ = std::make_shared<Latest<GridResult>>();
+    shown_.reset();
+    shownVersion_ = 0;
+    stale_ = false;
+    job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
+                          latest = latest_](TaskContext& ctx) {
+        const RenderScene renderScene(scene, 8, 8);  // the camera is unused
+        computeGridIlluminance(renderScene, points, normal, settings, ctx, [&](const GridResult& r) {
+            latest->publish(std::make_shared<const GridResult>(r));
+        });
+    });
+    compute_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setValue(0);
+    status_->setText(tr("Computing %1 x %2 points...").arg(layout_.nu).arg(layout_.nv));
+    poll_.start();
+}
+
+void GridPanel::cancel() {
+    if (!job_) return;
+    job_->cancel();
+    job_->wait();
+    job_.reset();
+    poll_.stop();
+    compute_->setEnabled(true);
+    cancel_->setEnabled(false);
+    if (shown_ && !shown_->converged) status_->setText(tr("Cancelled: the figures are those of the last pass."));
+}
+
+void GridPanel::poll() {
+    if (!job_) return;
+    progress_->setValue(int(std::lround(1000 * job_->progress())));
+    if (latest_->version() != shownVersion_) {
+        shownVersion_ = latest_->version();
+        shown_ = latest_->get();
+        showResult();
+    }
+    if (!job_->isFinished()) return;
+    poll_.stop();
+    QString error;
+    try {
+        job_->rethrowIfFailed();
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+    }
+    job_.reset();
+    compute_->setEnabled(true);
+    cancel_->setEnabled(false);
+    progress_->setValue(1000);
+    if (!error.isEmpty()) status_->setText(tr("The calculation failed: %1").arg(error));
+    else if (shown_)
+        status_->setText(tr("Done: %1 passes, %2 samples per point, %3 s.")
+                             .arg(shown_->passes)
+                             .arg(shown_->samplesPerPoint)
+                             .arg(shown_->seconds, 0, 'f', 1));
+    emit finished();
+}
+
+void GridPanel::showResult() {
+    if (!shown_) return;
+    const GridStatistics s = gridStatistics(shown_->lux);
+    figures_->setText(tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4\nerror bar at most %5% (95%)")
+                          .arg(s.average, 0, 'f', 1)
+                          .arg(s.minimum, 0, 'f', 1)
+                          .arg(s.maximum, 0, 'f', 1)
+                          .arg(s.uniformity, 0, 'f', 2)
+                          .arg(100.0 * shown_->maxRelativeError, 0, 'f', 2));
+    // Rows from the far side (largest j) down, as the plane is seen from above with u to the right.
+    table_->setRowCount(layout_.nv);
+    table_->setColumnCount(layout_.nu);
+    const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
+    for (int j = 0; j < layout_.nv; ++j)
+        for (int i = 0; i < layout_.nu; ++i) {
+            const size_t k = size_t(j) * size_t(layout_.nu) + size_t(i);
+            const double e = shown_->lux[k];
+            auto* item = new QTableWidgetItem(QString::number(e, 'f', 0));
+            item->setTextAlignment(Qt::AlignCenter);
+            const double t = e > 0 ? std::log(e / lo) / std::log(hi / lo) : 0.0;
+            const QColor c = falseColourRamp(std::clamp(t, 0.0, 1.0));
+            item->setBackground(c);
+            item->setForeground(c.lightnessF() > 0.55 ? Qt::black : Qt::white);
+            item->setToolTip(tr("%1 lx +- %2 lx").arg(e, 0, 'f', 1).arg(shown_->errorLux[k], 0, 'f', 1));
+            table_->setItem(layout_.nv - 1 - j, i, item);
+        }
+    export_->setEnabled(true);
+    emit resultChanged();
+}
+
+void GridPanel::exportCsv(const QString& path) const {
+    if (!shown_) throw std::runtime_error("no grid result to export");
+    const std::string text = gridCsv(layout_, shown_->lux, shown_->errorLux);
+    writeAtomically(path.toStdString(), [&](const std::string& temp) {
+        std::ofstream out(temp);
+        out << text;
+        if (!out.flush()) throw std::runtime_error("cannot write " + path.toStdString());
+    });
+}
+
+void GridPanel::exportClicked() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export grid"), QString(), tr("CSV files (*.csv)"));
+    if (path.isEmpty()) return;
+    try {
+        exportCsv(path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Export grid"), QString::fromStdString(e.what()));
+    }
+}
+
+}  // namespace lucerna

@@ -1,0 +1,69 @@
+#pragma once
+// The calculation-grid dock: a work plane over the room (height, border, spacing by EN 12464-1
+// unless set), its illuminance computed in the background with a Monte Carlo error bar per point
+// (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
+// Emax and U0, and exported as CSV. A scene edit marks the result as out of date; Compute runs
+// again on the current scene.
+
+#include "core/calculation_grid.h"
+#include "core/document.h"
+#include "core/task_system.h"
+#include "render/photometry/grid_calculation.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace lucerna {
+
+class GridPanel : public QWidget {
+    Q_OBJECT
+public:
+    GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent = nullptr);
+    ~GridPanel() override;
+
+    void compute();   // starts on the document's current scene (cancels a running calculation)
+    void cancel();
+    bool isComputing() const { return job_ != nullptr; }
+    // The newest result and its layout (null before the first pass of a calculation).
+    std::shared_ptr<const GridResult> result() const { return shown_; }
+    const GridLayout& layout() const { return layout_; }
+    // Writes the shown result as CSV (core/calculation_grid.h); throws std::runtime_error.
+    void exportCsv(const QString& path) const;
+
+signals:
+    void resultChanged();
+    void finished();
+
+private:
+    void poll();
+    void showResult();
+    void exportClicked();
+
+    Document* doc_;
+    TaskSystem& tasks_;
+    QDoubleSpinBox *height_, *border_, *spacing_, *target_;
+    QComboBox* method_;
+    QPushButton *compute_, *cancel_, *export_;
+    QProgressBar* progress_;
+    QLabel *figures_, *status_;
+    QTableWidget* table_;
+    QTimer poll_;
+
+    GridLayout layout_;
+    std::shared_ptr<Latest<GridResult>> latest_;
+    std::shared_ptr<TaskHandle> job_;
+    std::shared_ptr<const GridResult> shown_;
+    uint64_t shownVersion_ = 0;
+    bool stale_ = false;
+};
+
+}  // namespace lucerna
