@@ -8,6 +8,7 @@
 #include "core/task_system.h"
 #include "render/progressive/backend.h"
 #include "render/progressive/progressive_render.h"
+#include "render/trace/surface_layers.h"
 #include "ui/display.h"
 
 #include <QSaveFile>
@@ -31,6 +32,7 @@ struct RenderArgs {
     std::string scene, output, backend = "auto";
     RenderSettings settings;
     int threads = 0;
+    unsigned layers = 0;  // --layers: extra EXR layers (README), none by default
 };
 
 RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
@@ -49,7 +51,12 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--threads") r.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--width") r.settings.width = parseNumber<int>(a, value(), 1, 16384);
         else if (a == "--height") r.settings.height = parseNumber<int>(a, value(), 1, 16384);
-        else if (a == "--option") {
+        else if (a == "--layers") {
+            std::string error;
+            const auto bits = parseLayerList(value(), &error);
+            if (!bits) throw UsageError("--layers: " + error);
+            r.layers = *bits;
+        } else if (a == "--option") {
             const std::string& kv = value();
             const auto eq = kv.find('=');
             if (eq == std::string::npos || eq == 0) throw UsageError("--option expects name=value, got '" + kv + "'");
@@ -135,6 +142,7 @@ int renderImpl(const std::vector<std::string>& args) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
+    if (r.layers) addSurfaceLayers(result->image, scene, r.layers);
     writeExr(r.output, result->image);
     std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
@@ -302,6 +310,7 @@ void printUsage() {
                  "  lucerna [SCENE.json]                      open the application\n"
                  "  lucerna render SCENE.json -o OUT.exr [--backend NAME] [--spp N | --time SECONDS]\n"
                  "                 [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
+                 "                 [--layers albedo,normal,depth]   extra EXR layers of the first visible surface\n"
                  "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
                  "  lucerna info SCENE.json                   validate and print statistics\n"
                  "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"

@@ -54,7 +54,9 @@ void Document::removeLight(int index) {
 }
 
 void Document::setMaterial(int index, Material material) {
-    const bool renamed = scene_->materials.at(size_t(index)).name != material.name;
+    // The outliner shows each material's type.
+    const Material& old = scene_->materials.at(size_t(index));
+    const bool renamed = old.name != material.name || old.type != material.type;
     auto copy = std::make_shared<Scene>(*scene_);
     copy->materials[size_t(index)] = std::move(material);
     publish(std::move(copy));
@@ -76,7 +78,9 @@ void Document::removeMaterial(int index) {
 }
 
 void Document::setObject(int index, Object object) {
-    const bool renamed = scene_->objects.at(size_t(index)).name != object.name;
+    // The outliner shows each object's material.
+    const Object& old = scene_->objects.at(size_t(index));
+    const bool renamed = old.name != object.name || old.material != object.material;
     auto copy = std::make_shared<Scene>(*scene_);
     copy->objects[size_t(index)] = std::move(object);
     publish(std::move(copy));

@@ -30,7 +30,11 @@ void writeExr(const std::string& path, const Image& image) {
                 header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
                 fb.insert(names[c], Imf::Slice(Imf::FLOAT, base + c * sizeof(float), xStride, yStride));
             }
+            // OpenEXR keeps channels sorted by name, so R, G, B come before lower-case layer names
+            // such as albedo.R; an extra channel may not shadow them.
             for (const auto& [name, data] : image.channels) {
+                if (name.empty() || name == "R" || name == "G" || name == "B")
+                    throw ImageError(path + ": extra channel name '" + name + "' is empty or clashes with R, G, B");
                 if (data.size() != image.pixelCount())
                     throw ImageError(path + ": channel " + name + " has the wrong size");
                 header.channels().insert(name, Imf::Channel(Imf::FLOAT));

@@ -14,7 +14,10 @@ public:
     using std::runtime_error::runtime_error;
 };
 
-// Writes atomically (SPEC.md section 2): the file appears whole or not at all. Throws ImageError.
+// Writes atomically (SPEC.md section 2): the file appears whole or not at all. R, G, B, then
+// image.channels as 32-bit float channels under their own names (a layer "albedo" as albedo.R,
+// albedo.G, albedo.B), image.attributes as string attributes. Throws ImageError, also for an
+// extra channel that is empty-named, named R, G or B, or not width*height long.
 void writeExr(const std::string& path, const Image& image);
 
 // Reads R, G, B (half or float) and any other channels as extra layers, plus string attributes.

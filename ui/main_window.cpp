@@ -4,6 +4,7 @@
 #include "core/scene_io.h"
 #include "ui/autosave.h"
 #include "ui/commands/light_commands.h"
+#include "ui/commands/object_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
 #include "ui/grid_panel.h"
@@ -11,8 +12,11 @@
 #include "ui/display.h"
 #include "ui/false_colour.h"
 #include "ui/light_properties.h"
+#include "ui/image_export.h"
 #include "ui/live_preview.h"
+#include "ui/mesh_import.h"
 #include "ui/outliner.h"
+#include "ui/properties_panel.h"
 #include "ui/recent_files.h"
 #include "ui/render_panel.h"
 #include "ui/viewport.h"
@@ -93,7 +97,8 @@ void MainWindow::createDocks() {
     };
     QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea);
     QDockWidget* outlinerDock = dock(outliner_, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
-    dock(properties_, tr("Light properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    propertiesPanel_ = new PropertiesPanel(doc_.get(), properties_, this);
+    dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
     // The comparison shares the render's side, a tab behind it.
     compare_ = new CompareView(this);
     compare_->setObjectName("compareView");
@@ -108,7 +113,7 @@ void MainWindow::createDocks() {
 
     connect(outliner_, &Outliner::selectionChangedTo, this, [this](Outliner::Selection s) {
         const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
-        properties_->setLight(light);
+        propertiesPanel_->showSelection(s);
         viewport_->setSelectedLight(light);
         viewport_->setSelectedObject(s.kind == Outliner::Kind::Object ? s.index : -1);
     });
@@ -157,6 +162,22 @@ void MainWindow::createMenus() {
     add(file, tr("&Export EXR..."), "actionExportExr", QKeySequence(tr("Ctrl+E")), [this] {
         const QString path = QFileDialog::getSaveFileName(this, tr("Export the converged image"), {}, tr("OpenEXR (*.exr)"));
         if (!path.isEmpty() && !exportExr(path)) QMessageBox::warning(this, tr("Export EXR"), lastError_);
+    });
+    add(file, tr("Export &Preview EXR..."), "actionExportPreviewExr", QKeySequence(tr("Ctrl+Alt+E")), [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the preview"), {}, tr("OpenEXR (*.exr)"));
+        if (!path.isEmpty() && !exportPreviewExr(path)) QMessageBox::warning(this, tr("Export EXR"), lastError_);
+    });
+    add(file, tr("Export &Both EXR..."), "actionExportBothExr", {}, [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export preview and converged image (NAME-preview.exr, NAME-converged.exr)"), {}, tr("OpenEXR (*.exr)"));
+        if (!path.isEmpty() && !exportBothExr(path)) QMessageBox::warning(this, tr("Export EXR"), lastError_);
+    });
+    add(file, tr("Export P&NG..."), "actionExportPng", QKeySequence(tr("Ctrl+Shift+E")), [this] {
+        const QString path = QFileDialog::getSaveFileName(this, tr("Export the picture on screen"), {}, tr("PNG (*.png)"));
+        if (!path.isEmpty() && !exportPng(path)) QMessageBox::warning(this, tr("Export PNG"), lastError_);
+    });
+    add(file, tr("&Import Mesh..."), "actionImportMesh", QKeySequence(tr("Ctrl+I")), [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Import a mesh"), {}, tr("Meshes (*.obj *.ply *.off *.stl)"));
+        if (!path.isEmpty() && !importMeshFile(path)) QMessageBox::warning(this, tr("Import mesh"), lastError_);
     });
     file->addSeparator();
     add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit, [this] { close(); });
@@ -257,12 +278,59 @@ bool MainWindow::exportExr(const QString& path) {
         return false;
     }
     try {
-        writeExr(path.toStdString(), frame->image);  // carries lucerna:backend, spp, seconds, seed
+        writeExr(path.toStdString(), convergedExportImage(*frame, render_->scene()));
     } catch (const std::exception& e) {
         fail(QString::fromStdString(e.what()));
         return false;
     }
     statusBar()->showMessage(tr("Exported %1 (%2 spp)").arg(path).arg(frame->samplesPerPixel), 5000);
+    return true;
+}
+
+bool MainWindow::exportPreviewExr(const QString& path) {
+    const auto frame = preview_->frame();
+    if (!frame) {
+        fail(tr("Nothing to export yet: the preview has no frame."));
+        return false;
+    }
+    try {
+        writeExr(path.toStdString(), previewExportImage(*frame, preview_->engineDescription()));
+    } catch (const std::exception& e) {
+        fail(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::exportBothExr(const QString& path) {
+    // Two files: the two images differ in size (the preview draws at a reduced resolution).
+    return exportPreviewExr(exportSibling(path, "-preview")) && exportExr(exportSibling(path, "-converged"));
+}
+
+bool MainWindow::exportPng(const QString& path) {
+    try {
+        writePng(viewport_->image(), path);
+    } catch (const std::exception& e) {
+        fail(QString::fromStdString(e.what()));
+        return false;
+    }
+    statusBar()->showMessage(tr("Exported %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::importMeshFile(const QString& path) {
+    MeshImport imported;
+    try {
+        imported = importMesh(*doc_, path);
+    } catch (const std::exception& e) {
+        fail(tr("Could not import %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    const QString text = tr("Import %1").arg(QString::fromStdString(imported.object.name));
+    doc_->undoStack()->push(new AddObjectCommand(doc_.get(), std::move(imported.object), std::move(imported.material), text));
+    outliner_->select(Outliner::Kind::Object, int(doc_->scene().objects.size()) - 1);
+    statusBar()->showMessage(tr("Imported %1").arg(path), 5000);
     return true;
 }
 

@@ -27,6 +27,7 @@ class GridPanel;
 class LightProperties;
 class LivePreview;
 class Outliner;
+class PropertiesPanel;
 class RecentFilesMenu;
 class RenderPanel;
 class Viewport;
@@ -46,6 +47,14 @@ public:
     bool save();                           // to the document's path; Save As when it has none
     bool saveFileAs(const QString& path);
     bool exportExr(const QString& path);   // the converging render's newest frame, SPEC.md section 3
+    // The live preview's newest frame, SPEC.md section 3; both: PATH-preview.exr and
+    // PATH-converged.exr. Every EXR export carries albedo, normal and depth layers (README).
+    bool exportPreviewExr(const QString& path);
+    bool exportBothExr(const QString& path);
+    // The viewport's picture as the screen shows it (exposure, tone curve or false colour).
+    bool exportPng(const QString& path);
+    // Adds the mesh file as a new object with a material of its own: one undo step.
+    bool importMeshFile(const QString& path);
     // Before unsaved changes are lost: asks (Save, Discard, Cancel); true when it may go on.
     bool maybeSave();
     // Replaces the question maybeSave() asks (tests answer without a modal dialog).
@@ -72,6 +81,7 @@ public:
     RenderPanel* renderPanel() const { return renderPanel_; }
     Outliner* outliner() const { return outliner_; }
     LightProperties* lightProperties() const { return properties_; }
+    PropertiesPanel* propertiesPanel() const { return propertiesPanel_; }
     CompareView* compareView() const { return compare_; }
     GridPanel* gridPanel() const { return gridPanel_; }
     RecentFilesMenu* recentFiles() const { return recent_; }
@@ -96,6 +106,7 @@ private:
     RenderPanel* renderPanel_ = nullptr;
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;
+    PropertiesPanel* propertiesPanel_ = nullptr;  // light, object and material panels
     CompareView* compare_ = nullptr;  // also holds the display settings of every view
     GridPanel* gridPanel_ = nullptr;
     RecentFilesMenu* recent_ = nullptr;

@@ -1,6 +1,7 @@
 #include "ui/outliner.h"
 
 #include "ui/commands/light_commands.h"
+#include "ui/commands/material_commands.h"
 
 #include <QHeaderView>
 
@@ -8,17 +9,6 @@ namespace lucerna {
 
 namespace {
 constexpr int kKindRole = Qt::UserRole, kIndexRole = Qt::UserRole + 1;
-
-QString materialTypeName(MaterialType t) {
-    switch (t) {
-    case MaterialType::Diffuse: return QObject::tr("diffuse");
-    case MaterialType::Glossy: return QObject::tr("glossy");
-    case MaterialType::Mirror: return QObject::tr("mirror");
-    case MaterialType::Dielectric: return QObject::tr("dielectric");
-    case MaterialType::Emitter: return QObject::tr("emitter");
-    }
-    return {};
-}
 }  // namespace
 
 Outliner::Outliner(Document* doc, QWidget* parent) : QTreeWidget(parent), doc_(doc) {

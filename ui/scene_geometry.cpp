@@ -45,6 +45,7 @@ Object resolvedObject(const Scene& scene, Object object) {
     // resolveMeshes works on whole scenes; a scene of this one object reads only its mesh.
     Scene single;
     single.baseDir = scene.baseDir;
+    single.materials = scene.materials;  // the loader checks the object's material
     object.worldMesh.reset();
     single.objects.push_back(std::move(object));
     resolveMeshes(single);

@@ -22,7 +22,8 @@ SceneBounds sceneBounds(const Scene& scene);
 int objectOfTriangle(const Scene& scene, uint32_t tri);
 
 // `object` with its worldMesh recomputed (transform or mesh edited). Mesh files are read relative
-// to scene.baseDir. Throws SceneError with a one-line reason.
+// to scene.baseDir; the object's material must be one of scene's. Throws SceneError with a
+// one-line reason.
 Object resolvedObject(const Scene& scene, Object object);
 
 // "mm", "m", ... for lengths in scene units (from meters_per_unit), or "units".

@@ -1,0 +1,64 @@
+#include "ui/commands/material_commands.h"
+
+#include <QObject>
+
+namespace lucerna {
+
+EditMaterialCommand::EditMaterialCommand(Document* doc, int index, Material after, int mergeKey, const QString& text)
+    : QUndoCommand(text), doc_(doc), index_(index), before_(doc->scene().materials.at(size_t(index))),
+      after_(std::move(after)), mergeKey_(mergeKey) {}
+
+void EditMaterialCommand::redo() { doc_->setMaterial(index_, after_); }
+void EditMaterialCommand::undo() { doc_->setMaterial(index_, before_); }
+
+bool EditMaterialCommand::mergeWith(const QUndoCommand* other) {
+    const auto* o = static_cast<const EditMaterialCommand*>(other);
+    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_ || o->index_ != index_) return false;
+    after_ = o->after_;
+    return true;
+}
+
+Material withMaterialType(const Material& m, MaterialType type) {
+    if (m.type == type) return m;
+    // The colour the material shows most, to seed the new type's colour.
+    Rgbd colour(0.8, 0.8, 0.8);
+    switch (m.type) {
+    case MaterialType::Diffuse:
+    case MaterialType::Glossy: colour = m.albedo; break;
+    case MaterialType::Mirror: colour = m.reflectance; break;
+    case MaterialType::Dielectric: break;
+    case MaterialType::Emitter: {
+        const double peak = std::max({m.radiance.x, m.radiance.y, m.radiance.z});
+        if (peak > 0) colour = m.radiance / peak;
+        break;
+    }
+    }
+    Material out;
+    out.name = m.name;
+    out.type = type;
+    switch (type) {
+    case MaterialType::Diffuse: out.albedo = colour; break;
+    case MaterialType::Glossy:
+        out.albedo = colour * 0.5;
+        out.specular = Rgbd(0.5, 0.5, 0.5);
+        out.roughness = 0.2;
+        break;
+    case MaterialType::Mirror: out.reflectance = colour; break;
+    case MaterialType::Dielectric: out.ior = 1.5; break;
+    case MaterialType::Emitter: out.radiance = colour * 10.0; break;
+    }
+    return out;
+}
+
+QString materialTypeName(MaterialType type) {
+    switch (type) {
+    case MaterialType::Diffuse: return QObject::tr("diffuse");
+    case MaterialType::Glossy: return QObject::tr("glossy");
+    case MaterialType::Mirror: return QObject::tr("mirror");
+    case MaterialType::Dielectric: return QObject::tr("dielectric");
+    case MaterialType::Emitter: return QObject::tr("emitter");
+    }
+    return {};
+}
+
+}  // namespace lucerna

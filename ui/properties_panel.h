@@ -1,0 +1,40 @@
+#pragma once
+// The properties dock: the panel of what the outliner selects. A light shows the light panel; an
+// object shows the object panel above its material's panel; a material shows the material panel.
+
+#include "core/document.h"
+#include "ui/outliner.h"
+
+#include <QStackedWidget>
+
+class QFrame;
+
+namespace lucerna {
+
+class LightProperties;
+class MaterialProperties;
+class ObjectProperties;
+
+class PropertiesPanel : public QStackedWidget {
+    Q_OBJECT
+public:
+    // Takes `lights` as its first page.
+    PropertiesPanel(Document* doc, LightProperties* lights, QWidget* parent = nullptr);
+
+    void showSelection(const Outliner::Selection& selection);
+
+    MaterialProperties* materialProperties() const { return materials_; }
+    ObjectProperties* objectProperties() const { return objects_; }
+
+private:
+    void followObjectMaterial();
+
+    Document* doc_;
+    LightProperties* lights_;
+    QWidget* surfacePage_;
+    QFrame* separator_;
+    ObjectProperties* objects_;
+    MaterialProperties* materials_;
+};
+
+}  // namespace lucerna
