@@ -154,6 +154,33 @@ private slots:
         }
     }
 
+    // Area and delta lights together: the delta lights are summed exactly and left out of the
+    // light choice, so the area light's share must still come out whole (Lambert + I cos / r^2).
+    void areaAndDeltaLightsTogether_data() { pointLightIsExact_data(); }
+    void areaAndDeltaLightsTogether() {
+        QFETCH(int, method);
+        RectangleOverPlane s;
+        std::string json = s.json();
+        json.insert(json.size() - 1, R"(, "lights": [{"name": "bulb", "type": "point", "position": [0.3, 0.6, -0.2], "intensity": [0.5, 0.5, 0.5]}])");
+        const SceneSnapshot scene = sceneFromJson(json);
+        CalculationGrid g;
+        g.corner = V3d(-1, 0, 1);
+        g.edgeU = V3d(2, 0, 0);
+        g.edgeV = V3d(0, 0, -2);
+        g.spacingMeters = 0.5;
+        const GridLayout layout = layoutGrid(g, 1.0);
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        QVERIFY(r.converged);
+        for (size_t i = 0; i < layout.points.size(); ++i) {
+            const V3d d = V3d(0.3, 0.6, -0.2) - layout.points[i];  // below the emitter: nothing between
+            const double point = 0.5 * (d.y / d.length()) / d.length2();
+            const double expected =
+                683.0 * (s.radiance * lambertPolygonIrradiance(layout.points[i], V3d(0, 1, 0), s.emitter()) + point);
+            QVERIFY2(std::abs(r.lux[i] - expected) <= 2 * r.errorLux[i],
+                     qPrintable(QString("point %1: %2 +- %3 lx, expected %4").arg(i).arg(r.lux[i]).arg(r.errorLux[i]).arg(expected)));
+        }
+    }
+
     // The centre of a closed sphere with an emitting cap, facing away from the cap: only the
     // shell is seen, whose radiance is uniform, so E = pi L_shell: all of it is indirect light,
     // the VPLs' part for the ir estimator.

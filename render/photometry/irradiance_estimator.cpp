@@ -37,22 +37,35 @@ VplReceiver IrradianceEstimator::receiver(const IrradianceSensor& sensor) const 
     return r;
 }
 
+Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r) const {
+    const Frame frame(r.x.ng);
+    Rgb Lo(0, 0, 0);
+    for (size_t i = 0; i < scene_.lights().deltaLights().size(); ++i) {
+        LightSample ls;
+        if (!scene_.lights().sampleDeltaLight(i, r.x, ls)) continue;
+        const float cosTheta = frame.toLocal(ls.wi).z;
+        if (cosTheta <= 0.0f || scene_.occluded(ls.shadowRay)) continue;
+        Lo += white_.albedo * ls.value * float(cosTheta / std::numbers::pi);
+    }
+    return Lo;
+}
+
 Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) const {
     const VplReceiver r = receiver(sensor);
     const Frame frame(sensor.normal);
     const V3f woLocal(0, 0, 1);
-    Rgb Lo(0, 0, 0);
+    Rgb Lo = deltaLightsReflected(r);
 
+    // Area lights by next-event estimation; a delta light chosen here is already in Lo, so that
+    // sample counts for nothing (the area lights' own terms keep their weights: unbiased).
     LightSample ls;
     const V2f uLight = rng.next2D();
     const float uSelect = rng.next1D();
-    if (scene_.lights().sample(r.x, uLight, uSelect, ls)) {
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls) && !ls.isDelta) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(white_, woLocal, wiLocal);
-        if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
-            const Rgb unweighted = f * ls.value * (std::abs(wiLocal.z) / ls.pdf);
-            Lo += ls.isDelta ? unweighted : unweighted * powerHeuristic(ls.pdf, bsdfPdf(white_, woLocal, wiLocal));
-        }
+        if (!isBlack(f) && !scene_.occluded(ls.shadowRay))
+            Lo += f * ls.value * (std::abs(wiLocal.z) / ls.pdf) * powerHeuristic(ls.pdf, bsdfPdf(white_, woLocal, wiLocal));
     }
 
     BsdfSample bs;
@@ -67,7 +80,9 @@ Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) co
 }
 
 Rgb IrradianceEstimator::sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const {
-    return gatherer_.reflected(receiver(sensor), rng, vpls) * float(std::numbers::pi);
+    const VplReceiver r = receiver(sensor);
+    const Rgb Lo = deltaLightsReflected(r) + gatherer_.reflected(r, rng, vpls, {}, /*withoutDeltaLights=*/true);
+    return Lo * float(std::numbers::pi);
 }
 
 }  // namespace lucerna

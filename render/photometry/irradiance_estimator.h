@@ -12,6 +12,9 @@
 //   - Vpl: the same direct light, plus the indirect light gathered from a VPL set with the clamp
 //     and its path-traced residual (the ir backend's estimator; vpl_gatherer.h).
 // Both are unbiased for any point: on a surface (the floor) or in free space (a work plane).
+// Both sum the direct light of every delta light exactly (one shadow ray each) rather than
+// choosing one light at random: in a room lit by a few spots, the choice is most of the variance
+// of a point's illuminance.
 
 #include "render/progressive/ir/vpl_gatherer.h"
 #include "render/progressive/path/path_tracer.h"
@@ -40,6 +43,8 @@ public:
 
 private:
     VplReceiver receiver(const IrradianceSensor& sensor) const;
+    // Radiance the white surface reflects toward its normal from all delta lights together.
+    Rgb deltaLightsReflected(const VplReceiver& r) const;
 
     const RenderScene& scene_;
     ShadingMaterial white_;

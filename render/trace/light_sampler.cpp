@@ -104,6 +104,12 @@ bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, 
     return sampleDelta(deltas_[index - emitters_.size()], selectPdf, ref, out);
 }
 
+bool LightSampler::sampleDeltaLight(size_t index, const SurfacePoint& ref, LightSample& out) const {
+    if (index >= deltas_.size()) return false;
+    out.light = uint32_t(emitters_.size() + index);
+    return sampleDelta(deltas_[index], 1.0f, ref, out);
+}
+
 bool LightSampler::sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
                                  LightSample& out) const {
     const V2f b = squareToUniformTriangle(u);

@@ -91,6 +91,10 @@ public:
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
     // (back of an emitter, outside a spot's cone, zero power).
     bool sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const;
+    // The sample of delta light deltaLights()[index] for `ref`, as sample() gives it but with
+    // selection probability 1: estimators that sum every delta light exactly (calculation grids)
+    // instead of choosing one. False when the light cannot reach ref.
+    bool sampleDeltaLight(size_t index, const SurfacePoint& ref, LightSample& out) const;
 
     // Chooses a light in proportion to power and a particle leaving it: area lights by uniform
     // position and cosine direction, point lights uniformly over the sphere, spots uniformly over

@@ -46,7 +46,7 @@ VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& setting
 
 // Direct light at x1 by next-event estimation and one BSDF sample (power heuristic); the same
 // BSDF sample estimates the residual of the clamp and the light arriving through specular surfaces.
-Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng) const {
+Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const {
     const ShadingMaterial& mat = *r.material;
     const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
     const V3f woLocal = frame.toLocal(r.wo);
@@ -56,7 +56,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng) const {
     LightSample ls;
     const V2f uLight = rng.next2D();
     const float uSelect = rng.next1D();
-    if (scene_.lights().sample(r.x, uLight, uSelect, ls)) {
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls) && !(withoutDeltaLights && ls.isDelta)) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(mat, woLocal, wiLocal);
         if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
@@ -106,8 +106,9 @@ Rgb VplGatherer::radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, s
     return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
 }
 
-Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
-    Rgb L = directAndResidual(r, rng);
+Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale,
+                           bool withoutDeltaLights) const {
+    Rgb L = directAndResidual(r, rng, withoutDeltaLights);
     if (!vpls.empty()) L += gatherVpls(scene_, vpls, scale, r, maxG_);
     return L;
 }

@@ -45,15 +45,18 @@ public:
     Rgb radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
 
     // Radiance leaving the receiver toward r.wo by reflection (its emission not included): direct
-    // light, the clamp residual and the VPL term, as radiance() computes at x1.
-    Rgb reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
+    // light, the clamp residual and the VPL term, as radiance() computes at x1. With
+    // withoutDeltaLights, the direct light of point, spot, directional lights and luminaires is
+    // left out (the caller adds it exactly); the rest stays unbiased.
+    Rgb reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
+                  bool withoutDeltaLights = false) const;
 
     // Adds to perVpl[i] the luminance that VPL i (clamped, visibility included) sends along the
     // camera ray: the image contribution of each VPL, for the Metropolis backend's normalisation.
     void addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const;
 
 private:
-    Rgb directAndResidual(const VplReceiver& r, Rng& rng) const;
+    Rgb directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const;
 
     const RenderScene& scene_;
     GatherSettings settings_;
