@@ -260,6 +260,14 @@ void TestEditingPanels::objectPanelMovesAndReassigns() {
         QCOMPARE(moved.worldMesh->vertices[k], original.worldMesh->vertices[k] + V3d(50, 0, 0));
     QVERIFY(previewOfCurrent(w));
 
+    // Arrow steps of one field are one undo step until its editing finishes.
+    for (int i = 0; i < 3; ++i) panel->translateFields()[2]->stepBy(1);
+    QCOMPARE(doc->undoStack()->count(), steps + 2);
+    QCOMPARE(doc->scene().objects[size_t(block)].transform->translate, V3d(50, 0, 3));
+    emit panel->translateFields()[2]->editingFinished();
+    w.findChild<QAction*>("actionUndo")->trigger();
+    QCOMPARE(doc->scene().objects[size_t(block)].transform->translate, V3d(50, 0, 0));
+
     // Rotate it a quarter turn about y: a vertex turns about the origin as SPEC.md says
     // (scale, rotate, then translate).
     typeInto(panel->angleField(), 90);

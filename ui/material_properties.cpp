@@ -67,6 +67,7 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
     luminance_ = new QLabel(fields_);
     luminance_->setObjectName("materialLuminance");
     luminanceRow_ = addPropertyRow(rows_, tr("Luminance"), {luminance_});
+    rows_->addStretch(1);  // rows packed at the top while hidden ones still count in the hint
 
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);

@@ -52,6 +52,7 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
     matrixNote_ = new QLabel(tr("The transform is a matrix in the scene file; edit it there."), fields_);
     matrixNote_->setWordWrap(true);
     rows_->addWidget(matrixNote_);
+    rows_->addStretch(1);  // rows packed at the top while hidden ones still count in the hint
     for (int i = 0; i < 3; ++i) {
         translate_[size_t(i)]->setObjectName(QStringLiteral("objectTranslate%1").arg(i));
         axis_[size_t(i)]->setObjectName(QStringLiteral("objectAxis%1").arg(i));
