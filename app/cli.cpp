@@ -8,6 +8,7 @@
 #include "core/task_system.h"
 #include "render/progressive/backend.h"
 #include "render/progressive/progressive_render.h"
+#include "render/photometry/illuminance_layer.h"
 #include "render/trace/surface_layers.h"
 #include "ui/display.h"
 
@@ -15,14 +16,11 @@
 
 #include <algorithm>
 #include <charconv>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
 #include <numbers>
 #include <optional>
-#include <thread>
-#include <unistd.h>
 
 namespace lucerna::cli {
 
@@ -33,6 +31,7 @@ struct RenderArgs {
     RenderSettings settings;
     int threads = 0;
     unsigned layers = 0;  // --layers: extra EXR layers (README), none by default
+    int illuminanceSpp = 16;  // estimates per pixel of the illuminance layer
 };
 
 RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
@@ -51,6 +50,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
         else if (a == "--threads") r.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--width") r.settings.width = parseNumber<int>(a, value(), 1, 16384);
         else if (a == "--height") r.settings.height = parseNumber<int>(a, value(), 1, 16384);
+        else if (a == "--illuminance-spp") r.illuminanceSpp = parseNumber<int>(a, value(), 1, 1 << 20);
         else if (a == "--layers") {
             std::string error;
             const auto bits = parseLayerList(value(), &error);
@@ -68,13 +68,6 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     if (r.scene.empty()) throw UsageError("render: no scene file given");
     if (r.output.empty()) throw UsageError("render: no output file given (-o OUT.exr)");
     return r;
-}
-
-std::string formatSeconds(double s) {
-    char buf[32];
-    if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);
-    else std::snprintf(buf, sizeof buf, "%d min %02d s", int(s) / 60, int(s) % 60);
-    return buf;
 }
 
 Scene loadOrThrow(const std::string& path, LoadReport* report) {
@@ -115,34 +108,27 @@ int renderImpl(const std::vector<std::string>& args) {
     catchInterrupts();
     TaskSystem tasks(r.threads);
     std::optional<RenderFrame> result;
+    std::vector<float> illuminance;
     auto job = tasks.submit([&](TaskContext& ctx) {
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
         RenderFrame frame = runProgressive(*backend, backendName, r.settings, ctx);
-        if (!ctx.isCancelled()) result = std::move(frame);
-    });
-
-    const bool tty = isatty(STDERR_FILENO);
-    const auto start = std::chrono::steady_clock::now();
-    while (!job->isFinished()) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        if (interrupted()) job->cancel();
-        if (tty) {
-            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            const double p = job->progress();
-            std::string left = p > 0.01 ? formatSeconds(t * (1.0 - p) / p) + " left" : "estimating";
-            std::fprintf(stderr, "\r%s: %5.1f%%  %s elapsed, %s   ", backendName.c_str(), 100.0 * p,
-                         formatSeconds(t).c_str(), left.c_str());
+        if (ctx.isCancelled()) return;
+        if (r.layers & kIlluminanceLayer) {
+            ctx.setProgress(0);
+            const RenderScene compiled(scene, frame.image.width, frame.image.height);
+            illuminance = traceIlluminanceLayer(compiled, r.illuminanceSpp, r.settings.seed, ctx);
+            if (ctx.isCancelled()) return;
         }
-    }
-    job->wait();
-    if (tty) std::fputs("\n", stderr);
-    job->rethrowIfFailed();
+        result = std::move(frame);
+    });
+    waitShowingProgress(*job, backendName);
     if (interrupted() || !result) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
-    if (r.layers) addSurfaceLayers(result->image, scene, r.layers);
+    if (r.layers & kAllLayers) addSurfaceLayers(result->image, scene, r.layers);
+    if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
     writeExr(r.output, result->image);
     std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
@@ -310,13 +296,17 @@ void printUsage() {
                  "  lucerna [SCENE.json]                      open the application\n"
                  "  lucerna render SCENE.json -o OUT.exr [--backend NAME] [--spp N | --time SECONDS]\n"
                  "                 [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
-                 "                 [--layers albedo,normal,depth]   extra EXR layers of the first visible surface\n"
+                 "                 [--layers albedo,normal,depth,illuminance] [--illuminance-spp N]\n"
+                 "                 extra EXR layers: the first visible surface, its illuminance in lux\n"
                  "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
                  "  lucerna info SCENE.json                   validate and print statistics\n"
                  "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"
                  "  lucerna bench SCENE.json --reference REF.exr --backends NAME[:k=v],... --time SECONDS\n"
                  "                [--out DIR] [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
                  "                error against time per backend: DIR/bench.csv and DIR/bench.svg\n"
+                 "  lucerna grid SCENE.json (--work-plane HEIGHT_M [--border M] | --corner X,Y,Z --u X,Y,Z --v X,Y,Z)\n"
+                 "               [--spacing M] [--method path|ir] [--error F] [--time SECONDS] [--csv OUT.csv]\n"
+                 "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
                  "backends: auto";
     for (const BackendInfo& b : backendTable()) std::cout << ", " << b.name;
     std::cout << "\n";

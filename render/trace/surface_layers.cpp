@@ -60,14 +60,15 @@ std::optional<unsigned> parseLayerList(const std::string& list, std::string* err
         if (name == "albedo") bits |= kAlbedoLayer;
         else if (name == "normal") bits |= kNormalLayer;
         else if (name == "depth") bits |= kDepthLayer;
+        else if (name == "illuminance") bits |= kIlluminanceLayer;
         else if (name == "all") bits |= kAllLayers;
         else {
-            if (error) *error = "unknown layer '" + name + "' (available: albedo, normal, depth, all)";
+            if (error) *error = "unknown layer '" + name + "' (available: albedo, normal, depth, illuminance, all)";
             return std::nullopt;
         }
     }
     if (bits == 0) {
-        if (error) *error = "no layer named in '" + list + "' (available: albedo, normal, depth, all)";
+        if (error) *error = "no layer named in '" + list + "' (available: albedo, normal, depth, illuminance, all)";
         return std::nullopt;
     }
     return bits;
