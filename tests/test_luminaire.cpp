@@ -188,6 +188,7 @@ private slots:
     void fluxOfClosedForms();
     void symmetryModesExpandAlike();
     void tiltIncludeScalesIntensity();
+    void iesVersionsReadAlike();
     void malformedFilesGiveOneLine();
     void sceneKeysRoundTrip();
     void emissionSamplingFollowsDistribution();
@@ -301,6 +302,33 @@ void TestLuminaire::tiltIncludeScalesIntensity() {
     QVERIFY(std::abs(straight / (4 * kPiD * 100) - 1) < 1e-9);
     QVERIFY(std::abs(tilted / straight - 0.5) < 1e-9);
     QVERIFY(std::abs(sideways / straight - 0.25) < 1e-9);
+}
+
+void TestLuminaire::iesVersionsReadAlike() {
+    // LM-63-2002, -2019 (new version line; the second numeric line's middle field is the file
+    // generation type), -1995 and a 1986-style file with free text before TILT and no version line.
+    const std::string base = iesText(steps(0, 90, 5), steps(0, 90, 15), kQuadrant);
+    std::vector<std::string> texts = {base, base, base, base};
+    texts[1].replace(0, 16, "IES:LM-63-2019");
+    texts[1].replace(texts[1].find("1.0 1.0 10"), 10, "1.0 1.00001 10");
+    texts[2].replace(0, 16, "IESNA:LM-63-1995");
+    texts[3].replace(0, texts[3].find("TILT"), "A DOWNLIGHT, 1986 STYLE\nNO KEYWORDS HERE\n");
+    const GoniometricDistribution first = parseIes(texts[0], "v2002.ies");
+    for (size_t k = 1; k < texts.size(); ++k) {
+        const GoniometricDistribution d = parseIes(texts[k], "v.ies");
+        QCOMPARE(d.cAngles, first.cAngles);
+        QCOMPARE(d.gammaAngles, first.gammaAngles);
+        QCOMPARE(d.candela, first.candela);
+    }
+    std::string tiltFile = base;
+    tiltFile.replace(tiltFile.find("TILT=NONE"), 9, "TILT=lamp.tlt");
+    try {
+        parseIes(tiltFile, "t.ies");
+        QFAIL("no error");
+    } catch (const LuminaireFileError& e) {
+        QCOMPARE(std::string(e.what()), std::string("t.ies: line 4: TILT=lamp.tlt: a separate tilt file is not supported "
+                                                    "(use TILT=INCLUDE or TILT=NONE)"));
+    }
 }
 
 void TestLuminaire::malformedFilesGiveOneLine() {
