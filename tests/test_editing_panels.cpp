@@ -7,6 +7,7 @@
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
 #include "ui/colour_edit.h"
+#include "ui/commands/material_commands.h"
 #include "ui/converging_render.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
@@ -181,6 +182,18 @@ void TestEditingPanels::materialPanelEditsTheMaterial() {
     const Rgbd wallRestored = redWallMean(restored->image);
     QVERIFY2(std::abs(wallRestored.y / wallRestored.x - ratioBefore) < 0.1 * ratioBefore + 1e-3,
              qPrintable(QString("G/R %1, restored %2").arg(ratioBefore).arg(wallRestored.y / wallRestored.x)));
+
+    // A value with more digits than a field shows survives an edit of another channel.
+    {
+        Material precise = original;
+        precise.albedo = Rgbd(0.63, 0.0654321, 0.05);
+        doc->undoStack()->push(new EditMaterialCommand(doc, red, precise, 0, "precise"));
+        typeInto(panel->albedoField()->channel(2), 0.1);
+        QCOMPARE(doc->scene().materials[size_t(red)].albedo, Rgbd(0.63, 0.0654321, 0.1));
+        w.findChild<QAction*>("actionUndo")->trigger();
+        w.findChild<QAction*>("actionUndo")->trigger();
+        QCOMPARE(doc->scene().materials[size_t(red)], original);
+    }
 
     // The colour picker sets all three channels at once: one step.
     const int beforePick = doc->undoStack()->index();
@@ -379,14 +392,23 @@ void TestEditingPanels::importMesh() {
              qPrintable(QString("changed inside %1 of %2, outside %3 of %4").arg(inside).arg(box).arg(outside).arg(rest)));
     screenshot(w, "editing_panels_import.png");
 
+    // Move it through its panel (the file's mesh is read once for the steps of an edit): the
+    // world mesh is the one the loader makes of the saved transform.
+    ObjectProperties* panel = w.propertiesPanel()->objectProperties();
+    const double x = panel->translateFields()[0]->value();
+    typeInto(panel->translateFields()[0], x + 40);
+    for (int i = 0; i < 3; ++i) panel->translateFields()[2]->stepBy(-10);
+    const Object movedSphere = doc->scene().objects.back();
+    QCOMPARE(movedSphere.worldMesh->vertices[0], sphere.worldMesh->vertices[0] + V3d(40, 0, -30));
+
     // Save As to another folder: the relative mesh path is rebased and still resolves.
     QVERIFY(QDir(dir_.path()).mkpath("elsewhere/deeper"));
     const QString moved = dir_.filePath("elsewhere/deeper/moved.json");
     QVERIFY2(w.saveFileAs(moved), qPrintable(w.lastError()));
     const Scene reloaded = loadScene(moved.toStdString());
     QCOMPARE(reloaded.objects.size(), objects + 1);
-    QVERIFY(*reloaded.objects.back().worldMesh == *sphere.worldMesh);
-    QCOMPARE(doc->scene().objects.back().worldMesh->vertices, sphere.worldMesh->vertices);
+    QVERIFY(*reloaded.objects.back().worldMesh == *movedSphere.worldMesh);
+    QCOMPARE(doc->scene().objects.back().worldMesh->vertices, movedSphere.worldMesh->vertices);
 
     // Undo of the import (reopen to the original first: Save As to another folder reloads).
     QVERIFY(w.openFile(scenePath));

@@ -147,19 +147,19 @@ void MaterialProperties::applyFields(const void* source) {
     if (index_ < 0 || index_ >= int(scene.materials.size())) return;
     Material m = scene.materials[size_t(index_)];
     QString what;
-    // Only the fields of the material's type: the others stay at their defaults (the file
-    // writes only these).
-    switch (m.type) {
-    case MaterialType::Diffuse: m.albedo = albedo_->value(); break;
-    case MaterialType::Glossy:
-        m.albedo = albedo_->value();
-        m.specular = specular_->value();
-        m.roughness = roughness_->value();
-        break;
-    case MaterialType::Mirror: m.reflectance = reflectance_->value(); break;
-    case MaterialType::Dielectric: m.ior = ior_->value(); break;
-    case MaterialType::Emitter: m.radiance = radiance_->value(); break;
-    }
+    // Only the field that changed: the others show values rounded to their decimals, which must
+    // not be written back.
+    const auto take = [source](const ColourEdit* edit, Rgbd& value) {
+        if (source == edit->swatch()) value = edit->value();
+        for (int c = 0; c < 3; ++c)
+            if (source == edit->channel(c)) value[c] = edit->channel(c)->value();
+    };
+    take(albedo_, m.albedo);
+    take(specular_, m.specular);
+    take(reflectance_, m.reflectance);
+    take(radiance_, m.radiance);
+    if (source == roughnessSlider_ || source == roughness_) m.roughness = roughness_->value();
+    if (source == ior_) m.ior = ior_->value();
     if (source == roughnessSlider_ || source == roughness_) what = tr("Change roughness of %1");
     else if (source == ior_) what = tr("Change index of refraction of %1");
     else if (m.type == MaterialType::Emitter) what = tr("Change radiance of %1");

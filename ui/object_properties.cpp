@@ -1,9 +1,11 @@
 #include "ui/object_properties.h"
 
+#include "core/mesh_file.h"
 #include "ui/commands/object_commands.h"
 #include "ui/scene_geometry.h"
 
 #include <QComboBox>
+#include <QDir>
 #include <QDoubleSpinBox>
 #include <QFileInfo>
 #include <QLabel>
@@ -144,11 +146,16 @@ void ObjectProperties::applyTransform(const void* source) {
     Object o = scene.objects[size_t(index_)];
     Transform t = o.transform.value_or(Transform{});
     if (t.isMatrix) return;
-    V3d translate, axis, scale;
+    // Only the field that changed: the others show rounded values, which must not be written back.
+    V3d translate = t.translate, axis = t.rotateAxis, scale = t.scale;
+    bool scaled = false;
     for (int i = 0; i < 3; ++i) {
-        translate[i] = translate_[size_t(i)]->value();
-        axis[i] = axis_[size_t(i)]->value();
-        scale[i] = scale_[size_t(i)]->value();
+        if (source == translate_[size_t(i)]) translate[i] = translate_[size_t(i)]->value();
+        if (source == axis_[size_t(i)]) axis[i] = axis_[size_t(i)]->value();
+        if (source == scale_[size_t(i)]) {
+            scale[i] = scale_[size_t(i)]->value();
+            scaled = true;
+        }
     }
     // SPEC.md: a non-zero rotation axis and scale. Refuse the edit and show the object as it is.
     if (axis == V3d(0, 0, 0) || scale.x == 0 || scale.y == 0 || scale.z == 0) {
@@ -157,15 +164,15 @@ void ObjectProperties::applyTransform(const void* source) {
     }
     t.translate = translate;
     t.scale = scale;
-    t.uniformScale = scale.x == scale.y && scale.y == scale.z;
-    t.hasRotate = t.hasRotate || angle_->value() != 0 || axis != t.rotateAxis;
+    if (scaled) t.uniformScale = scale.x == scale.y && scale.y == scale.z;
+    if (source == angle_) t.rotateDeg = angle_->value();
+    t.hasRotate = t.hasRotate || t.rotateDeg != 0 || axis != t.rotateAxis;
     t.rotateAxis = axis;
-    t.rotateDeg = angle_->value();
     if (o.transform && *o.transform == t) return;
     if (!o.transform && t == Transform{}) return;
     o.transform = t;
     try {
-        o = resolvedObject(scene, std::move(o));
+        o = withWorldMesh(scene, std::move(o));
     } catch (const std::exception&) {
         refresh();  // e.g. vertices beyond single precision: the edit is refused
         return;
@@ -176,6 +183,23 @@ void ObjectProperties::applyTransform(const void* source) {
                                                                                             : tr("Move %1");
     const QString text = what.arg(QString::fromStdString(o.name));
     doc_->undoStack()->push(new EditObjectCommand(doc_, index_, std::move(o), merge_.keyFor(source), text));
+}
+
+Object ObjectProperties::withWorldMesh(const Scene& scene, Object o) {
+    if (o.mesh.kind != MeshSource::Kind::File) return resolvedObject(scene, std::move(o));
+    const std::string path =
+        QDir(QString::fromStdString(scene.baseDir)).absoluteFilePath(QString::fromStdString(o.mesh.file)).toStdString();
+    if (path != cachedPath_ || !cachedMesh_) {
+        cachedMesh_ = std::make_shared<const TriangleMesh>(readMeshFile(path));
+        cachedPath_ = path;
+    }
+    // The loader's own transform and checks, on the mesh as read, given inline.
+    Object local = o;
+    local.mesh.kind = MeshSource::Kind::Inline;
+    local.mesh.inlineMesh = *cachedMesh_;
+    local.mesh.file.clear();
+    o.worldMesh = resolvedObject(scene, std::move(local)).worldMesh;
+    return o;
 }
 
 void ObjectProperties::rename() {

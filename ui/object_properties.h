@@ -12,6 +12,8 @@
 #include <QWidget>
 
 #include <array>
+#include <memory>
+#include <string>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -48,6 +50,9 @@ private:
     void applyTransform(const void* source);
     void rename();
     void assignMaterial();
+    // `o` with its world mesh for its new transform. A mesh file is read once and kept while the
+    // object is edited, so that the steps of a drag do not parse it again.
+    Object withWorldMesh(const Scene& scene, Object o);
 
     Document* doc_;
     int index_ = -1;
@@ -60,6 +65,8 @@ private:
     std::array<QDoubleSpinBox*, 3> translate_{}, axis_{}, scale_{};
     QDoubleSpinBox* angle_;
     MergeTracker merge_;
+    std::string cachedPath_;  // absolute path of the mesh file in cachedMesh_
+    std::shared_ptr<const TriangleMesh> cachedMesh_;
 };
 
 }  // namespace lucerna
