@@ -571,18 +571,22 @@ void TestLuminaire::infoComparesFluxes() {
     // One file whose stated flux is its integral, one that states 25% too much.
     writeFile(path("fair.ies"), iesText(steps(0, 180, 5), {0}, kIsotropic, 4 * kPiD * 100));
     writeFile(path("boast.ldt"), ldtText(1, 24, steps(0, 90, 2.5), kCosine, 1000 * kPiD * 100 / 800, 100));
+    writeFile(path("absolute.ies"), iesText(steps(0, 180, 5), {0}, kIsotropic, -1));  // absolute photometry
     writeFile(path("info.json"), R"({"lucerna": 1, "camera": {"position": [0,1,0], "target": [0,0,0], "up": [0,0,1],
         "fov_y": 60, "resolution": [8, 8]}, "materials": {}, "objects": [], "lights": [
         {"name": "fair", "type": "luminaire", "file": "fair.ies", "position": [0, 2, 0], "direction": [0, -1, 0]},
         {"name": "boast", "type": "luminaire", "file": "boast.ldt", "position": [0, 2, 0], "direction": [0, -1, 0],
-         "lumens": 500}]})");
+         "lumens": 500},
+        {"name": "absolute", "type": "luminaire", "file": "absolute.ies", "position": [0, 2, 0], "direction": [0, -1, 0]}]})");
     QProcess p;
     p.start(LUCERNA_BINARY, {"info", path("info.json")});
     QVERIFY(p.waitForFinished(30000));
     const QString out = QString::fromUtf8(p.readAllStandardOutput());
     qInfo("%s", qPrintable(out));
     QCOMPARE(p.exitCode(), 0);
-    QVERIFY(out.contains("lights: 2 (point 0, spot 0, directional 0, luminaire 2)"));
+    QVERIFY(out.contains("lights: 3 (point 0, spot 0, directional 0, luminaire 3)"));
+    QVERIFY(out.contains("absolute: luminaire, absolute.ies: file states no flux (absolute photometry), distribution "
+                         "integrates to 1256.64 lm"));
     QVERIFY(out.contains("fair: luminaire, fair.ies: file states 1256.64 lm, distribution integrates to 1256.64 lm, "
                          "max 100 cd; in the scene 1256.64 lm"));
     // The EULUMDAT file states lamp flux x LOR = 392.7 lm; its table integrates to 314.1 lm.

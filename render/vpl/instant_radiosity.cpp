@@ -1,5 +1,6 @@
 #include "render/vpl/instant_radiosity.h"
 
+#include "core/luminaire.h"
 #include "render/trace/rng.h"
 
 namespace lucerna {
@@ -22,8 +23,12 @@ std::vector<size_t> objectTriangleStarts(const Scene& scene) {
     return starts;
 }
 
-// As RenderScene decides which lights it keeps (a luminaire's intensity is its file's scale).
-bool lightIsBlack(const Light& l) { return isBlack(compileDeltaLight(l).intensity); }
+// As RenderScene decides which lights it keeps (compileDeltaLight's intensity; a luminaire's is
+// its file's scale, black until the file is loaded), without building a luminaire's tables.
+bool lightIsBlack(const Light& l) {
+    if (l.type == LightType::Luminaire) return isBlack(toFloat(luminaireRadiantScale(l)));
+    return isBlack(toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity));
+}
 
 // The scene's light sampler restricted to one source (see the header).
 LightSampler samplerForSource(const RenderScene& scene, const VplLightSource& source) {
