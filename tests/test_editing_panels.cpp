@@ -434,6 +434,14 @@ void TestEditingPanels::exportImagesWithLayers() {
     const auto frame = previewOfCurrent(w);
     QVERIFY(frame);
 
+    // The File menu offers the exports (their dialogs are modal; the test calls what they call).
+    for (const char* name : {"actionExportExr", "actionExportPreviewExr", "actionExportBothExr", "actionExportPng",
+                             "actionImportMesh"}) {
+        auto* action = w.findChild<QAction*>(name);
+        QVERIFY2(action && action->isEnabled(), name);
+    }
+    QCOMPARE(w.findChild<QAction*>("actionExportPng")->shortcut(), QKeySequence("Ctrl+Shift+E"));
+
     // The preview with its layers.
     const QString previewPath = dir_.filePath("preview.exr");
     QVERIFY2(w.exportPreviewExr(previewPath), qPrintable(w.lastError()));
