@@ -190,6 +190,10 @@ void TestViewportEditing::gizmoGeometry() {
     QCOMPARE(g->handleAt(*g->aimTip), GizmoHandle::Aim);
     QCOMPARE(g->handleAt(g->centre), GizmoHandle::None);
     QCOMPARE(g->handleAt(g->centre + QPointF(-40, -40)), GizmoHandle::None);
+    // The z arrow points straight away from this camera: a dot on the marker, never taken.
+    QCOMPARE_LT(std::hypot(g->axisTips[2]->x() - g->centre.x(), g->axisTips[2]->y() - g->centre.y()), 1e-9);
+    for (const QPointF d : {QPointF(9, 0), QPointF(0, 9), QPointF(-9, 0)})
+        QVERIFY(g->handleAt(g->centre + d) != GizmoHandle::Z);
     Light sun;
     sun.type = LightType::Directional;
     QVERIFY(!LightGizmo::of(sun, view));
@@ -206,6 +210,12 @@ void TestViewportEditing::gizmoGeometry() {
     sun.direction = V3d(1, 1, 1);
     QCOMPARE(aimedLight(sun, hit)->direction, V3d(0, -1, 0));
     QVERIFY(!aimedLight(Light{}, hit));
+    // A luminaire has a position and a nadir: arrows and an aim handle, aimed like a spot.
+    Light luminaire = spot;
+    luminaire.type = LightType::Luminaire;
+    const auto lg = LightGizmo::of(luminaire, view);
+    QVERIFY(lg && lg->aimTip && lg->axisTips[0]);
+    QVERIFY(near(aimedLight(luminaire, hit)->direction, V3d(0, 0, -1), 1e-12));
 }
 
 void TestViewportEditing::pickerFollowsTheSpecCamera() {
@@ -245,6 +255,13 @@ void TestViewportEditing::pickerFollowsTheSpecCamera() {
         s.objects[1].worldMesh = mesh;
     });
     QVERIFY(!picker.sameGeometry(doc.scene()));
+
+    // A room in metres: a placed light stands a quarter metre off its surface.
+    const Scene room = loadScene(LUCERNA_RESOURCE_DIR "/scenes/interior.json");
+    const SurfacePicker roomPicker(room);
+    QCOMPARE_GT(roomPicker.diagonal(), 2.5);
+    QCOMPARE(placementOffset(room.metersPerUnit, roomPicker.diagonal()), 0.25);
+    QVERIFY(roomPicker.pick(room.camera, room.camera.width / 2.0, room.camera.height / 2.0));
 }
 
 void TestViewportEditing::placeAimMoveUndoSaveInTheWindow() {

@@ -59,7 +59,7 @@ std::optional<LightGizmo> LightGizmo::of(const Light& light, const ViewMapping& 
     g.axisLength = kAxisPixels * perPixel;
     const std::array<V3d, 3> axes{V3d(1, 0, 0), V3d(0, 1, 0), V3d(0, 0, 1)};
     for (size_t i = 0; i < 3; ++i) g.axisTips[i] = view.toWidget(light.position + axes[i] * g.axisLength);
-    if (light.type == LightType::Spot) {
+    if (light.type == LightType::Spot || light.type == LightType::Luminaire) {
         g.aimLength = kAimPixels * perPixel;
         g.aimTip = view.toWidget(light.position + light.direction.normalized() * g.aimLength);
     }
@@ -74,7 +74,9 @@ GizmoHandle LightGizmo::handleAt(const QPointF& widget) const {
     GizmoHandle best = GizmoHandle::None;
     double bestDistance = kGrabPixels;
     for (size_t i = 0; i < 3; ++i) {
-        if (!axisTips[i]) continue;
+        // An arrow that points at the viewer is a dot under the marker: nothing to drag along.
+        if (!axisTips[i] || std::hypot(axisTips[i]->x() - centre.x(), axisTips[i]->y() - centre.y()) < kGrabPixels + 4)
+            continue;
         const double d = distanceToSegment(widget, centre, *axisTips[i]);
         if (d <= bestDistance) bestDistance = d, best = GizmoHandle(int(GizmoHandle::X) + int(i));
     }

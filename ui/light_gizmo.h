@@ -1,7 +1,8 @@
 #pragma once
 // The geometry of the viewport's light gizmo, apart from any widget so that it can be tested:
 // where the camera's image lies in the widget (ViewMapping), where the selected light's handles
-// are drawn (three world-axis arrows, and for a spot an aim handle at the tip of its axis), which
+// are drawn (three world-axis arrows, and for a spot or luminaire an aim handle at the tip of its
+// axis), which
 // handle is under the mouse, and what a drag of a handle does to the light.
 
 #include "core/scene.h"
@@ -45,7 +46,7 @@ struct LightGizmo {
     QPointF centre;
     // Tips of the x, y and z arrows; nothing for an axis whose tip is behind the camera.
     std::array<std::optional<QPointF>, 3> axisTips;
-    std::optional<QPointF> aimTip;  // spots only
+    std::optional<QPointF> aimTip;  // spots and luminaires (their nadir)
     double axisLength = 0;          // world length of each arrow
     double aimLength = 0;           // world length of the aim handle
 
@@ -53,7 +54,8 @@ struct LightGizmo {
     // behind the camera.
     static std::optional<LightGizmo> of(const Light& light, const ViewMapping& view);
     // The handle within grabbing distance of a widget point (the aim tip first, then the
-    // arrow closest to the point); None elsewhere, the light's own marker included.
+    // arrow closest to the point); None elsewhere, the light's own marker included, and for
+    // arrows too short on screen to grab (pointing at the viewer).
     GizmoHandle handleAt(const QPointF& widget) const;
 };
 

@@ -21,7 +21,8 @@ std::optional<Light> aimedLight(const Light& light, const SurfaceHit& hit) {
     Light aimed = light;
     switch (light.type) {
     case LightType::Point: return std::nullopt;
-    case LightType::Spot: {
+    case LightType::Spot:
+    case LightType::Luminaire: {  // its direction is its nadir, aimed like a spot's axis
         const V3d d = hit.point - light.position;
         if (d.length() <= 1e-12 * std::max(1.0, light.position.length())) return std::nullopt;
         aimed.direction = d.normalized();

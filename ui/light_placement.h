@@ -2,7 +2,8 @@
 // Placing and aiming lights by clicking a surface (issue 6). A placed light stands off the
 // surface along its normal, on the side the user looked at it from; a placed spot aims along
 // that normal, into the room. Aiming turns a spot toward the clicked point, and makes a
-// directional light fall squarely on the clicked surface (it travels against the normal).
+// directional light fall squarely on the clicked surface (it travels against the normal). A
+// luminaire aims like a spot: its nadir at the clicked point.
 
 #include "core/scene.h"
 #include "render/trace/surface_pick.h"
@@ -20,8 +21,9 @@ double placementOffset(double metersPerUnit, double geometryDiagonal);
 // A new light of `type` (point or spot; the defaults of defaultLight()) placed at `hit`.
 Light placedLight(const Scene& scene, LightType type, const std::string& name, const SurfaceHit& hit, double offset);
 
-// The light aimed at `hit`: a spot points at the hit point, a directional light travels against
-// the surface's normal. Nothing for point lights and for a spot sitting on the point itself.
+// The light aimed at `hit`: a spot (or a luminaire's nadir) points at the hit point, a
+// directional light travels against the surface's normal. Nothing for point lights and for a
+// light sitting on the point itself.
 std::optional<Light> aimedLight(const Light& light, const SurfaceHit& hit);
 
 }  // namespace lucerna

@@ -88,7 +88,7 @@ bool Viewport::aimable(int light) const {
 bool Viewport::setTool(Tool tool) {
     const Tool requested = tool;
     if (tool == Tool::Aim && !aimable(selected_)) {
-        emit message(tr("Select a spot or directional light to aim."));
+        emit message(tr("Select a spot, luminaire or directional light to aim."));
         tool = Tool::Navigate;
     }
     const bool changed = tool != tool_;
@@ -160,8 +160,9 @@ void Viewport::paintOverlay(QPainter& painter) {
         const auto m = lightMarker(i);
         if (!m) continue;
         const Light& light = scene.lights[size_t(i)];
-        if (light.type == LightType::Spot && i != selected_) {
-            // The spot's axis, a tenth of the way to the target's distance (the selected one
+        const bool aimed = light.type == LightType::Spot || light.type == LightType::Luminaire;
+        if (aimed && i != selected_) {
+            // The spot's or luminaire's axis, a tenth of the way to the target's distance (the selected one
             // shows its aim handle instead).
             const double len = 0.1 * (scene.camera.target - scene.camera.position).length();
             if (const auto tip = view.toWidget(light.position + light.direction.normalized() * len)) {
@@ -444,7 +445,7 @@ void Viewport::placeAt(const QPointF& pos) {
 
 void Viewport::aimAt(const QPointF& pos) {
     if (!aimable(selected_)) {
-        emit message(tr("Select a spot or directional light to aim."));
+        emit message(tr("Select a spot, luminaire or directional light to aim."));
         return;
     }
     const auto hit = surfaceAt(pos);

@@ -2,11 +2,11 @@
 // The viewport: the live preview's newest frame, the lights drawn over it, and editing with the
 // mouse and keyboard.
 // - Left drag on a light moves it in the image plane at its depth; on an arrow of the selected
-//   light's gizmo, along that world axis; on a spot's aim handle, re-aims it. Left drag elsewhere
+//   light's gizmo, along that world axis; on a spot's (or luminaire's) aim handle, re-aims it. Left drag elsewhere
 //   orbits the camera about its target; right or middle drag pans; the wheel zooms.
 // - A left click (no drag) selects the light or the object under the mouse, or nothing.
-// - Tools: place a point or spot light on the next surface clicked; aim the selected spot (or
-//   directional light) at the next surface clicked, as Ctrl+click does. Escape cancels a tool.
+// - Tools: place a point or spot light on the next surface clicked; aim the selected spot,
+//   luminaire or directional light at the next surface clicked, as Ctrl+click does. Escape cancels a tool.
 // - W/S or Up/Down fly forward and back, A/D or Left/Right sideways, E/Q up and down (Shift:
 //   four times as far).
 // Each drag, and each run of held fly keys, is one undo command (its steps merge); while a
@@ -44,11 +44,11 @@ public:
     void setSelectedObject(int index);
     // Widget position of a light's marker (nothing for directional lights or off-screen ones).
     std::optional<QPointF> lightMarker(int index) const;
-    // The selected light's gizmo as drawn now (nothing without a selected point or spot light).
+    // The selected light's gizmo as drawn now (nothing without a selected light that has a position).
     std::optional<LightGizmo> gizmo() const;
 
     Tool tool() const { return tool_; }
-    // Aim needs a selected spot or directional light; returns false (and says why) without one.
+    // Aim needs a selected spot, luminaire or directional light; returns false (and says why) without one.
     bool setTool(Tool tool);
     // The checkable actions that choose the tools (for the window's menus and tool bar).
     QList<QAction*> toolActions() const;
