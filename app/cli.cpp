@@ -9,6 +9,7 @@
 #include "render/progressive/backend.h"
 #include "render/progressive/progressive_render.h"
 #include "render/photometry/illuminance_layer.h"
+#include "render/progressive/light_layers/layered_backend.h"
 #include "render/trace/surface_layers.h"
 #include "ui/display.h"
 
@@ -99,7 +100,8 @@ int renderImpl(const std::vector<std::string>& args) {
     }
     std::unique_ptr<ProgressiveBackend> backend;
     try {
-        backend = info->make(scene, r.settings);
+        backend = (r.layers & kLightLayers) ? makeLayeredBackend(info->make, scene, r.settings)
+                                            : info->make(scene, r.settings);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -296,8 +298,9 @@ void printUsage() {
                  "  lucerna [SCENE.json]                      open the application\n"
                  "  lucerna render SCENE.json -o OUT.exr [--backend NAME] [--spp N | --time SECONDS]\n"
                  "                 [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
-                 "                 [--layers albedo,normal,depth,illuminance] [--illuminance-spp N]\n"
-                 "                 extra EXR layers: the first visible surface, its illuminance in lux\n"
+                 "                 [--layers albedo,normal,depth,illuminance,lights] [--illuminance-spp N]\n"
+                 "                 extra EXR layers: the first visible surface, its illuminance in lux,\n"
+                 "                 one layer per light\n"
                  "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
                  "  lucerna info SCENE.json                   validate and print statistics\n"
                  "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"

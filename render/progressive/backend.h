@@ -37,6 +37,8 @@ public:
     virtual const Film& film() const = 0;
     // Figures for the EXR header and the convergence panel (name -> value).
     virtual std::map<std::string, std::string> diagnostics() const { return {}; }
+    // Adds named channels of the film's combined image to `image` (per-light layers), if any.
+    virtual void addImageLayers(Image& image) const { (void)image; }
 };
 
 using BackendFactory = std::unique_ptr<ProgressiveBackend> (*)(SceneSnapshot, const RenderSettings&);

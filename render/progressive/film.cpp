@@ -9,6 +9,22 @@ Film::Film(int width, int height) : width_(width), height_(height) {
     for (auto& s : sums_) s.assign(size_t(width) * height, {0.0, 0.0, 0.0});
 }
 
+Film Film::sum(std::span<const Film* const> films) {
+    if (films.empty()) return Film(0, 0);
+    Film out(films.front()->width_, films.front()->height_);
+    out.samples_ = films.front()->samples_;
+    for (int h = 0; h < 2; ++h) {
+        if (out.samples_[h] <= 0) continue;
+        for (const Film* f : films) {
+            if (f->samples_[h] <= 0) continue;
+            const double k = f->scale_[h] * out.samples_[h] / f->samples_[h];
+            for (size_t i = 0; i < out.sums_[h].size(); ++i)
+                for (int c = 0; c < 3; ++c) out.sums_[h][i][c] += k * f->sums_[h][i][c];
+        }
+    }
+    return out;
+}
+
 Image Film::image() const {
     Image img(width_, height_);
     const double n = samplesPerPixel();

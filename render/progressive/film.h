@@ -53,6 +53,12 @@ public:
     // carry the newest estimate too. 1 unless set.
     void setHalfScale(int half, double scale) { scale_[half] = scale; }
 
+    // A film whose halves are the sums of the films' halves, each normalised by its own sample
+    // count and half scale, with the first film's sample counts: the film of a scene from one
+    // film per light (rendering is linear in the lights). Films of one size; an empty list gives
+    // an empty 0 x 0 film.
+    static Film sum(std::span<const Film* const> films);
+
     // The combined estimate (mean of all samples).
     Image image() const;
     // One half's own estimate.

@@ -31,6 +31,7 @@ RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backend
         f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
         f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
         for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
+        backend.addImageLayers(f.image);
         return f;
     };
 

@@ -61,14 +61,15 @@ std::optional<unsigned> parseLayerList(const std::string& list, std::string* err
         else if (name == "normal") bits |= kNormalLayer;
         else if (name == "depth") bits |= kDepthLayer;
         else if (name == "illuminance") bits |= kIlluminanceLayer;
+        else if (name == "lights") bits |= kLightLayers;
         else if (name == "all") bits |= kAllLayers;
         else {
-            if (error) *error = "unknown layer '" + name + "' (available: albedo, normal, depth, illuminance, all)";
+            if (error) *error = "unknown layer '" + name + "' (available: albedo, normal, depth, illuminance, lights, all)";
             return std::nullopt;
         }
     }
     if (bits == 0) {
-        if (error) *error = "no layer named in '" + list + "' (available: albedo, normal, depth, illuminance, all)";
+        if (error) *error = "no layer named in '" + list + "' (available: albedo, normal, depth, illuminance, lights, all)";
         return std::nullopt;
     }
     return bits;

@@ -28,11 +28,14 @@ SurfaceLayers traceSurfaceLayers(const RenderScene& scene);
 // Which layers go into an image (bit flags). kAllLayers is the three surface layers; the
 // illuminance layer (render/photometry/illuminance_layer.h) is a Monte Carlo estimate that costs
 // as much as a render, so it is asked for by name only, and addSurfaceLayers ignores its bit.
+// The per-light layers (render/progressive/light_layers) are rendered by the backend itself.
 enum LayerBits : unsigned {
-    kAlbedoLayer = 1u, kNormalLayer = 2u, kDepthLayer = 4u, kAllLayers = 7u, kIlluminanceLayer = 8u
+    kAlbedoLayer = 1u, kNormalLayer = 2u, kDepthLayer = 4u, kAllLayers = 7u, kIlluminanceLayer = 8u,
+    kLightLayers = 16u
 };
 
-// "albedo,normal,depth,illuminance" (any non-empty subset, any order; "all" for the first three) to bits. Returns
+// "albedo,normal,depth,illuminance,lights" (any non-empty subset, any order; "all" for the first
+// three) to bits. Returns
 // nothing and sets *error to a one-line reason on an unknown or empty name.
 std::optional<unsigned> parseLayerList(const std::string& list, std::string* error);
 
