@@ -1,22 +1,17 @@
 #include "ui/converging_render.h"
 
 #include "render/progressive/backend.h"
+#include "render/progressive/light_layers/layered_backend.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <thread>
 
 namespace lucerna {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-std::string formatNumber(double v) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.9g", v);
-    return buf;
-}
 
 // Passes until cancelled, holding between passes while paused or while the gate is held. Render
 // time excludes the held time, so the error plot is against time actually spent rendering.
@@ -26,18 +21,7 @@ void runUntilCancelled(ProgressiveBackend& backend, const std::string& name, con
     double rendered = 0, lastPublish = -1;
     int passes = 0;
     const auto publish = [&] {
-        RenderFrame f;
-        f.image = backend.film().image();
-        f.seconds = rendered;
-        f.samplesPerPixel = backend.film().samplesPerPixel();
-        f.passes = passes;
-        f.estimatedRelmse = backend.film().estimatedRelmse();
-        f.image.attributes["lucerna:backend"] = name;
-        f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
-        f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
-        f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
-        for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
-        latest.publish(std::make_shared<const RenderFrame>(std::move(f)));
+        latest.publish(std::make_shared<const RenderFrame>(makeRenderFrame(backend, name, settings, rendered, passes)));
         lastPublish = rendered;
     };
     while (!ctx.isCancelled()) {
@@ -65,6 +49,18 @@ ConvergingRender::ConvergingRender(TaskSystem& tasks, const YieldGate& gate, QOb
 ConvergingRender::~ConvergingRender() { stop(); }
 
 void ConvergingRender::setScene(SceneSnapshot scene) {
+    // With per-light layers, an edit of the lights' emission only is a new mix of the layers.
+    if (lightLayers_ && isRunning() && rendered_ && scene) {
+        if (auto weights = layerWeights(*rendered_, *scene)) {
+            scene_ = std::move(scene);
+            weights_ = std::move(*weights);
+            if (frame_) {
+                frame_ = mixed(*frame_);
+                emit frameReady();
+            }
+            return;
+        }
+    }
     scene_ = std::move(scene);
     if (!isRunning()) return;
     // From now on frame() is only ever of the new scene: forget the old run's frames at once,
@@ -86,6 +82,19 @@ void ConvergingRender::setBackend(const std::string& name) {
     choice_ = name;
     if (isRunning()) relaunch();
     emit stateChanged();
+}
+
+void ConvergingRender::setLightLayers(bool on) {
+    if (on == lightLayers_) return;
+    lightLayers_ = on;
+    if (isRunning()) relaunch();
+    emit stateChanged();
+}
+
+std::shared_ptr<const RenderFrame> ConvergingRender::mixed(const RenderFrame& frame) const {
+    auto copy = std::make_shared<RenderFrame>(frame);
+    mixLightLayers(copy->image, groups_, weights_);
+    return copy;
 }
 
 void ConvergingRender::start() {
@@ -137,11 +146,14 @@ void ConvergingRender::relaunch() {
         return;
     }
     latest_ = std::make_shared<Latest<RenderFrame>>();
+    rendered_ = scene_;
+    groups_ = lightGroups(*scene_);
+    weights_.assign(groups_.size(), Rgb(1, 1, 1));
     RenderSettings settings;
     settings.seed = 1;
-    job_ = tasks_.submit([scene = scene_, settings, name = inUse_, make = info->make, latest = latest_,
-                          paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
-        auto backend = make(scene, settings);
+    job_ = tasks_.submit([scene = scene_, settings, name = inUse_, make = info->make, layered = lightLayers_,
+                          latest = latest_, paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
+        auto backend = layered ? makeLayeredBackend(make, scene, settings) : make(scene, settings);
         backend->prepare(ctx);
         runUntilCancelled(*backend, name, settings, ctx, *latest, *paused, *gate);
     });
@@ -164,6 +176,8 @@ void ConvergingRender::poll() {
     shownVersion_ = latest_->version();
     frame_ = latest_->get();
     if (!frame_) return;
+    if (lightLayers_ && std::any_of(weights_.begin(), weights_.end(), [](const Rgb& w) { return w != Rgb(1, 1, 1); }))
+        frame_ = mixed(*frame_);
     if (std::isfinite(frame_->estimatedRelmse) && frame_->estimatedRelmse > 0)
         history_.emplace_back(frame_->seconds, frame_->estimatedRelmse);
     emit frameReady();

@@ -7,6 +7,7 @@
 
 #include "core/scene.h"
 #include "core/task_system.h"
+#include "render/progressive/light_layers/light_groups.h"
 #include "render/progressive/progressive_render.h"
 #include "ui/yield_gate.h"
 
@@ -37,6 +38,12 @@ public:
     const std::string& backendInUse() const { return inUse_; }
     const std::string& autoReason() const { return reason_; }
 
+    // Per-light layers (render/progressive/light_layers): the backend renders one layer per
+    // light, and an edit that changes only the lights' emission (dimming, switching off,
+    // recolouring) re-mixes the layers at once instead of restarting. Restarts when running.
+    void setLightLayers(bool on);
+    bool lightLayers() const { return lightLayers_; }
+
     void start();    // starts (or resumes when paused)
     void setPaused(bool paused);
     void restart();  // discards the film and starts over, unpaused
@@ -48,7 +55,7 @@ public:
     std::shared_ptr<const RenderFrame> frame() const { return frame_; }
     // (seconds, estimated relmse) of every frame of this run.
     const std::vector<QPointF>& history() const { return history_; }
-    // The scene of the current run.
+    // The scene of the current run (with per-light layers, the newest emission mixed into it).
     SceneSnapshot scene() const { return scene_; }
     QString error() const { return error_; }
 
@@ -59,11 +66,16 @@ signals:
 private:
     void poll();
     void relaunch();  // a new job for the current scene and backend; the pause state stays
+    std::shared_ptr<const RenderFrame> mixed(const RenderFrame& frame) const;  // layers weighted
 
     bool restartPending_ = false;
     TaskSystem& tasks_;
     YieldGate gate_;
     SceneSnapshot scene_;
+    bool lightLayers_ = false;
+    SceneSnapshot rendered_;           // the scene the job renders (scene_ may differ in emission)
+    std::vector<LightGroup> groups_;   // its light groups, and each one's weight in the mix
+    std::vector<Rgb> weights_;
     std::string choice_ = "auto", inUse_, reason_;
     std::shared_ptr<std::atomic<bool>> paused_ = std::make_shared<std::atomic<bool>>(false);
     std::shared_ptr<Latest<RenderFrame>> latest_;

@@ -6,6 +6,7 @@
 #include "ui/error_plot.h"
 #include "ui/image_view.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -33,6 +34,10 @@ RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(pa
     for (const BackendInfo& b : backendTable())
         backend_->addItem(QString::fromUtf8(b.name.data(), int(b.name.size())),
                           QString::fromUtf8(b.name.data(), int(b.name.size())));
+    lightLayers_ = new QCheckBox(tr("Per-light layers"), this);
+    lightLayers_->setObjectName("renderLightLayers");
+    lightLayers_->setToolTip(tr("Render one layer per light: dimming, switching off or recolouring a light then "
+                                "updates this image at once, without restarting (each pass costs one pass per light)."));
     reason_ = new QLabel(this);
     reason_->setObjectName("renderReason");
     reason_->setWordWrap(true);
@@ -45,6 +50,7 @@ RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(pa
     buttons->addWidget(pause_);
     buttons->addWidget(restart_);
     buttons->addWidget(backend_, 1);
+    buttons->addWidget(lightLayers_);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(view_, 1);
     layout->addLayout(buttons);
@@ -57,6 +63,7 @@ RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(pa
     connect(restart_, &QPushButton::clicked, render_, &ConvergingRender::restart);
     connect(backend_, &QComboBox::currentIndexChanged, this,
             [this] { render_->setBackend(backend_->currentData().toString().toStdString()); });
+    connect(lightLayers_, &QCheckBox::toggled, render_, &ConvergingRender::setLightLayers);
     connect(render_, &ConvergingRender::frameReady, this, &RenderPanel::showFrame);
     connect(render_, &ConvergingRender::stateChanged, this, &RenderPanel::showState);
     showState();

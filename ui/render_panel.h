@@ -9,6 +9,7 @@
 
 #include <QWidget>
 
+class QCheckBox;
 class QComboBox;
 class QLabel;
 class QPushButton;
@@ -36,6 +37,7 @@ private:
     ImageView* view_;
     QPushButton *start_, *pause_, *restart_;
     QComboBox* backend_;
+    QCheckBox* lightLayers_;
     QLabel *reason_, *figures_;
     ErrorPlot* plot_;
     DisplaySettings display_;

@@ -11,6 +11,23 @@ std::string formatNumber(double v, int significantDigits) {
     return buf;
 }
 
+RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view backendName,
+                            const RenderSettings& settings, double seconds, int passes) {
+    RenderFrame f;
+    f.image = backend.film().image();
+    f.seconds = seconds;
+    f.samplesPerPixel = backend.film().samplesPerPixel();
+    f.passes = passes;
+    f.estimatedRelmse = backend.film().estimatedRelmse();
+    f.image.attributes["lucerna:backend"] = std::string(backendName);
+    f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
+    f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
+    f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
+    for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
+    backend.addImageLayers(f.image);
+    return f;
+}
+
 RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
                            TaskContext& ctx, Latest<RenderFrame>* latest, double publishSeconds) {
     using Clock = std::chrono::steady_clock;
@@ -19,21 +36,7 @@ RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backend
     const auto start = Clock::now();
     const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count(); };
 
-    const auto makeFrame = [&](int passes) {
-        RenderFrame f;
-        f.image = backend.film().image();
-        f.seconds = elapsed();
-        f.samplesPerPixel = backend.film().samplesPerPixel();
-        f.passes = passes;
-        f.estimatedRelmse = backend.film().estimatedRelmse();
-        f.image.attributes["lucerna:backend"] = std::string(backendName);
-        f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
-        f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
-        f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
-        for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
-        backend.addImageLayers(f.image);
-        return f;
-    };
+    const auto makeFrame = [&](int passes) { return makeRenderFrame(backend, backendName, settings, elapsed(), passes); };
 
     int passes = 0;
     double lastPublish = 0;

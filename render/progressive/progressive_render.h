@@ -18,6 +18,11 @@ struct RenderFrame {
 // A number for an EXR header attribute or a diagnostic: %g with the given significant digits.
 std::string formatNumber(double v, int significantDigits = 9);
 
+// The frame of a backend's film now: the combined image with SPEC.md's header attributes, the
+// backend's diagnostics and its image layers (per-light layers).
+RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view backendName,
+                            const RenderSettings& settings, double seconds, int passes);
+
 // Runs passes of a prepared backend. With neither spp nor seconds set, 64 passes (SPEC.md).
 // Publishes a frame to `latest` (if given) at most every publishSeconds and at the end; sets the
 // context's progress. Returns the final frame (complete passes only).
