@@ -231,6 +231,9 @@ void TestCli::benchWritesCsvAndPlot() {
         for (size_t i = 0; i < v.size(); ++i) {
             bool parsed = false;
             v[i] = f.at(qsizetype(i) + 1).toDouble(&parsed);
+            // The film's own estimate needs both halves: "nan" before a second pass (a loaded
+            // machine may reach the first sample time that early).
+            if (i == 4 && f.at(5) == "nan" && v[1] < 2) continue;
             QVERIFY2(parsed && std::isfinite(v[i]) && v[i] >= 0, qPrintable(line));
         }
         curves[f[0]].append({v[0], v[1], v[3]});
