@@ -346,6 +346,8 @@ void TestViewportEditing::placeAimMoveUndoSaveInTheWindow() {
     const V3d aimHit = hitOnPlaneY(vp, cam, aimAt, 0.0);
     trigger(w, "actionAimLight");
     QCOMPARE(vp->tool(), Viewport::Tool::Aim);
+    sendMouse(vp, QEvent::MouseMove, aimAt, Qt::NoButton, Qt::NoButton);
+    screenshot(*vp, "viewport_aim_mode.png");
     click(vp, aimAt);
     QVERIFY2(near(doc->scene().lights[1].direction, (aimHit - spot.position).normalized(), 1e-9),
              qPrintable(str(doc->scene().lights[1].direction)));

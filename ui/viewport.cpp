@@ -114,7 +114,7 @@ std::optional<SurfaceHit> Viewport::surfaceAt(const QPointF& widget) const {
             picker_ = std::make_unique<SurfacePicker>(scene);
             pickerFailed_ = false;
         } catch (const std::exception&) {
-            pickerFailed_ = true;  // reported by the caller as "nothing there"
+            pickerFailed_ = true;  // placeAt() says so in the status bar
             return std::nullopt;
         }
     }
