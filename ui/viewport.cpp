@@ -480,6 +480,11 @@ void Viewport::keyPressEvent(QKeyEvent* event) {
         emit message(tr("Cancelled"));
         return;
     }
+    // Keys with Ctrl, Alt or Meta belong to shortcuts, not to flying.
+    if (event->modifiers() & (Qt::ControlModifier | Qt::AltModifier | Qt::MetaModifier)) {
+        ImageView::keyPressEvent(event);
+        return;
+    }
     // right, up, forward
     double r = 0, u = 0, f = 0;
     switch (event->key()) {
