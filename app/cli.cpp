@@ -310,6 +310,8 @@ void printUsage() {
                  "  lucerna grid SCENE.json (--work-plane HEIGHT_M [--border M] | --corner X,Y,Z --u X,Y,Z --v X,Y,Z)\n"
                  "               [--spacing M] [--method path|ir] [--error F] [--time SECONDS] [--csv OUT.csv]\n"
                  "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
+                 "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M]\n"
+                 "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";
     for (const BackendInfo& b : backendTable()) std::cout << ", " << b.name;
     std::cout << "\n";

@@ -3,6 +3,7 @@
 #include "app/bench_command.h"
 #include "app/cli.h"
 #include "app/grid_command.h"
+#include "app/import_command.h"
 #include "core/resources.h"
 #include "ui/autosave.h"
 #include "ui/main_window.h"
@@ -23,13 +24,14 @@ int main(int argc, char** argv) {
         const std::string command = argv[1];
         const std::vector<std::string> rest(argv + 2, argv + argc);
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
-            command == "bench" || command == "grid") {
+            command == "bench" || command == "grid" || command == "import") {
             QCoreApplication app(argc, argv);  // Qt's file and image helpers; no display needed
             if (command == "render") return lucerna::cli::render(rest);
             if (command == "compare") return lucerna::cli::compare(rest);
             if (command == "convert") return lucerna::cli::convert(rest);
             if (command == "bench") return lucerna::cli::bench(rest);
             if (command == "grid") return lucerna::cli::grid(rest);
+            if (command == "import") return lucerna::cli::importModelCommand(rest);
             return lucerna::cli::info(rest);
         }
         if (command == "-h" || command == "--help" || command == "help") {

@@ -15,6 +15,7 @@
 #include "ui/image_export.h"
 #include "ui/live_preview.h"
 #include "ui/mesh_import.h"
+#include "ui/model_import_action.h"
 #include "ui/outliner.h"
 #include "ui/properties_panel.h"
 #include "ui/recent_files.h"
@@ -179,6 +180,12 @@ void MainWindow::createMenus() {
         const QString path = QFileDialog::getOpenFileName(this, tr("Import a mesh"), {}, tr("Meshes (*.obj *.ply *.off *.stl)"));
         if (!path.isEmpty() && !importMeshFile(path)) QMessageBox::warning(this, tr("Import mesh"), lastError_);
     });
+    add(file, tr("Import &Model..."), "actionImportModel", QKeySequence(tr("Ctrl+Shift+I")), [this] {
+        const QString path = QFileDialog::getOpenFileName(
+            this, tr("Import a model"), {},
+            tr("Models (*.obj *.gltf *.glb *.fbx *.dae *.3ds *.ply *.stl *.blend);;All files (*)"));
+        if (!path.isEmpty() && !importModelFile(path)) QMessageBox::warning(this, tr("Import model"), lastError_);
+    });
     file->addSeparator();
     add(file, tr("&Quit"), "actionQuit", QKeySequence::Quit, [this] { close(); });
 
@@ -331,6 +338,19 @@ bool MainWindow::importMeshFile(const QString& path) {
     doc_->undoStack()->push(new AddObjectCommand(doc_.get(), std::move(imported.object), std::move(imported.material), text));
     outliner_->select(Outliner::Kind::Object, int(doc_->scene().objects.size()) - 1);
     statusBar()->showMessage(tr("Imported %1").arg(path), 5000);
+    return true;
+}
+
+bool MainWindow::importModelFile(const QString& path) {
+    QStringList report;
+    try {
+        report = importModelInto(doc_.get(), path);
+    } catch (const std::exception& e) {
+        fail(tr("Could not import %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    statusBar()->showMessage(report.value(0), 8000);
+    ImportReportDialog::present(this, path, report);
     return true;
 }
 

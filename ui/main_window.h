@@ -55,6 +55,9 @@ public:
     bool exportPng(const QString& path);
     // Adds the mesh file as a new object with a material of its own: one undo step.
     bool importMeshFile(const QString& path);
+    // Adds a model (OBJ+MTL, glTF, FBX, COLLADA, ...: objects, materials, lights) in one undo
+    // step and shows the import report (ui/model_import_action.h) in a non-modal window.
+    bool importModelFile(const QString& path);
     // Before unsaved changes are lost: asks (Save, Discard, Cancel); true when it may go on.
     bool maybeSave();
     // Replaces the question maybeSave() asks (tests answer without a modal dialog).
