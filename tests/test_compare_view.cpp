@@ -23,6 +23,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <numbers>
 
 using namespace lucerna;
 
@@ -93,6 +94,7 @@ private slots:
     void splitShowsEachImageOnItsSide();
     void sideBySideSharesZoomAndPan();
     void falseColourPutsALuminanceOnTheLegendsColour();
+    void falseColourLuxFromTheAlbedoLayer();
     void exposureAndToneCurve();
     void probeReadsThePixelUnderTheCursor();
     void relmseIsCompareImages();
@@ -320,6 +322,42 @@ void TestCompareView::relmseIsCompareImages() {
     QVERIFY(expected > 0.01);
     QCOMPARE(*view->relmse(), expected);
     QCOMPARE(view->relmseLabel()->text(), QString("relmse %1").arg(QString::number(expected, 'g', 6)));
+}
+
+// Lux from radiance and albedo: a white-lit matt surface of albedo (0.8, 0.4, 0.2) under 100 lx
+// has L = albedo E / pi per channel; the lux view puts 100 lx on the legend's colour for it, the
+// probe reads it, an illuminance layer takes precedence, and a black surface shows the bottom.
+void TestCompareView::falseColourLuxFromTheAlbedoLayer() {
+    const double E = 100.0 / kLumensPerWatt;  // W/m^2 of white light: 100 lx
+    const Rgb albedo(0.8f, 0.4f, 0.2f);
+    Image image = uniform(40, 30, albedo * float(E / std::numbers::pi));
+    for (int c = 0; c < 3; ++c) image.channels[std::string("albedo.") + "RGB"[c]].assign(image.pixelCount(), albedo[c]);
+    image.channels["albedo.R"][0] = image.channels["albedo.G"][0] = image.channels["albedo.B"][0] = 0.0f;
+    QVERIFY(std::abs(*pixelIlluminance(image, 5) - 100.0) < 1e-3);
+    QVERIFY(!pixelIlluminance(image, 0));  // nothing to divide by
+    QVERIFY(probeText(image, QPoint(5, 0)).contains("E 100 lx"));
+    QVERIFY(!pixelIlluminance(uniform(4, 4, Rgb(1, 1, 1)), 0));  // no layer at all
+
+    auto view = shownView();
+    view->setPreview(image);
+    view->setConverged(image);
+    auto* mode = view->displayControls()->findChild<QComboBox*>("toneMapping");
+    mode->setCurrentIndex(3);  // False colour lx
+    QVERIFY(view->displaySettings().falseColour);
+    QVERIFY(view->displaySettings().quantity == FalseColourQuantity::Illuminance);
+    view->displayControls()->findChild<QDoubleSpinBox*>("falseMin")->setValue(1);
+    view->displayControls()->findChild<QDoubleSpinBox*>("falseMax")->setValue(10000);
+    CompareCanvas* canvas = view->secondCanvas();
+    const auto legend = canvas->legend();
+    QVERIFY(legend && legend->unit == QString("lx"));
+    const QImage shot = grabbed(canvas);
+    const QRectF r = canvas->imageRect();
+    QVERIFY_NEAR_COLOUR(shot.pixelColor(QPointF(r.left() + 10, r.center().y()).toPoint()), legendColour(*legend, 100.0), 1);
+    grabbed(view.get()).save("compare_false_colour_lux.png");
+
+    // An illuminance layer is what the view shows where there is one.
+    image.channels["illuminance.Y"].assign(image.pixelCount(), 1000.0f);
+    QCOMPARE(*pixelIlluminance(image, 0), 1000.0);
 }
 
 QTEST_MAIN(TestCompareView)

@@ -64,6 +64,8 @@ private slots:
         const std::vector<LightGroup> groups = lightGroups(w.document()->scene());
         QCOMPARE(int(groups.size()), 2);
         QVERIFY(before->image.channels.count("light.bulb.R") && before->image.channels.count("emitter.lamp.G"));
+        // Frames carry the albedo under each pixel (for the lux view) once the first pictures are out.
+        QVERIFY(before->image.channels.count("albedo.R"));
 
         // The bulb three times brighter and without blue: a new mix, the same run.
         Light bulb = w.document()->scene().lights[0];

@@ -2,9 +2,11 @@
 
 #include "render/progressive/backend.h"
 #include "render/progressive/light_layers/layered_backend.h"
+#include "render/trace/surface_layers.h"
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <cmath>
 #include <thread>
 
@@ -15,13 +17,20 @@ using Clock = std::chrono::steady_clock;
 
 // Passes until cancelled, holding between passes while paused or while the gate is held. Render
 // time excludes the held time, so the error plot is against time actually spent rendering.
-void runUntilCancelled(ProgressiveBackend& backend, const std::string& name, const RenderSettings& settings,
-                       TaskContext& ctx, Latest<RenderFrame>& latest, const std::atomic<bool>& paused,
-                       const std::atomic<int>& gate) {
+// Frames carry the albedo under each pixel from the fifth pass on (traced once, after the first
+// pictures are out), so that the lux view can divide by it (display.h, pixelIlluminance).
+void runUntilCancelled(ProgressiveBackend& backend, const SceneSnapshot& scene, const std::string& name,
+                       const RenderSettings& settings, TaskContext& ctx, Latest<RenderFrame>& latest,
+                       const std::atomic<bool>& paused, const std::atomic<int>& gate) {
     double rendered = 0, lastPublish = -1;
     int passes = 0;
+    std::optional<SurfaceLayers> surfaces;
     const auto publish = [&] {
-        latest.publish(std::make_shared<const RenderFrame>(makeRenderFrame(backend, name, settings, rendered, passes)));
+        RenderFrame frame = makeRenderFrame(backend, name, settings, rendered, passes);
+        if (passes >= 4 && !surfaces)
+            surfaces = traceSurfaceLayers(RenderScene(scene, backend.film().width(), backend.film().height()));
+        if (surfaces) addSurfaceLayers(frame.image, *surfaces, kAlbedoLayer);
+        latest.publish(std::make_shared<const RenderFrame>(std::move(frame)));
         lastPublish = rendered;
     };
     while (!ctx.isCancelled()) {
@@ -155,7 +164,7 @@ void ConvergingRender::relaunch() {
                           latest = latest_, paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
         auto backend = layered ? makeLayeredBackend(make, scene, settings) : make(scene, settings);
         backend->prepare(ctx);
-        runUntilCancelled(*backend, name, settings, ctx, *latest, *paused, *gate);
+        runUntilCancelled(*backend, scene, name, settings, ctx, *latest, *paused, *gate);
     });
     emit stateChanged();
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace lucerna {
@@ -48,6 +49,19 @@ QImage toDisplayImage(const Image& image, float exposureStops) {
     return toDisplayImage(image, s);
 }
 
+std::optional<double> pixelIlluminance(const Image& image, size_t i) {
+    if (const auto it = image.channels.find("illuminance.Y"); it != image.channels.end() && i < it->second.size())
+        return std::isfinite(it->second[i]) ? std::optional<double>(it->second[i]) : std::nullopt;
+    const auto r = image.channels.find("albedo.R"), g = image.channels.find("albedo.G"),
+               b = image.channels.find("albedo.B");
+    if (r == image.channels.end() || g == image.channels.end() || b == image.channels.end()) return std::nullopt;
+    if (i >= r->second.size() || i >= image.pixels.size()) return std::nullopt;
+    const double albedoY = luminance(Rgbd(r->second[i], g->second[i], b->second[i]));
+    const Rgb& p = image.pixels[i];
+    if (!(albedoY >= 0.01) || !isFinite(p)) return std::nullopt;
+    return kLumensPerWatt * std::numbers::pi * luminance(p) / albedoY;
+}
+
 QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
     QImage out(image.width, image.height, QImage::Format_RGB888);
     const float scale = std::exp2(settings.exposureStops);
@@ -56,9 +70,13 @@ QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
         for (int x = 0; x < image.width; ++x) {
             const Rgb& p = image.at(x, y);
             if (settings.falseColour) {
-                // Photometric, so exposure does not apply: the legend reads absolute cd/m^2.
-                const double cd = isFinite(p) ? kLumensPerWatt * luminance(p) : 0.0;
-                const QRgb c = falseColourOf(cd, settings.falseMin, settings.falseMax);
+                // Photometric, so exposure does not apply: the legend reads absolute cd/m^2 or lx.
+                double value = 0.0;
+                if (settings.quantity == FalseColourQuantity::Illuminance)
+                    value = pixelIlluminance(image, size_t(y) * image.width + x).value_or(0.0);
+                else if (isFinite(p))
+                    value = kLumensPerWatt * luminance(p);
+                const QRgb c = falseColourOf(value, settings.falseMin, settings.falseMax);
                 row[3 * x] = uchar(qRed(c));
                 row[3 * x + 1] = uchar(qGreen(c));
                 row[3 * x + 2] = uchar(qBlue(c));

@@ -9,6 +9,8 @@
 #include <QImage>
 #include <QString>
 
+#include <optional>
+
 class QPainter;
 class QRect;
 
@@ -16,16 +18,28 @@ namespace lucerna {
 
 enum class ToneCurve { LinearSrgb, Filmic };
 
+// What false colour shows: luminance in cd/m^2 (683 Y of the radiance), or illuminance in lux
+// at the surface each pixel sees (pixelIlluminance).
+enum class FalseColourQuantity { Luminance, Illuminance };
+
 struct DisplaySettings {
     float exposureStops = 0.0f;
     ToneCurve curve = ToneCurve::LinearSrgb;
     bool falseColour = false;
-    // False-colour range of luminance, cd/m^2, mapped on a log scale.
+    FalseColourQuantity quantity = FalseColourQuantity::Luminance;
+    // False-colour range (cd/m^2 or lx), mapped on a log scale.
     double falseMin = 0.1, falseMax = 1000.0;
     bool operator==(const DisplaySettings&) const = default;
 };
 
 QImage toDisplayImage(const Image& image, float exposureStops = 0.0f);
+
+// Illuminance (lux) at the surface pixel i sees: the image's `illuminance.Y` layer where it has
+// one; else from the radiance and the `albedo` layer, E = pi L / albedo (in luminance: exact for
+// a Lambertian surface under white light, approximate on glossy or coloured-under-coloured
+// surfaces); nothing without either layer or where the albedo is under 1% (black surfaces, the
+// sky, emitters, mirrors seen at an angle: no reflectance to divide by).
+std::optional<double> pixelIlluminance(const Image& image, size_t i);
 QImage toDisplayImage(const Image& image, const DisplaySettings& settings);
 
 // The colour of t in [0, 1] on the false-colour ramp (blue, cyan, green, yellow, red, white).

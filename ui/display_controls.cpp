@@ -11,7 +11,7 @@
 namespace lucerna {
 
 namespace {
-enum Mode { Linear, Filmic, FalseColour };
+enum Mode { Linear, Filmic, FalseColour, FalseColourLux };
 }
 
 DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
@@ -26,7 +26,11 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     exposure_->setToolTip(tr("Exposure: each stop doubles the displayed radiance"));
     mode_ = new QComboBox(this);
     mode_->setObjectName("toneMapping");
-    mode_->addItems({tr("Linear sRGB"), tr("Filmic"), tr("False colour cd/m\u00b2")});
+    mode_->addItems({tr("Linear sRGB"), tr("Filmic"), tr("False colour cd/m\u00b2"), tr("False colour lx")});
+    mode_->setItemData(FalseColourLux,
+                       tr("Illuminance at the surface each pixel sees: the illuminance layer where the image has one, "
+                          "else pi x luminance / albedo (exact on matt surfaces under white light)"),
+                       Qt::ToolTipRole);
     // The false-colour range; a log scale, so decades are the natural steps.
     const auto range = [this](const char* name, double value) {
         auto* spin = new QDoubleSpinBox(this);
@@ -60,7 +64,9 @@ void DisplayControls::setSettings(const DisplaySettings& s) {
     {
         const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_);
         exposure_->setValue(s.exposureStops);
-        mode_->setCurrentIndex(s.falseColour ? FalseColour : s.curve == ToneCurve::Filmic ? Filmic : Linear);
+        mode_->setCurrentIndex(!s.falseColour                                     ? (s.curve == ToneCurve::Filmic ? Filmic : Linear)
+                               : s.quantity == FalseColourQuantity::Illuminance ? FalseColourLux
+                                                                                : FalseColour);
         falseMin_->setValue(s.falseMin);
         falseMax_->setValue(s.falseMax);
     }
@@ -71,7 +77,12 @@ void DisplayControls::read() {
     DisplaySettings s;
     s.exposureStops = float(exposure_->value());
     s.curve = mode_->currentIndex() == Filmic ? ToneCurve::Filmic : ToneCurve::LinearSrgb;
-    s.falseColour = mode_->currentIndex() == FalseColour;
+    s.falseColour = mode_->currentIndex() == FalseColour || mode_->currentIndex() == FalseColourLux;
+    s.quantity = mode_->currentIndex() == FalseColourLux ? FalseColourQuantity::Illuminance
+                                                         : FalseColourQuantity::Luminance;
+    const QString unit = s.quantity == FalseColourQuantity::Illuminance ? tr(" lx") : tr(" cd/m\u00b2");
+    falseMin_->setSuffix(unit);
+    falseMax_->setSuffix(unit);
     // A range the wrong way round would divide by zero or flip the legend: keep a decade at least.
     s.falseMin = falseMin_->value();
     s.falseMax = std::max(falseMax_->value(), s.falseMin * 10);

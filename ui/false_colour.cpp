@@ -11,7 +11,8 @@ namespace lucerna {
 
 std::optional<Legend> luminanceLegend(const DisplaySettings& s) {
     if (!s.falseColour) return std::nullopt;
-    return Legend{s.falseMin, s.falseMax, true, QStringLiteral("cd/m\u00b2")};
+    return Legend{s.falseMin, s.falseMax, true,
+                  s.quantity == FalseColourQuantity::Illuminance ? QStringLiteral("lx") : QStringLiteral("cd/m\u00b2")};
 }
 
 double legendPosition(const Legend& legend, double value) {

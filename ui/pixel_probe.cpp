@@ -1,5 +1,7 @@
 #include "ui/pixel_probe.h"
 
+#include "ui/display.h"
+
 #include <cmath>
 
 namespace lucerna {
@@ -13,8 +15,11 @@ std::optional<QPoint> pixelAt(const Image& image, QPointF p) {
 QString probeText(const Image& image, QPoint px) {
     const Rgb& c = image.at(px.x(), px.y());
     const auto n = [](double v) { return QString::number(v, 'g', 4); };
-    return QStringLiteral("RGB %1 %2 %3  L %4 cd/m\u00b2")
-        .arg(n(c.x), n(c.y), n(c.z), n(kLumensPerWatt * luminance(c)));
+    QString text = QStringLiteral("RGB %1 %2 %3  L %4 cd/m\u00b2")
+                       .arg(n(c.x), n(c.y), n(c.z), n(kLumensPerWatt * luminance(c)));
+    if (const auto lux = pixelIlluminance(image, size_t(px.y()) * image.width + px.x()))
+        text += QStringLiteral("  E %1 lx").arg(n(*lux));
+    return text;
 }
 
 }  // namespace lucerna

@@ -1,5 +1,6 @@
 #pragma once
-// The pixel probe: the radiance (linear RGB, W/(sr m^2)) and the luminance (683 * Y, cd/m^2) of
+// The pixel probe: the radiance (linear RGB, W/(sr m^2)), the luminance (683 * Y, cd/m^2) and,
+// where the image can tell (display.h, pixelIlluminance), the illuminance (lx) of
 // the pixel under the cursor, read from the float images, not from the displayed picture.
 
 #include "core/image.h"
