@@ -5,9 +5,9 @@
 // (the sum of unbiased estimates of each light's part), and every frame carries each group's
 // layer as named channels (light.NAME.R/G/B), which a mixer weights afterwards.
 //
-// The cost: each pass is one pass of every layer, and a backend's own light choice no longer
-// spreads samples over the lights by power, so for the same time the combined image is noisier
-// than a plain render (BENCHMARKS.md). Worth it when lights are to be tuned after the render.
+// The cost: each pass is one pass of every layer (and one acceleration structure per layer). The
+// gain besides the mix: no layer chooses among lights, so the noise of that choice is gone; with
+// several lights of similar power that can outweigh the fewer passes (BENCHMARKS.md).
 
 #include "render/progressive/backend.h"
 
