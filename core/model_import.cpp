@@ -1,6 +1,7 @@
 #include "core/model_import.h"
 
 #include "core/gltf_material_extensions.h"
+#include "core/texture_average.h"
 
 #include <assimp/GltfMaterial.h>
 #include <assimp/Importer.hpp>
@@ -75,8 +76,10 @@ struct Mapper {
     std::map<unsigned, std::string> materialNames;  // Assimp index -> scene name
     std::vector<GltfMaterialExtensions> gltfExtensions;  // per glTF material (= Assimp index)
     aiMatrix4x4 axes;  // the file's axes to y up (FBX), before every node transform
+    std::filesystem::path folder;  // the model's folder: texture paths are relative to it
 
     std::string mapMaterial(unsigned index);
+    std::optional<Rgbd> textureAverage(const aiMaterial& m, aiTextureType type) const;
     void visit(const aiNode& node, const aiMatrix4x4& parent);
     void mapLight(const aiLight& light);
 };
@@ -103,7 +106,7 @@ std::string Mapper::mapMaterial(unsigned index) {
     const std::string tag = "material '" + source + "': ";
 
     const std::optional<Rgbd> base = getColour(m, AI_MATKEY_BASE_COLOR);
-    const Rgbd colour = base ? *base : getColour(m, AI_MATKEY_COLOR_DIFFUSE).value_or(Rgbd(0.8, 0.8, 0.8));
+    Rgbd colour = base ? *base : getColour(m, AI_MATKEY_COLOR_DIFFUSE).value_or(Rgbd(0.8, 0.8, 0.8));
     const std::optional<float> metallic = getFloat(m, AI_MATKEY_METALLIC_FACTOR);
     const std::optional<float> roughness = getFloat(m, AI_MATKEY_ROUGHNESS_FACTOR);
     const std::optional<float> transmission = getFloat(m, AI_MATKEY_TRANSMISSION_FACTOR);
@@ -120,14 +123,24 @@ std::string Mapper::mapMaterial(unsigned index) {
     const double emissiveStrength =
         ext.emissiveStrength.value_or(double(getFloat(m, AI_MATKEY_EMISSIVE_INTENSITY).value_or(1.0f)));
 
-    for (const auto& [type, label] : {std::pair{aiTextureType_BASE_COLOR, "baseColorTexture"},
-                                      std::pair{aiTextureType_DIFFUSE, "diffuse texture"},
-                                      std::pair{aiTextureType_METALNESS, "metallic texture"},
+    // The base colour's texture becomes its average colour times the factor (one colour per
+    // material); other textures are dropped.
+    const aiTextureType colourTexture = gltf ? aiTextureType_BASE_COLOR : aiTextureType_DIFFUSE;
+    if (m.GetTextureCount(colourTexture) > 0) {
+        const char* label = gltf ? "baseColorTexture" : "diffuse texture";
+        if (const std::optional<Rgbd> mean = textureAverage(m, colourTexture)) {
+            colour = Rgbd(colour.x * mean->x, colour.y * mean->y, colour.z * mean->z);
+            out.report.push_back(tag + label + " averaged to " + rgbText(*mean) + " (linear), times the factor");
+        } else {
+            out.report.push_back(tag + label + " could not be read, factor used");
+        }
+    }
+    for (const auto& [type, label] : {std::pair{aiTextureType_METALNESS, "metallic texture"},
                                       std::pair{aiTextureType_DIFFUSE_ROUGHNESS, "roughness texture"},
                                       std::pair{aiTextureType_EMISSIVE, "emissive texture"},
-                                      std::pair{aiTextureType_NORMALS, "normal map"}}) {
-        // glTF's base colour texture is listed under both DIFFUSE and BASE_COLOR: say it once.
-        if (gltf && type == aiTextureType_DIFFUSE) continue;
+                                      std::pair{aiTextureType_NORMALS, "normal map"},
+                                      std::pair{aiTextureType_SPECULAR, "specular texture"},
+                                      std::pair{aiTextureType_OPACITY, "opacity texture"}}) {
         if (m.GetTextureCount(type) > 0) out.report.push_back(tag + label + " ignored, factor used");
     }
 
@@ -184,6 +197,20 @@ std::string Mapper::mapMaterial(unsigned index) {
     out.materials.push_back(mat);
     materialNames[index] = mat.name;
     return mat.name;
+}
+
+std::optional<Rgbd> Mapper::textureAverage(const aiMaterial& m, aiTextureType type) const {
+    aiString where;
+    if (m.GetTexture(type, 0, &where) != aiReturn_SUCCESS) return std::nullopt;
+    // Embedded ("*N", or a file name the importer kept inside): compressed bytes or BGRA texels.
+    if (const aiTexture* t = ai.GetEmbeddedTexture(where.C_Str())) {
+        if (!t->pcData) return std::nullopt;
+        if (t->mHeight == 0) return averageImageColour(reinterpret_cast<const unsigned char*>(t->pcData), t->mWidth);
+        return averageTexelColour(reinterpret_cast<const unsigned char*>(t->pcData), size_t(t->mWidth) * t->mHeight, true);
+    }
+    std::filesystem::path file(where.C_Str());
+    if (file.is_relative()) file = folder / file;
+    return averageImageFileColour(file.string());
 }
 
 V3d transformPoint(const aiMatrix4x4& t, const aiVector3D& p) {
@@ -340,7 +367,8 @@ ModelImport importModel(const std::string& path, const ImportOptions& options) {
     std::transform(formatName.begin(), formatName.end(), formatName.begin(), [](unsigned char c) { return char(std::toupper(c)); });
 
     Mapper mapper{*ai, gltf, formatName, fileMeters / options.sceneMetersPerUnit, NameBook(options.into), {}, {},
-                  gltf ? readGltfMaterialExtensions(path) : std::vector<GltfMaterialExtensions>{}, aiMatrix4x4()};
+                  gltf ? readGltfMaterialExtensions(path) : std::vector<GltfMaterialExtensions>{}, aiMatrix4x4(),
+                  std::filesystem::path(path).parent_path()};
     ModelImport& out = mapper.out;
     out.report.emplace_back();  // the summary, filled in below
 

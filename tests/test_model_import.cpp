@@ -11,6 +11,8 @@
 #include "ui/main_window.h"
 
 #include <QAction>
+#include <QBuffer>
+#include <QImage>
 #include <QFile>
 #include <QPlainTextEdit>
 #include <QProcess>
@@ -33,6 +35,7 @@ private slots:
     void gltfMaterialsLightsAndTransforms();
     void colladaUnit();
     void fbxUnit();
+    void texturesAveraged();
     void badFiles();
     void importCommand();
     void importThroughTheWindow();
@@ -451,6 +454,57 @@ void TestModelImport::fbxUnit() {
     bool found = false;
     for (const V3d& p : z.objects[0].mesh.inlineMesh.vertices) found |= near(p, V3d(25.4, 0, -254), 1e-4);
     QVERIFY2(found && reportHas(z.report, "axes", "y up"), qPrintable(joined(z.report)));
+}
+
+// A 2 x 2 texture of red, blue, white and black: its linear mean is (0.5, 0.25, 0.5).
+QByteArray texturePng() {
+    QImage image(2, 2, QImage::Format_RGB888);
+    image.setPixelColor(0, 0, QColor(255, 0, 0));
+    image.setPixelColor(1, 0, QColor(0, 0, 255));
+    image.setPixelColor(0, 1, QColor(255, 255, 255));
+    image.setPixelColor(1, 1, QColor(0, 0, 0));
+    QByteArray png;
+    QBuffer buffer(&png);
+    buffer.open(QIODevice::WriteOnly);
+    image.save(&buffer, "PNG");
+    return png;
+}
+
+// Base colour textures become their average colour times the factor: an OBJ's map_Kd file next
+// to it, and a glTF image embedded as a data URI.
+void TestModelImport::texturesAveraged() {
+    const QByteArray png = texturePng();
+    QVERIFY(!png.isEmpty());
+    writeFile(dir_.filePath("tex.png"), png);
+    writeFile(dir_.filePath("textured.obj"), "mtllib textured.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl Wood\nf 1 2 3\n");
+    writeFile(dir_.filePath("textured.mtl"), "newmtl Wood\nKd 0.5 1 1\nmap_Kd tex.png\n");
+    const ModelImport obj = importModel(dir_.filePath("textured.obj").toStdString(), {});
+    QCOMPARE(obj.materials.size(), size_t(1));
+    QVERIFY2(near(obj.materials[0].albedo, Rgbd(0.25, 0.25, 0.5), 1e-3), qPrintable(joined(obj.report)));
+    QVERIFY2(reportHas(obj.report, "'Wood'", "averaged"), qPrintable(joined(obj.report)));
+
+    const QByteArray gltf = R"({
+  "asset": {"version": "2.0"},
+  "scenes": [{"nodes": [0]}],
+  "nodes": [{"name": "Board", "mesh": 0}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0}]}],
+  "materials": [{"name": "Wood", "pbrMetallicRoughness": {"baseColorFactor": [0.5, 1, 1, 1], "metallicFactor": 0,
+                 "roughnessFactor": 1, "baseColorTexture": {"index": 0}}}],
+  "textures": [{"source": 0}],
+  "images": [{"uri": "data:image/png;base64,)" + png.toBase64() + R"("}],
+  "buffers": [{"byteLength": 60, "uri": "data:application/octet-stream;base64,)" + squareBuffer().toBase64() + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 12}],
+  "accessors": [
+    {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+    {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]
+})";
+    writeFile(dir_.filePath("textured.gltf"), gltf);
+    const ModelImport g = importModel(dir_.filePath("textured.gltf").toStdString(), {});
+    QCOMPARE(g.materials.size(), size_t(1));
+    QCOMPARE(g.materials[0].type, MaterialType::Diffuse);
+    QVERIFY2(near(g.materials[0].albedo, Rgbd(0.25, 0.25, 0.5), 1e-3),
+             qPrintable(QString("%1 %2 %3: %4").arg(g.materials[0].albedo.x).arg(g.materials[0].albedo.y).arg(g.materials[0].albedo.z).arg(joined(g.report))));
+    QVERIFY2(reportHas(g.report, "'Wood'", "baseColorTexture averaged"), qPrintable(joined(g.report)));
 }
 
 void TestModelImport::badFiles() {
