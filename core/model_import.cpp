@@ -352,7 +352,8 @@ ModelImport importModel(const std::string& path, const ImportOptions& options) {
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
                            aiProcess_GlobalScale | aiProcess_ValidateDataStructure;
     const aiScene* ai = importer.ReadFile(path, flags);
-    if (!ai || !ai->mRootNode || (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
+    // Assimp calls a scene without meshes incomplete; one with lights alone is still worth having.
+    if (!ai || !ai->mRootNode || ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumLights == 0)) {
         std::string why = importer.GetErrorString();
         std::replace(why.begin(), why.end(), '\n', ' ');
         if (why.empty()) why = "the file holds no scene";

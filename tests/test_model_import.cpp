@@ -36,6 +36,7 @@ private slots:
     void colladaUnit();
     void fbxUnit();
     void texturesAveraged();
+    void directionalLightOnly();
     void badFiles();
     void importCommand();
     void importThroughTheWindow();
@@ -505,6 +506,30 @@ void TestModelImport::texturesAveraged() {
     QVERIFY2(near(g.materials[0].albedo, Rgbd(0.25, 0.25, 0.5), 1e-3),
              qPrintable(QString("%1 %2 %3: %4").arg(g.materials[0].albedo.x).arg(g.materials[0].albedo.y).arg(g.materials[0].albedo.z).arg(joined(g.report))));
     QVERIFY2(reportHas(g.report, "'Wood'", "baseColorTexture averaged"), qPrintable(joined(g.report)));
+}
+
+// A file with only a sun: glTF's directional intensity is lux, and the light travels along its
+// node's -z (here turned to point straight down).
+void TestModelImport::directionalLightOnly() {
+    writeFile(dir_.filePath("sun.gltf"), R"({
+  "asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_lights_punctual"],
+  "extensions": {"KHR_lights_punctual": {"lights": [{"name": "Sun", "type": "directional", "intensity": 683}]}},
+  "scenes": [{"nodes": [0]}],
+  "nodes": [{"name": "Sun", "rotation": [-0.5, -0.5, -0.5, 0.5], "extensions": {"KHR_lights_punctual": {"light": 0}}}]
+})");
+    const ModelImport m = importModel(dir_.filePath("sun.gltf").toStdString(), {});
+    QCOMPARE(m.objects.size(), size_t(0));
+    QCOMPARE(m.lights.size(), size_t(1));
+    const Light& sun = m.lights[0];
+    QCOMPARE(sun.type, LightType::Directional);
+    QVERIFY(near(sun.irradiance, Rgbd(1, 1, 1), 1e-5));  // 683 lx = 1 W/m^2 at luminance 1
+    // R(-z) is minus the third column of the quaternion's rotation matrix, written out here.
+    const double x = -0.5, y = -0.5, z = -0.5, w = 0.5;
+    const V3d thirdColumn(2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y));
+    QVERIFY2(near(sun.direction.normalized(), -thirdColumn, 1e-5),
+             qPrintable(QString("%1 %2 %3").arg(sun.direction.x).arg(sun.direction.y).arg(sun.direction.z)));
+    QVERIFY2(reportHas(m.report, "'Sun'", "683 lx"), qPrintable(joined(m.report)));
 }
 
 void TestModelImport::badFiles() {
