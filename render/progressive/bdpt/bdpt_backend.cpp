@@ -1,9 +1,9 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 
+#include "render/progressive/backend_options.h"
 #include "render/progressive/bdpt/bdpt_tracer.h"
 #include "render/trace/sobol_sampler.h"
 
-#include <charconv>
 #include <cstdio>
 #include <stdexcept>
 
@@ -11,17 +11,8 @@ namespace lucerna {
 
 BdptSettings BdptSettings::fromOptions(const RenderSettings& settings) {
     BdptSettings s;
-    const auto readInt = [&](const char* key, int& value, int lo) {
-        const auto it = settings.options.find(key);
-        if (it == settings.options.end()) return;
-        int v = 0;
-        const auto [ptr, ec] = std::from_chars(it->second.data(), it->second.data() + it->second.size(), v);
-        if (ec != std::errc() || ptr != it->second.data() + it->second.size() || v < lo)
-            throw std::invalid_argument(std::string("option ") + key + " must be an integer >= " + std::to_string(lo));
-        value = v;
-    };
-    readInt("max_depth", s.maxDepth, 1);
-    readInt("rr_depth", s.rouletteStartDepth, 1);
+    readOption(settings, "max_depth", s.maxDepth, 1);
+    readOption(settings, "rr_depth", s.rouletteStartDepth, 1);
     if (const auto it = settings.options.find("strategies"); it != settings.options.end()) {
         if (it->second == "all") s.strategies = BdptSettings::Strategies::All;
         else if (it->second == "light_tracing") s.strategies = BdptSettings::Strategies::LightTracing;

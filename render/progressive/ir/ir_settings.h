@@ -28,10 +28,6 @@ struct IrSettings {
     static IrSettings fromOptions(const RenderSettings& settings);
 };
 
-// Option parsing shared by ir and mir: sets `value` from options[key] when present, with
-// value >= lo; throws std::invalid_argument otherwise.
-void readIntOption(const RenderSettings& settings, const char* key, int& value, int lo);
-void readFloatOption(const RenderSettings& settings, const char* key, float& value, float lo, float hi);
 // Reads "clamp" and "compensate".
 GatherSettings gatherSettingsFromOptions(const RenderSettings& settings);
 

@@ -1,6 +1,7 @@
 #pragma once
 // Settings of the Metropolis instant radiosity backend.
 
+#include "render/progressive/backend_options.h"
 #include "render/progressive/ir/ir_settings.h"
 #include "render/progressive/mir/metropolis.h"
 
@@ -26,12 +27,12 @@ struct MirSettings {
 inline MirSettings MirSettings::fromOptions(const RenderSettings& settings) {
     MirSettings s;
     s.gather = gatherSettingsFromOptions(settings);
-    readIntOption(settings, "vpl_paths", s.pathVplsPerPass, 1);
-    readIntOption(settings, "tries", s.tries, 1);
-    readFloatOption(settings, "large_step", s.largeStepProbability, 1e-3f, 1.0f);
-    readIntOption(settings, "pc_samples", s.pcSamplesPerPass, 0);
-    readIntOption(settings, "norm_stride", s.normalizationStride, 1);
-    readIntOption(settings, "max_bounces", s.vpl.maxBounces, 1);
+    readOption(settings, "vpl_paths", s.pathVplsPerPass, 1);
+    readOption(settings, "tries", s.tries, 1);
+    readOption(settings, "large_step", s.largeStepProbability, 1e-3, 1.0);
+    readOption(settings, "pc_samples", s.pcSamplesPerPass, 0);
+    readOption(settings, "norm_stride", s.normalizationStride, 1);
+    readOption(settings, "max_bounces", s.vpl.maxBounces, 1);
     return s;
 }
 

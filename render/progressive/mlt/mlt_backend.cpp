@@ -1,5 +1,6 @@
 #include "render/progressive/mlt/mlt_backend.h"
 
+#include "render/progressive/backend_options.h"
 #include "render/progressive/film.h"
 #include "render/progressive/progressive_render.h"
 #include "render/progressive/mlt/mlt_chain.h"
@@ -139,21 +140,11 @@ private:
 MltSettings MltSettings::fromOptions(const RenderSettings& settings) {
     MltSettings s;
     s.bdpt = BdptSettings::fromOptions(settings);
-    const auto read = [&](const char* key, auto& value, double lo, double hi) {
-        const auto it = settings.options.find(key);
-        if (it == settings.options.end()) return;
-        char* end = nullptr;
-        const double v = std::strtod(it->second.c_str(), &end);
-        if (end == it->second.c_str() || *end != '\0' || !(v >= lo && v <= hi))
-            throw std::invalid_argument(std::string("option ") + key + " must be a number in [" + number(lo) + ", " +
-                                        number(hi) + "], got '" + it->second + "'");
-        value = static_cast<std::remove_reference_t<decltype(value)>>(v);
-    };
-    read("bootstrap", s.bootstrapSamples, 1, 1e8);
-    read("chains", s.chains, 1, 1e6);
-    read("mutations", s.mutationsPerPixel, 1e-3, 1e4);
-    read("large_step", s.largeStepProbability, 0, 1);
-    read("sigma", s.sigma, 1e-5, 0.5);
+    readOption(settings, "bootstrap", s.bootstrapSamples, 1, 100000000);
+    readOption(settings, "chains", s.chains, 1, 1000000);
+    readOption(settings, "mutations", s.mutationsPerPixel, 1e-3, 1e4);
+    readOption(settings, "large_step", s.largeStepProbability, 0, 1);
+    readOption(settings, "sigma", s.sigma, 1e-5, 0.5);
     return s;
 }
 
