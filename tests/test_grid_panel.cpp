@@ -123,6 +123,23 @@ private slots:
         QVERIFY(!panel->result()->converged);
     }
 
+    // Closing the window while a calculation runs ends it first (no crash, no hang).
+    void closingWhileComputing() {
+        RectangleOverPlane s;
+        const QString scenePath = dir_.filePath("rect2.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        auto w = std::make_unique<MainWindow>(scenePath);
+        w->show();
+        GridPanel* panel = w->gridPanel();
+        w->findChild<QDockWidget*>("gridDock")->raise();
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(0.1);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QVERIFY(panel->isComputing());
+        QTest::qWait(100);
+        w.reset();
+    }
+
 private:
     QTemporaryDir dir_;
 };

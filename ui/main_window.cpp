@@ -78,9 +78,11 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // The jobs first, while everything they report to is still there.
+    // The jobs first, while everything they report to is still there (the grid panel, a child
+    // widget, would otherwise outlive the task arena its job runs in).
     render_.reset();
     preview_.reset();
+    if (gridPanel_) gridPanel_->cancel();
 }
 
 void MainWindow::createDocks() {
