@@ -24,6 +24,38 @@ CalculationGrid workPlaneGrid(const V3d& lo, const V3d& hi, double metersPerUnit
     return g;
 }
 
+CalculationGrid gridFromCorners(const V3d& a, const V3d& normalAtA, const V3d& b, double metersPerUnit,
+                                double offsetMeters) {
+    const double offset = offsetMeters / metersPerUnit;
+    CalculationGrid g;
+    g.name = "drawn rectangle";
+    if (std::abs(normalAtA.y) >= 0.7) {
+        const double x0 = std::min(a.x, b.x), x1 = std::max(a.x, b.x);
+        const double z0 = std::min(a.z, b.z), z1 = std::max(a.z, b.z);
+        if (normalAtA.y > 0) {  // a floor or a table: facing up
+            g.corner = V3d(x0, a.y + offset, z1);
+            g.edgeU = V3d(x1 - x0, 0, 0);
+            g.edgeV = V3d(0, 0, z0 - z1);
+        } else {  // a ceiling: facing down
+            g.corner = V3d(x0, a.y - offset, z0);
+            g.edgeU = V3d(x1 - x0, 0, 0);
+            g.edgeV = V3d(0, 0, z1 - z0);
+        }
+        return g;
+    }
+    // A wall: h its horizontal normal toward the viewer; u runs to the viewer's right along the
+    // wall (r = cross(-h, y)), v up, so cross(u, v) = h.
+    const V3d h = V3d(normalAtA.x, 0, normalAtA.z).normalized();
+    const V3d r(h.z, 0, -h.x);
+    const double ra = a.dot(r), rb = b.dot(r);
+    const double r0 = std::min(ra, rb), r1 = std::max(ra, rb);
+    const double y0 = std::min(a.y, b.y), y1 = std::max(a.y, b.y);
+    g.corner = a + h * offset + r * (r0 - ra) + V3d(0, y0 - a.y, 0);
+    g.edgeU = r * (r1 - r0);
+    g.edgeV = V3d(0, y1 - y0, 0);
+    return g;
+}
+
 double en12464Spacing(double dMeters) { return std::min(10.0, 0.2 * std::pow(5.0, std::log10(dMeters))); }
 
 GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int maxPoints) {

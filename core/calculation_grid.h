@@ -35,6 +35,15 @@ struct CalculationGrid {
 CalculationGrid workPlaneGrid(const V3d& lo, const V3d& hi, double metersPerUnit, double heightMeters,
                               double borderMeters);
 
+// The rectangle a user draws by clicking two corners on a surface (a, with its unit normal
+// facing the viewer, and b), as the grid of the plane through a: on a floor, a table or a
+// ceiling (|normal.y| >= 0.7) the rectangle spans x and z between the corners, lifted off the
+// surface along its normal by offsetMeters (a work plane over the floor); on a wall it spans the
+// wall's horizontal direction and y between the corners, offsetMeters in front of the wall. The
+// grid faces the viewer's side. A zero extent gives a grid that layoutGrid rejects.
+CalculationGrid gridFromCorners(const V3d& a, const V3d& normalAtA, const V3d& b, double metersPerUnit,
+                                double offsetMeters);
+
 // EN 12464-1's maximum grid spacing for a longest side of dMeters: 0.2 * 5^log10(d), at most 10 m.
 double en12464Spacing(double dMeters);
 

@@ -85,6 +85,24 @@ private slots:
         QCOMPARE(fixed.nv, 4);
     }
 
+    // Two corners on a floor give a horizontal grid lifted by the offset and facing up; on a wall
+    // (x = 0, facing +x) a vertical one on the wall, u to the viewer's right, facing the viewer.
+    void gridFromTwoCorners() {
+        const CalculationGrid floor = gridFromCorners(V3d(3, 0, 1), V3d(0, 1, 0), V3d(1, 0, 4), 1.0, 0.8);
+        QVERIFY((floor.corner - V3d(1, 0.8, 4)).length() < 1e-12);
+        QVERIFY((floor.edgeU - V3d(2, 0, 0)).length() < 1e-12);
+        QVERIFY((floor.edgeV - V3d(0, 0, -3)).length() < 1e-12);
+        QVERIFY((floor.normal() - V3d(0, 1, 0)).length() < 1e-12);
+        const CalculationGrid wall = gridFromCorners(V3d(0, 1, 2), V3d(1, 0, 0), V3d(0, 2.5, 5), 0.001, 0.0);
+        QVERIFY((wall.corner - V3d(0, 1, 5)).length() < 1e-12);  // from x = 0 looking at -x, +z is left
+        QVERIFY((wall.edgeU - V3d(0, 0, -3)).length() < 1e-12);
+        QVERIFY((wall.edgeV - V3d(0, 1.5, 0)).length() < 1e-12);
+        QVERIFY((wall.normal() - V3d(1, 0, 0)).length() < 1e-12);
+        const CalculationGrid ceiling = gridFromCorners(V3d(0, 3, 0), V3d(0, -1, 0), V3d(2, 3, 1), 1.0, 0.5);
+        QVERIFY((ceiling.normal() - V3d(0, -1, 0)).length() < 1e-12);
+        QVERIFY(std::abs(ceiling.corner.y - 2.5) < 1e-12);
+    }
+
     void badGridsAreRejected() {
         CalculationGrid g;
         g.edgeV = V3d(0.5, 0, 1);  // not perpendicular to u

@@ -6,9 +6,14 @@
 #include "core/calculation_grid.h"
 #include "ui/commands/light_commands.h"
 #include "ui/grid_panel.h"
+#include "ui/live_preview.h"
 #include "ui/main_window.h"
+#include "ui/viewport.h"
 
+#include <QAction>
+#include <QApplication>
 #include <QDockWidget>
+#include <QMouseEvent>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
@@ -138,6 +143,66 @@ private slots:
         QVERIFY(panel->isComputing());
         QTest::qWait(100);
         w.reset();
+    }
+
+    // Rectangles drawn by two clicks in the viewport of the Cornell box (millimetres): one on the
+    // floor, lifted to the height field, facing up; one on the back wall, facing the room.
+    void rectanglesDrawnInTheViewport() {
+        MainWindow w(QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"));
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        Viewport* vp = w.findChild<Viewport*>("viewport");
+        QVERIFY(vp);
+        QTRY_VERIFY_WITH_TIMEOUT(w.livePreview()->frame() != nullptr, kTimeout);
+        const auto click = [&](const V3d& world) {
+            const auto at = vp->mapping().toWidget(world);
+            QVERIFY(at);
+            for (const auto type : {QEvent::MouseButtonPress, QEvent::MouseButtonRelease}) {
+                QMouseEvent e(type, *at, vp->mapToGlobal(*at), Qt::LeftButton,
+                              type == QEvent::MouseButtonPress ? Qt::LeftButton : Qt::NoButton, Qt::NoModifier);
+                QApplication::sendEvent(vp, &e);
+            }
+        };
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.05);
+
+        // The floor, in front of the blocks, 100 mm up.
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.1);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridDraw"), Qt::LeftButton);
+        QVERIFY(vp->tool() == Viewport::Tool::GridRectangle);
+        click(V3d(60, 0, 20));
+        click(V3d(500, 0, 55));
+        QVERIFY(vp->tool() == Viewport::Tool::Navigate);
+        QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("horizontal"));
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QVERIFY(panel->result() && panel->result()->converged);
+        for (const V3d& p : panel->layout().points) {
+            QVERIFY2(std::abs(p.y - 100) < 1e-6 && p.x > 55 && p.x < 505 && p.z > 15 && p.z < 60,
+                     qPrintable(QString("%1 %2 %3").arg(p.x).arg(p.y).arg(p.z)));
+        }
+        QCOMPARE(panel->layout().nu, 9);  // 440 mm at 50 mm
+        for (double lux : panel->result()->lux) QVERIFY(lux > 0);
+
+        // The back wall above the blocks, on the wall itself.
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridDraw"), Qt::LeftButton);
+        click(V3d(60, 450, 559.2));
+        click(V3d(500, 530, 559.2));
+        QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("wall"));
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QVERIFY(panel->result() && panel->result()->converged);
+        for (const V3d& p : panel->layout().points)
+            QVERIFY2(std::abs(p.z - 559.2) < 0.01 && p.y > 445 && p.y < 535,
+                     qPrintable(QString("%1 %2 %3").arg(p.x).arg(p.y).arg(p.z)));
+        // Facing the room: the wall is lit (the light is in front of it), so every point sees light.
+        for (double lux : panel->result()->lux) QVERIFY(lux > 0);
+        w.grab().save("grid_panel_wall.png");
+
+        // Whole room again.
+        QTest::mouseClick(child<QPushButton>(*panel, "gridWholeRoom"), Qt::LeftButton);
+        QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("whole room"));
     }
 
 private:

@@ -53,6 +53,14 @@ GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidge
     export_ = new QPushButton(tr("Export CSV..."), this);
     export_->setObjectName("gridExport");
     export_->setEnabled(false);
+    draw_ = new QPushButton(tr("Draw in viewport"), this);
+    draw_->setObjectName("gridDraw");
+    draw_->setToolTip(tr("Click two corners on a floor, a table or a wall in the viewport"));
+    wholeRoom_ = new QPushButton(tr("Whole room"), this);
+    wholeRoom_->setObjectName("gridWholeRoom");
+    area_ = new QLabel(this);
+    area_->setObjectName("gridArea");
+    area_->setWordWrap(true);
     progress_ = new QProgressBar(this);
     progress_->setRange(0, 1000);
     progress_->setTextVisible(false);
@@ -68,9 +76,14 @@ GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidge
     table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
     table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
 
+    auto* areaButtons = new QHBoxLayout;
+    areaButtons->addWidget(draw_);
+    areaButtons->addWidget(wholeRoom_);
     auto* form = new QFormLayout;
-    form->addRow(tr("Work plane height"), height_);
-    form->addRow(tr("Border"), border_);
+    form->addRow(tr("Area"), area_);
+    form->addRow(QString(), areaButtons);
+    form->addRow(tr("Height above the surface"), height_);
+    form->addRow(tr("Border (whole room)"), border_);
     form->addRow(tr("Spacing"), spacing_);
     form->addRow(tr("Error bar (95%)"), target_);
     form->addRow(tr("Estimator"), method_);
@@ -89,6 +102,9 @@ GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidge
     connect(compute_, &QPushButton::clicked, this, &GridPanel::compute);
     connect(cancel_, &QPushButton::clicked, this, &GridPanel::cancel);
     connect(export_, &QPushButton::clicked, this, &GridPanel::exportClicked);
+    connect(draw_, &QPushButton::clicked, this, &GridPanel::drawRequested);
+    connect(wholeRoom_, &QPushButton::clicked, this, &GridPanel::useWholeRoom);
+    useWholeRoom();
     connect(doc_, &Document::changed, this, [this] {
         if (shown_ && !stale_) {
             stale_ = true;
@@ -101,13 +117,32 @@ GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidge
 
 GridPanel::~GridPanel() { cancel(); }
 
+void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
+    drawn_ = Drawn{a, normal, b};
+    const bool horizontal = std::abs(normal.y) >= 0.7;
+    area_->setText(horizontal ? tr("Rectangle drawn on a horizontal surface") : tr("Rectangle drawn on a wall"));
+    wholeRoom_->setEnabled(true);
+    border_->setEnabled(false);
+}
+
+void GridPanel::useWholeRoom() {
+    drawn_.reset();
+    area_->setText(tr("Work plane over the whole room"));
+    wholeRoom_->setEnabled(false);
+    border_->setEnabled(true);
+}
+
 void GridPanel::compute() {
     cancel();
     const SceneSnapshot scene = doc_->snapshot();
     CalculationGrid grid;
     try {
-        const SceneBounds b = sceneBounds(*scene);
-        grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), border_->value());
+        if (drawn_) {
+            grid = gridFromCorners(drawn_->a, drawn_->normal, drawn_->b, scene->metersPerUnit, height_->value());
+        } else {
+            const SceneBounds b = sceneBounds(*scene);
+            grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), border_->value());
+        }
         if (spacing_->value() > 0) grid.spacingMeters = spacing_->value();
         layout_ = layoutGrid(grid, scene->metersPerUnit);
     } catch (const std::invalid_argument& e) {

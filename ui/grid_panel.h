@@ -1,6 +1,7 @@
 #pragma once
 // The calculation-grid dock: a work plane over the room (height, border, spacing by EN 12464-1
-// unless set), its illuminance computed in the background with a Monte Carlo error bar per point
+// unless set) or a rectangle drawn in the viewport on a floor, a table or a wall (two corner
+// clicks; core/calculation_grid.h, gridFromCorners), its illuminance computed in the background with a Monte Carlo error bar per point
 // (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
 // Emax and U0, and exported as CSV. A scene edit marks the result as out of date; Compute runs
 // again on the current scene.
@@ -14,6 +15,7 @@
 #include <QWidget>
 
 #include <memory>
+#include <optional>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -32,6 +34,10 @@ public:
 
     void compute();   // starts on the document's current scene (cancels a running calculation)
     void cancel();
+    // The grid becomes the rectangle drawn with corners a (on a surface of unit normal `normal`,
+    // facing the viewer) and b, lifted by the height field; "Whole room" goes back to the work plane.
+    void setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b);
+    void useWholeRoom();
     bool isComputing() const { return job_ != nullptr; }
     // The newest result and its layout (null before the first pass of a calculation).
     std::shared_ptr<const GridResult> result() const { return shown_; }
@@ -40,6 +46,8 @@ public:
     void exportCsv(const QString& path) const;
 
 signals:
+    // The user asked to draw the rectangle in the viewport (two clicks there).
+    void drawRequested();
     void resultChanged();
     void finished();
 
@@ -52,12 +60,16 @@ private:
     TaskSystem& tasks_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
     QComboBox* method_;
-    QPushButton *compute_, *cancel_, *export_;
+    QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
     QProgressBar* progress_;
-    QLabel *figures_, *status_;
+    QLabel *area_, *figures_, *status_;
     QTableWidget* table_;
     QTimer poll_;
 
+    struct Drawn {
+        V3d a, normal, b;
+    };
+    std::optional<Drawn> drawn_;  // nothing: the work plane over the whole room
     GridLayout layout_;
     std::shared_ptr<Latest<GridResult>> latest_;
     std::shared_ptr<TaskHandle> job_;

@@ -132,6 +132,12 @@ void MainWindow::createDocks() {
     connect(viewport_, &Viewport::lightPlaced, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
     connect(viewport_, &Viewport::objectClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Object, i); });
     connect(viewport_, &Viewport::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    // Calculation grids drawn in the viewport.
+    connect(gridPanel_, &GridPanel::drawRequested, this, [this] { viewport_->setTool(Viewport::Tool::GridRectangle); });
+    connect(viewport_, &Viewport::gridRectangleDrawn, this, [this](const V3d& a, const V3d& n, const V3d& b) {
+        gridPanel_->setDrawnRectangle(a, n, b);
+        findChild<QDockWidget*>("gridDock")->raise();
+    });
 }
 
 void MainWindow::createMenus() {

@@ -1,5 +1,6 @@
 #include "ui/viewport.h"
 
+#include "core/calculation_grid.h"
 #include "ui/camera_navigation.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/scene_commands.h"
@@ -60,11 +61,12 @@ Viewport::Viewport(Document* doc, const YieldGate& gate, QWidget* parent)
                         Tool::PlaceSpot);
     aim_ = action(tr("&Aim Selected Light at a Surface"), "actionAimLight", tr("Ctrl+Shift+A"), Tool::Aim);
     aim_->setEnabled(false);
+    drawGrid_ = action(tr("Draw &Calculation Grid Rectangle"), "actionDrawGrid", tr("Ctrl+Shift+G"), Tool::GridRectangle);
 }
 
 Viewport::~Viewport() = default;
 
-QList<QAction*> Viewport::toolActions() const { return {placePoint_, placeSpot_, aim_}; }
+QList<QAction*> Viewport::toolActions() const { return {placePoint_, placeSpot_, aim_, drawGrid_}; }
 
 ViewMapping Viewport::mapping() const { return ViewMapping(doc_->scene().camera, imageRect()); }
 
@@ -96,6 +98,8 @@ bool Viewport::setTool(Tool tool) {
     placePoint_->setChecked(tool == Tool::PlacePoint);
     placeSpot_->setChecked(tool == Tool::PlaceSpot);
     aim_->setChecked(tool == Tool::Aim);
+    drawGrid_->setChecked(tool == Tool::GridRectangle);
+    gridCorner_.reset();
     setCursor(tool == Tool::Navigate ? Qt::ArrowCursor : Qt::CrossCursor);
     hover_.reset();
     if (tool != Tool::Navigate) setFocus(Qt::OtherFocusReason);  // for Escape
@@ -273,6 +277,16 @@ void Viewport::paintToolHint(QPainter& painter) const {
                 painter.setBrush(kLightColour);
                 painter.drawEllipse(*light, 5, 5);
             }
+        } else if (at && tool_ == Tool::GridRectangle && gridCorner_) {
+            // The rectangle the second click would make, on the first corner's surface.
+            const CalculationGrid g =
+                gridFromCorners(gridCorner_->point, gridCorner_->normal, hover_->point, scene.metersPerUnit, 0.0);
+            QPolygonF outline;
+            for (const V3d& p : {g.corner, g.corner + g.edgeU, g.corner + g.edgeU + g.edgeV, g.corner + g.edgeV})
+                if (const auto w = view.toWidget(p)) outline << *w;
+            painter.setPen(QPen(Qt::white, 1.5, Qt::DashLine));
+            painter.setBrush(QColor(255, 255, 255, 40));
+            if (outline.size() == 4) painter.drawPolygon(outline);
         } else if (at && tool_ == Tool::Aim) {
             if (const auto from = lightMarker(selected_)) {
                 painter.setPen(QPen(kLightColour, 1.5, Qt::DashLine));
@@ -287,9 +301,12 @@ void Viewport::paintToolHint(QPainter& painter) const {
             painter.drawLine(*at - QPointF(0, 10), *at + QPointF(0, 10));
         }
     }
-    const QString text = tool_ == Tool::PlacePoint ? tr("Click a surface to place a point light (Esc cancels)")
-                         : tool_ == Tool::PlaceSpot ? tr("Click a surface to place a spot light (Esc cancels)")
-                                                    : tr("Click a surface to aim the light at it (Esc cancels)");
+    const QString text =
+        tool_ == Tool::PlacePoint      ? tr("Click a surface to place a point light (Esc cancels)")
+        : tool_ == Tool::PlaceSpot     ? tr("Click a surface to place a spot light (Esc cancels)")
+        : tool_ == Tool::GridRectangle ? (gridCorner_ ? tr("Click the opposite corner of the grid (Esc cancels)")
+                                                      : tr("Click a corner of the grid on a floor, table or wall (Esc cancels)"))
+                                       : tr("Click a surface to aim the light at it (Esc cancels)");
     const QRectF band(0, 0, width(), painter.fontMetrics().height() + 10);
     painter.fillRect(band, QColor(0, 0, 0, 160));
     painter.setPen(Qt::white);
@@ -306,6 +323,7 @@ void Viewport::mousePressEvent(QMouseEvent* event) {
     wheelKey_ = nextMergeKey();
     if (event->button() == Qt::LeftButton) {
         if (tool_ == Tool::PlacePoint || tool_ == Tool::PlaceSpot) return placeAt(pos);
+        if (tool_ == Tool::GridRectangle) return gridCornerAt(pos);
         if (tool_ == Tool::Aim || (event->modifiers() & Qt::ControlModifier)) return aimAt(pos);
         dragLight_ = lightAt(pos);
         const auto g = gizmo();
@@ -456,6 +474,22 @@ void Viewport::aimAt(const QPointF& pos) {
     }
     doc_->undoStack()->push(new EditLightCommand(doc_, selected_, *aimed, 0, tr("Aim %1").arg(nameOf(*aimed))));
     setTool(Tool::Navigate);
+}
+
+void Viewport::gridCornerAt(const QPointF& pos) {
+    const auto hit = surfaceAt(pos);
+    if (!hit) {
+        emit message(tr("No surface there for the grid: click a floor, a table or a wall."));
+        return;
+    }
+    if (!gridCorner_) {
+        gridCorner_ = hit;
+        update();
+        return;
+    }
+    const SurfaceHit first = *gridCorner_;
+    setTool(Tool::Navigate);
+    emit gridRectangleDrawn(first.point, first.normal, hit->point);
 }
 
 void Viewport::selectAt(const QPointF& pos) {

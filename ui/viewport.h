@@ -34,7 +34,7 @@ int nextMergeKey();
 class Viewport : public ImageView {
     Q_OBJECT
 public:
-    enum class Tool { Navigate, PlacePoint, PlaceSpot, Aim };
+    enum class Tool { Navigate, PlacePoint, PlaceSpot, Aim, GridRectangle };
 
     Viewport(Document* doc, const YieldGate& gate, QWidget* parent = nullptr);
     ~Viewport() override;
@@ -65,6 +65,9 @@ signals:
     // An object's surface was clicked (-1: nothing was under the mouse).
     void objectClicked(int index);
     void lightPlaced(int index);
+    // A calculation-grid rectangle drawn with the GridRectangle tool: corner a on a surface of
+    // unit normal `normal` (facing the camera), the opposite corner b (core/calculation_grid.h).
+    void gridRectangleDrawn(const lucerna::V3d& a, const lucerna::V3d& normal, const lucerna::V3d& b);
     void toolChanged(lucerna::Viewport::Tool tool);
     // A line for the status bar.
     void message(const QString& text);
@@ -87,6 +90,7 @@ private:
     void placeAt(const QPointF& pos);
     void aimAt(const QPointF& pos);
     void selectAt(const QPointF& pos);
+    void gridCornerAt(const QPointF& pos);
     bool aimable(int light) const;
     void endDrag();
     void paintGizmo(QPainter& painter, const LightGizmo& g) const;
@@ -97,7 +101,7 @@ private:
     YieldGate gate_;
     int selected_ = -1, selectedObject_ = -1;
     Tool tool_ = Tool::Navigate;
-    QAction *placePoint_, *placeSpot_, *aim_;
+    QAction *placePoint_, *placeSpot_, *aim_, *drawGrid_;
     mutable std::unique_ptr<SurfacePicker> picker_;
     mutable bool pickerFailed_ = false;
 
@@ -108,6 +112,7 @@ private:
     V3d aimTipStart_;       // the aim handle's world position when its drag began
     QPointF pressed_, last_;
     std::optional<SurfaceHit> hover_;  // the surface under the mouse while a tool is active
+    std::optional<SurfaceHit> gridCorner_;  // the first corner of a grid rectangle being drawn
     int mergeKey_ = 0;
     int wheelKey_ = nextMergeKey();  // renewed by each press, so a run of wheel steps is one command
     int flyKey_ = 0;
