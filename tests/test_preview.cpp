@@ -21,6 +21,8 @@
 
 #include <QtTest>
 
+#include <numbers>
+
 using namespace lucerna;
 using namespace lucerna::test;
 
@@ -87,6 +89,7 @@ private slots:
     void oneByOneEqualsCpuSum();
     void directLightMatchesPathTracer_data();
     void directLightMatchesPathTracer();
+    void albedoLayerGivesIlluminance();
     void sphereWithEmittingCap();
     void editsRegenerateOnlyWhatChanged();
     void directionalShadowMatchesPathTracer();
@@ -231,6 +234,27 @@ void TestPreview::directLightMatchesPathTracer() {
     QVERIFY2(meanErr < 0.015, qPrintable(QString::number(meanErr)));
     QVERIFY2(relPath < 2e-3, qPrintable(QString::number(relPath)));
     QVERIFY2(relClosed < 1e-3, qPrintable(QString::number(relClosed)));
+}
+
+// The preview's albedo layer (from its G-buffer) is the floor's albedo under every pixel, and
+// illuminance read off the preview as pi L / albedo (ui/display.h) is E = I cos / r^2.
+void TestPreview::albedoLayerGivesIlluminance() {
+    DeltaLightOverPlane sc;
+    const SceneSnapshot scene = sceneFromJson(sc.json());
+    Preview preview;
+    preview.setScene(scene);
+    const Image img = preview.render();
+    for (const char* c : {"albedo.R", "albedo.G", "albedo.B"}) {
+        QVERIFY(img.channels.count(c));
+        for (float v : img.channels.at(c)) QCOMPARE(v, float(sc.rho));
+    }
+    double lux = 0, expectedLux = 0;
+    const std::vector<double> expected = sc.expected();  // the floor's radiance, rho/pi E
+    for (size_t i = 0; i < img.pixelCount(); ++i) {
+        lux += 683.0 * std::numbers::pi * luminance(img.pixels[i]) / sc.rho;
+        expectedLux += 683.0 * std::numbers::pi * expected[i] / sc.rho;
+    }
+    QVERIFY2(std::abs(lux / expectedLux - 1) < 0.015, qPrintable(QString::number(lux / expectedLux)));
 }
 
 void TestPreview::sphereWithEmittingCap() {

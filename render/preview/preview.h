@@ -96,7 +96,9 @@ public:
     int vplSetGenerations() const;
 
     // Renders a frame with the pixel sample at (x + jitterX, y + jitterY): linear RGB radiance,
-    // SPEC.md conventions (converges to the box filter when passes jitter uniformly).
+    // SPEC.md conventions (converges to the box filter when passes jitter uniformly), with the
+    // albedo of the surface under each pixel as channels albedo.R/G/B (0 where it is not diffuse
+    // or glossy).
     Image render(float jitterX = 0.5f, float jitterY = 0.5f);
     const PreviewTimings& timings() const;
 

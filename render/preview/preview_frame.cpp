@@ -327,9 +327,14 @@ void runGather(Preview::State& st, GLuint splitTexture) {
     drawFullscreen(st.indirectFbo.id(), st.targetW, st.targetH);
 }
 
-Image readBack(GLuint texture, int w, int h) {
+std::vector<float> readBackRgba(GLuint texture, int w, int h) {
     std::vector<float> rgba(size_t(w) * size_t(h) * 4);
     glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(rgba.size() * sizeof(float)), rgba.data());
+    return rgba;
+}
+
+Image readBack(GLuint texture, int w, int h) {
+    const std::vector<float> rgba = readBackRgba(texture, w, h);
     Image img(w, h);
     for (size_t i = 0; i < img.pixels.size(); ++i) img.pixels[i] = Rgb(rgba[i * 4], rgba[i * 4 + 1], rgba[i * 4 + 2]);
     return img;
@@ -474,6 +479,17 @@ Image Preview::render(float jitterX, float jitterY) {
     lap(tm.direct);
 
     Image image = readBack(st.final.id(), w, h);
+    // The albedo layer from the G-buffer (diffuse and glossy surfaces; 0 on emitters, mirrors,
+    // glass and the background), so that illuminance can be read off the preview as off the
+    // converged image (ui/display.h: E = pi L / albedo).
+    {
+        const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h), g2 = readBackRgba(st.g[2].id(), w, h);
+        for (int c = 0; c < 3; ++c) {
+            std::vector<float>& layer = image.channels[std::string("albedo.") + "RGB"[c]];
+            layer.resize(image.pixelCount());
+            for (size_t i = 0; i < layer.size(); ++i) layer[i] = g0[i * 4 + 3] == 1.0f ? g2[i * 4 + size_t(c)] : 0.0f;
+        }
+    }
     gl::checkErrors("Preview::render");
     lap(tm.readback);
     tm.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
