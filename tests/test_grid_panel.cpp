@@ -6,11 +6,15 @@
 #include "core/calculation_grid.h"
 #include "ui/commands/light_commands.h"
 #include "ui/grid_panel.h"
+#include "ui/compare_view.h"
+#include "ui/display.h"
+#include "ui/display_controls.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
 #include "ui/viewport.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QApplication>
 #include <QDockWidget>
 #include <QMouseEvent>
@@ -203,6 +207,25 @@ private slots:
         // Whole room again.
         QTest::mouseClick(child<QPushButton>(*panel, "gridWholeRoom"), Qt::LeftButton);
         QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("whole room"));
+    }
+
+    // The lux view asks the live preview for its albedo layer (and only then): its frames then
+    // give illuminance under the pixels that see the floor.
+    void luxViewGetsThePreviewsAlbedo() {
+        MainWindow w(QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"));
+        w.show();
+        QTRY_VERIFY_WITH_TIMEOUT(w.livePreview()->frame() != nullptr, kTimeout);
+        QVERIFY(!w.livePreview()->frame()->image.channels.count("albedo.R"));
+        auto* mode = w.compareView()->displayControls()->findChild<QComboBox*>("toneMapping");
+        QVERIFY(mode);
+        mode->setCurrentIndex(3);  // False colour lx
+        QTRY_VERIFY_WITH_TIMEOUT(w.livePreview()->frame()->image.channels.count("albedo.R"), kTimeout);
+        const Image& image = w.livePreview()->frame()->image;
+        // Walls, floor, ceiling and blocks are matt: most pixels have an illuminance.
+        size_t lit = 0;
+        for (size_t i = 0; i < image.pixelCount(); ++i)
+            if (const auto lux = pixelIlluminance(image, i); lux && *lux > 0) ++lit;
+        QVERIFY2(lit > image.pixelCount() / 2, qPrintable(QString("%1 of %2").arg(lit).arg(image.pixelCount())));
     }
 
 private:

@@ -243,6 +243,8 @@ void TestPreview::albedoLayerGivesIlluminance() {
     const SceneSnapshot scene = sceneFromJson(sc.json());
     Preview preview;
     preview.setScene(scene);
+    QVERIFY(preview.render().channels.empty());  // off unless asked for
+    preview.setAlbedoLayer(true);
     const Image img = preview.render();
     for (const char* c : {"albedo.R", "albedo.G", "albedo.B"}) {
         QVERIFY(img.channels.count(c));

@@ -15,6 +15,7 @@ struct LivePreview::Shared {
     std::condition_variable wake;
     SceneSnapshot requested;
     uint64_t requestedSerial = 0;
+    bool albedoLayer = false;
     std::string engine;  // set by the job
     Latest<LiveFrame> out;
 };
@@ -63,6 +64,7 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
         uint64_t done = 0;
         while (!ctx.isCancelled()) {
             SceneSnapshot scene;
+            bool albedoLayer = false;
             {
                 std::unique_lock lock(shared->mutex);
                 shared->wake.wait_for(lock, std::chrono::milliseconds(50),
@@ -70,6 +72,7 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
                 if (shared->requestedSerial == done) continue;
                 done = shared->requestedSerial;
                 scene = shared->requested;
+                albedoLayer = shared->albedoLayer;
             }
             if (!scene) continue;
             YieldGate::Scope hold(gateCounter);
@@ -97,6 +100,7 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
                         gl->setScene(scene, w, h);
                     }
                     shown = scene;
+                    gl->setAlbedoLayer(albedoLayer);
                     frame->image = gl->render();
                 } else {
                     frame->image = pathFrame(scene, w, h, ctx);
@@ -131,6 +135,16 @@ void LivePreview::setScene(SceneSnapshot scene) {
         std::lock_guard lock(shared_->mutex);
         shared_->requested = std::move(scene);
         ++shared_->requestedSerial;
+    }
+    shared_->wake.notify_all();
+}
+
+void LivePreview::setAlbedoLayer(bool on) {
+    {
+        std::lock_guard lock(shared_->mutex);
+        if (shared_->albedoLayer == on) return;
+        shared_->albedoLayer = on;
+        ++shared_->requestedSerial;  // the same scene again, with or without the layer
     }
     shared_->wake.notify_all();
 }

@@ -43,6 +43,8 @@ public:
     // What draws the frames, in words ("OpenGL VPL preview (llvmpipe ...)", or the path tracer
     // and why the OpenGL one is not used). Known after the first frame.
     QString engineDescription() const;
+    // Frames with the albedo layer (the lux view needs it; it costs read-back time); redraws.
+    void setAlbedoLayer(bool on);
     // Frames drawn so far.
     int frameCount() const { return frames_; }
 

@@ -126,6 +126,7 @@ void MainWindow::createDocks() {
     connect(compare_, &CompareView::displaySettingsChanged, this, [this](const DisplaySettings& s) {
         renderPanel_->setDisplaySettings(s);
         viewport_->setLegend(luminanceLegend(s));
+        preview_->setAlbedoLayer(s.falseColour && s.quantity == FalseColourQuantity::Illuminance);
         showPreviewFrame();
     });
     connect(viewport_, &Viewport::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });

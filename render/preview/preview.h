@@ -96,10 +96,13 @@ public:
     int vplSetGenerations() const;
 
     // Renders a frame with the pixel sample at (x + jitterX, y + jitterY): linear RGB radiance,
-    // SPEC.md conventions (converges to the box filter when passes jitter uniformly), with the
-    // albedo of the surface under each pixel as channels albedo.R/G/B (0 where it is not diffuse
-    // or glossy).
+    // SPEC.md conventions (converges to the box filter when passes jitter uniformly). With the
+    // albedo layer on, also the albedo of the surface under each pixel as channels albedo.R/G/B
+    // (0 where it is not diffuse or glossy), read back from the G-buffer.
     Image render(float jitterX = 0.5f, float jitterY = 0.5f);
+    // Off by default: on llvmpipe the two extra read-backs cost ~35 ms at 640x480, a third of
+    // a frame, so only the lux view asks for them.
+    void setAlbedoLayer(bool on) { albedoLayer_ = on; }
     const PreviewTimings& timings() const;
 
     // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings and
@@ -120,6 +123,7 @@ private:
     std::unique_ptr<EglContext> context_;
     std::unique_ptr<State> state_;
     PreviewSettings settings_;
+    bool albedoLayer_ = false;
 };
 
 }  // namespace lucerna

@@ -482,7 +482,7 @@ Image Preview::render(float jitterX, float jitterY) {
     // The albedo layer from the G-buffer (diffuse and glossy surfaces; 0 on emitters, mirrors,
     // glass and the background), so that illuminance can be read off the preview as off the
     // converged image (ui/display.h: E = pi L / albedo).
-    {
+    if (albedoLayer_) {
         const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h), g2 = readBackRgba(st.g[2].id(), w, h);
         for (int c = 0; c < 3; ++c) {
             std::vector<float>& layer = image.channels[std::string("albedo.") + "RGB"[c]];
