@@ -114,6 +114,7 @@ private slots:
     void recentFiles();
     void thousandRandomEditsWhileRendering();
     void badSceneShowsErrorAndKeepsRunning();
+    void lightPanelWritesBackOnlyTheEditedField();
 
 private:
     QTemporaryDir dir_;
@@ -586,6 +587,25 @@ void TestMainWindow::badSceneShowsErrorAndKeepsRunning() {
     QVERIFY(w.document()->scene().objects.empty());
     QVERIFY(!w.openFile(dir_.filePath("missing.json")));
     QVERIFY(w.lastError().contains("missing.json"));
+}
+
+// The panel shows 3 decimals; typing one coordinate must not round the other two (nor the
+// intensity's other channels) to what the panel shows.
+void TestMainWindow::lightPanelWritesBackOnlyTheEditedField() {
+    MainWindow w(cornellPath());
+    w.show();
+    Document* doc = w.document();
+    trigger(w, "actionAddPointLight");
+    Light precise = doc->scene().lights[0];
+    precise.position = V3d(123.456789, 234.567891, 345.678912);
+    precise.intensity = Rgbd(0.1234567, 0.2345678, 0.3456789);
+    doc->undoStack()->push(new EditLightCommand(doc, 0, precise, 0, "precise"));
+    LightProperties* props = w.lightProperties();
+    typeInto(props->positionFields()[0], 200);
+    const Light& after = doc->scene().lights[0];
+    QCOMPARE(after.position, V3d(200, 234.567891, 345.678912));
+    typeInto(props->powerFields()[1], 0.5);
+    QCOMPARE(doc->scene().lights[0].intensity, Rgbd(0.1234567, 0.5, 0.3456789));
 }
 
 QTEST_MAIN(TestMainWindow)

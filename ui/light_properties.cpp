@@ -180,14 +180,20 @@ void LightProperties::apply(Field field, QObject* sender) {
     if (index_ < 0 || index_ >= int(scene.lights.size())) return;
     Light l = scene.lights[size_t(index_)];
     QString what;
+    // Only the component that changed: the other fields show values rounded to their decimals,
+    // which must not be written back.
+    const auto take = [sender](const std::array<QDoubleSpinBox*, 3>& fields, V3d& value) {
+        for (int i = 0; i < 3; ++i)
+            if (fields[size_t(i)] == sender) value[i] = fields[size_t(i)]->value();
+    };
     switch (field) {
     case Field::Position:
-        for (int i = 0; i < 3; ++i) l.position[i] = position_[size_t(i)]->value();
+        take(position_, l.position);
         what = tr("Move %1");
         break;
     case Field::Direction: {
-        V3d d;
-        for (int i = 0; i < 3; ++i) d[i] = direction_[size_t(i)]->value();
+        V3d d = l.direction;
+        take(direction_, d);
         // SPEC.md: directions are non-zero. Refuse the edit and show the light as it is.
         if (d.length() == 0) {
             refresh();
@@ -198,8 +204,7 @@ void LightProperties::apply(Field field, QObject* sender) {
         break;
     }
     case Field::Power: {
-        Rgbd& p = l.type == LightType::Directional ? l.irradiance : l.intensity;
-        for (int i = 0; i < 3; ++i) p[i] = power_[size_t(i)]->value();
+        take(power_, l.type == LightType::Directional ? l.irradiance : l.intensity);
         what = tr("Change power of %1");
         break;
     }
