@@ -16,7 +16,6 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <optional>
 #include <stdexcept>
@@ -167,12 +166,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
 
 void writeText(const std::string& path, const std::string& text) {
     try {
-        writeAtomically(path, [&](const std::string& temp) {
-            std::ofstream f(temp, std::ios::binary);
-            f << text;
-            f.close();
-            if (!f) throw std::runtime_error(path + ": cannot write");
-        });
+        writeTextAtomically(path, text);
     } catch (const std::runtime_error& e) {
         throw UsageError(e.what());
     }

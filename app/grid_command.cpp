@@ -9,7 +9,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
 #include <optional>
 
@@ -138,11 +137,7 @@ int gridImpl(const std::vector<std::string>& args) {
                 formatSeconds(result->seconds).c_str(), result->converged ? "" : " (target not reached)");
     printTable(layout, result->lux);
     if (!g.csv.empty()) {
-        writeAtomically(g.csv, [&](const std::string& temp) {
-            std::ofstream out(temp);
-            out << gridCsv(layout, result->lux, result->errorLux);
-            if (!out.flush()) throw std::runtime_error("cannot write " + g.csv);
-        });
+        writeTextAtomically(g.csv, gridCsv(layout, result->lux, result->errorLux));
         std::fprintf(stderr, "wrote %s\n", g.csv.c_str());
     }
     return 0;

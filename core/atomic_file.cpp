@@ -5,6 +5,7 @@
 #include <QTemporaryFile>
 
 #include <cstdio>
+#include <fstream>
 #include <stdexcept>
 
 namespace lucerna {
@@ -33,6 +34,15 @@ void writeAtomically(const std::string& path, const std::function<void(const std
         std::remove(temp.c_str());
         throw std::runtime_error("cannot rename " + temp + " to " + path);
     }
+}
+
+void writeTextAtomically(const std::string& path, const std::string& text) {
+    writeAtomically(path, [&](const std::string& temp) {
+        std::ofstream f(temp, std::ios::binary);
+        f << text;
+        f.close();
+        if (!f) throw std::runtime_error(path + ": cannot write");
+    });
 }
 
 }  // namespace lucerna

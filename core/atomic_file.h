@@ -12,4 +12,8 @@ namespace lucerna {
 // with a one-line reason); `path` is untouched.
 void writeAtomically(const std::string& path, const std::function<void(const std::string& tempPath)>& write);
 
+// `text` as the whole content of the file at `path`, written as writeAtomically does; throws
+// std::runtime_error ("PATH: cannot write") on failure.
+void writeTextAtomically(const std::string& path, const std::string& text);
+
 }  // namespace lucerna

@@ -12,11 +12,14 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include "csv_table.h"
+
 #include <array>
 #include <cmath>
 #include <csignal>
 
 using namespace lucerna;
+using lucerna::test::CsvTable;
 
 namespace {
 const QString kCornell = QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json";
@@ -219,24 +222,23 @@ void TestCli::benchWritesCsvAndPlot() {
     const Run r = runLucerna({"bench", kCornell, "--reference", ref, "--backends", "path,mir:tries=2", "--time", "1",
                               "--start", "0.01", "--out", out, "--seed", "9"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
-    QFile csv(out + "/bench.csv");
-    QVERIFY(csv.open(QIODevice::ReadOnly));
-    const QStringList lines = QString(csv.readAll()).trimmed().split('\n');
-    QCOMPARE(lines.value(0), QString("backend,seconds,spp,rmse,relmse,estimated_relmse"));
+    const CsvTable csv = CsvTable::read(out + "/bench.csv");
+    QCOMPARE(csv.header.join(','), QString("backend,seconds,spp,rmse,relmse,estimated_relmse"));
     QMap<QString, QList<std::array<double, 3>>> curves;  // seconds, spp, relmse per backend
-    for (const QString& line : lines.mid(1)) {
-        const QStringList f = line.split(',');
-        QCOMPARE(f.size(), 6);
-        std::array<double, 5> v{};  // seconds, spp, rmse, relmse, estimated_relmse
+    for (size_t row = 0; row < csv.rows.size(); ++row) {
+        const QString line = csv.rows[row].join(',');
+        QCOMPARE(csv.rows[row].size(), csv.header.size());
+        std::array<double, 5> v{};
+        const QString columns[] = {"seconds", "spp", "rmse", "relmse", "estimated_relmse"};
         for (size_t i = 0; i < v.size(); ++i) {
-            bool parsed = false;
-            v[i] = f.at(qsizetype(i) + 1).toDouble(&parsed);
+            const auto value = csv.number(row, columns[i]);
             // The film's own estimate needs both halves: "nan" before a second pass (a loaded
             // machine may reach the first sample time that early).
-            if (i == 4 && f.at(5) == "nan" && v[1] < 2) continue;
-            QVERIFY2(parsed && std::isfinite(v[i]) && v[i] >= 0, qPrintable(line));
+            if (columns[i] == "estimated_relmse" && csv.text(row, columns[i]) == "nan" && v[1] < 2) continue;
+            QVERIFY2(value && std::isfinite(*value) && *value >= 0, qPrintable(line));
+            v[i] = *value;
         }
-        curves[f[0]].append({v[0], v[1], v[3]});
+        curves[csv.text(row, "backend")].append({v[0], v[1], v[3]});
     }
     QCOMPARE(curves.keys(), (QList<QString>{"mir:tries=2", "path"}));
     for (const auto& c : curves) {

@@ -6,6 +6,7 @@
 #include "core/exr_io.h"
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
+#include "window_test_helpers.h"
 #include "ui/colour_edit.h"
 #include "ui/commands/material_commands.h"
 #include "ui/converging_render.h"
@@ -35,19 +36,12 @@
 #include <set>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
 
-QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
 QString icospherePath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/meshes/icosphere.ply"); }
-
-void typeInto(QDoubleSpinBox* spin, double value) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, QString::number(value));
-    QTest::keyClick(spin, Qt::Key_Return);
-}
 
 std::shared_ptr<const LiveFrame> previewOfCurrent(MainWindow& w) {
     const SceneSnapshot want = w.document()->snapshot();

@@ -4,6 +4,7 @@
 // of a closed sphere (indirect light only, uniform), for the path and the VPL estimators.
 
 #include "closed_form_scenes.h"
+#include "csv_table.h"
 #include "core/calculation_grid.h"
 #include "core/exr_io.h"
 #include "render/photometry/grid_calculation.h"
@@ -33,6 +34,16 @@ GridResult computeGrid(const SceneSnapshot& scene, const std::vector<V3d>& point
     job->wait();
     job->rethrowIfFailed();
     return result;
+}
+
+// 4 x 4 points on the floor of RectangleOverPlane (y = 0, facing up), 2 m across under its emitter.
+CalculationGrid floorUnderTheEmitter() {
+    CalculationGrid g;
+    g.corner = V3d(-1, 0, 1);
+    g.edgeU = V3d(2, 0, 0);
+    g.edgeV = V3d(0, 0, -2);
+    g.spacingMeters = 0.5;
+    return g;
 }
 
 GridSettings settingsFor(GridMethod method, double target) {
@@ -158,11 +169,7 @@ private slots:
         QFETCH(int, method);
         RectangleOverPlane s;
         const SceneSnapshot scene = sceneFromJson(s.json());
-        CalculationGrid g;
-        g.corner = V3d(-1, 0, 1);
-        g.edgeU = V3d(2, 0, 0);
-        g.edgeV = V3d(0, 0, -2);
-        g.spacingMeters = 0.5;
+        const CalculationGrid g = floorUnderTheEmitter();
         const GridLayout layout = layoutGrid(g, 1.0);
         const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
         QVERIFY(r.converged);
@@ -183,11 +190,7 @@ private slots:
         std::string json = s.json();
         json.insert(json.size() - 1, R"(, "lights": [{"name": "bulb", "type": "point", "position": [0.3, 0.6, -0.2], "intensity": [0.5, 0.5, 0.5]}])");
         const SceneSnapshot scene = sceneFromJson(json);
-        CalculationGrid g;
-        g.corner = V3d(-1, 0, 1);
-        g.edgeU = V3d(2, 0, 0);
-        g.edgeV = V3d(0, 0, -2);
-        g.spacingMeters = 0.5;
+        const CalculationGrid g = floorUnderTheEmitter();
         const GridLayout layout = layoutGrid(g, 1.0);
         const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
         QVERIFY(r.converged);
@@ -277,16 +280,16 @@ private slots:
         QCOMPARE(p.exitCode(), 0);
         const QString out = QString::fromUtf8(p.readAllStandardOutput());
         QVERIFY2(out.contains("4 x 4 points") && out.contains("Eavg") && out.contains("U0"), qPrintable(out));
-        QFile f(csv);
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        const QStringList lines = QString::fromUtf8(f.readAll()).trimmed().split('\n');
-        QCOMPARE(lines.size(), 17);
-        QCOMPARE(lines[0], QString("i,j,x,y,z,illuminance_lux,error_lux"));
+        const CsvTable table = CsvTable::read(csv);
+        QCOMPARE(int(table.rows.size()), 16);
+        QCOMPARE(table.header.join(','), QString("i,j,x,y,z,illuminance_lux,error_lux"));
         // The point nearest the middle sees the emitter nearly whole: compare with Lambert.
-        const QStringList row = lines[1 + 1 * 4 + 1].split(',');  // i = 1, j = 1
-        const V3d x(row[2].toDouble(), row[3].toDouble(), row[4].toDouble());
+        const size_t row = 1 * 4 + 1;  // i = 1, j = 1
+        QCOMPARE(table.text(row, "i") + table.text(row, "j"), QString("11"));
+        const V3d x(*table.number(row, "x"), *table.number(row, "y"), *table.number(row, "z"));
         const double expected = 683.0 * s.radiance * lambertPolygonIrradiance(x, V3d(0, 1, 0), s.emitter());
-        QVERIFY2(std::abs(row[5].toDouble() - expected) <= 2 * row[6].toDouble(), qPrintable(lines[6]));
+        QVERIFY2(std::abs(*table.number(row, "illuminance_lux") - expected) <= 2 * *table.number(row, "error_lux"),
+                 qPrintable(table.rows[row].join(',')));
 
         // `render --layers illuminance` adds the channel illuminance.Y (lux) beside R, G, B.
         const QString exr = dir.filePath("rect.exr");

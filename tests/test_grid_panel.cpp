@@ -3,8 +3,10 @@
 // the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
 
 #include "closed_form_scenes.h"
+#include "csv_table.h"
 #include "core/calculation_grid.h"
 #include "ui/commands/light_commands.h"
+#include "window_test_helpers.h"
 #include "ui/grid_panel.h"
 #include "ui/compare_view.h"
 #include "ui/display.h"
@@ -15,9 +17,7 @@
 
 #include <QAction>
 #include <QComboBox>
-#include <QApplication>
 #include <QDockWidget>
-#include <QMouseEvent>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
@@ -35,12 +35,6 @@ using namespace lucerna::test;
 namespace {
 constexpr int kTimeout = 60000;  // ms; generous for a loaded machine, never a timing assertion
 
-template <class T>
-T* child(QObject& parent, const char* name) {
-    T* w = parent.findChild<T*>(name);
-    if (!w) qFatal("no widget %s", name);
-    return w;
-}
 }  // namespace
 
 class TestGridPanel : public QObject {
@@ -97,11 +91,9 @@ private slots:
         // CSV: a header and one row per point, values as computed.
         const QString csv = dir_.filePath("grid.csv");
         panel->exportCsv(csv);
-        QFile f(csv);
-        QVERIFY(f.open(QIODevice::ReadOnly));
-        const QStringList lines = QString::fromUtf8(f.readAll()).trimmed().split('\n');
-        QCOMPARE(lines.size(), 1 + 64);
-        QVERIFY(std::abs(lines[1].split(',')[5].toDouble() / result->lux[0] - 1) < 1e-8);
+        const CsvTable exported = CsvTable::read(csv);
+        QCOMPARE(int(exported.rows.size()), 64);
+        QVERIFY(std::abs(*exported.number(0, "illuminance_lux") / result->lux[0] - 1) < 1e-8);
 
         // An edit marks the result out of date; Compute again follows the edit.
         Light brighter = w.document()->scene().lights[0];
@@ -159,14 +151,10 @@ private slots:
         Viewport* vp = w.findChild<Viewport*>("viewport");
         QVERIFY(vp);
         QTRY_VERIFY_WITH_TIMEOUT(w.livePreview()->frame() != nullptr, kTimeout);
-        const auto click = [&](const V3d& world) {
+        const auto clickAt = [&](const V3d& world) {
             const auto at = vp->mapping().toWidget(world);
             QVERIFY(at);
-            for (const auto type : {QEvent::MouseButtonPress, QEvent::MouseButtonRelease}) {
-                QMouseEvent e(type, *at, vp->mapToGlobal(*at), Qt::LeftButton,
-                              type == QEvent::MouseButtonPress ? Qt::LeftButton : Qt::NoButton, Qt::NoModifier);
-                QApplication::sendEvent(vp, &e);
-            }
+            click(vp, *at);
         };
         child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.05);
 
@@ -174,8 +162,8 @@ private slots:
         child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.1);
         QTest::mouseClick(child<QPushButton>(*panel, "gridDraw"), Qt::LeftButton);
         QVERIFY(vp->tool() == Viewport::Tool::GridRectangle);
-        click(V3d(60, 0, 20));
-        click(V3d(500, 0, 55));
+        clickAt(V3d(60, 0, 20));
+        clickAt(V3d(500, 0, 55));
         QVERIFY(vp->tool() == Viewport::Tool::Navigate);
         QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("horizontal"));
         QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
@@ -191,8 +179,8 @@ private slots:
         // The back wall above the blocks, on the wall itself.
         child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
         QTest::mouseClick(child<QPushButton>(*panel, "gridDraw"), Qt::LeftButton);
-        click(V3d(60, 450, 559.2));
-        click(V3d(500, 530, 559.2));
+        clickAt(V3d(60, 450, 559.2));
+        clickAt(V3d(500, 530, 559.2));
         QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("wall"));
         QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);

@@ -6,6 +6,7 @@
 
 #include "core/exr_io.h"
 #include "core/scene_io.h"
+#include "window_test_helpers.h"
 #include "ui/autosave.h"
 #include "ui/commands/light_commands.h"
 #include "ui/recent_files.h"
@@ -45,31 +46,11 @@
 #include <QtTest>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
 
-QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
-
-void trigger(MainWindow& w, const char* name) {
-    auto* action = w.findChild<QAction*>(name);
-    QVERIFY2(action, name);
-    QVERIFY2(action->isEnabled(), name);
-    action->trigger();
-}
-
-// Types a value into a spin box and presses Enter, as a user does.
-void typeInto(QDoubleSpinBox* spin, double value) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, QString::number(value));
-    QTest::keyClick(spin, Qt::Key_Return);
-}
-
-void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons) {
-    QMouseEvent e(type, pos, w->mapToGlobal(pos), button, buttons, Qt::NoModifier);
-    QApplication::sendEvent(w, &e);
-}
 
 void drag(QWidget* w, QPointF from, QPointF to, Qt::MouseButton button, int steps = 5) {
     sendMouse(w, QEvent::MouseButtonPress, from, button, button);

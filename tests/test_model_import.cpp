@@ -7,6 +7,7 @@
 #include "core/model_import.h"
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
+#include "window_test_helpers.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
 
@@ -25,6 +26,7 @@
 #include <set>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 // Declared before the files' raw strings, which moc's tokenizer does not follow.
 class TestModelImport : public QObject {
@@ -49,7 +51,6 @@ private:
 namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
 
-QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
 
 void writeFile(const QString& path, const QByteArray& text) {
     QFile f(path);

@@ -8,6 +8,7 @@
 #include "core/image.h"
 #include "core/scene_io.h"
 #include "render/trace/surface_pick.h"
+#include "window_test_helpers.h"
 #include "ui/camera_navigation.h"
 #include "ui/light_gizmo.h"
 #include "ui/light_placement.h"
@@ -28,31 +29,13 @@
 #include <QtTest>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
 
-QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
 
 QString str(const V3d& v) { return QString("(%1, %2, %3)").arg(v.x, 0, 'g', 12).arg(v.y, 0, 'g', 12).arg(v.z, 0, 'g', 12); }
-
-void trigger(MainWindow& w, const char* name) {
-    auto* action = w.findChild<QAction*>(name);
-    QVERIFY2(action, name);
-    QVERIFY2(action->isEnabled(), name);
-    action->trigger();
-}
-
-void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons,
-               Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
-    QMouseEvent e(type, pos, w->mapToGlobal(pos), button, buttons, modifiers);
-    QApplication::sendEvent(w, &e);
-}
-
-void click(QWidget* w, QPointF pos, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
-    sendMouse(w, QEvent::MouseButtonPress, pos, Qt::LeftButton, Qt::LeftButton, modifiers);
-    sendMouse(w, QEvent::MouseButtonRelease, pos, Qt::LeftButton, Qt::NoButton, modifiers);
-}
 
 void drag(QWidget* w, QPointF from, QPointF to, int steps = 6) {
     sendMouse(w, QEvent::MouseButtonPress, from, Qt::LeftButton, Qt::LeftButton);

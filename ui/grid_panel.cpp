@@ -18,7 +18,6 @@
 #include <QVBoxLayout>
 
 #include <cmath>
-#include <fstream>
 
 namespace lucerna {
 
@@ -242,12 +241,7 @@ void GridPanel::showResult() {
 
 void GridPanel::exportCsv(const QString& path) const {
     if (!shown_) throw std::runtime_error("no grid result to export");
-    const std::string text = gridCsv(layout_, shown_->lux, shown_->errorLux);
-    writeAtomically(path.toStdString(), [&](const std::string& temp) {
-        std::ofstream out(temp);
-        out << text;
-        if (!out.flush()) throw std::runtime_error("cannot write " + path.toStdString());
-    });
+    writeTextAtomically(path.toStdString(), gridCsv(layout_, shown_->lux, shown_->errorLux));
 }
 
 void GridPanel::exportClicked() {
