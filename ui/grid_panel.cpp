@@ -34,7 +34,7 @@ QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, dou
 }
 }  // namespace
 
-GridPanel::GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent) : QWidget(parent), doc_(doc), tasks_(tasks) {
+GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QWidget(parent), doc_(doc), gate_(gate) {
     height_ = lengthField(this, "gridHeight", 0.8, -1000, 1000, tr(" m"));
     border_ = lengthField(this, "gridBorder", 0.5, 0, 1000, tr(" m"));
     spacing_ = lengthField(this, "gridSpacing", 0, 0, 1000, tr(" m"));
@@ -156,7 +156,8 @@ void GridPanel::compute() {
     shownVersion_ = 0;
     stale_ = false;
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
-                          latest = latest_](TaskContext& ctx) {
+                          latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
+        const YieldGate::Scope hold(gate);
         const RenderScene renderScene(scene, 8, 8);  // the camera is unused
         computeGridIlluminance(renderScene, points, normal, settings, ctx, [&](const GridResult& r) {
             latest->publish(std::make_shared<const GridResult>(r));

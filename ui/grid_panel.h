@@ -4,12 +4,15 @@
 // clicks; core/calculation_grid.h, gridFromCorners), its illuminance computed in the background with a Monte Carlo error bar per point
 // (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
 // Emax and U0, and exported as CSV. A scene edit marks the result as out of date; Compute runs
-// again on the current scene.
+// again on the current scene. The calculation is a foreground request: it runs in a task arena of
+// its own (in the converging render's, whose job never ends, it could wait behind the render's
+// passes indefinitely) and holds the yield gate, so the render waits until it is done.
 
 #include "core/calculation_grid.h"
 #include "core/document.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
+#include "ui/yield_gate.h"
 
 #include <QTimer>
 #include <QWidget>
@@ -29,7 +32,7 @@ namespace lucerna {
 class GridPanel : public QWidget {
     Q_OBJECT
 public:
-    GridPanel(Document* doc, TaskSystem& tasks, QWidget* parent = nullptr);
+    GridPanel(Document* doc, const YieldGate& gate, QWidget* parent = nullptr);
     ~GridPanel() override;
 
     void compute();   // starts on the document's current scene (cancels a running calculation)
@@ -57,7 +60,7 @@ private:
     void exportClicked();
 
     Document* doc_;
-    TaskSystem& tasks_;
+    YieldGate gate_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
     QComboBox* method_;
     QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
@@ -72,6 +75,7 @@ private:
     std::optional<Drawn> drawn_;  // nothing: the work plane over the whole room
     GridLayout layout_;
     std::shared_ptr<Latest<GridResult>> latest_;
+    TaskSystem tasks_;  // before job_: the job ends before its arena goes
     std::shared_ptr<TaskHandle> job_;
     std::shared_ptr<const GridResult> shown_;
     uint64_t shownVersion_ = 0;

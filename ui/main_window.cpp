@@ -78,11 +78,9 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
 }
 
 MainWindow::~MainWindow() {
-    // The jobs first, while everything they report to is still there (the grid panel, a child
-    // widget, would otherwise outlive the task arena its job runs in).
+    // The jobs first, while everything they report to is still there.
     render_.reset();
     preview_.reset();
-    if (gridPanel_) gridPanel_->cancel();
 }
 
 void MainWindow::createDocks() {
@@ -107,7 +105,7 @@ void MainWindow::createDocks() {
     compare_->setObjectName("compareView");
     QDockWidget* compareDock = dock(compare_, tr("Comparison"), "compareDock", Qt::RightDockWidgetArea);
     tabifyDockWidget(renderDock, compareDock);
-    gridPanel_ = new GridPanel(doc_.get(), tasks_, this);
+    gridPanel_ = new GridPanel(doc_.get(), gate_, this);
     gridPanel_->setObjectName("gridPanel");
     tabifyDockWidget(renderDock, dock(gridPanel_, tr("Calculation grid"), "gridDock", Qt::RightDockWidgetArea));
     renderDock->raise();
