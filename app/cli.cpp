@@ -9,6 +9,7 @@
 #include "render/progressive/backend.h"
 #include "render/progressive/progressive_render.h"
 #include "render/photometry/illuminance_layer.h"
+#include "render/preview/preview_backend.h"
 #include "render/progressive/light_layers/layered_backend.h"
 #include "render/trace/surface_layers.h"
 #include "ui/display.h"
@@ -57,12 +58,8 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
             const auto bits = parseLayerList(value(), &error);
             if (!bits) throw UsageError("--layers: " + error);
             r.layers = *bits;
-        } else if (a == "--option") {
-            const std::string& kv = value();
-            const auto eq = kv.find('=');
-            if (eq == std::string::npos || eq == 0) throw UsageError("--option expects name=value, got '" + kv + "'");
-            r.settings.options[kv.substr(0, eq)] = kv.substr(eq + 1);
-        } else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
+        } else if (a == "--option") addBackendOption(value(), r.settings.options);
+        else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (r.scene.empty()) r.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
     }
@@ -106,6 +103,9 @@ int renderImpl(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
     if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
+    const std::optional<GridMethod> illuminanceMethod = gridMethodFromName(backendName);
+    if ((r.layers & kIlluminanceLayer) && !illuminanceMethod && backendName != "preview")
+        throw UsageError("--layers illuminance: backend " + backendName + " has no illuminance estimator");
 
     catchInterrupts();
     TaskSystem tasks(r.threads);
@@ -118,8 +118,15 @@ int renderImpl(const std::vector<std::string>& args) {
         if (ctx.isCancelled()) return;
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
-            const RenderScene compiled(scene, frame.image.width, frame.image.height);
-            illuminance = traceIlluminanceLayer(compiled, r.illuminanceSpp, r.settings.seed, ctx);
+            // By the render's own backend (illuminance_layer.h; the preview's in preview.h).
+            if (backendName == "preview") {
+                illuminance = previewIlluminanceLayer(scene, frame.image.width, frame.image.height,
+                                                      previewSettingsFromOptions(r.settings), r.illuminanceSpp,
+                                                      r.settings.seed);
+            } else {
+                const RenderScene compiled(scene, frame.image.width, frame.image.height);
+                illuminance = traceIlluminanceLayer(compiled, *illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx);
+            }
             if (ctx.isCancelled()) return;
         }
         result = std::move(frame);

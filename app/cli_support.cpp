@@ -50,6 +50,12 @@ void waitShowingProgress(TaskHandle& job, const std::string& label) {
     job.rethrowIfFailed();
 }
 
+void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options) {
+    const auto eq = nameValue.find('=');
+    if (eq == std::string::npos || eq == 0) throw UsageError("--option expects name=value, got '" + nameValue + "'");
+    options[nameValue.substr(0, eq)] = nameValue.substr(eq + 1);
+}
+
 int runCommand(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args) {
     try {
         return impl(args);

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <memory>
+#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -24,6 +25,9 @@ T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
                          "], got '" + text + "'");
     return value;
 }
+
+// Adds "name=value" (an --option's value) to `options`; UsageError when it has no name or '='.
+void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options);
 
 // Routes SIGINT and SIGTERM to a flag that long commands poll (they stop within a pass and
 // write nothing).

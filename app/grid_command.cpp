@@ -5,6 +5,7 @@
 #include "core/calculation_grid.h"
 #include "core/scene_io.h"
 #include "render/photometry/grid_calculation.h"
+#include "render/progressive/backend.h"
 #include "ui/scene_geometry.h"
 
 #include <cmath>
@@ -56,12 +57,14 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--method") {
             const std::string& m = value();
             const auto method = gridMethodFromName(m);
-            if (!method) throw UsageError("--method: expected path or ir, got '" + m + "'");
+            if (!method) throw UsageError("--method: expected path, ir, bdpt, mir, mlt or cmlt, got '" + m + "'");
             g.settings.method = *method;
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
         else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);
         else if (a == "--seed") g.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--samples") g.settings.samplesPerPass = parseNumber<int>(a, value(), 1, 1 << 20);
+        else if (a == "--option") addBackendOption(value(), g.settings.backendOptions);
+        else if (a == "--replicas") g.settings.replicas = parseNumber<int>(a, value(), 2, 1024);
         else if (a == "--vpl-paths") g.settings.vplPathsPerPass = parseNumber<int>(a, value(), 1, 1 << 24);
         else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--csv") g.csv = value();
@@ -111,6 +114,16 @@ int gridImpl(const std::vector<std::string>& args) {
         layout = layoutGrid(g.grid, scene->metersPerUnit);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
+    }
+
+    if (g.settings.method != GridMethod::Path && g.settings.method != GridMethod::Vpl) {
+        RenderSettings check;  // the backend's own parser judges the options before any work
+        check.options = g.settings.backendOptions;
+        try {
+            findBackend(gridMethodName(g.settings.method))->make(scene, check);
+        } catch (const std::invalid_argument& e) {
+            throw UsageError(e.what());
+        }
     }
 
     catchInterrupts();

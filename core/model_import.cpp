@@ -315,8 +315,15 @@ void Mapper::mapLight(const aiLight& light) {
         std::string text = tag + (l.type == LightType::Point ? "point" : "spot") + " " + format("%g", spec.value) +
                            " cd" + unitNote;
         if (l.type == LightType::Spot) {
-            const double outer = std::clamp(double(light.mAngleOuterCone) * 180.0 / M_PI, 1e-3, 179.0);
-            const double inner = double(light.mAngleInnerCone) * 180.0 / M_PI;
+            // Assimp passes on each format's convention: glTF measures its cone angles from the
+            // axis, COLLADA (falloff_angle) and FBX across the whole cone, so those are halved.
+            // For COLLADA, Assimp widens the outer angle by a penumbra it makes up from the
+            // falloff exponent; the format's cone ends at falloff_angle, so ours ends there too.
+            const bool dae = formatName == "DAE";
+            const double toHalfDeg = (gltf ? 1.0 : 0.5) * 180.0 / M_PI;
+            const double outer =
+                std::clamp(double(dae ? light.mAngleInnerCone : light.mAngleOuterCone) * toHalfDeg, 1e-3, 179.0);
+            const double inner = dae ? 0.0 : double(light.mAngleInnerCone) * toHalfDeg;
             l.coneAngleDeg = outer;
             if (inner > 0 && inner < outer) l.falloffStartDeg = inner;
             text += ", cone " + format("%g", outer) + " deg" +

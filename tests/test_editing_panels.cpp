@@ -4,6 +4,7 @@
 // screen; and `lucerna render --layers`. Checks the document, the undo stack and the pixels.
 
 #include "core/exr_io.h"
+#include "core/luminaire.h"
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
 #include "window_test_helpers.h"
@@ -97,6 +98,7 @@ private slots:
     void materialPanelEditsTheMaterial();
     void objectPanelMovesAndReassigns();
     void importMesh();
+    void addLuminaire();
     void exportImagesWithLayers();
     void renderCommandWritesLayers();
 
@@ -310,6 +312,61 @@ void TestEditingPanels::objectPanelMovesAndReassigns() {
     QCOMPARE(panel->translateFields()[0]->value(), 0.0);
     QCOMPARE(material->material(), doc->scene().materialIndex("white"));
     QVERIFY(!doc->isModified());
+}
+
+// Edit > Add Luminaire (without its file dialog): the bundled downlight's IES file becomes a
+// luminaire hung over the middle of the room, nadir down, at the file's flux; one undo step,
+// selected, saved with a path relative to the scene and read back; the floor under it brightens.
+void TestEditingPanels::addLuminaire() {
+    const QString scenePath = copyOfCornell("luminaire.json");
+    Window win(scenePath);
+    QVERIFY(win.exposed);
+    MainWindow& w = win.w;
+    Document* doc = w.document();
+    const auto before = previewOfCurrent(w);
+    QVERIFY(before);
+    const size_t lights = doc->scene().lights.size();
+    const int steps = doc->undoStack()->count();
+
+    const QString bad = dir_.filePath("broken.ies");
+    {
+        QFile f(bad);
+        QVERIFY(f.open(QIODevice::WriteOnly));
+        f.write("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1\n");
+    }
+    QVERIFY(!w.addLuminaireFile(bad));
+    QVERIFY(!w.lastError().isEmpty() && !w.lastError().contains('\n'));
+    QCOMPARE(doc->scene().lights.size(), lights);
+    QCOMPARE(doc->undoStack()->count(), steps);
+
+    const QString ies = QString(LUCERNA_RESOURCE_DIR) + "/scenes/luminaires/downlight.ies";
+    QVERIFY2(w.addLuminaireFile(ies), qPrintable(w.lastError()));
+    QCOMPARE(doc->scene().lights.size(), lights + 1);
+    QCOMPARE(doc->undoStack()->count(), steps + 1);
+    const Light added = doc->scene().lights.back();
+    QCOMPARE(added.name, std::string("downlight"));
+    QCOMPARE(added.type, LightType::Luminaire);
+    QVERIFY(added.luminaire && added.luminaire->distribution);
+    QVERIFY(!QDir::isAbsolutePath(QString::fromStdString(added.luminaire->file)));
+    QCOMPARE(added.direction, V3d(0, -1, 0));
+    const double fileFlux = luminaireFlux(added);
+    QVERIFY(fileFlux > 0);
+    QVERIFY(w.saveFileAs(dir_.filePath("luminaire-saved.json")));
+    const Scene reloaded = loadScene(dir_.filePath("luminaire-saved.json").toStdString());
+    QCOMPARE(reloaded.lights.back().luminaire->file,
+             QDir(dir_.path()).relativeFilePath(QFileInfo(ies).absoluteFilePath()).toStdString());
+    QVERIFY(std::abs(luminaireFlux(reloaded.lights.back()) / fileFlux - 1) < 1e-9);
+
+    // The floor in the middle of the image brightens (the downlight points at it).
+    const auto after = previewOfCurrent(w);
+    QVERIFY(after);
+    const double floorBefore = luminance(regionMean(before->image, 0.35, 0.65, 0.8, 0.95));
+    const double floorAfter = luminance(regionMean(after->image, 0.35, 0.65, 0.8, 0.95));
+    QVERIFY2(floorAfter > 1.2 * floorBefore, qPrintable(QString("%1 -> %2").arg(floorBefore).arg(floorAfter)));
+    w.grab().save("add_luminaire.png");
+
+    w.findChild<QAction*>("actionUndo")->trigger();
+    QCOMPARE(doc->scene().lights.size(), lights);
 }
 
 void TestEditingPanels::importMesh() {

@@ -46,6 +46,13 @@ CalculationGrid floorUnderTheEmitter() {
     return g;
 }
 
+// Within twice the 95% error bar (fails about once in a million runs, not once in twenty) for
+// an unbiased method; within `bias` of the expected value for the preview.
+bool agrees(const GridResult& r, size_t i, double expected, double bias) {
+    if (bias > 0) return std::abs(r.lux[i] / expected - 1) <= bias;
+    return std::abs(r.lux[i] - expected) <= 2 * r.errorLux[i];
+}
+
 GridSettings settingsFor(GridMethod method, double target) {
     GridSettings s;
     s.method = method;
@@ -136,13 +143,20 @@ private slots:
     // A point light 1 m over a floor in a millimetre scene: E = I cos / (d mpu)^2 at every point.
     // Both estimators are exact here (the floor sees nothing but the light), so the tolerance is
     // float rounding.
+    // Every method: path and ir by their estimators to 1%, the others (rendering the points as
+    // irradiance sensors, slower per point) to 3%. The preview converges to its own answer
+    // (clamped VPLs, shadow maps): it is held to `bias` of the closed form instead of its error bar.
     void pointLightIsExact_data() {
         QTest::addColumn<int>("method");
-        QTest::newRow("path") << int(GridMethod::Path);
-        QTest::newRow("ir") << int(GridMethod::Vpl);
+        QTest::addColumn<double>("target");
+        QTest::addColumn<double>("bias");
+        for (GridMethod m : kGridMethods)
+            QTest::newRow(gridMethodName(m)) << int(m) << (m == GridMethod::Path || m == GridMethod::Vpl ? 0.01 : 0.03)
+                                             << (m == GridMethod::Preview ? 0.03 : 0.0);
     }
     void pointLightIsExact() {
         QFETCH(int, method);
+        QFETCH(double, target);
         DeltaLightOverPlane s;
         const SceneSnapshot scene = sceneFromJson(s.json());
         CalculationGrid g;
@@ -151,7 +165,7 @@ private slots:
         g.edgeV = V3d(0, 0, -3000);
         g.spacingMeters = 0.5;
         const GridLayout layout = layoutGrid(g, 0.001);
-        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), target));
         QVERIFY(r.converged);
         for (size_t i = 0; i < layout.points.size(); ++i) {
             const V3d d = V3d(0, s.h, 0) - layout.points[i];
@@ -167,16 +181,18 @@ private slots:
     void rectangularEmitterMatchesLambert_data() { pointLightIsExact_data(); }
     void rectangularEmitterMatchesLambert() {
         QFETCH(int, method);
+        QFETCH(double, target);
+        QFETCH(double, bias);
         RectangleOverPlane s;
         const SceneSnapshot scene = sceneFromJson(s.json());
         const CalculationGrid g = floorUnderTheEmitter();
         const GridLayout layout = layoutGrid(g, 1.0);
-        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), target));
         QVERIFY(r.converged);
         for (size_t i = 0; i < layout.points.size(); ++i) {
             const double expected =
                 683.0 * s.radiance * lambertPolygonIrradiance(layout.points[i], V3d(0, 1, 0), s.emitter());
-            QVERIFY2(std::abs(r.lux[i] - expected) <= 2 * r.errorLux[i] && r.errorLux[i] <= 0.0101 * r.lux[i],
+            QVERIFY2(agrees(r, i, expected, bias) && r.errorLux[i] <= 1.01 * target * r.lux[i],
                      qPrintable(QString("point %1: %2 +- %3 lx, expected %4").arg(i).arg(r.lux[i]).arg(r.errorLux[i]).arg(expected)));
         }
     }
@@ -186,20 +202,22 @@ private slots:
     void areaAndDeltaLightsTogether_data() { pointLightIsExact_data(); }
     void areaAndDeltaLightsTogether() {
         QFETCH(int, method);
+        QFETCH(double, target);
+        QFETCH(double, bias);
         RectangleOverPlane s;
         std::string json = s.json();
         json.insert(json.size() - 1, R"(, "lights": [{"name": "bulb", "type": "point", "position": [0.3, 0.6, -0.2], "intensity": [0.5, 0.5, 0.5]}])");
         const SceneSnapshot scene = sceneFromJson(json);
         const CalculationGrid g = floorUnderTheEmitter();
         const GridLayout layout = layoutGrid(g, 1.0);
-        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), 0.01));
+        const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), target));
         QVERIFY(r.converged);
         for (size_t i = 0; i < layout.points.size(); ++i) {
             const V3d d = V3d(0.3, 0.6, -0.2) - layout.points[i];  // below the emitter: nothing between
             const double point = 0.5 * (d.y / d.length()) / d.length2();
             const double expected =
                 683.0 * (s.radiance * lambertPolygonIrradiance(layout.points[i], V3d(0, 1, 0), s.emitter()) + point);
-            QVERIFY2(std::abs(r.lux[i] - expected) <= 2 * r.errorLux[i],
+            QVERIFY2(agrees(r, i, expected, bias),
                      qPrintable(QString("point %1: %2 +- %3 lx, expected %4").arg(i).arg(r.lux[i]).arg(r.errorLux[i]).arg(expected)));
         }
     }
@@ -210,14 +228,16 @@ private slots:
     void sphereInteriorIsPiTimesShellRadiance_data() { pointLightIsExact_data(); }
     void sphereInteriorIsPiTimesShellRadiance() {
         QFETCH(int, method);
+        QFETCH(double, target);
+        QFETCH(double, bias);
         SphereWithEmittingCap s;
         s.rings = 24;
         s.segments = 48;
         const SceneSnapshot scene = sceneFromJson(s.json());
-        const GridResult r = computeGrid(scene, {V3d(0, 0, 0)}, V3d(0, -1, 0), settingsFor(GridMethod(method), 0.01));
+        const GridResult r = computeGrid(scene, {V3d(0, 0, 0)}, V3d(0, -1, 0), settingsFor(GridMethod(method), target));
         QVERIFY(r.converged);
         const double expected = 683.0 * std::numbers::pi * s.expectedRadiance();
-        QVERIFY2(std::abs(r.lux[0] - expected) <= 2 * r.errorLux[0],
+        QVERIFY2(agrees(r, 0, expected, bias),
                  qPrintable(QString("%1 +- %2 lx, expected %3").arg(r.lux[0]).arg(r.errorLux[0]).arg(expected)));
     }
 
@@ -232,7 +252,8 @@ private slots:
         const RenderScene renderScene(scene);
         TaskSystem tasks(0);
         std::vector<float> lux;
-        auto job = tasks.submit([&](TaskContext& ctx) { lux = traceIlluminanceLayer(renderScene, 4, 1, ctx); });
+        auto job = tasks.submit(
+            [&](TaskContext& ctx) { lux = traceIlluminanceLayer(renderScene, GridMethod::Path, 4, 1, ctx); });
         job->wait();
         const std::vector<double> expected = expectedFloorImage(s.camera(), [&](const V3d& p) {
             const V3d d = V3d(0, s.h, 0) - p;
@@ -247,6 +268,49 @@ private slots:
         }
         QVERIFY2(std::abs(sum / sumExpected - 1) < 0.005, qPrintable(QString::number(sum / sumExpected)));
         QVERIFY2(worst < 0.05, qPrintable(QString::number(worst)));
+    }
+
+    // The illuminance layer by every backend's machinery (and the preview's) under a square
+    // emitter, against Lambert's formula averaged over each pixel: the mean over the image, and
+    // separately over the middle (under the emitter) and the rest, within 3% (the backends put
+    // one sensor at each pixel's centre rather than box-filtering: well under 1% here). 4096
+    // passes: the Metropolis chains mix slowly over 256 sensors (cmlt's middle was 3.5% off at
+    // 1024 passes, 2.1% at 4096; path, ir, bdpt, mir within 0.25%, the preview 2.5%, its area
+    // light being 16 shadow-mapped points per frame).
+    void illuminanceLayerMatchesLambert_data() {
+        QTest::addColumn<int>("method");
+        for (GridMethod m : kGridMethods) QTest::newRow(gridMethodName(m)) << int(m);
+    }
+    void illuminanceLayerMatchesLambert() {
+        QFETCH(int, method);
+        RectangleOverPlane s;
+        s.resolution = 16;
+        const SceneSnapshot scene = sceneFromJson(s.json());
+        std::vector<float> lux;
+        const RenderScene renderScene(scene);
+        TaskSystem tasks(0);
+        const int passes = GridMethod(method) == GridMethod::Preview ? 16 : 4096;  // preview: frames
+        auto job = tasks.submit(
+            [&](TaskContext& ctx) { lux = traceIlluminanceLayer(renderScene, GridMethod(method), passes, 1, ctx); });
+        job->wait();
+        job->rethrowIfFailed();
+        const auto e = s.emitter();
+        const std::vector<double> expected = expectedFloorImage(
+            s.camera(), [&](const V3d& p) { return 683.0 * s.radiance * lambertPolygonIrradiance(p, V3d(0, 1, 0), e); });
+        QCOMPARE(lux.size(), expected.size());
+        double sums[2] = {0, 0}, expectedSums[2] = {0, 0};
+        for (int y = 0; y < s.resolution; ++y)
+            for (int x = 0; x < s.resolution; ++x) {
+                const size_t i = size_t(y) * s.resolution + x;
+                const bool middle = std::abs(x - 7.5) < 4 && std::abs(y - 7.5) < 4;
+                sums[middle] += lux[i];
+                expectedSums[middle] += expected[i];
+            }
+        for (int region = 0; region < 2; ++region)
+            QVERIFY2(std::abs(sums[region] / expectedSums[region] - 1) < 0.03,
+                     qPrintable(QString("%1: %2").arg(region ? "middle" : "rest").arg(sums[region] / expectedSums[region])));
+        const double all = (sums[0] + sums[1]) / (expectedSums[0] + expectedSums[1]);
+        QVERIFY2(std::abs(all - 1) < 0.03, qPrintable(QString::number(all)));
     }
 
     // Cancelling stops the calculation at a pass boundary, with what it had.

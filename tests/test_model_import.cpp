@@ -36,6 +36,7 @@ private slots:
     void objWithMtl();
     void gltfMaterialsLightsAndTransforms();
     void colladaUnit();
+    void colladaLights();
     void fbxUnit();
     void texturesAveraged();
     void directionalLightOnly();
@@ -192,6 +193,25 @@ const char* kDae = R"(<?xml version="1.0" encoding="utf-8"?>
   <scene><instance_visual_scene url="#scene"/></scene>
 </COLLADA>
 )";
+// The triangle's file with a point light (colour 50) 2 m up and a spot (colour 80, a 60 degree
+// cone across) 3 m up and 1 m along x pointing down, both placed by their nodes in centimetres.
+std::string daeWithLights() {
+    std::string dae = kDae;
+    const std::string lights = R"(  <library_lights>
+    <light id="bulb-light" name="Bulb"><technique_common><point><color>50 50 50</color>
+      <constant_attenuation>1</constant_attenuation></point></technique_common></light>
+    <light id="spot-light" name="Spot"><technique_common><spot><color>80 80 80</color>
+      <falloff_angle>60</falloff_angle></spot></technique_common></light>
+  </library_lights>
+)";
+    dae.insert(dae.find("  <library_visual_scenes>"), lights);
+    const std::string nodes = R"(<node id="bulb" name="Bulb"><translate>0 200 0</translate><instance_light url="#bulb-light"/></node>
+      <node id="spot" name="Spot"><translate>100 300 0</translate><rotate>1 0 0 -90</rotate><instance_light url="#spot-light"/></node>
+    )";
+    dae.insert(dae.find("</visual_scene>"), nodes);
+    return dae;
+}
+
 // FBX 7.4 ASCII: one triangle 100 x 100 units in inches (UnitScaleFactor 2.54 cm), its model
 // translated 10 units along x, a Phong material.
 const char* kFbx = R"(; FBX 7.4.0 project file
@@ -421,6 +441,39 @@ void TestModelImport::colladaUnit() {
     QCOMPARE(m.materials[0].type, MaterialType::Diffuse);
     QVERIFY(near(m.materials[0].albedo, Rgbd(0.9, 0.5, 0.1)));
     QVERIFY2(reportHas(m.report, "COLLADA", "unit"), qPrintable(report));
+}
+
+// COLLADA lights: placed and aimed by their nodes (centimetres to metres), intensities read as
+// candela since the format states no photometric unit, and the report says so.
+void TestModelImport::colladaLights() {
+    const QString path = dir_.filePath("lights.dae");
+    writeFile(path, QByteArray::fromStdString(daeWithLights()));
+    const ModelImport m = importModel(path.toStdString(), {});
+    const QString report = joined(m.report);
+    QCOMPARE(m.lights.size(), size_t(2));
+    const auto byName = [&](const std::string& prefix) -> const Light* {
+        for (const Light& l : m.lights)
+            if (l.name.rfind(prefix, 0) == 0) return &l;
+        return nullptr;
+    };
+    const Light* bulb = byName("bulb");  // named after their nodes' ids
+    const Light* spot = byName("spot");
+    QVERIFY2(bulb && spot, qPrintable(report));
+    QCOMPARE(bulb->type, LightType::Point);
+    QVERIFY2(near(bulb->position, V3d(0, 2, 0), 1e-5), qPrintable(report));
+    QVERIFY(bulb->photometric && bulb->photometric->quantity == PhotometricSpec::Quantity::Candela);
+    QVERIFY(std::abs(bulb->photometric->value - 50) < 1e-4);
+    QCOMPARE(spot->type, LightType::Spot);
+    QVERIFY2(near(spot->position, V3d(1, 3, 0), 1e-5), qPrintable(report));
+    // COLLADA lights shine along their node's -z; the node turns -z to -y.
+    QVERIFY2(near(spot->direction, V3d(0, -1, 0), 1e-5),
+             qPrintable(QString("%1 %2 %3").arg(spot->direction.x).arg(spot->direction.y).arg(spot->direction.z)));
+    // falloff_angle is the whole cone: a 30 degree half-angle, with the format's hard edge.
+    QVERIFY2(std::abs(spot->coneAngleDeg - 30) < 1e-3, qPrintable(QString::number(spot->coneAngleDeg)));
+    QVERIFY(!spot->falloffStartDeg);
+    QVERIFY(spot->photometric && std::abs(spot->photometric->value - 80) < 1e-4);
+    QVERIFY2(reportHas(m.report, "'bulb'", "50 cd") && reportHas(m.report, "'bulb'", "assumed"), qPrintable(report));
+    QVERIFY2(reportHas(m.report, "'spot'", "cone 30 deg"), qPrintable(report));
 }
 
 void TestModelImport::fbxUnit() {

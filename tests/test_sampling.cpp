@@ -8,6 +8,7 @@
 
 #include "render/trace/bsdf.h"
 #include "render/trace/rng.h"
+#include "render/trace/sensor.h"
 #include "render/trace/warp.h"
 #include "tests/chi_square.h"
 
@@ -20,7 +21,7 @@ using namespace lucerna;
 
 namespace {
 
-constexpr int kStatisticalTests = 55;
+constexpr int kStatisticalTests = 56;
 constexpr double kSignificance = 0.01 / kStatisticalTests;
 int g_statisticalTestsRun = 0;
 
@@ -190,6 +191,41 @@ private slots:
             nextSeed(), significance());
         VERIFY_CHI2("cosine hemisphere", r);
         QVERIFY(std::abs(r.pdfIntegral - 1.0) < 1e-4);
+    }
+
+    // An irradiance sensor's block of pixels maps onto its hemisphere with density cos / pi
+    // (render/trace/sensor.h), and rasterPoint() inverts the map.
+    void irradianceSensorDirections() {
+        const Sensor sensor({{V3f(0, 0, 0), V3f(0, 1, 0)}, {V3f(1, 2, 3), V3f(0.3f, -0.5f, 0.8f)}, {V3f(0, 0, 0), V3f(1, 0, 0)}}, 2);
+        QCOMPARE(sensor.width(), 6);
+        QCOMPARE(sensor.height(), 2);
+        const auto r = chiSquareSphere(
+            [&](Rng& rng, V3f& w) {
+                const V2f u = rng.next2D();
+                w = sensor.ray(2.0f + 2.0f * u.x, 2.0f * u.y).direction;
+                return true;
+            },
+            [&](const V3f& w) { return double(sensor.pdfDirection(1, w)); }, 20, 40, kSamples, nextSeed(),
+            significance());
+        VERIFY_CHI2("irradiance sensor", r);
+        QVERIFY(std::abs(r.pdfIntegral - 1.0) < 1e-4);
+
+        Rng rng(7, 0);
+        for (int i = 0; i < 1000; ++i) {
+            const V2f u = rng.next2D();
+            const float x = 2.0f + 2.0f * u.x, y = 2.0f * u.y;
+            const Ray ray = sensor.ray(x, y);
+            QCOMPARE(sensor.pointAt(x), 1);
+            QVERIFY(ray.origin == V3f(1, 2, 3));
+            float bx = 0, by = 0;
+            QVERIFY(sensor.rasterPoint(1, ray.direction, bx, by));
+            // phi wraps at v = 0 and 1; r^2 = u loses precision near the pole
+            QVERIFY2(std::abs(bx - x) < 1e-3f && std::min(std::abs(by - y), 2.0f - std::abs(by - y)) < 1e-3f,
+                     qPrintable(QString("(%1, %2) -> (%3, %4)").arg(x).arg(y).arg(bx).arg(by)));
+        }
+        float bx = 0, by = 0;  // the side behind the sensor is not measured
+        QVERIFY(!sensor.rasterPoint(1, -sensor.normal(1), bx, by));
+        QCOMPARE(sensor.pdfDirection(1, -sensor.normal(1)), 0.0f);
     }
 
     void uniformSphere() {

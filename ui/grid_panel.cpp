@@ -42,8 +42,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     target_ = lengthField(this, "gridTarget", 2, 0.1, 50, tr(" %"));
     method_ = new QComboBox(this);
     method_->setObjectName("gridMethod");
-    method_->addItem(tr("path"), int(GridMethod::Path));
-    method_->addItem(tr("ir"), int(GridMethod::Vpl));
+    for (GridMethod m : kGridMethods) method_->addItem(QString::fromLatin1(gridMethodName(m)), int(m));
     compute_ = new QPushButton(tr("Compute"), this);
     compute_->setObjectName("gridCompute");
     cancel_ = new QPushButton(tr("Cancel"), this);
@@ -184,12 +183,16 @@ void GridPanel::cancel() {
 void GridPanel::poll() {
     if (!job_) return;
     progress_->setValue(int(std::lround(1000 * job_->progress())));
+    // Whether it finished, before the newest result is read: the job publishes its last pass
+    // before it finishes, so a job seen finished has nothing left to publish (read the other way
+    // round, a pass published in between would never be shown).
+    const bool jobDone = job_->isFinished();
     if (latest_->version() != shownVersion_) {
         shownVersion_ = latest_->version();
         shown_ = latest_->get();
         showResult();
     }
-    if (!job_->isFinished()) return;
+    if (!jobDone) return;
     poll_.stop();
     QString error;
     try {

@@ -14,6 +14,7 @@
 #include "ui/light_properties.h"
 #include "ui/image_export.h"
 #include "ui/live_preview.h"
+#include "ui/luminaire_import.h"
 #include "ui/mesh_import.h"
 #include "ui/model_import_action.h"
 #include "ui/outliner.h"
@@ -212,6 +213,11 @@ void MainWindow::createMenus() {
         [this] { addLight(LightType::Spot); });
     add(edit, tr("Add &Directional Light"), "actionAddDirectionalLight", QKeySequence(tr("Ctrl+Alt+D")),
         [this] { addLight(LightType::Directional); });
+    add(edit, tr("Add &Luminaire..."), "actionAddLuminaire", QKeySequence(tr("Ctrl+Alt+L")), [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Add a luminaire"), {},
+                                                          tr("Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)"));
+        if (!path.isEmpty() && !addLuminaireFile(path)) QMessageBox::warning(this, tr("Add luminaire"), lastError_);
+    });
     add(edit, tr("D&uplicate"), "actionDuplicate", QKeySequence(tr("Ctrl+D")), [this] { duplicateSelection(); });
     add(edit, tr("&Delete"), "actionDelete", QKeySequence::Delete, [this] { deleteSelection(); });
     // Placing and aiming by clicking a surface: the viewport's tools, also on a tool bar.
@@ -411,6 +417,21 @@ void MainWindow::addLight(LightType type) {
     doc_->undoStack()->push(new AddLightCommand(doc_.get(), index, light,
                                                 tr("Add %1").arg(QString::fromStdString(light.name))));
     outliner_->select(Outliner::Kind::Light, index);
+}
+
+bool MainWindow::addLuminaireFile(const QString& path) {
+    Light light;
+    try {
+        light = luminaireFromFile(*doc_, path);
+    } catch (const std::exception& e) {
+        fail(tr("Could not add %1: %2").arg(path, QString::fromStdString(e.what())));
+        return false;
+    }
+    const int index = int(doc_->scene().lights.size());
+    const QString text = tr("Add %1").arg(QString::fromStdString(light.name));
+    doc_->undoStack()->push(new AddLightCommand(doc_.get(), index, std::move(light), text));
+    outliner_->select(Outliner::Kind::Light, index);
+    return true;
 }
 
 void MainWindow::duplicateSelection() {

@@ -58,6 +58,9 @@ public:
     // Adds a model (OBJ+MTL, glTF, FBX, COLLADA, ...: objects, materials, lights) in one undo
     // step and shows the import report (ui/model_import_action.h) in a non-modal window.
     bool importModelFile(const QString& path);
+    // Edit > Add Luminaire without its file dialog: adds the IES or EULUMDAT file's luminaire as
+    // one undo step and selects it; false (and a status message) when the file cannot be read.
+    bool addLuminaireFile(const QString& path);
     // Before unsaved changes are lost: asks (Save, Discard, Cancel); true when it may go on.
     bool maybeSave();
     // Replaces the question maybeSave() asks (tests answer without a modal dialog).

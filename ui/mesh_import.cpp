@@ -33,6 +33,13 @@ std::string uniqueMaterialName(const Scene& scene, const std::string& base) {
 }
 }  // namespace
 
+std::string scenePathOf(const Document& doc, const QString& file) {
+    const QString absolute = QFileInfo(file).absoluteFilePath();
+    const std::string& baseDir = doc.scene().baseDir;
+    const bool saved = !doc.path().empty() && !baseDir.empty();
+    return (saved ? QDir(QString::fromStdString(baseDir)).relativeFilePath(absolute) : absolute).toStdString();
+}
+
 MeshImport importMesh(const Document& doc, const QString& file) {
     const Scene& scene = doc.scene();
     const QFileInfo info(file);
@@ -48,9 +55,7 @@ MeshImport importMesh(const Document& doc, const QString& file) {
     out.material.albedo = Rgbd(0.8, 0.8, 0.8);
     out.object.material = out.material.name;
     out.object.mesh.kind = MeshSource::Kind::File;
-    const bool saved = !doc.path().empty() && !scene.baseDir.empty();
-    out.object.mesh.file =
-        (saved ? QDir(QString::fromStdString(scene.baseDir)).relativeFilePath(absolute) : absolute).toStdString();
+    out.object.mesh.file = scenePathOf(doc, file);
 
     const Box m = boundsOf(mesh.vertices);
     const double side = m.largestSide();

@@ -13,6 +13,10 @@ struct MeshImport {
     Material material;  // diffuse, light grey
 };
 
+// `file` as a scene file stores a path: relative to the scene's folder when the scene has a
+// file, absolute for an untitled scene.
+std::string scenePathOf(const Document& doc, const QString& file);
+
 // The object for `file`: named after the file (unique among objects and lights), the path
 // relative to the scene's folder when the scene has a file, absolute for an untitled scene. A
 // mesh already within the scene's size range keeps its coordinates; one far smaller or larger

@@ -1,5 +1,6 @@
 #include "render/photometry/grid_calculation.h"
 
+#include "render/photometry/grid_statistics.h"
 #include "render/vpl/instant_radiosity.h"
 
 #include <algorithm>
@@ -10,43 +11,31 @@
 namespace lucerna {
 
 std::optional<GridMethod> gridMethodFromName(const std::string& name) {
-    if (name == "path") return GridMethod::Path;
-    if (name == "ir") return GridMethod::Vpl;
+    for (GridMethod m : kGridMethods)
+        if (name == gridMethodName(m)) return m;
     return std::nullopt;
 }
 
-const char* gridMethodName(GridMethod method) { return method == GridMethod::Path ? "path" : "ir"; }
-
-namespace {
-
-// Running sums of a point's pass means.
-struct BatchMeans {
-    double sum = 0, sumSquares = 0;
-
-    void add(double x) {
-        sum += x;
-        sumSquares += x * x;
+const char* gridMethodName(GridMethod method) {
+    switch (method) {
+    case GridMethod::Path: return "path";
+    case GridMethod::Vpl: return "ir";
+    case GridMethod::Bdpt: return "bdpt";
+    case GridMethod::Mir: return "mir";
+    case GridMethod::Mlt: return "mlt";
+    case GridMethod::Cmlt: return "cmlt";
+    case GridMethod::Preview: return "preview";
     }
-    double mean(int n) const { return n > 0 ? sum / n : 0.0; }
-    // 1.96 standard errors of the mean of n batch means.
-    double halfWidth95(int n) const {
-        if (n < 2) return std::numeric_limits<double>::infinity();
-        const double m = mean(n);
-        const double variance = std::max(0.0, (sumSquares - n * m * m) / (n - 1));
-        return 1.96 * std::sqrt(variance / n);
-    }
-};
-
-double relativeError(double mean, double halfWidth) {
-    if (halfWidth == 0) return 0;
-    return mean > 0 ? halfWidth / mean : std::numeric_limits<double>::infinity();
+    return "?";
 }
 
-}  // namespace
 
 GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                   const GridSettings& settings, TaskContext& ctx,
                                   const std::function<void(const GridResult&)>& onPass) {
+    if (settings.method == GridMethod::Preview) return computeGridByPreview(scene, points, normal, settings, ctx, onPass);
+    if (settings.method != GridMethod::Path && settings.method != GridMethod::Vpl)
+        return computeGridByBackend(scene, points, normal, settings, ctx, onPass);
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const IrradianceEstimator estimator(scene);
@@ -83,26 +72,9 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
 
         result.passes = pass + 1;
         result.samplesPerPoint = static_cast<long long>(result.passes) * samples;
-        result.maxRelativeError = 0;
-        for (size_t i = 0; i < points.size(); ++i) {
-            batches[i].add(passMean[i]);
-            result.lux[i] = batches[i].mean(result.passes);
-            result.errorLux[i] = batches[i].halfWidth95(result.passes);
-            result.maxRelativeError =
-                std::max(result.maxRelativeError, relativeError(result.lux[i], result.errorLux[i]));
-        }
+        for (size_t i = 0; i < points.size(); ++i) batches[i].add(passMean[i]);
         result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        result.converged =
-            result.passes >= settings.minPasses && result.maxRelativeError <= settings.targetRelativeError;
-        double progress = result.passes >= settings.minPasses && std::isfinite(result.maxRelativeError)
-                              ? std::min(1.0, std::pow(settings.targetRelativeError / result.maxRelativeError, 2.0))
-                              : 0.0;
-        if (settings.timeLimitSeconds > 0)
-            progress = std::max(progress, std::min(1.0, result.seconds / settings.timeLimitSeconds));
-        ctx.setProgress(progress);
-        if (onPass) onPass(result);
-        if (result.converged) break;
-        if (settings.timeLimitSeconds > 0 && result.seconds >= settings.timeLimitSeconds) break;
+        if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
     }
     return result;
 }

@@ -1,8 +1,18 @@
 #pragma once
-// Illuminance on the points of a calculation grid (core/calculation_grid.h), progressively: each
-// pass adds independent estimates at every point, and the error bar of a point comes from the
-// spread of its per-pass means (batch means: within a pass the VPL method shares one VPL set
-// between points and samples, across passes everything is independent).
+// Illuminance on the points of a calculation grid (core/calculation_grid.h), progressively, by
+// one of two kinds of method:
+//   - path, ir: the irradiance estimators of those backends (irradiance_estimator.h). Each pass
+//     adds independent estimates at every point, and the error bar of a point comes from the
+//     spread of its per-pass means (batch means: within a pass the VPL method shares one VPL set
+//     between points and samples, across passes everything is independent).
+//   - bdpt, mir, mlt, cmlt: the backend itself renders the grid's points as irradiance sensors
+//     (sensor.h), in independent replicas (own seeds, own chains, own normalisations); the error
+//     bar comes from the spread of the replicas' estimates (Student's t), since the passes of a
+//     Markov chain are not independent. Delta lights, which no ray can hit, are summed exactly
+//     and added, as the path and ir estimators do.
+//   - preview: a hemicube of preview frames at each point (preview_irradiance.h), fresh VPLs and
+//     area-light samples each pass, error bars from the pass means as for path and ir. It
+//     converges to the preview's own answer (clamped VPLs, shadow maps), not to the exact one.
 //
 // The error bar is the 95% half-width, 1.96 standard errors of the mean. The calculation ends
 // when every point's error bar is within the target fraction of its value (after a few passes,
@@ -12,14 +22,18 @@
 #include "render/photometry/irradiance_estimator.h"
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace lucerna {
 
-enum class GridMethod { Path, Vpl };
+enum class GridMethod { Path, Vpl, Bdpt, Mir, Mlt, Cmlt, Preview };
+inline constexpr GridMethod kGridMethods[] = {GridMethod::Path, GridMethod::Vpl, GridMethod::Bdpt, GridMethod::Mir,
+                                              GridMethod::Mlt,  GridMethod::Cmlt, GridMethod::Preview};
 
-// "path" or "ir" (the backends whose estimators these are); nothing for another name.
+// The name of the backend whose machinery a method uses ("path", "ir", "bdpt", "mir", "mlt",
+// "cmlt", "preview"); nothing for another name.
 std::optional<GridMethod> gridMethodFromName(const std::string& name);
 const char* gridMethodName(GridMethod method);
 
@@ -31,7 +45,10 @@ struct GridSettings {
     int samplesPerPass = 0;
     int vplPathsPerPass = 16;      // Vpl: light paths of each pass's VPL set
     double targetRelativeError = 0.02;
-    int minPasses = 8;             // before the spread of the pass means is trusted
+    int minPasses = 8;             // path, ir: before the spread of the pass means is trusted
+    int replicas = 8;              // bdpt, mir, mlt, cmlt: independent renders of the sensors
+    int sensorPixelsPerSide = 2;   // bdpt, mir, mlt, cmlt: each point's block of pixels (sensor.h)
+    std::map<std::string, std::string> backendOptions;  // bdpt, mir, mlt, cmlt: as render's --option
     double timeLimitSeconds = 0;   // 0: no limit
     uint64_t seed = 1;
 };
@@ -39,8 +56,8 @@ struct GridSettings {
 struct GridResult {
     std::vector<double> lux;         // mean illuminance per point
     std::vector<double> errorLux;    // 95% half-width per point (infinite before two passes)
-    int passes = 0;
-    long long samplesPerPoint = 0;
+    int passes = 0;                  // path, ir: passes; the others: passes of each replica
+    long long samplesPerPoint = 0;   // estimates (camera samples) per point, all replicas together
     double seconds = 0;
     double maxRelativeError = 0;     // max over points of errorLux / lux (0 / 0 counts as 0)
     bool converged = false;          // every point within the target

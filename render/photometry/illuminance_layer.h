@@ -1,22 +1,30 @@
 #pragma once
 // The illuminance layer of an image (issue 7, EXR channel `illuminance.Y`): per pixel, the
 // illuminance in lux (683 Y(E)) at the first diffuse or glossy surface the camera sees, through
-// mirrors and glass, on the side the camera path arrives from. Pixel values are box-filtered as
-// R, G, B are (SPEC.md section 3): each estimate follows a camera ray through a uniform point of
-// the pixel, and the irradiance there is estimated by IrradianceEstimator (path). 0 where the
-// camera sees no such surface (the sky, an emitter).
+// mirrors and glass, on the side the camera path arrives from; 0 where the camera sees no such
+// surface (the sky, an emitter). Estimated by the machinery of the render's backend:
+//   - path, ir: box-filtered as R, G, B are (SPEC.md section 3): each estimate follows a camera
+//     ray through a uniform point of the pixel to its surface, where IrradianceEstimator (the
+//     path or the VPL estimator, one fresh VPL set per estimate index) measures E.
+//   - bdpt, mir, mlt, cmlt: the surface behind each pixel's centre becomes an irradiance sensor
+//     and the backend renders all of them together (sensor_render.h); one point per pixel, not
+//     box-filtered.
+//   - preview: white-receiver preview frames (preview.h, previewIlluminanceLayer), with the
+//     preview's default settings.
 
 #include "core/task_system.h"
+#include "render/photometry/grid_calculation.h"
 #include "render/trace/render_scene.h"
 
 #include <vector>
 
 namespace lucerna {
 
-// `samplesPerPixel` estimates per pixel at the RenderScene's camera resolution, row-major from the
-// top-left as Image::pixels. Cancellable between rows (the result is then incomplete: discard
-// it); progress goes to ctx. Never throws.
-std::vector<float> traceIlluminanceLayer(const RenderScene& scene, int samplesPerPixel, uint64_t seed,
-                                         TaskContext& ctx);
+// `samplesPerPixel` estimates per pixel (path, ir), or passes of the backend (the others), at
+// the RenderScene's camera resolution, row-major from the top-left as Image::pixels.
+// Cancellable (the result is then incomplete: discard it); progress goes to ctx. Throws only
+// what a backend's prepare() throws.
+std::vector<float> traceIlluminanceLayer(const RenderScene& scene, GridMethod method, int samplesPerPixel,
+                                         uint64_t seed, TaskContext& ctx);
 
 }  // namespace lucerna

@@ -24,12 +24,15 @@ IrradianceEstimator::IrradianceEstimator(const RenderScene& scene, const GatherS
 
 // The sensor as a point of a surface: a sensor lying on a wall or the floor must spawn its rays
 // off that surface, so its error bound is the one a surface point of this scene could have there.
+float IrradianceEstimator::errorBound(const V3f& p) const {
+    return std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), errorScale_}) * 4.0f * gammaBound(7);
+}
+
 VplReceiver IrradianceEstimator::receiver(const IrradianceSensor& sensor) const {
     VplReceiver r;
     const V3f& p = sensor.position;
-    const float scale = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), errorScale_});
     r.x.p = p;
-    r.x.pError = V3f(scale * 4.0f * gammaBound(7));
+    r.x.pError = V3f(errorBound(p));
     r.x.ng = sensor.normal;
     r.x.triangle = 0xffffffffu;  // no triangle: nothing in the scene is excluded from its rays
     r.material = &white_;
@@ -48,6 +51,16 @@ Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r) const {
         Lo += white_.albedo * ls.value * float(cosTheta / std::numbers::pi);
     }
     return Lo;
+}
+
+Rgb IrradianceEstimator::deltaLightsIrradiance(const IrradianceSensor& sensor) const {
+    return deltaLightsReflected(receiver(sensor)) * float(std::numbers::pi);
+}
+
+IrradianceSensor IrradianceEstimator::lifted(const IrradianceSensor& sensor) const {
+    // spawnOrigin() offsets by the bound's projection on the normal, at most sqrt(3) bounds.
+    const V3f n = sensor.normal.normalized();
+    return IrradianceSensor{sensor.position + n * (4.0f * errorBound(sensor.position)), n};
 }
 
 Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) const {

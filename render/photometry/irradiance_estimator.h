@@ -25,12 +25,6 @@
 
 namespace lucerna {
 
-// A point where irradiance is measured, and the unit normal of the side it is measured on.
-struct IrradianceSensor {
-    V3f position;
-    V3f normal;
-};
-
 class IrradianceEstimator {
 public:
     explicit IrradianceEstimator(const RenderScene& scene, const GatherSettings& gather = {});
@@ -40,9 +34,17 @@ public:
     // One sample of E at the sensor: direct light and the clamp residual by path tracing, the
     // indirect light from `vpls` (an unbiased VPL set, instant_radiosity.h).
     Rgb sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const;
+    // E at the sensor from the delta lights alone, exactly (one shadow ray each): what a sensor
+    // rendered by a backend misses (sensor.h).
+    Rgb deltaLightsIrradiance(const IrradianceSensor& sensor) const;
+    // The sensor moved off a surface it may lie on, along its normal, by more than the error
+    // bound of a surface point there: a position a backend's rays can start from.
+    IrradianceSensor lifted(const IrradianceSensor& sensor) const;
 
 private:
     VplReceiver receiver(const IrradianceSensor& sensor) const;
+    // Error bound of a point of this scene's surfaces near p (per axis).
+    float errorBound(const V3f& p) const;
     // Radiance the white surface reflects toward its normal from all delta lights together.
     Rgb deltaLightsReflected(const VplReceiver& r) const;
 

@@ -18,6 +18,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lucerna {
 
@@ -103,6 +104,11 @@ public:
     // Off by default: on llvmpipe the two extra read-backs cost ~35 ms at 640x480, a third of
     // a frame, so only the lux view asks for them.
     void setAlbedoLayer(bool on) { albedoLayer_ = on; }
+    // With white receivers on, render() gives what white Lambertian surfaces (albedo 1) in place
+    // of every diffuse and glossy one would reflect under the same direct light and VPLs: E / pi,
+    // the irradiance over pi (0 on emitters, mirrors, glass and the background). The VPLs keep
+    // the scene's own materials. For the illuminance layer (previewIlluminanceLayer).
+    void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
     const PreviewTimings& timings() const;
 
     // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings and
@@ -124,6 +130,13 @@ private:
     std::unique_ptr<State> state_;
     PreviewSettings settings_;
     bool albedoLayer_ = false;
+    bool whiteReceivers_ = false;
 };
+
+// The illuminance layer (lux, render/photometry/illuminance_layer.h) as the preview sees it: the
+// mean of `frames` white-receiver frames, each with fresh VPLs and a uniform point of every
+// pixel (the box filter), times 683 pi Y. At the scene's camera or width x height.
+std::vector<float> previewIlluminanceLayer(SceneSnapshot scene, int width, int height,
+                                           const PreviewSettings& settings, int frames, uint64_t seed);
 
 }  // namespace lucerna

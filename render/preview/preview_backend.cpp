@@ -58,6 +58,8 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), previewSettings_(previewSettingsFromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
+        if (settings_.sensor)
+            throw std::runtime_error("the preview renders only through the camera, not irradiance sensors");
         preview_ = std::make_unique<Preview>();
         preview_->setSettings(previewSettings_);
         preview_->setScene(snapshot_, settings_.width, settings_.height);

@@ -382,6 +382,7 @@ Image Preview::render(float jitterX, float jitterY) {
     glUseProgram(st.gbufferProgram.id());
     glProgramUniformMatrix4fv(st.gbufferProgram.id(), loc(st.gbufferProgram, "viewProj"), 1, GL_FALSE, vp.m.data());
     setVec3(st.gbufferProgram, "cameraPos", eye);
+    setInt(st.gbufferProgram, "whiteReceivers", whiteReceivers_ ? 1 : 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.triangles.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.materials.id());
     glBindVertexArray(st.sceneVao.id());
@@ -434,6 +435,7 @@ Image Preview::render(float jitterX, float jitterY) {
     setInt(d, "lightCount", int(st.directLights.size()));
     setVec3(d, "cameraPos", eye);
     setFloat(d, "shadowBias", 0.02f);
+    setFloat(d, "texelAngle", 2.0f / float(std::max(s.shadowSize, 1)));
     setInt(d, "addDirect", s.direct ? 1 : 0);
     setInt(d, "firstArea", st.firstAreaLight);
     {

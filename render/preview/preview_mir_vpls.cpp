@@ -19,7 +19,7 @@ VplSet generateMirVpls(const RenderScene& scene, const LightSampler& lights, con
     gather.clampFraction = settings.clampFraction;
     VplOptions vplOptions;
     vplOptions.maxBounces = settings.maxBounces;
-    const PinholeCamera camera(cameraDesc, width, height);
+    const Sensor camera(PinholeCamera(cameraDesc, width, height));
     const VplGatherer gatherer(scene, gather);
     const float maxG = gatherer.maxG();
     const MirPathLayout layout = mirPathLayout(gather, vplOptions);

@@ -32,7 +32,7 @@ struct CameraProbe {
 // (chosen by power) and a shadow ray. Surfaces seen through mirrors and glass are not probed.
 CameraProbe probeCamera(const RenderScene& scene) {
     CameraProbe p;
-    const PinholeCamera& camera = scene.camera();
+    const Sensor& camera = scene.camera();
     const int nx = 48, ny = 36;
     Rng rng(0x6175746f, 0);
     for (int j = 0; j < ny; ++j)

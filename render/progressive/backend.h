@@ -6,6 +6,7 @@
 #include "core/scene.h"
 #include "core/task_system.h"
 #include "render/progressive/film.h"
+#include "render/trace/sensor.h"
 
 #include <map>
 #include <memory>
@@ -20,6 +21,10 @@ struct RenderSettings {
     double seconds = 0.0;   // wall-clock budget after prepare() (0: not given)
     uint64_t seed = 0;
     int width = 0, height = 0;  // override the camera's resolution (0: keep)
+    // Irradiance sensors to measure instead of the camera (calculation grids, the illuminance
+    // layer); nullptr: the camera. Backends that cannot measure them (the preview) refuse in
+    // prepare().
+    std::shared_ptr<const Sensor> sensor;
     // Backend-specific options, "name=value" from the command line or the UI.
     std::map<std::string, std::string> options;
 };

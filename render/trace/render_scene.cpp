@@ -2,10 +2,12 @@
 
 namespace lucerna {
 
-RenderScene::RenderScene(SceneSnapshot scene, int width, int height)
+RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Sensor* sensor)
     : scene_(std::move(scene)), features_(analyseFeatures(*scene_)) {
     const Scene& s = *scene_;
-    camera_ = PinholeCamera(s.camera, width > 0 ? width : s.camera.width, height > 0 ? height : s.camera.height);
+    camera_ = sensor ? *sensor
+                     : Sensor(PinholeCamera(s.camera, width > 0 ? width : s.camera.width,
+                                            height > 0 ? height : s.camera.height));
     metersPerUnit_ = float(s.metersPerUnit);
     for (const Material& m : s.materials) materials_.push_back(ShadingMaterial::fromMaterial(m));
 

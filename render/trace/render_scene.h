@@ -5,7 +5,7 @@
 
 #include "core/scene.h"
 #include "render/trace/bsdf.h"
-#include "render/trace/camera.h"
+#include "render/trace/sensor.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/light_sampler.h"
 #include "render/trace/surface_point.h"
@@ -19,12 +19,14 @@ namespace lucerna {
 
 class RenderScene {
 public:
-    // width/height: the film resolution (the camera's own when <= 0).
-    RenderScene(SceneSnapshot scene, int width = 0, int height = 0);
+    // width/height: the film resolution (the camera's own when <= 0). With `sensor`, the film
+    // measures that sensor instead of the scene's camera (irradiance sensors; sensor.h).
+    RenderScene(SceneSnapshot scene, int width = 0, int height = 0, const Sensor* sensor = nullptr);
 
     const Scene& scene() const { return *scene_; }
+    const SceneSnapshot& snapshot() const { return scene_; }
     const SceneFeatures& features() const { return features_; }
-    const PinholeCamera& camera() const { return camera_; }
+    const Sensor& camera() const { return camera_; }
     const EmbreeScene& accel() const { return *accel_; }
     const LightSampler& lights() const { return lights_; }
     float metersPerUnit() const { return metersPerUnit_; }
@@ -60,7 +62,7 @@ public:
 private:
     SceneSnapshot scene_;
     SceneFeatures features_;
-    PinholeCamera camera_;
+    Sensor camera_;
     float metersPerUnit_ = 1.0f;
     std::vector<ShadingMaterial> materials_;
     std::vector<V3f> positions_;

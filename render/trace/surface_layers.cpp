@@ -22,7 +22,7 @@ Rgb layerAlbedo(const Material& m) {
 }  // namespace
 
 SurfaceLayers traceSurfaceLayers(const RenderScene& scene) {
-    const PinholeCamera& camera = scene.camera();
+    const Sensor& camera = scene.camera();
     SurfaceLayers out;
     out.width = camera.width();
     out.height = camera.height();

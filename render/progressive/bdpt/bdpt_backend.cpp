@@ -23,7 +23,7 @@ BdptSettings BdptSettings::fromOptions(const RenderSettings& settings) {
 
 void renderBdptPass(const RenderScene& scene, const BdptSettings& settings, uint64_t seed, int pass, Film& film,
                     TaskContext& ctx) {
-    const PinholeCamera& camera = scene.camera();
+    const Sensor& camera = scene.camera();
     const int tile = settings.tileSize;
     const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
     const int half = pass % 2;
@@ -76,7 +76,7 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), bdptSettings_(BdptSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
 

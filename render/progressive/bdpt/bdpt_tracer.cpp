@@ -8,12 +8,13 @@ BdptTracer::BdptTracer(const RenderScene& scene, const BdptSettings& settings)
     light_.reserve(16);
 }
 
-PathVertex BdptTracer::cameraVertex() const {
+PathVertex BdptTracer::cameraVertex(int point) const {
     PathVertex c;
     c.kind = VertexKind::Camera;
-    c.sp.p = scene_.camera().position();
+    c.light = uint32_t(point);
+    c.sp.p = scene_.camera().position(point);
     c.sp.pError = V3f(0, 0, 0);
-    c.sp.ng = scene_.camera().forward();
+    c.sp.ng = scene_.camera().normal(point);
     c.beta = Rgb(1, 1, 1);
     return c;
 }
@@ -81,9 +82,10 @@ void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool 
 
 void BdptTracer::traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit,
                                     SampleGenerator& rng) {
-    camera_.push_back(cameraVertex());
+    const int point = scene_.camera().pointAt(x);
+    camera_.push_back(cameraVertex(point));
     const Ray ray = scene_.camera().ray(x, y);
-    randomWalk(ray, Rgb(1, 1, 1), densities_.cameraPdfDirection(ray.direction), settings_.maxDepth + 1, true, rng,
+    randomWalk(ray, Rgb(1, 1, 1), densities_.cameraPdfDirection(point, ray.direction), settings_.maxDepth + 1, true, rng,
                camera_, primaryHit);
 }
 
@@ -131,16 +133,21 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
     } else if (t == 1) {
         const PathVertex& qs = light_[s - 1];
         if (!connectible(qs) || qs.kind == VertexKind::Camera) return L;
-        sampled = cameraVertex();
+        const Sensor& camera = scene_.camera();
+        // One sensor point, uniformly (no number is drawn for the pinhole's single one).
+        const int point = camera.pointCount() == 1
+                              ? 0
+                              : std::min(camera.pointCount() - 1, int(rng.next1D() * float(camera.pointCount())));
+        sampled = cameraVertex(point);
         sampledPtr = &sampled;
         const V3f d = sampled.p() - qs.p();
         const float dist2 = d.length2();
         if (!(dist2 > 0.0f)) return L;
-        const V3f w = d / std::sqrt(dist2);  // from the light vertex to the pinhole
-        if (!scene_.camera().rasterPoint(-w, rasterX, rasterY)) return L;
+        const V3f w = d / std::sqrt(dist2);  // from the light vertex to the sensor point
+        if (!camera.rasterPoint(point, -w, rasterX, rasterY)) return L;
         const Rgb f = qs.kind == VertexKind::AreaLight ? densities_.emitted(qs, w) : densities_.bsdf(qs, w);
-        // beta f |cos| G We: the pinhole has no cosine of its own; We cos = 1 / (A cos^3).
-        L = qs.beta * f * (std::abs(qs.sp.ng.dot(w)) * densities_.cameraImportance(-w) / dist2);
+        // beta f |cos| G We: the camera's cosine is in We cos (1 / (A cos^3) for the pinhole).
+        L = qs.beta * f * (std::abs(qs.sp.ng.dot(w)) * densities_.cameraImportance(point, -w) / dist2);
         if (isBlack(L)) return L;
         const V3f from = qs.sp.spawnOrigin(w);
         if (scene_.occluded(Ray{from, sampled.p() - from, 0.0f, kShadowRayEnd})) return Rgb(0, 0, 0);
@@ -255,7 +262,7 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
     }
     rng.beginStream(SampleStream::Connection);
 
-    const PinholeCamera& camera = scene_.camera();
+    const Sensor& camera = scene_.camera();
     const auto splat = [&](const Rgb& value, float rx, float ry) {
         if (isBlack(value) || !isFinite(value)) return;
         const int px = std::clamp(int(rx), 0, camera.width() - 1), py = std::clamp(int(ry), 0, camera.height() - 1);

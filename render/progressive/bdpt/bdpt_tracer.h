@@ -57,7 +57,7 @@ private:
     // the pinhole (t = 1) that replaces the subpath's own.
     float misWeight(int s, int t, const PathVertex* sampled) const;
     bool connectible(const PathVertex& v) const;
-    PathVertex cameraVertex() const;
+    PathVertex cameraVertex(int point) const;
 
     const RenderScene& scene_;
     BdptSettings settings_;

@@ -16,14 +16,6 @@ float VertexDensities::toArea(float pdfSolidAngle, const PathVertex& from, const
     return pdf;
 }
 
-float VertexDensities::cameraPdfDirection(const V3f& dir) const {
-    const PinholeCamera& camera = scene_.camera();
-    float x, y;
-    if (!camera.rasterPoint(dir, x, y)) return 0.0f;
-    const float cosTheta = dir.dot(camera.forward());
-    return 1.0f / (camera.imagePlaneArea() * cosTheta * cosTheta * cosTheta);
-}
-
 float VertexDensities::bsdfPdf(const PathVertex& v, const V3f& wFrom, const V3f& wTo) const {
     const ShadingMaterial& mat = scene_.material(v.sp.material);
     const Frame frame(shadingNormalToward(mat, v.sp.ng, wFrom));
@@ -42,7 +34,7 @@ float VertexDensities::pdf(const PathVertex& v, const PathVertex* prev, const Pa
     const float len = d.length();
     if (!(len > 0.0f)) return 0.0f;
     const V3f wn = d / len;
-    if (v.kind == VertexKind::Camera) return toArea(cameraPdfDirection(wn), v, next);
+    if (v.kind == VertexKind::Camera) return toArea(cameraPdfDirection(int(v.light), wn), v, next);
     if (!prev) return 0.0f;
     const V3f wp = (prev->p() - v.p()).normalized();
     return toArea(bsdfPdf(v, wp, wn), v, next);

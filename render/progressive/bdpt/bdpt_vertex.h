@@ -30,7 +30,7 @@ struct PathVertex {
     float pdfFwd = 0;      // area density of this vertex generated from its predecessor
     float pdfRev = 0;      // area density of this vertex generated from its successor (other direction)
     bool delta = false;    // scattered here by a delta BSDF (mirror, glass): cannot be connected
-    uint32_t light = 0;    // lights: LightSample::light numbering
+    uint32_t light = 0;    // lights: LightSample::light numbering; the camera: its sensor point
 
     const V3f& p() const { return sp.p; }
     bool onSurface() const { return kind == VertexKind::Surface || kind == VertexKind::AreaLight; }
@@ -60,13 +60,16 @@ public:
     // never compared: their strategy s = 0 does not exist).
     float pdfLightOrigin(const PathVertex& v) const;
 
-    // Solid-angle density of the pinhole's camera rays, for all the image together (pbrt's
-    // Pdf_We): 1 / (A cos^3 theta), A the image plane's area at distance 1; 0 off the image.
-    float cameraPdfDirection(const V3f& dir) const;
-    // The pinhole's importance times cos theta, We cos = 1 / (A cos^3 theta): a light-tracing
+    // Solid-angle density of the camera rays of sensor point `point` (pbrt's Pdf_We; the
+    // pinhole's is 1 / (A cos^3 theta) for all the image together, A the image plane's area at
+    // distance 1; an irradiance sensor's is cos theta / pi; sensor.h). 0 where no ray goes.
+    float cameraPdfDirection(int point, const V3f& dir) const { return scene_.camera().pdfDirection(point, dir); }
+    // The importance times cos theta, We cos, equal to that density: a light-tracing
     // contribution arriving along -dir weighs this much per unit of radiance and solid angle,
-    // for an image whose pixels each receive one light subpath per pass.
-    float cameraImportance(const V3f& dir) const { return cameraPdfDirection(dir); }
+    // for an image whose pixels each receive one light subpath per pass (with several sensor
+    // points, the one it joins is chosen uniformly, and the choice's 1 / n cancels against the
+    // n blocks of the image).
+    float cameraImportance(int point, const V3f& dir) const { return cameraPdfDirection(point, dir); }
 
     // f(wo, wi) of a Surface vertex toward unit direction `wi` (two-sided frame flipped toward
     // the vertex's own wo, glass keeping its front side as the path tracer does).

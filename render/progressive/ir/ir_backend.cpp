@@ -15,7 +15,7 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), ir_(IrSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
         gatherer_ = std::make_unique<VplGatherer>(*scene_, ir_.gather);
     }
@@ -25,7 +25,7 @@ public:
         const VplSet vpls = generateVpls(*scene_, ir_.lightPathsPerPass, hashSeed(settings_.seed, uint64_t(pass), 0x1a1),
                                          ir_.vpl);
         vplCount_ += vpls.size();
-        const PinholeCamera& camera = scene_->camera();
+        const Sensor& camera = scene_->camera();
         const int half = pass % 2;
         const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
         forEachPixel(camera.width(), camera.height(), ir_.gather.tileSize, ctx, [&](int x, int y) {

@@ -31,7 +31,7 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), mir_(MirSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
         gatherer_ = std::make_unique<VplGatherer>(*scene_, mir_.gather);
         layout_ = mirPathLayout(mir_.gather, mir_.vpl);
@@ -108,7 +108,7 @@ private:
         const size_t m = geo.vpls.size();
         std::vector<float> scale(m, 0.0f);
         if (m == 0 || !(pc > 0)) return scale;
-        const PinholeCamera& camera = scene_->camera();
+        const Sensor& camera = scene_->camera();
         const int s = mir_.normalizationStride, w = camera.width(), h = camera.height();
         const int blocksX = (w + s - 1) / s, blocksY = (h + s - 1) / s;
         std::vector<std::vector<double>> rows(size_t(blocksY), std::vector<double>(m, 0.0));
@@ -141,7 +141,7 @@ private:
 
     // Step 5.
     void gather(TaskContext& ctx, int pass, const std::vector<Vpl>& vpls, const std::vector<float>& scale) {
-        const PinholeCamera& camera = scene_->camera();
+        const Sensor& camera = scene_->camera();
         const int half = pass % 2;
         const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
         forEachPixel(camera.width(), camera.height(), mir_.gather.tileSize, ctx, [&](int x, int y) {

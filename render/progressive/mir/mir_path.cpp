@@ -45,7 +45,7 @@ MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl)
     return l;
 }
 
-double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const PinholeCamera& camera,
+double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const Sensor& camera,
                        const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
                        const std::vector<float>& u, MirPath& path) {
     path.vpls.clear();

@@ -41,7 +41,7 @@ MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl)
 // f(u) = sum_k c_k(u); fills `path`. maxG: the gatherers' clamp bound. The light sub-path
 // starts on `lights` and the camera ray leaves `camera` (the scene's own, or the interactive
 // preview's current ones).
-double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const PinholeCamera& camera,
+double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const Sensor& camera,
                        const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
                        const std::vector<float>& u, MirPath& path);
 

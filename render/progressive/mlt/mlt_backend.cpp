@@ -42,7 +42,7 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), mlt_(mlt), makeChain_(std::move(make)) {}
 
     void prepare(TaskContext& ctx) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
         for (int half = 0; half < 2 && !ctx.isCancelled(); ++half) halves_[half] = bootstrap(ctx, half);
     }
@@ -50,7 +50,7 @@ public:
     void renderPass(TaskContext& ctx, int pass) override {
         const int half = pass % 2;
         ChainSet& set = halves_[half];
-        const PinholeCamera& camera = scene_->camera();
+        const Sensor& camera = scene_->camera();
         const double pixels = double(camera.width()) * double(camera.height());
         const int n = int(set.chains.size());
         if (n == 0) {  // nothing reaches the camera: the image is black

@@ -35,12 +35,16 @@ void finish(const Rgb& L, float x, float y, PathContribution& out) {
 }
 }  // namespace
 
-void evaluatePath(BdptTracer& tracer, const PinholeCamera& camera, PssSampler& sampler, PathContribution& out) {
+void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out) {
     out.deposits.clear();
     out.f = 0;
+    // Uniform over the whole raster; only a product rounded up to the edge is pulled back in (a
+    // clamp to the last pixel's centre would pile the last half pixel onto one point, which on
+    // an irradiance sensor's 2 x 2 block is a quarter of its directions).
     const V2f r = sampler.next2D();
-    const float x = std::min(r.x * float(camera.width()), float(camera.width()) - 0.5f);
-    const float y = std::min(r.y * float(camera.height()), float(camera.height()) - 0.5f);
+    const float w = float(camera.width()), h = float(camera.height());
+    const float x = std::min(r.x * w, std::nextafter(w, 0.0f));
+    const float y = std::min(r.y * h, std::nextafter(h, 0.0f));
     finish(tracer.sample(x, y, sampler, out.deposits), x, y, out);  // sample() appends the light splats
 }
 

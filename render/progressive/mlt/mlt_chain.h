@@ -28,7 +28,7 @@ struct PathContribution {
 };
 
 // Evaluates the BDPT sample that `sampler`'s current iteration maps to.
-void evaluatePath(BdptTracer& tracer, const PinholeCamera& camera, PssSampler& sampler, PathContribution& out);
+void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out);
 // The same with the raster point (x, y) (pixels) and its camera ray's closest hit given: the
 // sampler's first two numbers, which would have chosen the raster point, are read and ignored;
 // with reuseLightSubpath, the tracer's previous light subpath stands for the light stream's.
@@ -70,7 +70,7 @@ public:
     const ChainCounters& counters() const { return counters_; }
 
 protected:
-    const PinholeCamera& camera_;
+    const Sensor& camera_;
     ChainCounters counters_;
 
 private:

@@ -17,7 +17,7 @@ PathSettings PathSettings::fromOptions(const RenderSettings& settings) {
 
 void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint64_t seed, int pass, Film& film,
                     TaskContext& ctx) {
-    const PinholeCamera& camera = scene.camera();
+    const Sensor& camera = scene.camera();
     const int tile = settings.tileSize;
     const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
     const PathTracer tracer(scene, settings);
@@ -48,7 +48,7 @@ public:
         : snapshot_(std::move(scene)), settings_(settings), pathSettings_(PathSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height);
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
 

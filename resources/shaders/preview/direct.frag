@@ -14,6 +14,7 @@ layout(std430, binding = 0) readonly buffer Lights { Light lights[]; };
 uniform int lightCount;
 uniform vec3 cameraPos;
 uniform float shadowBias;
+uniform float texelAngle;  // of the cube shadow maps, at a face's centre (radians)
 uniform int addIndirect;
 uniform int addDirect;
 // With interleaving, the area-light samples lights[firstArea ..] were shaded with the VPLs
@@ -79,9 +80,14 @@ vec3 lightContribution(int i, vec3 y, vec3 n, vec3 wo, vec4 g1, vec4 g2, vec4 g3
         if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
         if (kind == 4) scale *= luminaireCandela(-wi, l.directionCosCone.xyz, l.normalShadow.xyz, l.directionCosCone.w);
         const float layer = l.normalShadow.w;
-        if (scale > 0.0 && layer >= 0.0) {
-            const float stored = texture(shadows, vec4(-wi, layer)).r;
-            if (sqrt(d2) * (1.0 - shadowBias) > stored) scale = 0.0;
+        const float cosY = dot(n, wi);
+        if (scale > 0.0 && layer >= 0.0 && cosY > 0.0) {
+            // Normal offset, as for the VPLs (shade_vpl.frag): a surface the light grazes spans
+            // a range of distances within one texel of the map; looking up from a point lifted
+            // by a texel's footprint removes the acne that a constant bias leaves.
+            const float dist = sqrt(d2);
+            const vec3 e = y + n * (dist * texelAngle * min(2.0 / cosY, 8.0)) - l.positionKind.xyz;
+            if (length(e) * (1.0 - shadowBias) > texture(shadows, vec4(e, layer)).r) scale = 0.0;
         }
     }
     const float cosY = dot(n, wi);

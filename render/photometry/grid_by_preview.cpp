@@ -1,0 +1,58 @@
+// The preview grid method: hemicubes of preview frames at the grid's points, a fresh VPL set
+// each pass, error bars from the pass means (grid_calculation.h).
+
+#include "render/photometry/grid_statistics.h"
+
+#include "render/preview/preview_backend.h"
+#include "render/preview/preview_irradiance.h"
+
+#include <chrono>
+#include <limits>
+
+namespace lucerna {
+
+GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                                const GridSettings& settings, TaskContext& ctx,
+                                const std::function<void(const GridResult&)>& onPass) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    GridResult result;
+    result.lux.assign(points.size(), 0.0);
+    result.errorLux.assign(points.size(), std::numeric_limits<double>::infinity());
+    if (points.empty()) return result;
+
+    const IrradianceEstimator estimator(scene);
+    const V3f n = toFloat(normal).normalized();
+    std::vector<IrradianceSensor> sensors;
+    std::vector<double> deltaLux;
+    for (const V3d& p : points) {
+        const IrradianceSensor s{toFloat(p), n};
+        deltaLux.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
+        sensors.push_back(estimator.lifted(s));
+    }
+    RenderSettings options;  // the preview backend's options (vpls, pattern, clamp, ...)
+    options.seed = settings.seed;
+    options.options = settings.backendOptions;
+    PreviewIrradiance preview(scene.snapshot(), previewSettingsFromOptions(options));
+
+    std::vector<BatchMeans> batches(points.size());
+    for (int pass = 0; !ctx.isCancelled(); ++pass) {
+        const uint64_t passSeed = hashSeed(settings.seed, uint64_t(pass), 0x9e1d);
+        preview.regenerate(passSeed);
+        Rng rng(passSeed, 0x717e7ULL);
+        const V2f jitter = rng.next2D();  // the faces' pixels, box-filtered over the passes
+        std::vector<double> passLux(points.size());
+        for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i)
+            passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors[i], jitter.x, jitter.y))) +
+                         deltaLux[i];
+        if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
+        for (size_t i = 0; i < points.size(); ++i) batches[i].add(passLux[i]);
+        result.passes = pass + 1;
+        result.samplesPerPoint = result.passes;
+        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
+    }
+    return result;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,52 @@
+#include "render/photometry/grid_statistics.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lucerna {
+
+double studentT975(int dof) {
+    static constexpr double kTable[] = {12.706, 4.303, 3.182, 2.776, 2.571, 2.447, 2.365, 2.306, 2.262, 2.228,
+                                        2.201,  2.179, 2.160, 2.145, 2.131, 2.120, 2.110, 2.101, 2.093, 2.086};
+    if (dof < 1) return std::numeric_limits<double>::infinity();
+    if (dof <= 20) return kTable[dof - 1];
+    return 1.96 + 2.4 / dof;  // within 0.3% of the quantile beyond 20 degrees of freedom
+}
+
+double BatchMeans::halfWidth95() const {
+    if (count < 2) return std::numeric_limits<double>::infinity();
+    const double m = mean();
+    const double variance = std::max(0.0, (sumSquares - count * m * m) / (count - 1));
+    return studentT975(count - 1) * std::sqrt(variance / count);
+}
+
+namespace {
+double relativeError(double mean, double halfWidth) {
+    if (halfWidth == 0) return 0;
+    return mean > 0 ? halfWidth / mean : std::numeric_limits<double>::infinity();
+}
+}  // namespace
+
+bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
+                 GridResult& result, const std::function<void(const GridResult&)>& onPass) {
+    result.lux.resize(points.size());
+    result.errorLux.resize(points.size());
+    result.maxRelativeError = 0;
+    for (size_t i = 0; i < points.size(); ++i) {
+        result.lux[i] = points[i].mean();
+        result.errorLux[i] = points[i].halfWidth95();
+        result.maxRelativeError = std::max(result.maxRelativeError, relativeError(result.lux[i], result.errorLux[i]));
+    }
+    result.converged = trusted && result.maxRelativeError <= settings.targetRelativeError;
+    double progress = trusted && std::isfinite(result.maxRelativeError)
+                          ? std::min(1.0, std::pow(settings.targetRelativeError / result.maxRelativeError, 2.0))
+                          : 0.0;
+    if (settings.timeLimitSeconds > 0)
+        progress = std::max(progress, std::min(1.0, result.seconds / settings.timeLimitSeconds));
+    ctx.setProgress(progress);
+    if (onPass) onPass(result);
+    return result.converged || (settings.timeLimitSeconds > 0 && result.seconds >= settings.timeLimitSeconds);
+}
+
+}  // namespace lucerna

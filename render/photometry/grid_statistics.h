@@ -1,0 +1,47 @@
+#pragma once
+// The statistics the grid calculations share (grid_calculation.h): per-point means of
+// independent estimates, their 95% error bars, and the bookkeeping after each round.
+
+#include "core/task_system.h"
+#include "render/photometry/grid_calculation.h"
+
+#include <vector>
+
+namespace lucerna {
+
+// The 0.975 quantile of Student's t with `dof` degrees of freedom (1.96 in the limit): the
+// half-width of a 95% interval from the spread of a few independent estimates.
+double studentT975(int dof);
+
+// Running sums of a point's independent estimates (pass means or replica means).
+struct BatchMeans {
+    double sum = 0, sumSquares = 0;
+    int count = 0;
+
+    void add(double x) {
+        sum += x;
+        sumSquares += x * x;
+        ++count;
+    }
+    double mean() const { return count > 0 ? sum / count : 0.0; }
+    // Half-width of the 95% interval of the mean; infinite below two estimates.
+    double halfWidth95() const;
+};
+
+// Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
+// the caller), decides convergence (only once `trusted`), reports progress and calls onPass.
+// True when the calculation should stop (converged or out of time).
+bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
+                 GridResult& result, const std::function<void(const GridResult&)>& onPass);
+
+// The bdpt, mir, mlt and cmlt methods (grid_calculation.h).
+GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                                const GridSettings& settings, TaskContext& ctx,
+                                const std::function<void(const GridResult&)>& onPass);
+
+// The preview method (grid_calculation.h).
+GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                                const GridSettings& settings, TaskContext& ctx,
+                                const std::function<void(const GridResult&)>& onPass);
+
+}  // namespace lucerna

@@ -1,0 +1,42 @@
+#include "render/photometry/sensor_render.h"
+
+#include <numbers>
+#include <stdexcept>
+
+namespace lucerna {
+
+SensorRender::SensorRender(const RenderScene& scene, const std::string& backend,
+                           const std::vector<IrradianceSensor>& sensors, int pixelsPerSide, uint64_t seed,
+                           const std::map<std::string, std::string>& options) {
+    const BackendInfo* info = findBackend(backend);
+    if (!info) throw std::runtime_error("no backend " + backend);
+    const IrradianceEstimator estimator(scene);
+    std::vector<IrradianceSensor> lifted;
+    lifted.reserve(sensors.size());
+    deltaLux_.reserve(sensors.size());
+    for (const IrradianceSensor& s : sensors) {
+        deltaLux_.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
+        lifted.push_back(estimator.lifted(s));
+    }
+    sensor_ = std::make_shared<const Sensor>(std::move(lifted), pixelsPerSide);
+    RenderSettings rs;
+    rs.seed = seed;
+    rs.sensor = sensor_;
+    rs.options = options;
+    backend_ = info->make(scene.snapshot(), rs);
+}
+
+std::vector<double> SensorRender::lux() const {
+    const Image image = backend_->film().image();
+    const int side = sensor_->pixelsPerSide();
+    std::vector<double> lux(deltaLux_);
+    for (size_t i = 0; i < lux.size(); ++i) {
+        double sum = 0;
+        for (int y = 0; y < side; ++y)
+            for (int x = 0; x < side; ++x) sum += double(luminance(image.at(int(i) * side + x, y)));
+        lux[i] += kLumensPerWatt * std::numbers::pi * sum / double(side * side);
+    }
+    return lux;
+}
+
+}  // namespace lucerna

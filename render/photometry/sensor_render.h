@@ -1,0 +1,38 @@
+#pragma once
+// A backend rendering irradiance sensors (sensor.h) instead of the camera: the bdpt, mir, mlt
+// and cmlt machinery for calculation grids and the illuminance layer. The delta lights, which
+// no ray of a backend can hit, are summed exactly at each sensor and added to what the backend
+// measures; the backend sees the sensors from just above their surfaces.
+
+#include "core/task_system.h"
+#include "render/photometry/irradiance_estimator.h"
+#include "render/progressive/backend.h"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+class SensorRender {
+public:
+    // The backend named `backend` (one that measures sensors; not the preview) over `sensors`,
+    // with seed `seed` and the backend's options. Throws std::runtime_error for an unknown
+    // backend, std::invalid_argument for a bad option.
+    SensorRender(const RenderScene& scene, const std::string& backend, const std::vector<IrradianceSensor>& sensors,
+                 int pixelsPerSide, uint64_t seed, const std::map<std::string, std::string>& options = {});
+
+    void prepare(TaskContext& ctx) { backend_->prepare(ctx); }
+    void renderPass(TaskContext& ctx, int pass) { backend_->renderPass(ctx, pass); }
+    int pixelsPerSensor() const { return sensor_->pixelsPerSide() * sensor_->pixelsPerSide(); }
+    // Illuminance (lux) at each sensor so far: 683 Y of pi times its block's mean pixel (E / pi,
+    // sensor.h), plus the delta lights' exact part.
+    std::vector<double> lux() const;
+
+private:
+    std::shared_ptr<const Sensor> sensor_;
+    std::vector<double> deltaLux_;
+    std::unique_ptr<ProgressiveBackend> backend_;
+};
+
+}  // namespace lucerna
