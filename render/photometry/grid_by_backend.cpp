@@ -38,8 +38,9 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
         replicas.back()->prepare(ctx);
     }
 
-    // Rounds of passes over every replica; a round grows until it lasts a quarter of a second,
-    // so that reading the films back does not dominate.
+    // Rounds of passes over every replica, each round doubled while it takes less than a tenth
+    // of the time so far: the target is checked often enough that the time to reach it is known
+    // within about 10%, and rarely enough that the checks cost nothing.
     int passesPerRound = 1;
     for (int pass = 0; !ctx.isCancelled();) {
         const auto roundStart = Clock::now();
@@ -57,7 +58,7 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
         result.samplesPerPoint = static_cast<long long>(pass) * replicas.front()->pixelsPerSensor() * replicaCount;
         result.seconds = std::chrono::duration<double>(now - start).count();
         if (finishRound(means, true, settings, ctx, result, onPass)) break;
-        if (std::chrono::duration<double>(now - roundStart).count() < 0.25) passesPerRound *= 2;
+        if (std::chrono::duration<double>(now - roundStart).count() < 0.1 * result.seconds) passesPerRound *= 2;
     }
     return result;
 }
