@@ -318,7 +318,7 @@ void printUsage() {
                  "               [--spacing M] [--method path|ir|bdpt|mir|mlt|cmlt|preview] [--error F]\n"
                  "               [--time SECONDS] [--option NAME=VALUE] [--csv OUT.csv]\n"
                  "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
-                 "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M]\n"
+                 "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";
     for (const BackendInfo& b : backendTable()) std::cout << ", " << b.name;

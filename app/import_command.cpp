@@ -1,13 +1,17 @@
 #include "app/import_command.h"
 
 #include "app/cli_support.h"
+#include "core/mesh_file.h"
 #include "core/model_import.h"
 #include "core/scene_io.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <iostream>
 #include <limits>
+#include <set>
 
 namespace lucerna::cli {
 
@@ -36,9 +40,40 @@ Camera cameraFor(const Scene& scene) {
     return camera;
 }
 
+// Each object's mesh to a PLY file of its own in `folder` (beside the scene, which refers to
+// it relatively): an architect's model of a million triangles reads and edits far better than
+// as inline JSON. File names are the object names made safe, unique within the folder.
+void moveMeshesToFiles(Scene& scene, const std::filesystem::path& sceneFile) {
+    const std::filesystem::path folderName = sceneFile.stem().string() + "-meshes";
+    const std::filesystem::path folder = sceneFile.parent_path() / folderName;
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (ec) throw UsageError(folder.string() + ": cannot create the folder (" + ec.message() + ")");
+    std::set<std::string> used;
+    for (Object& o : scene.objects) {
+        if (o.mesh.kind != MeshSource::Kind::Inline) continue;
+        std::string base = o.name;
+        for (char& c : base)
+            if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-' && c != '_' && c != '.') c = '_';
+        if (base.empty() || base[0] == '.') base = "mesh" + base;
+        std::string name = base + ".ply";
+        for (int i = 2; used.count(name); ++i) name = base + "-" + std::to_string(i) + ".ply";
+        used.insert(name);
+        try {
+            writePlyFile((folder / name).string(), o.mesh.inlineMesh);
+        } catch (const std::runtime_error& e) {
+            throw UsageError(e.what());
+        }
+        o.mesh.kind = MeshSource::Kind::File;
+        o.mesh.file = (folderName / name).generic_string();
+        o.mesh.inlineMesh = {};
+    }
+}
+
 int importImpl(const std::vector<std::string>& args) {
     std::string model, output;
     ImportOptions options;
+    bool inlineMeshes = false;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         const auto value = [&]() -> const std::string& {
@@ -48,12 +83,14 @@ int importImpl(const std::vector<std::string>& args) {
         if (a == "-o") output = value();
         else if (a == "--meters-per-unit") options.sceneMetersPerUnit = parseNumber<double>(a, value(), 1e-9, 1e9);
         else if (a == "--model-unit") options.fileMetersPerUnit = parseNumber<double>(a, value(), 1e-9, 1e9);
+        else if (a == "--inline-meshes") inlineMeshes = true;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (model.empty()) model = a;
         else throw UsageError("unexpected argument '" + a + "'");
     }
     if (model.empty() || output.empty())
-        throw UsageError("usage: lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M]");
+        throw UsageError(
+            "usage: lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]");
 
     ModelImport imported;
     try {
@@ -67,7 +104,8 @@ int importImpl(const std::vector<std::string>& args) {
     scene.materials = std::move(imported.materials);
     scene.objects = std::move(imported.objects);
     scene.lights = std::move(imported.lights);
-    scene.camera = cameraFor(scene);
+    scene.camera = cameraFor(scene);  // from the inline meshes, before they move to files
+    if (!inlineMeshes) moveMeshesToFiles(scene, std::filesystem::path(output));
     try {
         saveScene(scene, output);
     } catch (const std::runtime_error& e) {

@@ -1,4 +1,5 @@
 #include "core/mesh_file.h"
+#include "core/atomic_file.h"
 
 // MeshIO.hh must come before the mesh kernel headers (OpenMesh registers its readers that way).
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -7,6 +8,7 @@
 #include <QFileInfo>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -231,6 +233,31 @@ TriangleMesh readMeshFile(const std::string& absolutePath) {
         for (size_t k = 1; k + 1 < polygon.size(); ++k)
             out.triangles.emplace_back(polygon[0], polygon[k], polygon[k + 1]);
     return out;
+}
+
+void writePlyFile(const std::string& path, const TriangleMesh& mesh) {
+    std::string out = "ply\nformat binary_little_endian 1.0\ncomment written by Lucerna\n";
+    out += "element vertex " + std::to_string(mesh.vertices.size()) + "\n";
+    out += "property double x\nproperty double y\nproperty double z\n";
+    out += "element face " + std::to_string(mesh.triangles.size()) + "\n";
+    out += "property list uchar int vertex_indices\nend_header\n";
+    static_assert(std::endian::native == std::endian::little, "PLY bytes are written in host order");
+    const auto append = [&](const auto& value) {
+        const char* bytes = reinterpret_cast<const char*>(&value);
+        out.append(bytes, sizeof value);
+    };
+    for (const V3d& v : mesh.vertices) {
+        append(v.x);
+        append(v.y);
+        append(v.z);
+    }
+    for (const V3i& t : mesh.triangles) {
+        append(uint8_t(3));
+        append(int32_t(t.x));
+        append(int32_t(t.y));
+        append(int32_t(t.z));
+    }
+    writeTextAtomically(path, out);
 }
 
 }  // namespace lucerna

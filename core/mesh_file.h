@@ -12,4 +12,11 @@ namespace lucerna {
 // mesh OpenMesh understands.
 TriangleMesh readMeshFile(const std::string& absolutePath);
 
+// Writes `mesh` as a binary little-endian PLY file (double vertices, int triangles) that
+// readMeshFile reads back with every triangle in order, non-manifold ones included (which
+// OpenMesh's own writer, building half-edges first, would drop), and the vertices to float
+// precision (OpenMesh's PLY reader goes through floats; the renderer traces in floats too). Whole or not at all
+// (atomic_file.h); throws std::runtime_error with a one-line reason.
+void writePlyFile(const std::string& path, const TriangleMesh& mesh);
+
 }  // namespace lucerna

@@ -619,6 +619,28 @@ void TestModelImport::importCommand() {
     QVERIFY(scene.lights[0].photometric && near(scene.lights[0].photometric->value, 100.0));
     // The camera looks at the middle of the model's bounds (100..500, 50..400, 30..100 mm).
     QVERIFY(near(scene.camera.target, V3d(300, 225, 65), 1e-6));
+    // Meshes in PLY files beside the scene, read back as the inline ones, to the float precision
+    // that OpenMesh's PLY reader keeps (and the renderer traces in).
+    const QString inlineOut = dir_.filePath("imported-inline.json");
+    p.start(LUCERNA_BINARY, {"import", gltfPath(), "-o", inlineOut, "--meters-per-unit", "0.001", "--inline-meshes"});
+    QVERIFY(p.waitForFinished(60000));
+    QCOMPARE(p.exitCode(), 0);
+    const Scene inlined = loadScene(inlineOut.toStdString());
+    QCOMPARE(inlined.objects.size(), scene.objects.size());
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const MeshSource& m = scene.objects[i].mesh;
+        QCOMPARE(m.kind, MeshSource::Kind::File);
+        QVERIFY2(m.file.rfind("imported-meshes/", 0) == 0 && QFile::exists(dir_.filePath(QString::fromStdString(m.file))),
+                 m.file.c_str());
+        QCOMPARE(inlined.objects[i].mesh.kind, MeshSource::Kind::Inline);
+        const TriangleMesh &a = *scene.objects[i].worldMesh, &b = *inlined.objects[i].worldMesh;
+        QCOMPARE(a.triangles, b.triangles);
+        QCOMPARE(a.vertices.size(), b.vertices.size());
+        for (size_t k = 0; k < a.vertices.size(); ++k)
+            QVERIFY2((a.vertices[k] - b.vertices[k]).length() <= 1e-6 * b.vertices[k].length(), qPrintable(QString("%1: %2 %3 %4 / %5 %6 %7").arg(k)
+                .arg(a.vertices[k].x, 0, 'g', 17).arg(a.vertices[k].y, 0, 'g', 17).arg(a.vertices[k].z, 0, 'g', 17)
+                .arg(b.vertices[k].x, 0, 'g', 17).arg(b.vertices[k].y, 0, 'g', 17).arg(b.vertices[k].z, 0, 'g', 17)));
+    }
     for (const Object& o : scene.objects)
         for (const V3d& v : o.worldMesh->vertices) {
             const V3d d = (v - scene.camera.position).normalized(), f = (scene.camera.target - scene.camera.position).normalized();
