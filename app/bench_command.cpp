@@ -25,13 +25,6 @@ namespace lucerna::cli {
 
 namespace {
 
-// "name=value" into options, or a usage error naming where it came from.
-void addOption(std::map<std::string, std::string>& options, const std::string& kv, const std::string& where) {
-    const auto eq = kv.find('=');
-    if (eq == std::string::npos || eq == 0) throw UsageError(where + " expects name=value, got '" + kv + "'");
-    options[kv.substr(0, eq)] = kv.substr(eq + 1);
-}
-
 struct BenchRun {
     std::string label;  // as given in --backends: the curve's name in the CSV and the plot
     std::string backend;
@@ -59,8 +52,8 @@ std::vector<BenchRun> parseBackends(const std::string& list) {
         run.backend = entry.substr(0, colon);
         while (colon != std::string::npos) {
             const size_t next = entry.find(':', colon + 1);
-            addOption(run.options, entry.substr(colon + 1, next == std::string::npos ? next : next - colon - 1),
-                      "--backends entry '" + entry + "'");
+            addBackendOption(entry.substr(colon + 1, next == std::string::npos ? next : next - colon - 1), run.options,
+                             "--backends entry '" + entry + "'");
             colon = next;
         }
         if (!findBackend(run.backend)) {
@@ -93,7 +86,7 @@ BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
         else if (a == "--height") b.settings.height = parseNumber<int>(a, value(), 1, 16384);
         else if (a == "--per-decade") b.perDecade = parseNumber<int>(a, value(), 1, 1000);
         else if (a == "--start") b.start = parseNumber<double>(a, value(), 1e-4, 1e6);
-        else if (a == "--option") addOption(b.settings.options, value(), "--option");
+        else if (a == "--option") addBackendOption(value(), b.settings.options);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (b.scene.empty()) b.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
@@ -122,6 +115,9 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
                                 const Image& reference, TaskSystem& tasks) {
     RenderSettings settings = b.settings;
     for (const auto& [k, v] : run.options) settings.options[k] = v;
+    // Arena slots run from 0 to the arena's concurrency (one more for a master thread).
+    RayRecorder rays(std::max(tasks.threadCount(), int(std::thread::hardware_concurrency())) + 1, /*countOnly=*/true);
+    settings.rayRecorder = &rays;
     std::unique_ptr<ProgressiveBackend> backend;
     try {
         backend = findBackend(run.backend)->make(scene, settings);
@@ -132,6 +128,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
     auto job = tasks.submit([&](TaskContext& ctx) {
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
+        rays.resetCounts();  // the passes' rays only, as the time is the passes' only
         runProgressive(*backend, run.backend, settings, ctx, &latest, 0.0);
     });
 
@@ -141,7 +138,8 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
     uint64_t seen = 0;
     const auto measure = [&](const RenderFrame& f) {
         const ImageMetrics m = compareImages(f.image, reference);
-        samples.push_back({run.label, f.seconds, f.samplesPerPixel, m.rmse, m.relmse, f.estimatedRelmse, m.meanTest, m.meanRef});
+        samples.push_back({run.label, f.seconds, f.samplesPerPixel, m.rmse, m.relmse, f.estimatedRelmse, m.meanTest,
+                           m.meanRef, double(rays.total())});
         while (nextTime() <= f.seconds) ++k;
     };
     const auto poll = [&](bool last) {
@@ -200,8 +198,8 @@ int benchImpl(const std::vector<std::string>& args) {
     catchInterrupts();
     TaskSystem tasks(b.threads);
     std::vector<BenchSample> all;
-    std::printf("%-24s %10s %10s %14s %14s %14s %12s\n", "backend", "seconds", "spp", "rmse", "relmse",
-                "est. relmse", "mean/ref");
+    std::printf("%-24s %10s %10s %14s %14s %14s %12s %9s\n", "backend", "seconds", "spp", "rmse", "relmse",
+                "est. relmse", "mean/ref", "Mrays/s");
     for (const BenchRun& run : b.runs) {
         const std::vector<BenchSample> samples = runOne(b, run, scene, reference, tasks);
         if (interrupted()) {
@@ -212,15 +210,16 @@ int benchImpl(const std::vector<std::string>& args) {
         if (samples.empty()) continue;
         // The final figures, and the mean against the reference's (the bias a converged run keeps).
         const BenchSample& s = samples.back();
-        std::printf("%-24s %10.3f %10.6g %14.6g %14.6g %14s %12.6f\n", run.label.c_str(), s.seconds, s.spp, s.rmse,
-                    s.relmse, formatValue(s.estimatedRelmse).c_str(), s.meanRef > 0 ? s.meanTest / s.meanRef : NAN);
+        std::printf("%-24s %10.3f %10.6g %14.6g %14.6g %14s %12.6f %9.3f\n", run.label.c_str(), s.seconds, s.spp,
+                    s.rmse, s.relmse, formatValue(s.estimatedRelmse).c_str(),
+                    s.meanRef > 0 ? s.meanTest / s.meanRef : NAN, s.seconds > 0 ? s.rays / s.seconds * 1e-6 : 0.0);
         std::fflush(stdout);
     }
 
-    std::string csv = "backend,seconds,spp,rmse,relmse,estimated_relmse\n";
+    std::string csv = "backend,seconds,spp,rmse,relmse,estimated_relmse,rays\n";
     for (const BenchSample& s : all)
         csv += s.backend + "," + formatValue(s.seconds) + "," + formatValue(s.spp) + "," + formatValue(s.rmse) + "," +
-               formatValue(s.relmse) + "," + formatValue(s.estimatedRelmse) + "\n";
+               formatValue(s.relmse) + "," + formatValue(s.estimatedRelmse) + "," + formatValue(s.rays) + "\n";
     const std::filesystem::path out(b.outDir);
     writeText((out / "bench.csv").string(), csv);
     const std::string title = std::filesystem::path(b.scene).filename().string() + ", " +

@@ -15,6 +15,7 @@ struct BenchSample {
     double relmse = 0;
     double estimatedRelmse = 0;  // NaN before the film has two halves
     double meanTest = 0, meanRef = 0;  // SPEC.md's means: what bias a converged run keeps
+    double rays = 0;  // rays traced since the passes began, read as the frame was measured
 };
 
 // Two panels side by side, relmse and rmse against seconds, with decade grid lines, axis labels

@@ -50,9 +50,10 @@ void waitShowingProgress(TaskHandle& job, const std::string& label) {
     job.rethrowIfFailed();
 }
 
-void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options) {
+void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options,
+                      const std::string& where) {
     const auto eq = nameValue.find('=');
-    if (eq == std::string::npos || eq == 0) throw UsageError("--option expects name=value, got '" + nameValue + "'");
+    if (eq == std::string::npos || eq == 0) throw UsageError(where + " expects name=value, got '" + nameValue + "'");
     options[nameValue.substr(0, eq)] = nameValue.substr(eq + 1);
 }
 

@@ -26,8 +26,10 @@ T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
     return value;
 }
 
-// Adds "name=value" (an --option's value) to `options`; UsageError when it has no name or '='.
-void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options);
+// Adds "name=value" (an --option's value) to `options`; UsageError, naming `where`, when it has
+// no name or '='.
+void addBackendOption(const std::string& nameValue, std::map<std::string, std::string>& options,
+                      const std::string& where = "--option");
 
 // Routes SIGINT and SIGTERM to a flag that long commands poll (they stop within a pass and
 // write nothing).

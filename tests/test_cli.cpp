@@ -223,8 +223,9 @@ void TestCli::benchWritesCsvAndPlot() {
                               "--start", "0.01", "--out", out, "--seed", "9"});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const CsvTable csv = CsvTable::read(out + "/bench.csv");
-    QCOMPARE(csv.header.join(','), QString("backend,seconds,spp,rmse,relmse,estimated_relmse"));
+    QCOMPARE(csv.header.join(','), QString("backend,seconds,spp,rmse,relmse,estimated_relmse,rays"));
     QMap<QString, QList<std::array<double, 3>>> curves;  // seconds, spp, relmse per backend
+    QMap<QString, QList<double>> raysSeen;
     for (size_t row = 0; row < csv.rows.size(); ++row) {
         const QString line = csv.rows[row].join(',');
         QCOMPARE(csv.rows[row].size(), csv.header.size());
@@ -238,9 +239,15 @@ void TestCli::benchWritesCsvAndPlot() {
             QVERIFY2(value && std::isfinite(*value) && *value >= 0, qPrintable(line));
             v[i] = *value;
         }
+        // Rays counted since the passes began: some by the first sample, more at each later one.
+        const auto rays = csv.number(row, "rays");
+        QVERIFY2(rays && *rays > 0, qPrintable(line));
         curves[csv.text(row, "backend")].append({v[0], v[1], v[3]});
+        raysSeen[csv.text(row, "backend")].append(*rays);
     }
     QCOMPARE(curves.keys(), (QList<QString>{"mir:tries=2", "path"}));
+    for (const auto& r : raysSeen)
+        for (int i = 1; i < r.size(); ++i) QVERIFY(r[i] >= r[i - 1]);
     for (const auto& c : curves) {
         QVERIFY(c.size() >= 4);  // log-spaced from 0.01 s to 1 s
         for (int i = 1; i < c.size(); ++i) QVERIFY(c[i][0] > c[i - 1][0] && c[i][1] >= c[i - 1][1]);

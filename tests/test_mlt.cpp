@@ -68,6 +68,35 @@ V2f runChain(PssSampler& sampler, V2f start, int k, bool restore) {
     return current;
 }
 
+// The same with the target's x read from the camera stream and y from the light stream, and each
+// step one of: Kelemen's small/large step, a light-stream step (the caustic perturbation), a
+// camera-stream step.
+V2f runMixedChain(PssSampler& sampler, V2f start, int k, Rng& choice) {
+    sampler.setState({start.x});
+    sampler.setCoordinate(SampleStream::Light, 0, start.y);
+    double f = target(start.x, start.y);
+    V2f current = start;
+    for (int i = 0; i < k; ++i) {
+        const double kind = choice.nextDouble();
+        if (kind < 0.4) sampler.startStreamStep(SampleStream::Light);
+        else if (kind < 0.6) sampler.startStreamStep(SampleStream::Camera);
+        else sampler.startIteration();
+        sampler.beginStream(SampleStream::Camera);
+        const float x = sampler.next1D();
+        sampler.beginStream(SampleStream::Light);
+        const float y = sampler.next1D();
+        const double fy = target(x, y);
+        if (sampler.rng().nextDouble() < std::min(1.0, fy / f)) {
+            sampler.accept();
+            current = V2f(x, y);
+            f = fy;
+        } else {
+            sampler.reject();
+        }
+    }
+    return current;
+}
+
 }  // namespace
 
 class TestMlt : public QObject {
@@ -75,6 +104,7 @@ class TestMlt : public QObject {
 private slots:
     void stationaryDensity_data();
     void stationaryDensity();
+    void streamStepsKeepTheDensity();
     void lensKernelStationaryDensity_data();
     void lensKernelStationaryDensity();
     void hardCasesStayFinite_data() { backends(); }
@@ -115,6 +145,38 @@ void TestMlt::stationaryDensity() {
     const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 3, 0.01 / 3);
     qInfo("%s", r.message.c_str());
     QCOMPARE(r.passed, shouldPass);
+}
+
+// Stream steps (pss_sampler.h) mixed with Kelemen's: a stream left alone by a step must not move,
+// and one that missed steps must catch up with exactly the steps its stream took.
+void TestMlt::streamStepsKeepTheDensity() {
+    const double norm = targetIntegral();
+    long long chains = 0;
+    Rng choice(11, 0);
+    const auto sample = [&](Rng& rng, V2f& out) {
+        PssSampler sampler(hashSeed(8, uint64_t(++chains)), 0.06f, 0.1f);
+        out = runMixedChain(sampler, exactSample(rng), 16, choice);
+        return true;
+    };
+    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
+    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 4, 0.01 / 3);
+    qInfo("%s", r.message.c_str());
+    QVERIFY2(r.passed, r.message.c_str());
+
+    // A light-stream step leaves the camera stream's number where it was, accepted or not.
+    PssSampler sampler(5, 0.06f, 0.0f);
+    sampler.setState({0.25f});
+    sampler.setCoordinate(SampleStream::Light, 0, 0.5f);
+    for (int i = 0; i < 20; ++i) {
+        sampler.startStreamStep(SampleStream::Light);
+        sampler.beginStream(SampleStream::Camera);
+        QCOMPARE(sampler.next1D(), 0.25f);
+        sampler.beginStream(SampleStream::Light);
+        const float y = sampler.next1D();
+        QVERIFY(y != 0.5f);
+        if (i % 2) sampler.accept();
+        else sampler.reject();
+    }
 }
 
 void TestMlt::lensKernelStationaryDensity_data() {

@@ -25,6 +25,9 @@ struct RenderSettings {
     // layer); nullptr: the camera. Backends that cannot measure them (the preview) refuse in
     // prepare().
     std::shared_ptr<const Sensor> sensor;
+    // Benchmarks: counts (or records) every ray the backend traces, prepare() included; the
+    // preview traces none. Must outlive the backend.
+    RayRecorder* rayRecorder = nullptr;
     // Backend-specific options, "name=value" from the command line or the UI.
     std::map<std::string, std::string> options;
 };

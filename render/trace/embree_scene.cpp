@@ -70,7 +70,9 @@ EmbreeScene::~EmbreeScene() = default;
 
 void EmbreeScene::record(const Ray& ray, bool shadow) const {
     const int slot = tbb::this_task_arena::current_thread_index();
-    if (slot >= 0 && size_t(slot) < recorder_->perThread.size()) recorder_->perThread[size_t(slot)].push_back({ray, shadow});
+    if (slot < 0 || size_t(slot) >= recorder_->counts.size()) return;
+    recorder_->counts[size_t(slot)].rays.fetch_add(1, std::memory_order_relaxed);
+    if (!recorder_->countOnly) recorder_->perThread[size_t(slot)].push_back({ray, shadow});
 }
 
 size_t EmbreeScene::replay(const std::vector<RayRecorder::Entry>& rays) const {
@@ -133,6 +135,8 @@ void EmbreeScene::intersectCoherent(const Ray* rays, RayHit* hits, size_t count)
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    if (recorder_) [[unlikely]]
+        for (size_t i = 0; i < count; ++i) record(rays[i], false);
     alignas(32) RTCRayHit8 packet;
     alignas(32) int valid[8];
     for (size_t base = 0; base < count; base += 8) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <limits>
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -26,15 +27,31 @@ struct RayHit {
     bool found() const { return triangle != kNone; }
 };
 
-// Every ray a tracer sends, for benchmarks that replay them through bare Embree calls. One list
-// per arena thread so that recording needs no lock.
+// Every ray a tracer sends, for benchmarks: counted, and unless countOnly also recorded (to be
+// replayed through bare Embree calls). One slot per arena thread, so that neither needs a lock.
 struct RayRecorder {
     struct Entry {
         Ray ray;
         bool shadow;
     };
-    explicit RayRecorder(int threads) : perThread(size_t(threads)) {}
+    struct alignas(64) Count {
+        std::atomic<uint64_t> rays{0};  // relaxed: read only as a running total
+    };
+    explicit RayRecorder(int threads, bool countOnly = false)
+        : perThread(countOnly ? 0 : size_t(threads)), counts(size_t(threads)), countOnly(countOnly) {}
+    // Rays counted so far over all threads (closest-hit, shadow and packet rays alike).
+    uint64_t total() const {
+        uint64_t n = 0;
+        for (const Count& c : counts) n += c.rays.load(std::memory_order_relaxed);
+        return n;
+    }
+    void resetCounts() {
+        for (Count& c : counts) c.rays.store(0, std::memory_order_relaxed);
+    }
+
     std::vector<std::vector<Entry>> perThread;
+    std::vector<Count> counts;
+    bool countOnly;
 };
 
 class EmbreeScene {

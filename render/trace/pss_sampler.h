@@ -12,6 +12,12 @@
 // restores every coordinate the iteration changed. The coordinates are interleaved between the
 // sample streams (camera, light, connection): stream s's k-th number is u[s + 3 k], so that a
 // longer camera subpath does not shift the light subpath's numbers.
+//
+// A stream step moves one stream's coordinates only (a Gaussian each, symmetric too) and leaves
+// the others where they are: the primary-sample-space form of Veach's perturbations. Moving the
+// light stream alone keeps the camera subpath and swings the light subpath around it, which is
+// what a caustic perturbation does (a caustic's light path through glass onto a diffuse surface
+// seen by the camera); the lazy catch-up counts the small steps each stream has taken.
 
 #include "render/trace/rng.h"
 #include "render/trace/sample_generator.h"
@@ -32,6 +38,18 @@ public:
     void startIteration() {
         ++iteration_;
         largeStep_ = rng_.next1D() < largeStepProbability_;
+        for (bool& m : moves_) m = !largeStep_;
+        countSmallSteps(+1);
+        replay_ = false;
+        resetStreams();
+    }
+    // Begins a small step of stream `s` alone (the others keep their values).
+    void startStreamStep(SampleStream s) {
+        ++iteration_;
+        largeStep_ = false;
+        for (bool& m : moves_) m = false;
+        moves_[size_t(s)] = true;
+        countSmallSteps(+1);
         replay_ = false;
         resetStreams();
     }
@@ -39,17 +57,23 @@ public:
     void startLargeStep() {
         ++iteration_;
         largeStep_ = true;
+        for (bool& m : moves_) m = false;
         replay_ = false;
         resetStreams();
     }
     bool largeStep() const { return largeStep_; }
 
     void accept() {
-        if (largeStep_) lastLargeStep_ = iteration_;
+        if (largeStep_) {
+            lastLargeStep_ = iteration_;
+            for (size_t s = 0; s < kSampleStreams; ++s) stepsAtLargeStep_[s] = streamSteps_[s];
+        }
     }
     void reject() {
         for (Coordinate& c : u_)
             if (c.modified == iteration_) c.restore();
+        countSmallSteps(-1);  // the proposal never happened, for unread coordinates too
+        for (bool& m : moves_) m = false;
         --iteration_;
     }
 
@@ -64,7 +88,7 @@ public:
     // iteration.
     void setCoordinate(SampleStream stream, size_t k, float value) {
         Coordinate& c = at(coordinate(stream, k));
-        catchUp(c);
+        catchUp(c, stream);
         c.value = value;
     }
     // Sets the camera stream's numbers to u (the other streams' are drawn fresh when read), as
@@ -73,8 +97,11 @@ public:
     void setState(const std::vector<float>& u) {
         ++iteration_;
         u_.clear();
-        for (size_t k = 0; k < u.size(); ++k) at(coordinate(SampleStream::Camera, k)) = Coordinate{u[k], u[k], iteration_, iteration_};
+        const int64_t steps = streamSteps_[size_t(SampleStream::Camera)];
+        for (size_t k = 0; k < u.size(); ++k)
+            at(coordinate(SampleStream::Camera, k)) = Coordinate{u[k], u[k], iteration_, iteration_, steps, steps};
         lastLargeStep_ = iteration_;
+        for (size_t s = 0; s < kSampleStreams; ++s) stepsAtLargeStep_[s] = streamSteps_[s];
         replay_ = false;
         resetStreams();
     }
@@ -82,20 +109,21 @@ public:
     void beginStream(SampleStream s) override { stream_ = s; }
 
     float next1D() override {
-        Coordinate& c = at(coordinate(stream_, streamIndex_[size_t(stream_)]++));
+        const size_t s = size_t(stream_);
+        Coordinate& c = at(coordinate(stream_, streamIndex_[s]++));
         if (replay_) {
-            catchUp(c);
+            catchUp(c, stream_);
             return c.value;
         }
-        // Untouched since the last accepted large step: it would have been drawn fresh then.
-        if (c.modified < lastLargeStep_) {
-            c.value = rng_.next1D();
-            c.modified = lastLargeStep_;
-        }
+        freshIfBeforeLargeStep(c, s);
         c.backup();
-        if (largeStep_) c.value = rng_.next1D();
-        else smallStep(c, double(iteration_ - c.modified));
+        if (largeStep_) {
+            c.value = rng_.next1D();
+        } else if (const int64_t pending = streamSteps_[s] - c.steps; pending > 0) {
+            smallStep(c, double(pending));  // this iteration's, if it moves the stream, and missed ones
+        }
         c.modified = iteration_;
+        c.steps = streamSteps_[s];
         return c.value;
     }
     V2f next2D() override {
@@ -109,14 +137,17 @@ public:
 private:
     struct Coordinate {
         float value = 0, savedValue = 0;
-        int64_t modified = 0, savedModified = 0;
+        int64_t modified = 0, savedModified = 0;  // the iteration that last set it
+        int64_t steps = 0, savedSteps = 0;        // its stream's small-step count it has caught up with
         void backup() {
             savedValue = value;
             savedModified = modified;
+            savedSteps = steps;
         }
         void restore() {
             value = savedValue;
             modified = savedModified;
+            steps = savedSteps;
         }
     };
 
@@ -139,17 +170,31 @@ private:
         if (c.value >= 1.0f) c.value = 0.0f;  // floor can round a tiny negative up to 1
     }
 
-    // Brings a coordinate up to the current (accepted) iteration: fresh if the last large step
-    // replaced it, else the small steps it missed.
-    void catchUp(Coordinate& c) {
+    // Untouched since the last accepted large step: it would have been drawn fresh then.
+    void freshIfBeforeLargeStep(Coordinate& c, size_t s) {
         if (c.modified < lastLargeStep_) {
             c.value = rng_.next1D();
             c.modified = lastLargeStep_;
+            c.steps = stepsAtLargeStep_[s];
         }
-        if (c.modified < iteration_) {
-            smallStep(c, double(iteration_ - c.modified));
+    }
+
+    // Brings a coordinate up to the current (accepted) state: fresh if the last large step
+    // replaced it, then the small steps of its stream it missed.
+    void catchUp(Coordinate& c, SampleStream stream) {
+        const size_t s = size_t(stream);
+        freshIfBeforeLargeStep(c, s);
+        if (const int64_t pending = streamSteps_[s] - c.steps; pending > 0) {
+            smallStep(c, double(pending));
+            c.steps = streamSteps_[s];
             c.modified = iteration_;
         }
+    }
+
+    // Adds (or takes back) this iteration's small step to the count of each stream it moves.
+    void countSmallSteps(int delta) {
+        for (size_t s = 0; s < kSampleStreams; ++s)
+            if (moves_[s]) streamSteps_[s] += delta;
     }
 
     // Box-Muller: one standard normal number.
@@ -163,6 +208,9 @@ private:
     float sigma_, largeStepProbability_;
     std::vector<Coordinate> u_;
     int64_t iteration_ = 0, lastLargeStep_ = 0;
+    int64_t streamSteps_[kSampleStreams] = {0, 0, 0};       // small steps that moved each stream
+    int64_t stepsAtLargeStep_[kSampleStreams] = {0, 0, 0};  // the same, at the last accepted large step
+    bool moves_[kSampleStreams] = {false, false, false};    // streams the current iteration moves
     bool largeStep_ = true, replay_ = false;
     SampleStream stream_ = SampleStream::Camera;
     size_t streamIndex_[kSampleStreams] = {0, 0, 0};

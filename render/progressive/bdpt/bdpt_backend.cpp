@@ -77,6 +77,7 @@ public:
 
     void prepare(TaskContext&) override {
         scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
+        scene_->setRayRecorder(settings_.rayRecorder);
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
 

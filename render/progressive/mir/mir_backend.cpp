@@ -32,6 +32,7 @@ public:
 
     void prepare(TaskContext&) override {
         scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
+        scene_->setRayRecorder(settings_.rayRecorder);
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
         gatherer_ = std::make_unique<VplGatherer>(*scene_, mir_.gather);
         layout_ = mirPathLayout(mir_.gather, mir_.vpl);

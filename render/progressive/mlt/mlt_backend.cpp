@@ -43,6 +43,7 @@ public:
 
     void prepare(TaskContext& ctx) override {
         scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
+        scene_->setRayRecorder(settings_.rayRecorder);
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
         for (int half = 0; half < 2 && !ctx.isCancelled(); ++half) halves_[half] = bootstrap(ctx, half);
     }
@@ -84,8 +85,10 @@ public:
         ChainCounters c = halves_[0].counters();
         c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
-        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps;
-        d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted, smallSteps));
+        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps - c.causticSteps;
+        d["mlt_acceptance_small"] =
+            number(rate(c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted, smallSteps));
+        if (c.causticSteps > 0) d["mlt_acceptance_caustic"] = number(rate(c.causticAccepted, c.causticSteps));
         d["mlt_acceptance_large"] = number(rate(c.largeAccepted, c.largeSteps));
         if (c.lensSteps > 0) d["mlt_acceptance_lens"] = number(rate(c.lensAccepted, c.lensSteps));
         // The spread between the independent halves (each its own chains and b): how far their
@@ -145,6 +148,7 @@ MltSettings MltSettings::fromOptions(const RenderSettings& settings) {
     readOption(settings, "mutations", s.mutationsPerPixel, 1e-3, 1e4);
     readOption(settings, "large_step", s.largeStepProbability, 0, 1);
     readOption(settings, "sigma", s.sigma, 1e-5, 0.5);
+    readOption(settings, "caustic", s.causticProbability, 0, 1);
     return s;
 }
 

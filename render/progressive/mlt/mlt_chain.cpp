@@ -14,6 +14,8 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
     largeAccepted += o.largeAccepted;
     lensSteps += o.lensSteps;
     lensAccepted += o.lensAccepted;
+    causticSteps += o.causticSteps;
+    causticAccepted += o.causticAccepted;
     largeStepSum += o.largeStepSum;
     return *this;
 }
@@ -58,7 +60,8 @@ void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<Su
 
 MltChain::MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed)
     : camera_(scene.camera()), tracer_(scene, settings.bdpt),
-      sampler_(bootstrapSeed, settings.sigma, settings.largeStepProbability) {
+      sampler_(bootstrapSeed, settings.sigma, settings.largeStepProbability),
+      causticProbability_(settings.causticProbability) {
     sampler_.startLargeStep();
     evaluatePath(tracer_, camera_, sampler_, current_);
     sampler_.accept();
@@ -70,7 +73,11 @@ int MltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
 }
 
 void MltChain::mutate(double scale, std::vector<FilmSplat>& out) {
-    sampler_.startIteration();
+    // The kernel is chosen before the sampler draws anything: a mixture of kernels that each
+    // keep f invariant keeps it invariant.
+    const bool caustic = causticProbability_ > 0 && sampler_.rng().next1D() < causticProbability_;
+    if (caustic) sampler_.startStreamStep(SampleStream::Light);
+    else sampler_.startIteration();
     const bool large = sampler_.largeStep();
     evaluatePath(tracer_, camera_, sampler_, proposed_);
     // A chain that started on f = 0 (a black scene) moves to anything.
@@ -79,12 +86,14 @@ void MltChain::mutate(double scale, std::vector<FilmSplat>& out) {
     if (current_.f > 0) depositContribution(current_, scale * (1.0 - a) / current_.f, out);
     ++counters_.steps;
     counters_.largeSteps += large;
+    counters_.causticSteps += caustic;
     if (large) counters_.largeStepSum += proposed_.f;
     if (sampler_.rng().nextDouble() < a) {
         sampler_.accept();
         std::swap(current_, proposed_);
         ++counters_.accepted;
         counters_.largeAccepted += large;
+        counters_.causticAccepted += caustic;
     } else {
         sampler_.reject();
     }

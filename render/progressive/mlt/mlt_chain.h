@@ -43,6 +43,7 @@ struct ChainCounters {
     long long steps = 0, accepted = 0;            // every step that deposits (weight 1 each)
     long long largeSteps = 0, largeAccepted = 0;  // of those, Kelemen's large steps
     long long lensSteps = 0, lensAccepted = 0;    // cmlt's lens sub-chain steps
+    long long causticSteps = 0, causticAccepted = 0;  // light-stream-only small steps
     double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
     ChainCounters& operator+=(const ChainCounters& o);
 };
@@ -76,6 +77,7 @@ protected:
 private:
     BdptTracer tracer_;
     PssSampler sampler_;
+    float causticProbability_;
     PathContribution current_, proposed_;
 };
 

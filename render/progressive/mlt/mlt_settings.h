@@ -12,8 +12,11 @@ struct MltSettings {
     float mutationsPerPixel = 1.0f;  // mutations per pass, per pixel of the image
     float largeStepProbability = 0.3f;
     float sigma = 0.01f;             // small steps: standard deviation in primary sample space
+    // Of the small steps, the share that moves the light stream alone (the caustic perturbation
+    // in primary sample space; pss_sampler.h).
+    float causticProbability = 0.0f;
 
-    // Reads "bootstrap", "chains", "mutations", "large_step", "sigma" and bdpt's own options;
+    // Reads "bootstrap", "chains", "mutations", "large_step", "sigma", "caustic" and bdpt's own options;
     // throws std::invalid_argument on bad values.
     static MltSettings fromOptions(const RenderSettings& settings);
 };
