@@ -5,6 +5,7 @@
 #include "closed_form_scenes.h"
 #include "csv_table.h"
 #include "core/calculation_grid.h"
+#include "render/photometry/grid_calculation.h"
 #include "ui/commands/light_commands.h"
 #include "window_test_helpers.h"
 #include "ui/grid_panel.h"
@@ -46,6 +47,46 @@ private slots:
         QCoreApplication::setApplicationName("test_grid_panel");
         QSettings().clear();
         QVERIFY(dir_.isValid());
+    }
+
+    // Every method the dock offers, under a square emitter (Lambert's formula): each converges to
+    // a 5% error bar and agrees with the closed form (within twice its bar; the preview, which
+    // converges to its own answer, within 5%).
+    void everyMethodThroughTheDock() {
+        RectangleOverPlane s;  // metres; a 40 m floor, a 1 m square emitter 1 m above its middle
+        const QString scenePath = dir_.filePath("rectangle.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        MainWindow w(scenePath);
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        w.findChild<QDockWidget*>("gridDock")->raise();
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
+        child<QDoubleSpinBox>(*panel, "gridBorder")->setValue(19.0);  // the middle 2 m
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(5.0);
+        auto* method = child<QComboBox>(*panel, "gridMethod");
+        QCOMPARE(method->count(), int(std::size(kGridMethods)));
+        for (int m = 0; m < method->count(); ++m) {
+            method->setCurrentIndex(m);
+            const QString name = method->currentText();
+            QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+            QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+            const auto result = panel->result();
+            QVERIFY2(result && result->converged, qPrintable(name));
+            const GridLayout& layout = panel->layout();
+            QCOMPARE(layout.points.size(), size_t(16));
+            for (size_t k = 0; k < layout.points.size(); ++k) {
+                const double expected =
+                    683.0 * s.radiance * lambertPolygonIrradiance(layout.points[k], V3d(0, 1, 0), s.emitter());
+                const double tolerance = name == "preview" ? 0.05 * expected : 2 * result->errorLux[k];
+                QVERIFY2(std::abs(result->lux[k] - expected) <= tolerance,
+                         qPrintable(QString("%1, point %2: %3 +- %4 lx, expected %5").arg(name).arg(k)
+                                        .arg(result->lux[k]).arg(result->errorLux[k]).arg(expected)));
+            }
+        }
+        QTest::qWait(200);
+        w.grab().save("grid_panel_methods.png");
     }
 
     void pointLightGridThroughTheDock() {
