@@ -9,7 +9,6 @@
 #include "render/progressive/backend.h"
 #include "render/progressive/progressive_render.h"
 #include "render/photometry/illuminance_layer.h"
-#include "render/preview/preview_backend.h"
 #include "render/progressive/light_layers/layered_backend.h"
 #include "render/trace/surface_layers.h"
 #include "ui/display.h"
@@ -104,7 +103,7 @@ int renderImpl(const std::vector<std::string>& args) {
     }
     if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
     const std::optional<GridMethod> illuminanceMethod = gridMethodFromName(backendName);
-    if ((r.layers & kIlluminanceLayer) && !illuminanceMethod && backendName != "preview")
+    if ((r.layers & kIlluminanceLayer) && !illuminanceMethod)
         throw UsageError("--layers illuminance: backend " + backendName + " has no illuminance estimator");
 
     catchInterrupts();
@@ -118,15 +117,10 @@ int renderImpl(const std::vector<std::string>& args) {
         if (ctx.isCancelled()) return;
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
-            // By the render's own backend (illuminance_layer.h; the preview's in preview.h).
-            if (backendName == "preview") {
-                illuminance = previewIlluminanceLayer(scene, frame.image.width, frame.image.height,
-                                                      previewSettingsFromOptions(r.settings), r.illuminanceSpp,
-                                                      r.settings.seed);
-            } else {
-                const RenderScene compiled(scene, frame.image.width, frame.image.height);
-                illuminance = traceIlluminanceLayer(compiled, *illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx);
-            }
+            // By the render's own backend's machinery (illuminance_layer.h).
+            const RenderScene compiled(scene, frame.image.width, frame.image.height);
+            illuminance = traceIlluminanceLayer(compiled, *illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx,
+                                                r.settings.options);
             if (ctx.isCancelled()) return;
         }
         result = std::move(frame);

@@ -57,7 +57,11 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--method") {
             const std::string& m = value();
             const auto method = gridMethodFromName(m);
-            if (!method) throw UsageError("--method: expected path, ir, bdpt, mir, mlt or cmlt, got '" + m + "'");
+            if (!method) {
+                std::string names;
+                for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
+                throw UsageError("--method: expected one of " + names + ", got '" + m + "'");
+            }
             g.settings.method = *method;
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
         else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);

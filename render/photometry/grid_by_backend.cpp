@@ -5,7 +5,6 @@
 #include "render/photometry/sensor_render.h"
 
 #include <chrono>
-#include <limits>
 
 namespace lucerna {
 
@@ -14,9 +13,7 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
                                 const std::function<void(const GridResult&)>& onPass) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    GridResult result;
-    result.lux.assign(points.size(), 0.0);
-    result.errorLux.assign(points.size(), std::numeric_limits<double>::infinity());
+    GridResult result = emptyGridResult(points.size());
     if (points.empty()) return result;
 
     const V3f n = toFloat(normal).normalized();

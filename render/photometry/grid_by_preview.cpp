@@ -2,12 +2,12 @@
 // each pass, error bars from the pass means (grid_calculation.h).
 
 #include "render/photometry/grid_statistics.h"
+#include "render/photometry/sensor_render.h"
 
 #include "render/preview/preview_backend.h"
 #include "render/preview/preview_irradiance.h"
 
 #include <chrono>
-#include <limits>
 
 namespace lucerna {
 
@@ -16,20 +16,13 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
                                 const std::function<void(const GridResult&)>& onPass) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    GridResult result;
-    result.lux.assign(points.size(), 0.0);
-    result.errorLux.assign(points.size(), std::numeric_limits<double>::infinity());
+    GridResult result = emptyGridResult(points.size());
     if (points.empty()) return result;
 
-    const IrradianceEstimator estimator(scene);
     const V3f n = toFloat(normal).normalized();
-    std::vector<IrradianceSensor> sensors;
-    std::vector<double> deltaLux;
-    for (const V3d& p : points) {
-        const IrradianceSensor s{toFloat(p), n};
-        deltaLux.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
-        sensors.push_back(estimator.lifted(s));
-    }
+    std::vector<IrradianceSensor> atPoints;
+    for (const V3d& p : points) atPoints.push_back({toFloat(p), n});
+    const PreparedSensors sensors = prepareSensors(scene, atPoints);
     RenderSettings options;  // the preview backend's options (vpls, pattern, clamp, ...)
     options.seed = settings.seed;
     options.options = settings.backendOptions;
@@ -43,8 +36,8 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
         const V2f jitter = rng.next2D();  // the faces' pixels, box-filtered over the passes
         std::vector<double> passLux(points.size());
         for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i)
-            passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors[i], jitter.x, jitter.y))) +
-                         deltaLux[i];
+            passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors.lifted[i], jitter.x, jitter.y))) +
+                         sensors.deltaLux[i];
         if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
         for (size_t i = 0; i < points.size(); ++i) batches[i].add(passLux[i]);
         result.passes = pass + 1;

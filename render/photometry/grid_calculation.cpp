@@ -43,9 +43,7 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     const int count = int(points.size());
     std::vector<BatchMeans> batches(points.size());
     std::vector<double> passMean(points.size());
-    GridResult result;
-    result.lux.assign(points.size(), 0.0);
-    result.errorLux.assign(points.size(), std::numeric_limits<double>::infinity());
+    GridResult result = emptyGridResult(points.size());
     const int pointsPerTask = 16;
     const int samples =
         settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;

@@ -1,6 +1,6 @@
 #pragma once
 // Illuminance on the points of a calculation grid (core/calculation_grid.h), progressively, by
-// one of two kinds of method:
+// one of three kinds of method:
 //   - path, ir: the irradiance estimators of those backends (irradiance_estimator.h). Each pass
 //     adds independent estimates at every point, and the error bar of a point comes from the
 //     spread of its per-pass means (batch means: within a pass the VPL method shares one VPL set
@@ -14,7 +14,7 @@
 //     area-light samples each pass, error bars from the pass means as for path and ir. It
 //     converges to the preview's own answer (clamped VPLs, shadow maps), not to the exact one.
 //
-// The error bar is the 95% half-width, 1.96 standard errors of the mean. The calculation ends
+// The error bar is the 95% half-width, Student's t times the standard error of the mean. The calculation ends
 // when every point's error bar is within the target fraction of its value (after a few passes,
 // so that the spread itself is estimated), at the time limit, or when cancelled.
 
@@ -48,7 +48,7 @@ struct GridSettings {
     int minPasses = 8;             // path, ir: before the spread of the pass means is trusted
     int replicas = 8;              // bdpt, mir, mlt, cmlt: independent renders of the sensors
     int sensorPixelsPerSide = 2;   // bdpt, mir, mlt, cmlt: each point's block of pixels (sensor.h)
-    std::map<std::string, std::string> backendOptions;  // bdpt, mir, mlt, cmlt: as render's --option
+    std::map<std::string, std::string> backendOptions;  // all but path, ir: as render's --option
     double timeLimitSeconds = 0;   // 0: no limit
     uint64_t seed = 1;
 };

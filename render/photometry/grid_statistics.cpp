@@ -28,6 +28,13 @@ double relativeError(double mean, double halfWidth) {
 }
 }  // namespace
 
+GridResult emptyGridResult(size_t points) {
+    GridResult r;
+    r.lux.assign(points, 0.0);
+    r.errorLux.assign(points, std::numeric_limits<double>::infinity());
+    return r;
+}
+
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass) {
     result.lux.resize(points.size());

@@ -28,6 +28,9 @@ struct BatchMeans {
     double halfWidth95() const;
 };
 
+// A result for `points` points before any estimate: zero lux, infinite error bars.
+GridResult emptyGridResult(size_t points);
+
 // Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
 // the caller), decides convergence (only once `trusted`), reports progress and calls onPass.
 // True when the calculation should stop (converged or out of time).

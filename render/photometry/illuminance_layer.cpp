@@ -2,7 +2,7 @@
 
 #include "render/photometry/irradiance_estimator.h"
 #include "render/photometry/sensor_render.h"
-#include "render/preview/preview.h"
+#include "render/preview/preview_backend.h"
 #include "render/vpl/instant_radiosity.h"
 
 #include <atomic>
@@ -53,7 +53,7 @@ std::vector<float> byEstimator(const RenderScene& scene, GridMethod method, int 
 }
 
 std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int passes, uint64_t seed,
-                             TaskContext& ctx) {
+                             TaskContext& ctx, const std::map<std::string, std::string>& options) {
     const Sensor& camera = scene.camera();
     const int width = camera.width(), height = camera.height();
     std::vector<float> lux(size_t(width) * size_t(height), 0.0f);
@@ -69,7 +69,7 @@ std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int pa
             }
         }
     if (sensors.empty()) return lux;
-    SensorRender render(scene, gridMethodName(method), sensors, 1, seed);
+    SensorRender render(scene, gridMethodName(method), sensors, 1, seed, options);
     render.prepare(ctx);
     for (int pass = 0; pass < passes && !ctx.isCancelled(); ++pass) {
         render.renderPass(ctx, pass);
@@ -83,16 +83,18 @@ std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int pa
 }  // namespace
 
 std::vector<float> traceIlluminanceLayer(const RenderScene& scene, GridMethod method, int samplesPerPixel,
-                                         uint64_t seed, TaskContext& ctx) {
+                                         uint64_t seed, TaskContext& ctx,
+                                         const std::map<std::string, std::string>& options) {
     if (method == GridMethod::Path || method == GridMethod::Vpl)
         return byEstimator(scene, method, samplesPerPixel, seed, ctx);
     if (method == GridMethod::Preview) {
-        PreviewSettings settings;
+        RenderSettings settings;
         settings.seed = seed;
-        return previewIlluminanceLayer(scene.snapshot(), scene.camera().width(), scene.camera().height(), settings,
-                                       samplesPerPixel, seed);
+        settings.options = options;
+        return previewIlluminanceLayer(scene.snapshot(), scene.camera().width(), scene.camera().height(),
+                                       previewSettingsFromOptions(settings), samplesPerPixel, seed);
     }
-    return byBackend(scene, method, samplesPerPixel, seed, ctx);
+    return byBackend(scene, method, samplesPerPixel, seed, ctx, options);
 }
 
 }  // namespace lucerna

@@ -9,22 +9,25 @@
 //   - bdpt, mir, mlt, cmlt: the surface behind each pixel's centre becomes an irradiance sensor
 //     and the backend renders all of them together (sensor_render.h); one point per pixel, not
 //     box-filtered.
-//   - preview: white-receiver preview frames (preview.h, previewIlluminanceLayer), with the
-//     preview's default settings.
+//   - preview: white-receiver preview frames (preview.h, previewIlluminanceLayer).
 
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/trace/render_scene.h"
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace lucerna {
 
-// `samplesPerPixel` estimates per pixel (path, ir), or passes of the backend (the others), at
-// the RenderScene's camera resolution, row-major from the top-left as Image::pixels.
-// Cancellable (the result is then incomplete: discard it); progress goes to ctx. Throws only
-// what a backend's prepare() throws.
+// `samplesPerPixel` estimates per pixel (path, ir), passes of the backend (bdpt, mir, mlt,
+// cmlt) or frames (preview), at the RenderScene's camera resolution, row-major from the top-left
+// as Image::pixels; `options` are the backend's (render's --option). Cancellable (the result is
+// then incomplete: discard it); progress goes to ctx. Throws what a backend throws for a bad
+// option or in prepare().
 std::vector<float> traceIlluminanceLayer(const RenderScene& scene, GridMethod method, int samplesPerPixel,
-                                         uint64_t seed, TaskContext& ctx);
+                                         uint64_t seed, TaskContext& ctx,
+                                         const std::map<std::string, std::string>& options = {});
 
 }  // namespace lucerna

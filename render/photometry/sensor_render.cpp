@@ -5,20 +5,26 @@
 
 namespace lucerna {
 
+PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors) {
+    const IrradianceEstimator estimator(scene);
+    PreparedSensors out;
+    out.lifted.reserve(sensors.size());
+    out.deltaLux.reserve(sensors.size());
+    for (const IrradianceSensor& s : sensors) {
+        out.deltaLux.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
+        out.lifted.push_back(estimator.lifted(s));
+    }
+    return out;
+}
+
 SensorRender::SensorRender(const RenderScene& scene, const std::string& backend,
                            const std::vector<IrradianceSensor>& sensors, int pixelsPerSide, uint64_t seed,
                            const std::map<std::string, std::string>& options) {
     const BackendInfo* info = findBackend(backend);
     if (!info) throw std::runtime_error("no backend " + backend);
-    const IrradianceEstimator estimator(scene);
-    std::vector<IrradianceSensor> lifted;
-    lifted.reserve(sensors.size());
-    deltaLux_.reserve(sensors.size());
-    for (const IrradianceSensor& s : sensors) {
-        deltaLux_.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
-        lifted.push_back(estimator.lifted(s));
-    }
-    sensor_ = std::make_shared<const Sensor>(std::move(lifted), pixelsPerSide);
+    PreparedSensors prepared = prepareSensors(scene, sensors);
+    deltaLux_ = std::move(prepared.deltaLux);
+    sensor_ = std::make_shared<const Sensor>(std::move(prepared.lifted), pixelsPerSide);
     RenderSettings rs;
     rs.seed = seed;
     rs.sensor = sensor_;

@@ -14,6 +14,14 @@
 
 namespace lucerna {
 
+// What a backend or the preview needs of sensors: each moved off the surface it may lie on
+// (IrradianceEstimator::lifted), and the illuminance (lux) the delta lights give it exactly.
+struct PreparedSensors {
+    std::vector<IrradianceSensor> lifted;
+    std::vector<double> deltaLux;
+};
+PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors);
+
 class SensorRender {
 public:
     // The backend named `backend` (one that measures sensors; not the preview) over `sensors`,
