@@ -302,9 +302,40 @@ void TestPreview::editsRegenerateOnlyWhatChanged() {
     QCOMPARE(preview.vplSetGenerations(), afterScene);
     QVERIFY(first.pixels != second.pixels);
 
+    // Moving light b (its power, hence every light's share of VPLs, unchanged) draws again only
+    // the cube shadow maps of what moved: b's own and its VPLs'. The frame is the one a preview
+    // built afresh on the moved scene draws with every map.
+    const Light bBefore = b;
+    b.position.x -= 60;
+    preview.setLight(1, b);
+    const Image moved1 = preview.render();
+    const int redrawn = preview.timings().shadowCubes;
+    const double movedShadowMs = preview.timings().shadows;
+    auto rebuilt = std::make_shared<Scene>(*edited);
+    rebuilt->lights = {a, b};
+    Preview fresh;
+    fresh.setSettings(s);
+    fresh.setScene(rebuilt, 64, 64);
+    fresh.setCamera(moved);
+    const Image reference = fresh.render();
+    const int all = fresh.timings().shadowCubes;
+    qInfo("moving one light of three redrew %d of %d cube shadow maps (%.1f ms against %.1f ms)", redrawn, all,
+          movedShadowMs, fresh.timings().shadows);
+    QVERIFY2(redrawn > 0 && redrawn < all / 2, qPrintable(QString("%1 of %2").arg(redrawn).arg(all)));
+    QCOMPARE(moved1.pixels.size(), reference.pixels.size());
+    double worst = 0;
+    for (size_t i = 0; i < moved1.pixels.size(); ++i) {
+        const Rgb d = moved1.pixels[i] - reference.pixels[i];
+        worst = std::max({worst, double(std::abs(d.x)), double(std::abs(d.y)), double(std::abs(d.z))});
+    }
+    QVERIFY2(worst <= 1e-6, qPrintable(QString::number(worst)));
+    b = bBefore;
+    preview.setLight(1, b);
+    preview.render();
+
     b.intensity = Rgbd(0.2, 0.1, 0.1);
     preview.setLight(1, b);
-    QCOMPARE(preview.vplSetGenerations(), afterScene + 1);
+    QCOMPARE(preview.vplSetGenerations(), afterScene + 3);
     const VplSet after = preview.vpls();
     // The emitter's and light a's VPLs are untouched.
     int same = 0;

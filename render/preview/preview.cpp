@@ -71,6 +71,9 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     State& st = *state_;
     st.snapshot = snapshot;
     st.scene = std::make_unique<RenderScene>(snapshot, width, height);
+    // New geometry: every shadow map must be drawn again, wherever its light or VPL is.
+    st.directShadows.drawn.clear();
+    for (auto& chunk : st.vplShadows) chunk.drawn.clear();
     st.camera = snapshot->camera;
     st.width = st.scene->camera().width();
     st.height = st.scene->camera().height();

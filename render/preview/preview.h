@@ -60,6 +60,7 @@ struct PreviewSettings {
 struct PreviewTimings {
     double shadows = 0, gbuffer = 0, split = 0, shading = 0, gather = 0, blur = 0, direct = 0, readback = 0;
     double total = 0;  // the whole render() call
+    int shadowCubes = 0;  // cube shadow maps drawn (only those of lights and VPLs that moved)
 };
 
 class Preview {

@@ -51,7 +51,9 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     gl::checkErrors("preview targets");
 }
 
-// Draws every centre's six cube faces in one instanced draw (the geometry shader picks layers).
+// Draws the six cube faces of every centre whose cube does not hold it already (CubeShadows::
+// drawn), all in one instanced draw (the geometry shader picks layers): when one light of many
+// changes, only its maps are drawn again.
 void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vector<std::array<float, 4>>& centres,
                        int faceSize) {
     if (centres.empty()) return;
@@ -61,23 +63,38 @@ void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vecto
         throw std::runtime_error("preview: at most " + std::to_string(maxLayers / 6) +
                                  " shadow-mapped lights or VPLs on this GPU");
     target.ensure(faceSize, int(centres.size()));
-    upload(st.shadowCentres, centres);
+    std::vector<std::array<float, 4>> stale;
+    for (const auto& c : centres) {
+        const auto cube = size_t(c[3]);
+        if (cube >= target.drawn.size() || target.drawn[cube] != c) stale.push_back(c);
+    }
+    if (stale.empty()) return;
+    upload(st.shadowCentres, stale);
     const float radius = st.scene->boundsRadius();
     const auto faces = cubeFaceMatrices(radius * 1e-3f, radius * 4.0f);
     glProgramUniformMatrix4fv(st.shadowProgram.id(), loc(st.shadowProgram, "faceProj"), 6, GL_FALSE,
                               faces[0].m.data());
     glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
     glViewport(0, 0, faceSize, faceSize);
-    const float far[4] = {1e30f, 1e30f, 1e30f, 1e30f};
-    glClearNamedFramebufferfv(target.fbo.id(), GL_COLOR, 0, far);
-    const float one = 1.0f;
-    glClearNamedFramebufferfv(target.fbo.id(), GL_DEPTH, 0, &one);
+    const float far = 1e30f, one = 1.0f;
+    for (const auto& c : stale) {  // the stale cubes' six faces only
+        const GLint firstLayer = GLint(c[3]) * 6;
+        glClearTexSubImage(target.distance.id(), 0, 0, 0, firstLayer, faceSize, faceSize, 6, GL_RED, GL_FLOAT, &far);
+        glClearTexSubImage(target.depth.id(), 0, 0, 0, firstLayer, faceSize, faceSize, 6, GL_DEPTH_COMPONENT, GL_FLOAT,
+                           &one);
+    }
     glEnable(GL_DEPTH_TEST);
     glUseProgram(st.shadowProgram.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.shadowCentres.id());
     glBindVertexArray(st.sceneVao.id());
-    glDrawArraysInstanced(GL_TRIANGLES, 0, st.vertexCount, GLsizei(centres.size()));
+    glDrawArraysInstanced(GL_TRIANGLES, 0, st.vertexCount, GLsizei(stale.size()));
     glDisable(GL_DEPTH_TEST);
+    st.timings.shadowCubes += int(stale.size());
+    for (const auto& c : stale) {
+        const auto cube = size_t(c[3]);
+        if (target.drawn.size() <= cube) target.drawn.resize(cube + 1, {0, 0, 0, -1});
+        target.drawn[cube] = c;
+    }
 }
 
 // An orthographic view-projection along a directional light's travel direction, over the scene's

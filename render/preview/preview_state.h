@@ -80,9 +80,14 @@ struct CubeShadows {
     gl::Texture distance, depth;
     gl::Framebuffer fbo;
     int size = 0, cubes = 0;
+    // The centre (xyz, cube index) each cube was last drawn from, by cube index: a cube whose
+    // centre has not moved is not drawn again. Valid while the geometry is the same: cleared by
+    // a new scene (and by a new texture).
+    std::vector<std::array<float, 4>> drawn;
 
     void ensure(int faceSize, int cubeCount) {
         if (faceSize == size && cubeCount <= cubes && distance) return;
+        drawn.clear();
         size = faceSize;
         cubes = std::max(cubeCount, 1);
         distance = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
