@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 
 namespace lucerna {
@@ -123,6 +124,21 @@ void Preview::setCamera(const Camera& camera) {
 
 namespace {
 
+// new.intensity / old.intensity per channel when the two lights differ in nothing else (a
+// channel dark in both: 1); nothing when they do, or when a dark channel lights up.
+std::optional<Rgb> powerRatio(const DeltaLight& old, const DeltaLight& now) {
+    if (old.type != now.type || old.position != now.position || old.direction != now.direction ||
+        old.cosCone != now.cosCone || old.cosFalloffStart != now.cosFalloffStart || old.c0 != now.c0 ||
+        old.c90 != now.c90 || old.goniometric != now.goniometric)
+        return std::nullopt;
+    Rgb ratio(1, 1, 1);
+    for (int c = 0; c < 3; ++c) {
+        if (old.intensity[c] > 0) ratio[c] = now.intensity[c] / old.intensity[c];
+        else if (now.intensity[c] != 0) return std::nullopt;
+    }
+    return ratio;
+}
+
 // Each light's share of the VPL budget, in proportion to its power (at least one per
 // sub-buffer, so that no sub-buffer misses a light entirely).
 int vplShare(double power, double totalPower, int budget, int subsets) {
@@ -173,11 +189,22 @@ void Preview::regenerate(uint64_t seed) {
 void Preview::setLight(size_t index, const Light& light) {
     State& st = *state_;
     if (index >= st.deltas.size()) throw std::out_of_range("preview: no light " + std::to_string(index));
+    const DeltaLight previous = st.deltas[index];
     st.deltas[index] = compileDeltaLight(light);
     st.lightsDirty = true;
     if (st.customVpls) return;
     if (settings_.vplSource == VplSource::Metropolis) {
         regenerateMir();  // MIR's VPLs serve every light at once
+        return;
+    }
+    // Only its power changed (dimmed, recoloured): its VPLs' power is linear in the light's,
+    // channel by channel, so they are scaled (still an unbiased set), keep their places and
+    // need no shadow map drawn again.
+    if (const std::optional<Rgb> ratio = powerRatio(previous, st.deltas[index])) {
+        for (LightVpls& set : st.sets)
+            if (set.lightIndex == int(index))
+                for (Vpl& v : set.vpls) v.power *= *ratio;
+        st.vplsDirty = true;
         return;
     }
     const LightSampler sampler = singleLightSampler(*st.scene, &st.deltas[index]);
