@@ -8,6 +8,7 @@
 #include "core/calculation_grid.h"
 #include "core/exr_io.h"
 #include "render/photometry/grid_calculation.h"
+#include "render/photometry/grid_statistics.h"
 #include "render/photometry/illuminance_layer.h"
 #include "render_helpers.h"
 
@@ -311,6 +312,27 @@ private slots:
                      qPrintable(QString("%1: %2").arg(region ? "middle" : "rest").arg(sums[region] / expectedSums[region])));
         const double all = (sums[0] + sums[1]) / (expectedSums[0] + expectedSums[1]);
         QVERIFY2(std::abs(all - 1) < 0.03, qPrintable(QString::number(all)));
+    }
+
+    // A point far darker than the rest (inside a closed box: leaks of a millionth) counts as
+    // converged once its error bar is within the target of a thousandth of the grid's average;
+    // a point as bright as the rest is held to its own value.
+    void darkPointsDoNotHoldTheGridBack() {
+        GridSettings settings;
+        settings.targetRelativeError = 0.02;
+        std::vector<BatchMeans> points(2);
+        for (double x : {499.0, 500.0, 501.0}) points[0].add(x);  // +-0.5% (t = 4.3 at 2 dof)
+        for (double x : {0.0, 1e-3, 2e-3}) points[1].add(x);       // +-100% of 1e-3 lx
+        CancellationToken token;
+        TaskContext ctx(token);
+        GridResult r = emptyGridResult(2);
+        QVERIFY(finishRound(points, true, settings, ctx, r, {}));
+        QVERIFY(r.converged);
+        QVERIFY(r.maxRelativeError < 0.02);
+        points[1] = BatchMeans();
+        for (double x : {100.0, 200.0, 300.0}) points[1].add(x);  // bright and noisy: not converged
+        QVERIFY(!finishRound(points, true, settings, ctx, r, {}));
+        QVERIFY(!r.converged && r.maxRelativeError > 0.5);
     }
 
     // Cancelling stops the calculation at a pass boundary, with what it had.

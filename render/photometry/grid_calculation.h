@@ -59,7 +59,7 @@ struct GridResult {
     int passes = 0;                  // path, ir: passes; the others: passes of each replica
     long long samplesPerPoint = 0;   // estimates (camera samples) per point, all replicas together
     double seconds = 0;
-    double maxRelativeError = 0;     // max over points of errorLux / lux (0 / 0 counts as 0)
+    double maxRelativeError = 0;     // max over points of errorLux / max(lux, Eavg / 1000) (0 / 0: 0)
     bool converged = false;          // every point within the target
 };
 

@@ -32,7 +32,9 @@ struct BatchMeans {
 GridResult emptyGridResult(size_t points);
 
 // Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
-// the caller), decides convergence (only once `trusted`), reports progress and calls onPass.
+// the caller), decides convergence (only once `trusted`: every point's error bar within the
+// target of its value, or of a thousandth of the grid's average for a point darker than that),
+// reports progress and calls onPass.
 // True when the calculation should stop (converged or out of time).
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass);
