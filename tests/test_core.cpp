@@ -3,6 +3,7 @@
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
+#include "core/mesh_file.h"
 #include "core/task_system.h"
 
 #include <QFile>
@@ -26,6 +27,7 @@ private slots:
     void taskCancellationStopsParallelLoop();
     void taskExceptionIsKept();
     void latestKeepsNewest();
+    void plyFilesKeepEveryTriangle();
 };
 
 void TestCore::exrRoundTrip() {
@@ -170,4 +172,20 @@ void TestCore::latestKeepsNewest() {
 }
 
 QTEST_GUILESS_MAIN(TestCore)
+// writePlyFile and readMeshFile: every triangle in order, non-manifold ones included (three
+// triangles on one edge, a repeated vertex), vertices to float precision.
+void TestCore::plyFilesKeepEveryTriangle() {
+    TriangleMesh mesh;
+    mesh.vertices = {V3d(0, 0, 0), V3d(1, 0, 0), V3d(0, 1, 0), V3d(0, -1, 0), V3d(0, 0, 1), V3d(0.1, 0.2, 0.3)};
+    mesh.triangles = {V3i(0, 1, 2), V3i(1, 0, 3), V3i(0, 1, 4), V3i(2, 5, 4), V3i(5, 2, 4)};
+    QTemporaryDir dir;
+    const std::string path = dir.filePath("fan.ply").toStdString();
+    writePlyFile(path, mesh);
+    const TriangleMesh back = readMeshFile(path);
+    QCOMPARE(back.triangles, mesh.triangles);
+    QCOMPARE(back.vertices.size(), mesh.vertices.size());
+    for (size_t i = 0; i < mesh.vertices.size(); ++i)
+        QVERIFY((back.vertices[i] - mesh.vertices[i]).length() < 1e-6);
+}
+
 #include "test_core.moc"
