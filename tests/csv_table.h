@@ -31,9 +31,10 @@ struct CsvTable {
     }
     // The named column of `row` as a number; nothing when it is not one.
     std::optional<double> number(size_t row, const QString& column) const {
-        bool parsed = false;
-        const double v = text(row, column).toDouble(&parsed);
-        return parsed ? std::optional<double>(v) : std::nullopt;
+        bool isNumber = false;
+        const double value = text(row, column).toDouble(&isNumber);
+        if (!isNumber) return std::nullopt;
+        return value;
     }
 };
 

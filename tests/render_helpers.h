@@ -15,20 +15,26 @@ inline SceneSnapshot sceneFromJson(const std::string& json, const std::string& n
     return std::make_shared<const Scene>(parseScene(json, name));
 }
 
+// Prepares `backend` and runs it for the work `settings` give, on `threads` threads (0: all).
+inline RenderFrame runBackend(ProgressiveBackend& backend, const std::string& backendName,
+                              const RenderSettings& settings, int threads = 0) {
+    TaskSystem tasks(threads);
+    RenderFrame frame;
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        backend.prepare(ctx);
+        frame = runProgressive(backend, backendName, settings, ctx);
+    });
+    job->wait();
+    job->rethrowIfFailed();
+    return frame;
+}
+
 inline RenderFrame renderFrame(const std::string& backendName, const SceneSnapshot& scene, const RenderSettings& settings,
                                int threads = 0) {
     const BackendInfo* info = findBackend(backendName);
     if (!info) throw std::invalid_argument("no backend " + backendName);
     auto backend = info->make(scene, settings);
-    TaskSystem tasks(threads);
-    RenderFrame frame;
-    auto job = tasks.submit([&](TaskContext& ctx) {
-        backend->prepare(ctx);
-        frame = runProgressive(*backend, backendName, settings, ctx);
-    });
-    job->wait();
-    job->rethrowIfFailed();
-    return frame;
+    return runBackend(*backend, backendName, settings, threads);
 }
 
 inline Image render(const std::string& backendName, const SceneSnapshot& scene, int spp, uint64_t seed = 1,

@@ -7,6 +7,7 @@
 #include "core/luminaire.h"
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
+#include "file_helpers.h"
 #include "window_test_helpers.h"
 #include "ui/colour_edit.h"
 #include "ui/commands/material_commands.h"
@@ -329,11 +330,7 @@ void TestEditingPanels::addLuminaire() {
     const int steps = doc->undoStack()->count();
 
     const QString bad = dir_.filePath("broken.ies");
-    {
-        QFile f(bad);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("IESNA:LM-63-2002\nTILT=NONE\n1 1000 1\n");
-    }
+    QVERIFY(writeTestFile(bad, "IESNA:LM-63-2002\nTILT=NONE\n1 1000 1\n"));
     QVERIFY(!w.addLuminaireFile(bad));
     QVERIFY(!w.lastError().isEmpty() && !w.lastError().contains('\n'));
     QCOMPARE(doc->scene().lights.size(), lights);
@@ -382,11 +379,7 @@ void TestEditingPanels::importMesh() {
 
     // A bad file: a one-line error, nothing changes.
     const QString bad = dir_.filePath("broken.ply");
-    {
-        QFile f(bad);
-        QVERIFY(f.open(QIODevice::WriteOnly));
-        f.write("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1 2\n");
-    }
+    QVERIFY(writeTestFile(bad, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\n1 2\n"));
     QVERIFY(!w.importMeshFile(bad));
     QVERIFY(!w.lastError().isEmpty());
     QVERIFY(!w.lastError().contains('\n'));

@@ -48,15 +48,7 @@ RenderFrame renderLayered(const std::string& backend, const SceneSnapshot& scene
     s.spp = spp;
     s.seed = 7;
     auto layered = makeLayeredBackend(findBackend(backend)->make, scene, s);
-    TaskSystem tasks(0);
-    RenderFrame frame;
-    auto job = tasks.submit([&](TaskContext& ctx) {
-        layered->prepare(ctx);
-        frame = runProgressive(*layered, backend, s, ctx);
-    });
-    job->wait();
-    job->rethrowIfFailed();
-    return frame;
+    return runBackend(*layered, backend, s);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "core/model_import.h"
 #include "core/scene_io.h"
 #include "render/trace/camera.h"
+#include "file_helpers.h"
 #include "window_test_helpers.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
@@ -53,11 +54,7 @@ namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
 
 
-void writeFile(const QString& path, const QByteArray& text) {
-    QFile f(path);
-    QVERIFY(f.open(QIODevice::WriteOnly));
-    f.write(text);
-}
+void writeFile(const QString& path, const QByteArray& text) { QVERIFY(writeTestFile(path, text)); }
 
 bool near(double a, double b, double tol = 1e-5) { return std::abs(a - b) <= tol * std::max(1.0, std::abs(b)); }
 bool near(const V3d& a, const V3d& b, double tol = 1e-5) { return near(a.x, b.x, tol) && near(a.y, b.y, tol) && near(a.z, b.z, tol); }

@@ -16,9 +16,7 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
     GridResult result = emptyGridResult(points.size());
     if (points.empty()) return result;
 
-    const V3f n = toFloat(normal).normalized();
-    std::vector<IrradianceSensor> sensors;
-    for (const V3d& p : points) sensors.push_back({toFloat(p), n});
+    const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
     // MIR scales each VPL by the inverse of its measured image contribution, a ratio estimator
     // whose bias falls as 1 / (camera samples measuring it): a grid's image is small, so every
     // pixel measures (measured on the interior work plane: Eavg +1.9% above path's with a

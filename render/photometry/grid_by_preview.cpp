@@ -19,10 +19,7 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
     GridResult result = emptyGridResult(points.size());
     if (points.empty()) return result;
 
-    const V3f n = toFloat(normal).normalized();
-    std::vector<IrradianceSensor> atPoints;
-    for (const V3d& p : points) atPoints.push_back({toFloat(p), n});
-    const PreparedSensors sensors = prepareSensors(scene, atPoints);
+    const PreparedSensors sensors = prepareSensors(scene, sensorsAt(points, normal));
     RenderSettings options;  // the preview backend's options (vpls, pattern, clamp, ...)
     options.seed = settings.seed;
     options.options = settings.backendOptions;

@@ -29,7 +29,6 @@ const char* gridMethodName(GridMethod method) {
     return "?";
 }
 
-
 GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                   const GridSettings& settings, TaskContext& ctx,
                                   const std::function<void(const GridResult&)>& onPass) {
@@ -39,7 +38,7 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const IrradianceEstimator estimator(scene);
-    const V3f n = V3f(float(normal.x), float(normal.y), float(normal.z)).normalized();
+    const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
     const int count = int(points.size());
     std::vector<BatchMeans> batches(points.size());
     std::vector<double> passMean(points.size());
@@ -54,8 +53,7 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
             vpls = generateVpls(scene, settings.vplPathsPerPass, hashSeed(settings.seed, uint64_t(pass), 0x9d1));
         ctx.parallelFor(0, (count + pointsPerTask - 1) / pointsPerTask, [&](int task) {
             for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
-                const V3d& p = points[size_t(i)];
-                const IrradianceSensor sensor{V3f(float(p.x), float(p.y), float(p.z)), n};
+                const IrradianceSensor& sensor = sensors[size_t(i)];
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
                 double sum = 0;
                 for (int s = 0; s < samples; ++s) {

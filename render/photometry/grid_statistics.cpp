@@ -40,6 +40,14 @@ GridResult emptyGridResult(size_t points) {
     return r;
 }
 
+std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3d& normal) {
+    const V3f n = toFloat(normal).normalized();
+    std::vector<IrradianceSensor> sensors;
+    sensors.reserve(points.size());
+    for (const V3d& p : points) sensors.push_back({toFloat(p), n});
+    return sensors;
+}
+
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass) {
     result.lux.resize(points.size());

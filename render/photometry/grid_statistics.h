@@ -31,6 +31,9 @@ struct BatchMeans {
 // A result for `points` points before any estimate: zero lux, infinite error bars.
 GridResult emptyGridResult(size_t points);
 
+// A sensor at each point (scene units, as float), all facing `normal` (normalised here).
+std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3d& normal);
+
 // Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
 // the caller), decides convergence (only once `trusted`: every point's error bar within the
 // target of its value, or of a thousandth of the grid's average for a point darker than that),

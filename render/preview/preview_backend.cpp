@@ -1,49 +1,36 @@
 #include "render/preview/preview_backend.h"
 
+#include "render/progressive/backend_options.h"
 #include "render/trace/rng.h"
 
-#include <charconv>
 #include <cstdio>
 #include <stdexcept>
 
 namespace lucerna {
 
-namespace {
-
-template <typename T>
-bool parseNumber(const std::string& text, T& value) {
-    const auto [ptr, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-    return ec == std::errc() && ptr == text.data() + text.size();
-}
-
-}  // namespace
-
 PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     PreviewSettings p;
     p.seed = settings.seed;
+    readOption(settings, "vpls", p.vplCount, 0);
+    readOption(settings, "clamp", p.clampDistance, 0.0, std::numeric_limits<float>::max());
+    readOption(settings, "area_samples", p.areaLightSamples, 0);
     for (const auto& [key, value] : settings.options) {
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
         };
-        if (key == "vpls") {
-            if (!parseNumber(value, p.vplCount) || p.vplCount < 0) throw bad("an integer >= 0");
-        } else if (key == "pattern") {
+        if (key == "pattern") {
             int n = 0, m = 0;
             char x = 0, extra = 0;
             if (std::sscanf(value.c_str(), "%d%c%d%c", &n, &x, &m, &extra) != 3 || x != 'x' || n < 1 || m < 1)
                 throw bad("NxM with positive N and M");
             p.patternX = n;
             p.patternY = m;
-        } else if (key == "clamp") {
-            if (!parseNumber(value, p.clampDistance) || !(p.clampDistance >= 0)) throw bad("a number >= 0");
         } else if (key == "visibility" || key == "blur") {
             if (value != "0" && value != "1") throw bad("0 or 1");
             (key == "blur" ? p.blur : p.visibility) = value == "1";
         } else if (key == "vpl_source") {
             if (value != "ir" && value != "mir") throw bad("ir or mir");
             p.vplSource = value == "mir" ? VplSource::Metropolis : VplSource::InstantRadiosity;
-        } else if (key == "area_samples") {
-            if (!parseNumber(value, p.areaLightSamples) || p.areaLightSamples < 0) throw bad("an integer >= 0");
         }
         // Other keys belong to other backends (the CLI passes every option to every backend).
     }
