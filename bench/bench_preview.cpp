@@ -8,7 +8,8 @@
 // beside the frame. With interleaving, the area lights' samples are shaded in the VPL shading
 // pass (one sample per pixel at 16 samples and 4x4); without, in the direct pass.
 //
-// usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--frames N]
+// usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
+// --target: only the llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass.
 
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
@@ -88,11 +89,12 @@ Image average(Preview& preview, int frames) {
 
 int main(int argc, char** argv) {
     std::string scenePath = std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json";
-    bool quick = false, accuracyOnly = false;
+    bool quick = false, accuracyOnly = false, targetOnly = false;
     int frames = 5;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--accuracy-only")) accuracyOnly = true;
+        else if (!std::strcmp(argv[i], "--target")) targetOnly = true;
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
         else scenePath = argv[i];
     }
@@ -101,6 +103,15 @@ int main(int argc, char** argv) {
     std::printf("renderer: %s (EGL %s)\nscene: %s\n\n", preview.context().renderer().c_str(),
                 preview.context().platform().c_str(), scenePath.c_str());
 
+    if (targetOnly) {
+        preview.setSettings(PreviewSettings());
+        preview.setScene(scene, 640, 480);
+        const PreviewTimings t = measure(preview, frames).best;
+        std::printf("defaults at 640x480 (least of %d frames): G-buffer %.2f, split %.2f, shading %.2f, gather %.2f, "
+                    "blur %.2f, direct %.2f, read-back %.2f: frame %.2f ms\n",
+                    frames, t.gbuffer, t.split, t.shading, t.gather, t.blur, t.direct, t.readback, t.total);
+        return 0;
+    }
     if (!accuracyOnly) {
         std::printf("## ms per frame and per pass (least of %d frames after one warm-up; patterns measured in turns)\n\n", frames);
         std::printf("| resolution | VPLs | pattern | G-buffer | split | shading | gather | blur | direct | read-back | frame "

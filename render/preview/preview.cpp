@@ -28,7 +28,6 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.gbufferProgram = gl::loadProgram(d, "gbuffer.vert", "gbuffer.frag");
     st.splitProgram = gl::loadProgram(d, "fullscreen.vert", "split.frag");
     st.gatherProgram = gl::loadProgram(d, "fullscreen.vert", "gather.frag");
-    st.shadeProgram = gl::loadProgram(d, "fullscreen.vert", "shade_vpl.frag");
     st.discontinuityProgram = gl::loadProgram(d, "fullscreen.vert", "discontinuity.frag");
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
     st.directProgram = gl::loadProgram(d, "fullscreen.vert", "direct.frag");
@@ -95,8 +94,10 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
         tris.push_back({n.x, n.y, n.z, float(mat)});
     }
     std::vector<GpuMaterial> mats;
+    st.glossyScene = false;
     for (uint32_t m = 0; m < snapshot->materials.size(); ++m) {
         const ShadingMaterial& sm = rs.material(m);
+        st.glossyScene = st.glossyScene || (sm.type == MaterialType::Glossy && !isBlack(sm.specular));
         GpuMaterial g{};
         put(g.albedoKind, sm.albedo, materialKind(sm.type));
         put(g.specularAlpha, sm.type == MaterialType::Glossy ? sm.specular : Rgb(0, 0, 0), sm.alpha);

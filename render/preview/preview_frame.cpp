@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 
 namespace lucerna {
@@ -133,6 +134,27 @@ void renderDirectionalShadows(Preview::State& st, int mapSize) {
     glDisable(GL_DEPTH_TEST);
 }
 
+// The sub-buffers' VPLs as uniform blocks, one after the other at the alignment GL asks for,
+// each unrolledVpls long (the shader's block size): when no sub-buffer has more than
+// kMaxUnrolledVpls, shade_vpl.frag reads them at constant indices (its UNROLLED_VPLS).
+void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu) {
+    int most = 0;
+    for (const auto& t : st.tiles) most = std::max(most, t.count);
+    st.unrolledVpls = most <= Preview::State::kMaxUnrolledVpls ? most : 0;
+    if (st.unrolledVpls == 0) return;
+    GLint align = 1;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    const size_t blockBytes = size_t(st.unrolledVpls) * sizeof(GpuVpl);
+    const size_t stride = size_t(roundUp(int(blockBytes), std::max(align, 1)));
+    std::vector<unsigned char> blocks(st.tiles.size() * stride + blockBytes);
+    for (size_t k = 0; k < st.tiles.size(); ++k) {
+        auto& t = st.tiles[k];
+        t.blockOffset = GLintptr(k * stride);
+        std::memcpy(blocks.data() + k * stride, gpu.data() + t.first, size_t(t.count) * sizeof(GpuVpl));
+    }
+    upload(st.tileVplBlocks, blocks);
+}
+
 // Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
 // power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
 // estimates all the indirect light.
@@ -154,12 +176,11 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
         offset += int(order.size());
     }
     std::vector<GpuVpl> gpu;
-    std::vector<int> ranges;
     std::vector<std::array<float, 4>> centres;
     const float lift = st.scene->boundsRadius() * 1e-4f;
+    st.tiles.clear();
     for (const auto& bucket : buckets) {
-        ranges.push_back(int(gpu.size()));
-        ranges.push_back(int(bucket.size()));
+        st.tiles.push_back({int(gpu.size()), int(bucket.size()), 0});
         for (const auto& [v, scale] : bucket) {
             const ShadingMaterial& m = st.scene->material(v->material);
             GpuVpl g{};
@@ -178,8 +199,9 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
         }
     }
     upload(st.vplBuffer, gpu);
-    upload(st.rangeBuffer, ranges);
+    uploadTileBlocks(st, gpu);
     st.uploadedVplCount = int(gpu.size());
+    st.vplShadowChunks = 0;
     if (settings.visibility && !centres.empty()) {
         GLint maxLayers = 0;
         glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
@@ -189,6 +211,7 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
             throw std::runtime_error("preview: VPL visibility supports at most " +
                                      std::to_string(perChunk * Preview::State::kVplShadowChunks) + " VPLs on this GPU");
         st.vplCubesPerChunk = perChunk;
+        st.vplShadowChunks = chunks;
         for (int c = 0; c < chunks; ++c) {
             const size_t first = size_t(c) * size_t(perChunk);
             const size_t last = std::min(centres.size(), first + size_t(perChunk));
@@ -308,6 +331,20 @@ Mat4 viewProjection(const Camera& camera, int w, int h, float jx, float jy, floa
     return m;
 }
 
+// The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches):
+// compiled again only when one of them changes.
+const gl::Program& shadeProgram(Preview::State& st) {
+    const std::array<int, 3> key{st.unrolledVpls, st.vplShadowChunks, st.glossyScene ? 1 : 0};
+    if (st.shadeProgramKey != key) {
+        std::string defines = "#define UNROLLED_VPLS " + std::to_string(key[0]) + "\n#define FOR_EACH_TILE_VPL(STEP)";
+        for (int k = 0; k < key[0]; ++k) defines += " STEP(" + std::to_string(k) + ")";
+        defines += "\n#define VPL_SHADOW_CHUNKS " + std::to_string(key[1]) + "\n#define GLOSSY " + std::to_string(key[2]);
+        st.shadeProgram = gl::loadProgram(st.shaderDir, "fullscreen.vert", "shade_vpl.frag", {}, defines);
+        st.shadeProgramKey = key;
+    }
+    return st.shadeProgram;
+}
+
 void bindTextures(std::initializer_list<GLuint> textures) {
     GLuint unit = 0;
     for (GLuint t : textures) glBindTextureUnit(unit++, t);
@@ -416,13 +453,11 @@ Image Preview::render(float jitterX, float jitterY) {
         if (interleaved) runSplit(st, s.twoPassSplit, w, h);
         lap(tm.split);
 
-        const gl::Program& p = st.shadeProgram;
+        const gl::Program& p = shadeProgram(st);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
-        setIvec2(p, "subSize", interleaved ? st.subW : w, interleaved ? st.subH : h);
         setVec3(p, "cameraPos", eye);
         setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
-        setInt(p, "visibility", s.visibility ? 1 : 0);
         setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
         setFloat(p, "shadowBias", 0.03f);
         setInt(p, "firstArea", st.firstAreaLight);
@@ -435,12 +470,22 @@ Image Preview::render(float jitterX, float jitterY) {
         for (int c = 1; c < Preview::State::kVplShadowChunks; ++c)
             glBindTextureUnit(GLuint(5 + c), st.vplShadows[size_t(c)].distance.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.rangeBuffer.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
-        if (interleaved)
-            drawFullscreen(st.indirectSplitFbo.id(), st.splitW(), st.splitH());
-        else
-            drawFullscreen(st.indirectFbo.id(), w, h);
+        glBindFramebuffer(GL_FRAMEBUFFER, interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
+        const int tileW = interleaved ? st.subW : w, tileH = interleaved ? st.subH : h;
+        for (int k = 0; k < subsets; ++k) {
+            const Preview::State::TileVpls t =
+                indirect && size_t(k) < st.tiles.size() ? st.tiles[size_t(k)] : Preview::State::TileVpls{};
+            const int tx = k % st.patternX, ty = k / st.patternX;
+            if (st.unrolledVpls > 0)
+                glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
+                                  GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
+            setIvec2(p, "tile", tx, ty);
+            setInt(p, "vplFirst", t.first);
+            setInt(p, "vplCount", t.count);
+            glViewport(tx * tileW, ty * tileH, tileW, tileH);
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         lap(tm.shading);
 
         if (interleaved) runGather(st, st.indirectSplit.id());

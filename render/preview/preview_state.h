@@ -151,10 +151,10 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 
 struct Preview::State {
     std::string shaderDir;
-    gl::Program gbufferProgram, splitProgram, gatherProgram, shadeProgram, discontinuityProgram, blurProgram,
+    gl::Program gbufferProgram, splitProgram, gatherProgram, discontinuityProgram, blurProgram,
         directProgram, shadowProgram, dirShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
-    gl::Buffer vertices, triangles, materials, vplBuffer, rangeBuffer, lightBuffer, shadowCentres;
+    gl::Buffer vertices, triangles, materials, vplBuffer, tileVplBlocks, lightBuffer, shadowCentres;
     GLsizei vertexCount = 0;
 
     // Scene.
@@ -187,7 +187,21 @@ struct Preview::State {
     gl::Texture luminaireTables;  // preview_luminaires.h: a layer per luminaire
     int directShadowCubes = 0;
     int firstAreaLight = 0, areaLightCount = 0;  // the area samples' range in directLights
-    std::vector<int> ranges;  // (first, count) per sub-buffer
+    // The VPL shading pass draws each sub-buffer with its own VPLs: vplBuffer[first, first +
+    // count), and with unrolledVpls > 0 the same VPLs as a uniform block at byte `blockOffset`
+    // of tileVplBlocks (unrolledVpls of them, the last padded). shadeProgram is compiled for
+    // shadeProgramKey (shade_vpl.frag's switches: unrolled VPLs, VPL shadow chunks, glossy).
+    struct TileVpls {
+        int first = 0, count = 0;
+        GLintptr blockOffset = 0;
+    };
+    static constexpr int kMaxUnrolledVpls = 64;
+    std::vector<TileVpls> tiles;
+    int unrolledVpls = 0;
+    int vplShadowChunks = 0;  // cube map arrays in use (0: VPL visibility off)
+    bool glossyScene = false;  // any glossy material with a specular lobe
+    gl::Program shadeProgram;
+    std::array<int, 3> shadeProgramKey{-1, -1, -1};
     int uploadedVplCount = 0;
     PreviewTimings timings;
 

@@ -1,21 +1,35 @@
 #version 450 core
 // Indirect light from VPLs over the split G-buffer: every tile (sub-buffer) is shaded with its
-// own subset of the VPLs, all tiles in this one pass. ranges[tile] = (first VPL, count) in the
-// VPL buffer, which the CPU ordered by subset with powers already scaled (by about n m) so that each
-// subset alone estimates the whole indirect light.
+// own subset of the VPLs, which the CPU ordered by subset with powers already scaled (by about
+// n m) so that each subset alone estimates the whole indirect light. One draw per tile, all in
+// this one pass: the tile's VPLs are then the same for every fragment of a draw, and with
+// UNROLLED_VPLS > 0 they are read from a uniform block at constant indices (the loop unrolled by
+// FOR_EACH_TILE_VPL), which llvmpipe loads once for all its SIMD lanes instead of gathering them
+// lane by lane (BENCHMARKS.md, issue 5). Otherwise, for tiles with more VPLs than an unrolled body
+// should hold, a loop over [vplFirst, vplFirst + vplCount) of the storage buffer.
+// Compile-time switches, set by the C++ side (preview_frame.cpp, shadeProgram) from the settings
+// and the scene, so that an unrolled body holds only the code the scene needs (llvmpipe runs a
+// SIMD vector of fragments through every branch any of them takes):
+//   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;
+//   VPL_SHADOW_CHUNKS  0: VPL visibility off; else the cube map arrays holding the VPLs' maps;
+//   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse).
 // Lighting y from a VPL at x (render/vpl/vpl.h):
 //   f_y(wo, y->x) power f_x(incident, x->y) min(cos_x cos_y / d^2, maxG) V(x, y),
 // the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
 // reported by the benchmarks).
 #include_brdf
 struct Vpl { vec4 positionIndex; vec4 normalAlpha; vec4 incident; vec4 power; vec4 albedo; vec4 specular; };
+#if UNROLLED_VPLS > 0
+layout(std140, binding = 0) uniform TileVpls { Vpl vpls[UNROLLED_VPLS]; };
+#else
 layout(std430, binding = 0) readonly buffer Vpls { Vpl vpls[]; };
-layout(std430, binding = 1) readonly buffer Ranges { ivec2 ranges[]; };
+#endif
+uniform ivec2 tile;             // this draw's sub-buffer
+uniform int vplFirst;           // its VPLs: vpls[vplFirst .. vplFirst + vplCount)
+uniform int vplCount;
 uniform ivec2 pattern;
-uniform ivec2 subSize;
 uniform vec3 cameraPos;
 uniform float maxG;
-uniform int visibility;         // 1: look up each VPL's cube shadow map
 uniform float shadowBias;       // relative
 uniform float texelAngle;       // of the VPL cube maps, at a face's centre (radians)
 layout(binding = 0) uniform sampler2D g0Tex;
@@ -24,7 +38,7 @@ layout(binding = 2) uniform sampler2D g2Tex;
 layout(binding = 3) uniform sampler2D g3Tex;
 // VPL i's cube map: cube i mod cubesPerChunk of array i / cubesPerChunk (a cube map array holds
 // at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes). Samplers cannot be indexed by a non-uniform
-// value, hence the branches.
+// value, hence the branches, only as many as there are arrays.
 uniform int cubesPerChunk;
 layout(binding = 4) uniform samplerCubeArray vplShadows0;
 layout(binding = 6) uniform samplerCubeArray vplShadows1;
@@ -32,12 +46,20 @@ layout(binding = 7) uniform samplerCubeArray vplShadows2;
 layout(binding = 8) uniform samplerCubeArray vplShadows3;
 
 float vplShadowDistance(vec3 dir, int index) {
+#if VPL_SHADOW_CHUNKS <= 1
+    return texture(vplShadows0, vec4(dir, float(index))).r;
+#else
     const int chunk = index / cubesPerChunk;
     const vec4 c = vec4(dir, float(index - chunk * cubesPerChunk));
     if (chunk == 0) return texture(vplShadows0, c).r;
-    if (chunk == 1) return texture(vplShadows1, c).r;
+#if VPL_SHADOW_CHUNKS > 2
     if (chunk == 2) return texture(vplShadows2, c).r;
-    return texture(vplShadows3, c).r;
+#endif
+#if VPL_SHADOW_CHUNKS > 3
+    if (chunk == 3) return texture(vplShadows3, c).r;
+#endif
+    return texture(vplShadows1, c).r;
+#endif
 }
 layout(location = 0) out vec4 result;
 
@@ -51,46 +73,55 @@ uniform int areaCount;           // 0: the direct pass does the area lights
 uniform float areaShadowBias;    // relative
 layout(binding = 5) uniform samplerCubeArray areaShadows;
 
+// VPL i's light at y (normal n, glossy receiver or not; a diffuse receiver's albedo / pi is
+// applied by the caller), its fields read one by one as they are needed: a diffuse VPL (the
+// common case) costs three of its six vec4s.
+vec3 vplLight(int i, vec3 y, vec3 n, vec3 wo, bool glossyY, vec4 g1, vec4 g2, vec4 g3) {
+    const vec4 pos = vpls[i].positionIndex;
+    const vec3 d = pos.xyz - y;
+    const float d2 = dot(d, d);
+    const vec3 wi = d * inversesqrt(d2);
+    const vec4 nx = vpls[i].normalAlpha;
+    const float cosY = dot(n, wi), cosX = -dot(nx.xyz, wi);
+    // One exit, no early returns: llvmpipe runs a SIMD vector of fragments through every branch
+    // that any of them takes, and returns from an inlined function cost it extra masks.
+    float g = cosY > 0.0 && cosX > 0.0 ? min(cosX * cosY / d2, maxG) : 0.0;
+#if VPL_SHADOW_CHUNKS > 0
+    if (g > 0.0) {
+        // Normal offset: the low-resolution map's texel spans a range of distances on a
+        // surface seen at a grazing angle; looking up from a point lifted off the surface by
+        // a texel's footprint (distance times the texel angle, over cos) removes that acne.
+        const vec3 e = y + n * (sqrt(d2) * texelAngle * min(2.0 / cosY, 8.0)) - pos.xyz;
+        if (length(e) * (1.0 - shadowBias) > vplShadowDistance(e, int(pos.w))) g = 0.0;
+    }
+#endif
+    vec3 c = vpls[i].power.rgb * g;
+#if GLOSSY
+    const vec4 incident = vpls[i].incident;
+    if (incident.w != 0.0)
+        c *= evalBsdf(nx.xyz, incident.xyz, -wi, vpls[i].albedo.rgb, vpls[i].specular.rgb, nx.w);
+    if (glossyY) c *= evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w);
+#endif
+    return c;
+}
+
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
     if (g0.w != 1.0) { result = vec4(0.0); return; }
     const vec4 g1 = texelFetch(g1Tex, p, 0), g2 = texelFetch(g2Tex, p, 0), g3 = texelFetch(g3Tex, p, 0);
     const vec3 y = g0.xyz, n = g1.xyz, wo = normalize(cameraPos - y);
-    const ivec2 tile = min(p / subSize, pattern - 1);
-    const ivec2 range = ranges[tile.y * pattern.x + tile.x];
     // Diffuse receivers and diffuse VPLs (the common case) have constant BSDFs: their albedo / pi
     // is taken out of the loop (receiver) or premultiplied into the power on the CPU (VPL,
     // incident.w == 0), which more than halves the loop's cost on llvmpipe.
     const bool glossyY = max(g3.r, max(g3.g, g3.b)) > 0.0;
     vec3 sum = vec3(0.0);
-    for (int i = range.x; i < range.x + range.y; ++i) {
-        // Fields read one by one, as they are needed: a diffuse VPL (the common case) costs three
-        // of its six vec4s, which matters to llvmpipe's memory traffic.
-        const vec4 pos = vpls[i].positionIndex;
-        const vec3 d = pos.xyz - y;
-        const float d2 = dot(d, d);
-        const vec3 wi = d * inversesqrt(d2);
-        const vec4 nx = vpls[i].normalAlpha;
-        const float cosY = dot(n, wi), cosX = -dot(nx.xyz, wi);
-        if (cosY <= 0.0 || cosX <= 0.0) continue;
-        if (visibility != 0) {
-            // Normal offset: the low-resolution map's texel spans a range of distances on a
-            // surface seen at a grazing angle; looking up from a point lifted off the surface by
-            // a texel's footprint (distance times the texel angle, over cos) removes that acne.
-            const float dist = sqrt(d2);
-            const vec3 lifted = y + n * (dist * texelAngle * min(2.0 / cosY, 8.0));
-            const vec3 e = lifted - pos.xyz;
-            const float stored = vplShadowDistance(e, int(pos.w));
-            if (length(e) * (1.0 - shadowBias) > stored) continue;
-        }
-        vec3 c = vpls[i].power.rgb * min(cosX * cosY / d2, maxG);
-        const vec4 incident = vpls[i].incident;
-        if (incident.w != 0.0)
-            c *= evalBsdf(nx.xyz, incident.xyz, -wi, vpls[i].albedo.rgb, vpls[i].specular.rgb, nx.w);
-        if (glossyY) c *= evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w);
-        sum += c;
-    }
+#if UNROLLED_VPLS > 0
+#define TILE_VPL(k) if (k < vplCount) sum += vplLight(k, y, n, wo, glossyY, g1, g2, g3);
+    FOR_EACH_TILE_VPL(TILE_VPL)
+#else
+    for (int i = vplFirst; i < vplFirst + vplCount; ++i) sum += vplLight(i, y, n, wo, glossyY, g1, g2, g3);
+#endif
     if (!glossyY) sum *= g2.rgb * (1.0 / PI);
     const int subsets = pattern.x * pattern.y;
     vec3 area = vec3(0.0);
