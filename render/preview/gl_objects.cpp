@@ -45,10 +45,13 @@ std::string readFile(const std::string& path) {
 
 GLuint compile(GLenum stage, const std::string& path, const std::string& defines) {
     std::string src = readFile(path);
-    // GLSL has no #include: "#include_brdf" pulls in the shared BSDF functions of brdf.glsl.
-    const size_t inc = src.find("#include_brdf");
-    if (inc != std::string::npos)
-        src.replace(inc, 13, readFile(path.substr(0, path.find_last_of('/') + 1) + "brdf.glsl"));
+    // GLSL has no #include: a line "#include_NAME" is replaced by NAME.glsl of the same folder
+    // (brdf.glsl: the BSDF; gbuffer.glsl: the G-buffer's encoding).
+    for (size_t inc; (inc = src.find("#include_")) != std::string::npos;) {
+        const size_t end = src.find_first_of("\r\n", inc);
+        const std::string name = src.substr(inc + 9, end == std::string::npos ? std::string::npos : end - inc - 9);
+        src.replace(inc, 9 + name.size(), readFile(path.substr(0, path.find_last_of('/') + 1) + name + ".glsl"));
+    }
     // Defines go right after the #version line, which must stay first.
     const size_t eol = src.find('\n');
     if (!defines.empty() && eol != std::string::npos) src.insert(eol + 1, defines + "\n#line 2\n");

@@ -27,8 +27,6 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     const std::string& d = st.shaderDir;
     st.gbufferProgram = gl::loadProgram(d, "gbuffer.vert", "gbuffer.frag");
     st.splitProgram = gl::loadProgram(d, "fullscreen.vert", "split.frag");
-    st.gatherProgram = gl::loadProgram(d, "fullscreen.vert", "gather.frag");
-    st.discontinuityProgram = gl::loadProgram(d, "fullscreen.vert", "discontinuity.frag");
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
     st.directProgram = gl::loadProgram(d, "fullscreen.vert", "direct.frag");
     st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");

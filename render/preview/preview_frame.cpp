@@ -1,5 +1,6 @@
 // The passes of one preview frame: shadow maps (only when lights or VPLs changed), G-buffer,
-// split, interleaved VPL shading, gather, discontinuity buffer and blur, direct light and blend.
+// split, interleaved VPL shading (with the discontinuity buffer), gather with the horizontal
+// blur, vertical blur with the direct light and the blend.
 
 #include "render/preview/preview_luminaires.h"
 #include "render/preview/preview_state.h"
@@ -30,23 +31,22 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     st.subW = roundUp((w + n - 1) / n, block);
     st.subH = roundUp((h + m - 1) / m, block);
     const int sw = st.splitW(), sh = st.splitH();
-    for (int i = 0; i < 4; ++i) {
-        st.g[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, w, h);
-        st.s[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, sw, sh);
-        st.t[size_t(i)] = gl::makeTexture2D(GL_RGBA32F, sw, sh);
+    for (int i = 0; i < 2; ++i) {  // gbuffer.glsl
+        const GLenum format = i == 0 ? GL_RGBA32F : GL_RGBA32UI;
+        st.g[size_t(i)] = gl::makeTexture2D(format, w, h);
+        st.s[size_t(i)] = gl::makeTexture2D(format, sw, sh);
+        st.t[size_t(i)] = gl::makeTexture2D(format, sw, sh);
     }
     st.depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, w, h);
-    st.gFbo = gl::makeFramebuffer({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id()}, st.depth.id());
-    st.sFbo = gl::makeFramebuffer({st.s[0].id(), st.s[1].id(), st.s[2].id(), st.s[3].id()});
-    st.tFbo = gl::makeFramebuffer({st.t[0].id(), st.t[1].id(), st.t[2].id(), st.t[3].id()});
+    st.gFbo = gl::makeFramebuffer({st.g[0].id(), st.g[1].id()}, st.depth.id());
+    st.sFbo = gl::makeFramebuffer({st.s[0].id(), st.s[1].id()});
+    st.tFbo = gl::makeFramebuffer({st.t[0].id(), st.t[1].id()});
     st.indirectSplit = gl::makeTexture2D(GL_RGBA32F, sw, sh);
     st.indirectSplitFbo = gl::makeFramebuffer({st.indirectSplit.id()});
     st.indirect = gl::makeTexture2D(GL_RGBA32F, w, h);
     st.indirectFbo = gl::makeFramebuffer({st.indirect.id()});
     st.blurTemp = gl::makeTexture2D(GL_RGBA32F, w, h);
     st.blurFbo = gl::makeFramebuffer({st.blurTemp.id()});
-    st.edges = gl::makeTexture2D(GL_R32F, w, h);
-    st.edgesFbo = gl::makeFramebuffer({st.edges.id()});
     st.final = gl::makeTexture2D(GL_RGBA32F, w, h);
     st.finalFbo = gl::makeFramebuffer({st.final.id()});
     gl::checkErrors("preview targets");
@@ -356,7 +356,7 @@ void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH) {
     setIvec2(p, "pattern", st.patternX, st.patternY);
     setIvec2(p, "subSize", st.subW, st.subH);
     setInt(p, "blockSize", st.block);
-    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id()});
+    bindTextures({st.g[0].id(), st.g[1].id()});
     if (!twoPass) {
         setInt(p, "mode", 0);
         setIvec2(p, "sourceSize", sourceW, sourceH);
@@ -368,17 +368,20 @@ void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH) {
     drawFullscreen(st.tFbo.id(), st.splitW(), st.splitH());
     setInt(p, "mode", 2);
     setIvec2(p, "sourceSize", st.splitW(), st.splitH());
-    bindTextures({st.t[0].id(), st.t[1].id(), st.t[2].id(), st.t[3].id()});
+    bindTextures({st.t[0].id(), st.t[1].id()});
     drawFullscreen(st.sFbo.id(), st.splitW(), st.splitH());
 }
 
-void runGather(Preview::State& st, GLuint splitTexture) {
-    const gl::Program& p = st.gatherProgram;
+// Gathers a split-layout texture into blurTemp, blurred horizontally over boxWidth pixels where
+// its alpha's discontinuity bits allow (boxWidth 1: gathered only).
+void runGatherBlur(Preview::State& st, GLuint splitTexture, int boxWidth) {
+    const gl::Program& p = st.blurProgram;
     glUseProgram(p.id());
     setIvec2(p, "pattern", st.patternX, st.patternY);
     setIvec2(p, "subSize", st.subW, st.subH);
+    setInt(p, "boxWidth", boxWidth);
     bindTextures({splitTexture});
-    drawFullscreen(st.indirectFbo.id(), st.targetW, st.targetH);
+    drawFullscreen(st.blurFbo.id(), st.targetW, st.targetH);
 }
 
 std::vector<float> readBackRgba(GLuint texture, int w, int h) {
@@ -429,7 +432,9 @@ Image Preview::render(float jitterX, float jitterY) {
     glBindFramebuffer(GL_FRAMEBUFFER, st.gFbo.id());
     glViewport(0, 0, w, h);
     const float zero[4] = {0, 0, 0, 0};
-    for (int i = 0; i < 4; ++i) glClearNamedFramebufferfv(st.gFbo.id(), GL_COLOR, i, zero);
+    const GLuint zeroBits[4] = {0, 0, 0, 0};
+    glClearNamedFramebufferfv(st.gFbo.id(), GL_COLOR, 0, zero);
+    glClearNamedFramebufferuiv(st.gFbo.id(), GL_COLOR, 1, zeroBits);
     const float one = 1.0f;
     glClearNamedFramebufferfv(st.gFbo.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
@@ -465,10 +470,18 @@ Image Preview::render(float jitterX, float jitterY) {
         setFloat(p, "areaShadowBias", 0.02f);
         const auto& src = interleaved ? st.s : st.g;
         setInt(p, "cubesPerChunk", st.vplCubesPerChunk);
-        bindTextures({src[0].id(), src[1].id(), src[2].id(), src[3].id(), st.vplShadows[0].distance.id(),
-                      st.directShadows.distance.id()});
+        glBindTextureUnit(0, src[0].id());
+        glBindTextureUnit(1, src[1].id());
+        glBindTextureUnit(4, st.vplShadows[0].distance.id());
+        glBindTextureUnit(5, st.directShadows.distance.id());
         for (int c = 1; c < Preview::State::kVplShadowChunks; ++c)
             glBindTextureUnit(GLuint(5 + c), st.vplShadows[size_t(c)].distance.id());
+        // The discontinuity buffer rides in the output's alpha, for the blur.
+        setInt(p, "findEdges", interleaved && s.blur ? 1 : 0);
+        setIvec2(p, "subSize", interleaved ? st.subW : w, interleaved ? st.subH : h);
+        setIvec2(p, "imageSize", w, h);
+        setFloat(p, "depthTolerance", 0.05f);
+        setFloat(p, "normalTolerance", 0.9f);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
         glBindFramebuffer(GL_FRAMEBUFFER, interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
@@ -488,9 +501,12 @@ Image Preview::render(float jitterX, float jitterY) {
         }
         lap(tm.shading);
 
-        if (interleaved) runGather(st, st.indirectSplit.id());
+        // Gathered and blurred horizontally; without interleaving the shading pass wrote the
+        // image layout already, and there is no blur.
+        if (interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
         lap(tm.gather);
     }
+    const bool withIndirect = indirect || areaInterleaved;  // the shading pass's output holds light
 
     const gl::Program& d = st.directProgram;
     glUseProgram(d.id());
@@ -511,34 +527,16 @@ Image Preview::render(float jitterX, float jitterY) {
     }
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
 
-    const bool blurred = indirect || areaInterleaved;  // the indirect texture holds light
-    if (interleaved && s.blur && blurred) {
-        const gl::Program& e = st.discontinuityProgram;
-        glUseProgram(e.id());
-        setFloat(e, "depthTolerance", 0.05f);
-        setFloat(e, "normalTolerance", 0.9f);
-        bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id()});
-        drawFullscreen(st.edgesFbo.id(), w, h);
-        const gl::Program& b = st.blurProgram;
-        glUseProgram(b.id());
-        setIvec2(b, "axis", 1, 0);
-        setInt(b, "boxWidth", st.patternX);
-        bindTextures({st.indirect.id(), st.edges.id()});
-        drawFullscreen(st.blurFbo.id(), w, h);
-        setIvec2(b, "axis", 0, 1);
-        setInt(b, "boxWidth", st.patternY);
-        bindTextures({st.blurTemp.id(), st.edges.id()});
-        drawFullscreen(st.indirectFbo.id(), w, h);
-    }
-    lap(tm.blur);
-
-    glUseProgram(d.id());
     setInt(d, "areaMode", areaInterleaved ? 1 : 0);
-    setInt(d, "addIndirect", blurred ? 1 : 0);
-    bindTextures({st.g[0].id(), st.g[1].id(), st.g[2].id(), st.g[3].id(), st.indirect.id(), st.directShadows.distance.id(),
-                  st.dirShadows.depth.id(), st.luminaireTables.id()});
+    setInt(d, "addIndirect", withIndirect ? 1 : 0);
+    setInt(d, "boxHeight", interleaved && s.blur ? st.patternY : 1);
+    glBindTextureUnit(0, st.g[0].id());
+    glBindTextureUnit(1, st.g[1].id());
+    glBindTextureUnit(4, interleaved ? st.blurTemp.id() : st.indirect.id());
+    glBindTextureUnit(5, st.directShadows.distance.id());
+    glBindTextureUnit(6, st.dirShadows.depth.id());
+    glBindTextureUnit(7, st.luminaireTables.id());
     setIvec2(d, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
     drawFullscreen(st.finalFbo.id(), w, h);
     lap(tm.direct);
 
@@ -547,11 +545,18 @@ Image Preview::render(float jitterX, float jitterY) {
     // glass and the background), so that illuminance can be read off the preview as off the
     // converged image (ui/display.h: E = pi L / albedo).
     if (albedoLayer_) {
-        const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h), g2 = readBackRgba(st.g[2].id(), w, h);
+        const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h);
+        std::vector<GLuint> g1(size_t(w) * size_t(h) * 4);
+        glGetTextureImage(st.g[1].id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, GLsizei(g1.size() * sizeof(GLuint)), g1.data());
         for (int c = 0; c < 3; ++c) {
             std::vector<float>& layer = image.channels[std::string("albedo.") + "RGB"[c]];
             layer.resize(image.pixelCount());
-            for (size_t i = 0; i < layer.size(); ++i) layer[i] = g0[i * 4 + 3] == 1.0f ? g2[i * 4 + size_t(c)] : 0.0f;
+            // gbuffer.glsl: kind 1 (floor of g0.w), albedo r, g in g1.y and b in g1.z's low half.
+            for (size_t i = 0; i < layer.size(); ++i) {
+                const GLuint word = g1[i * 4 + (c < 2 ? 1 : 2)];
+                const GLuint bits = c == 1 ? word >> 16 : word & 0xffffu;
+                layer[i] = int(g0[i * 4 + 3]) == 1 ? float(bits) / 65535.0f : 0.0f;
+            }
         }
     }
     gl::checkErrors("Preview::render");
@@ -573,14 +578,13 @@ Preview::SplitCheck Preview::splitAndGather(const Image& in) {
         rgba[i * 4 + 2] = in.pixels[i].z;
         rgba[i * 4 + 3] = float(i);
     }
-    for (int k = 0; k < 4; ++k)
-        glTextureSubImage2D(st.g[size_t(k)].id(), 0, 0, 0, in.width, in.height, GL_RGBA, GL_FLOAT, rgba.data());
+    glTextureSubImage2D(st.g[0].id(), 0, 0, 0, in.width, in.height, GL_RGBA, GL_FLOAT, rgba.data());
     glBindVertexArray(st.emptyVao.id());
     runSplit(st, s.twoPassSplit, in.width, in.height);
     SplitCheck out;
     out.split = readBack(st.s[0].id(), st.splitW(), st.splitH());
-    runGather(st, st.s[0].id());
-    out.gathered = readBack(st.indirect.id(), in.width, in.height);
+    runGatherBlur(st, st.s[0].id(), 1);
+    out.gathered = readBack(st.blurTemp.id(), in.width, in.height);
     out.subWidth = st.subW;
     out.subHeight = st.subH;
     gl::checkErrors("Preview::splitAndGather");

@@ -151,7 +151,7 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 
 struct Preview::State {
     std::string shaderDir;
-    gl::Program gbufferProgram, splitProgram, gatherProgram, discontinuityProgram, blurProgram,
+    gl::Program gbufferProgram, splitProgram, blurProgram,
         directProgram, shadowProgram, dirShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
     gl::Buffer vertices, triangles, materials, vplBuffer, tileVplBlocks, lightBuffer, shadowCentres;
@@ -173,9 +173,12 @@ struct Preview::State {
     // Frame targets.
     int targetW = 0, targetH = 0, patternX = 0, patternY = 0, block = 0;
     int subW = 0, subH = 0;
-    std::array<gl::Texture, 4> g, s, t;
-    gl::Texture depth, indirectSplit, indirect, blurTemp, edges, final;
-    gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, edgesFbo, finalFbo;
+    // G-buffer (gbuffer.glsl's two attachments), its split layout, and the two-pass split's
+    // intermediate; the VPL shading pass's output in split layout (indirectSplit) or, without
+    // interleaving, in image layout (indirect); blurTemp: gathered and blurred horizontally.
+    std::array<gl::Texture, 2> g, s, t;
+    gl::Texture depth, indirectSplit, indirect, blurTemp, final;
+    gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, finalFbo;
     preview_detail::CubeShadows directShadows;
     // VPL visibility: cube map arrays hold at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes (341 on
     // llvmpipe), so the VPLs' maps are spread over up to kVplShadowChunks arrays

@@ -2,8 +2,10 @@
 // Direct light and the final blend: emitters show their radiance; shaded surfaces get the direct
 // light of every point and spot light (cube shadow maps), directional light (orthographic shadow
 // maps) and, without interleaving, of the area lights' point samples (cube shadow maps), plus the
-// (blurred) indirect light, which with interleaving also holds the area lights.
+// indirect light, which with interleaving also holds the area lights, blurred vertically here
+// (the second half of the box blur; blur.frag did the gather and the horizontal half).
 #include_brdf
+#include_gbuffer
 // kind: 0 point, 1 spot, 2 directional, 3 area-light sample, 4 luminaire. intensity is W/sr in
 // scene units (divided by meters_per_unit^2; a luminaire's per candela of its table), irradiance
 // for a directional light, and for an area sample Le / (samples pdf_area) so that it lights like
@@ -22,10 +24,11 @@ uniform int addDirect;
 uniform int areaMode;
 uniform int firstArea;
 layout(binding = 0) uniform sampler2D g0Tex;
-layout(binding = 1) uniform sampler2D g1Tex;
-layout(binding = 2) uniform sampler2D g2Tex;
-layout(binding = 3) uniform sampler2D g3Tex;
+layout(binding = 1) uniform usampler2D g1Tex;
+// The indirect light in image layout, the discontinuity bits in alpha (bit 1: this pixel and
+// the one below lie on different surfaces). boxHeight m, or 1: no vertical blur.
 layout(binding = 4) uniform sampler2D indirectTex;
+uniform int boxHeight;
 layout(binding = 5) uniform samplerCubeArray shadows;
 // Directional lights: orthographic depth maps (layer = normalShadow.w), looked up from the
 // surface point pushed along its normal (a normal offset, against acne at grazing light).
@@ -57,7 +60,8 @@ float spotFactor(float cosTheta, float cosCone, float cosFalloff) {
 }
 
 // Light i's direct contribution at y (normal n, towards wo), shadowed.
-vec3 lightContribution(int i, vec3 y, vec3 n, vec3 wo, vec4 g1, vec4 g2, vec4 g3) {
+vec3 lightContribution(int i, Surface s, vec3 wo) {
+    const vec3 y = s.position, n = s.normal;
     const Light l = lights[i];
     const int kind = int(l.positionKind.w);
     vec3 wi;
@@ -92,19 +96,42 @@ vec3 lightContribution(int i, vec3 y, vec3 n, vec3 wo, vec4 g1, vec4 g2, vec4 g3
     }
     const float cosY = dot(n, wi);
     if (cosY <= 0.0 || scale <= 0.0) return vec3(0.0);
-    return evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * scale);
+    return evalBsdf(n, wo, wi, s.albedo, s.specular, s.alpha) * l.intensityCosFalloff.rgb * (cosY * scale);
+}
+
+// The vertical half of the box blur over continuous regions, as blur.frag's horizontal one.
+vec3 blurredIndirect(ivec2 p) {
+    const vec4 centre = texelFetch(indirectTex, p, 0);
+    const int before = (boxHeight - 1) / 2, after = boxHeight - 1 - before;
+    const int rows = textureSize(indirectTex, 0).y;
+    vec3 sum = centre.rgb;
+    float count = 1.0;
+    int bits = int(centre.a);
+    for (int i = 1; i <= after && (bits & 2) == 0 && p.y + i < rows; ++i) {
+        const vec4 q = texelFetch(indirectTex, p + ivec2(0, i), 0);
+        sum += q.rgb;
+        count += 1.0;
+        bits = int(q.a);
+    }
+    for (int i = 1; i <= before && p.y - i >= 0; ++i) {
+        const vec4 q = texelFetch(indirectTex, p - ivec2(0, i), 0);
+        if ((int(q.a) & 2) != 0) break;
+        sum += q.rgb;
+        count += 1.0;
+    }
+    return sum / count;
 }
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
-    const vec4 g2 = texelFetch(g2Tex, p, 0);
-    if (g0.w == 2.0) { result = vec4(g2.rgb, 1.0); return; }
-    if (g0.w != 1.0) { result = vec4(0.0, 0.0, 0.0, 1.0); return; }
-    const vec4 g1 = texelFetch(g1Tex, p, 0), g3 = texelFetch(g3Tex, p, 0);
-    const vec3 y = g0.xyz, n = g1.xyz, wo = normalize(cameraPos - y);
-    vec3 sum = addIndirect != 0 ? texelFetch(indirectTex, p, 0).rgb : vec3(0.0);
+    const int kind = surfaceKind(g0);
+    if (kind == 2) { result = vec4(emitterRadiance(texelFetch(g1Tex, p, 0)), 1.0); return; }
+    if (kind != 1) { result = vec4(0.0, 0.0, 0.0, 1.0); return; }
+    const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
+    const vec3 wo = normalize(cameraPos - s.position);
+    vec3 sum = addIndirect != 0 ? blurredIndirect(p) : vec3(0.0);
     const int end = addDirect == 0 ? 0 : areaMode == 1 ? firstArea : lightCount;
-    for (int i = 0; i < end; ++i) sum += lightContribution(i, y, n, wo, g1, g2, g3);
+    for (int i = 0; i < end; ++i) sum += lightContribution(i, s, wo);
     result = vec4(sum, 1.0);
 }

@@ -18,6 +18,7 @@
 // the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
 // reported by the benchmarks).
 #include_brdf
+#include_gbuffer
 struct Vpl { vec4 positionIndex; vec4 normalAlpha; vec4 incident; vec4 power; vec4 albedo; vec4 specular; };
 #if UNROLLED_VPLS > 0
 layout(std140, binding = 0) uniform TileVpls { Vpl vpls[UNROLLED_VPLS]; };
@@ -33,9 +34,7 @@ uniform float maxG;
 uniform float shadowBias;       // relative
 uniform float texelAngle;       // of the VPL cube maps, at a face's centre (radians)
 layout(binding = 0) uniform sampler2D g0Tex;
-layout(binding = 1) uniform sampler2D g1Tex;
-layout(binding = 2) uniform sampler2D g2Tex;
-layout(binding = 3) uniform sampler2D g3Tex;
+layout(binding = 1) uniform usampler2D g1Tex;
 // VPL i's cube map: cube i mod cubesPerChunk of array i / cubesPerChunk (a cube map array holds
 // at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes). Samplers cannot be indexed by a non-uniform
 // value, hence the branches, only as many as there are arrays.
@@ -76,7 +75,8 @@ layout(binding = 5) uniform samplerCubeArray areaShadows;
 // VPL i's light at y (normal n, glossy receiver or not; a diffuse receiver's albedo / pi is
 // applied by the caller), its fields read one by one as they are needed: a diffuse VPL (the
 // common case) costs three of its six vec4s.
-vec3 vplLight(int i, vec3 y, vec3 n, vec3 wo, bool glossyY, vec4 g1, vec4 g2, vec4 g3) {
+vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
+    const vec3 y = sy.position, n = sy.normal;
     const vec4 pos = vpls[i].positionIndex;
     const vec3 d = pos.xyz - y;
     const float d2 = dot(d, d);
@@ -100,40 +100,68 @@ vec3 vplLight(int i, vec3 y, vec3 n, vec3 wo, bool glossyY, vec4 g1, vec4 g2, ve
     const vec4 incident = vpls[i].incident;
     if (incident.w != 0.0)
         c *= evalBsdf(nx.xyz, incident.xyz, -wi, vpls[i].albedo.rgb, vpls[i].specular.rgb, nx.w);
-    if (glossyY) c *= evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w);
+    if (glossyY) c *= evalBsdf(n, wo, wi, sy.albedo, sy.specular, sy.alpha);
 #endif
     return c;
+}
+
+// The discontinuity buffer, for the box blur that follows (blur.frag, direct.frag): bit 0 set
+// when this pixel and its right neighbour lie on different surfaces (depth or normal differ too
+// much, or either is not a shaded surface, or the neighbour is off the image), bit 1 the same for
+// the neighbour below. Found here, in the split layout, where the neighbours of image pixel
+// (x, y) are found in the next tiles over, rather than in a pass of its own.
+uniform int findEdges;
+uniform ivec2 subSize;          // a tile's size in the split layout
+uniform ivec2 imageSize;
+uniform float depthTolerance;   // relative
+uniform float normalTolerance;  // minimum cosine between normals
+
+bool continuous(Surface a, ivec2 image) {
+    if (any(greaterThanEqual(image, imageSize))) return false;
+    const ivec2 q = (image % pattern) * subSize + image / pattern;
+    const vec4 g0 = texelFetch(g0Tex, q, 0);
+    if (surfaceKind(g0) != 1) return false;
+    const float da = distance(a.position, cameraPos), db = distance(g0.xyz, cameraPos);
+    if (abs(da - db) > depthTolerance * min(da, db)) return false;
+    return dot(a.normal, decodeNormal(texelFetch(g1Tex, q, 0))) >= normalTolerance;
+}
+
+float edgeBits(Surface a, ivec2 p) {
+    if (findEdges == 0) return 0.0;
+    const ivec2 image = (p - tile * subSize) * pattern + tile;
+    return float((continuous(a, image + ivec2(1, 0)) ? 0 : 1) + (continuous(a, image + ivec2(0, 1)) ? 0 : 2));
 }
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
-    if (g0.w != 1.0) { result = vec4(0.0); return; }
-    const vec4 g1 = texelFetch(g1Tex, p, 0), g2 = texelFetch(g2Tex, p, 0), g3 = texelFetch(g3Tex, p, 0);
-    const vec3 y = g0.xyz, n = g1.xyz, wo = normalize(cameraPos - y);
+    if (surfaceKind(g0) != 1) { result = vec4(0.0, 0.0, 0.0, 3.0); return; }
+    const Surface sy = decodeSurface(g0, texelFetch(g1Tex, p, 0));
+    const vec3 y = sy.position, n = sy.normal, wo = normalize(cameraPos - y);
     // Diffuse receivers and diffuse VPLs (the common case) have constant BSDFs: their albedo / pi
     // is taken out of the loop (receiver) or premultiplied into the power on the CPU (VPL,
     // incident.w == 0), which more than halves the loop's cost on llvmpipe.
-    const bool glossyY = max(g3.r, max(g3.g, g3.b)) > 0.0;
+    const bool glossyY = max(sy.specular.r, max(sy.specular.g, sy.specular.b)) > 0.0;
     vec3 sum = vec3(0.0);
 #if UNROLLED_VPLS > 0
-#define TILE_VPL(k) if (k < vplCount) sum += vplLight(k, y, n, wo, glossyY, g1, g2, g3);
+#define TILE_VPL(k) if (k < vplCount) sum += vplLight(k, sy, wo, glossyY);
     FOR_EACH_TILE_VPL(TILE_VPL)
 #else
-    for (int i = vplFirst; i < vplFirst + vplCount; ++i) sum += vplLight(i, y, n, wo, glossyY, g1, g2, g3);
+    for (int i = vplFirst; i < vplFirst + vplCount; ++i) sum += vplLight(i, sy, wo, glossyY);
 #endif
-    if (!glossyY) sum *= g2.rgb * (1.0 / PI);
+    if (!glossyY) sum *= sy.albedo * (1.0 / PI);
     const int subsets = pattern.x * pattern.y;
     vec3 area = vec3(0.0);
     for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets) {
-        const Light l = lights[i];
-        const vec3 d = l.positionKind.xyz - y;
+        // Field by field: three of the light's four vec4s, each gathered lane by lane on llvmpipe.
+        const vec3 d = lights[i].positionKind.xyz - y;
         const float d2 = dot(d, d);
         const vec3 wi = d * inversesqrt(d2);
-        const float cosY = dot(n, wi), cosE = -dot(wi, l.normalShadow.xyz);
+        const vec4 normalShadow = lights[i].normalShadow;
+        const float cosY = dot(n, wi), cosE = -dot(wi, normalShadow.xyz);
         if (cosY <= 0.0 || cosE <= 0.0) continue;
-        if (sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, l.normalShadow.w)).r) continue;
-        area += evalBsdf(n, wo, wi, g2.rgb, g3.rgb, g1.w) * l.intensityCosFalloff.rgb * (cosY * cosE / d2);
+        if (sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, normalShadow.w)).r) continue;
+        area += evalBsdf(n, wo, wi, sy.albedo, sy.specular, sy.alpha) * lights[i].intensityCosFalloff.rgb * (cosY * cosE / d2);
     }
-    result = vec4(sum + area * float(subsets), 1.0);
+    result = vec4(sum + area * float(subsets), edgeBits(sy, p));
 }

@@ -5,20 +5,17 @@
 // MODE 1: first of two passes: within blocks of (n B) x (m B) texels, gather the block's texels
 //         into n x m sub-blocks of B x B (reads stay inside one small block: cache friendly).
 // MODE 2: second pass: translate the B x B sub-blocks to their tiles (a coherent block copy).
-// Every output is one texelFetch per attachment; texels outside the source read as zero.
+// Every output is one texelFetch per attachment (gbuffer.glsl: two); texels outside the source
+// read as zero (kind 0, nothing).
 uniform int mode;
 uniform ivec2 pattern;   // n, m
 uniform ivec2 subSize;   // a tile's size, a multiple of B in both directions
 uniform int blockSize;   // B
 uniform ivec2 sourceSize;
 layout(binding = 0) uniform sampler2D in0;
-layout(binding = 1) uniform sampler2D in1;
-layout(binding = 2) uniform sampler2D in2;
-layout(binding = 3) uniform sampler2D in3;
+layout(binding = 1) uniform usampler2D in1;
 layout(location = 0) out vec4 out0;
-layout(location = 1) out vec4 out1;
-layout(location = 2) out vec4 out2;
-layout(location = 3) out vec4 out3;
+layout(location = 1) out uvec4 out1;
 
 ivec2 sourceOf(ivec2 p) {
     if (mode == 0) {
@@ -40,11 +37,10 @@ ivec2 sourceOf(ivec2 p) {
 void main() {
     const ivec2 s = sourceOf(ivec2(gl_FragCoord.xy));
     if (any(greaterThanEqual(s, sourceSize))) {
-        out0 = out1 = out2 = out3 = vec4(0.0);
+        out0 = vec4(0.0);
+        out1 = uvec4(0u);
         return;
     }
     out0 = texelFetch(in0, s, 0);
     out1 = texelFetch(in1, s, 0);
-    out2 = texelFetch(in2, s, 0);
-    out3 = texelFetch(in3, s, 0);
 }
