@@ -28,7 +28,6 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.gbufferProgram = gl::loadProgram(d, "gbuffer.vert", "gbuffer.frag");
     st.splitProgram = gl::loadProgram(d, "fullscreen.vert", "split.frag");
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
-    st.directProgram = gl::loadProgram(d, "fullscreen.vert", "direct.frag");
     st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");
     st.dirShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "shadow_dir.frag");
     st.emptyVao = gl::makeVertexArray();

@@ -31,16 +31,16 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     st.subW = roundUp((w + n - 1) / n, block);
     st.subH = roundUp((h + m - 1) / m, block);
     const int sw = st.splitW(), sh = st.splitH();
-    for (int i = 0; i < 2; ++i) {  // gbuffer.glsl
-        const GLenum format = i == 0 ? GL_RGBA32F : GL_RGBA32UI;
-        st.g[size_t(i)] = gl::makeTexture2D(format, w, h);
+    for (int i = 0; i < 3; ++i) {  // gbuffer.glsl's two attachments; the split's discontinuity buffer
+        const GLenum format = i == 0 ? GL_RGBA32F : i == 1 ? GL_RGBA32UI : GL_R8UI;
+        if (i < 2) st.g[size_t(i)] = gl::makeTexture2D(format, w, h);
         st.s[size_t(i)] = gl::makeTexture2D(format, sw, sh);
         st.t[size_t(i)] = gl::makeTexture2D(format, sw, sh);
     }
     st.depth = gl::makeTexture2D(GL_DEPTH_COMPONENT32F, w, h);
     st.gFbo = gl::makeFramebuffer({st.g[0].id(), st.g[1].id()}, st.depth.id());
-    st.sFbo = gl::makeFramebuffer({st.s[0].id(), st.s[1].id()});
-    st.tFbo = gl::makeFramebuffer({st.t[0].id(), st.t[1].id()});
+    st.sFbo = gl::makeFramebuffer({st.s[0].id(), st.s[1].id(), st.s[2].id()});
+    st.tFbo = gl::makeFramebuffer({st.t[0].id(), st.t[1].id(), st.t[2].id()});
     st.indirectSplit = gl::makeTexture2D(GL_RGBA32F, sw, sh);
     st.indirectSplitFbo = gl::makeFramebuffer({st.indirectSplit.id()});
     st.indirect = gl::makeTexture2D(GL_RGBA32F, w, h);
@@ -304,6 +304,8 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
             std::swap(lights[size_t(st.firstAreaLight) + i - 1], lights[size_t(st.firstAreaLight) + rng.nextUint() % i]);
     }
     upload(st.lightBuffer, lights);
+    st.lightKinds = 0;
+    for (const GpuLight& g : lights) st.lightKinds |= 1 << int(g.positionKind[3]);
     st.directLights = std::move(lights);
     renderCubeShadows(st, st.directShadows, centres, settings.shadowSize);
     renderDirectionalShadows(st, settings.shadowSize * 4);
@@ -331,18 +333,31 @@ Mat4 viewProjection(const Camera& camera, int w, int h, float jx, float jy, floa
     return m;
 }
 
-// The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches):
-// compiled again only when one of them changes.
-const gl::Program& shadeProgram(Preview::State& st) {
-    const std::array<int, 3> key{st.unrolledVpls, st.vplShadowChunks, st.glossyScene ? 1 : 0};
-    if (st.shadeProgramKey != key) {
-        std::string defines = "#define UNROLLED_VPLS " + std::to_string(key[0]) + "\n#define FOR_EACH_TILE_VPL(STEP)";
-        for (int k = 0; k < key[0]; ++k) defines += " STEP(" + std::to_string(k) + ")";
-        defines += "\n#define VPL_SHADOW_CHUNKS " + std::to_string(key[1]) + "\n#define GLOSSY " + std::to_string(key[2]);
-        st.shadeProgram = gl::loadProgram(st.shaderDir, "fullscreen.vert", "shade_vpl.frag", {}, defines);
-        st.shadeProgramKey = key;
-    }
-    return st.shadeProgram;
+// A fragment program with these #defines (the shaders' compile-time switches), compiled the first
+// time it is asked for.
+const gl::Program& programVariant(Preview::State& st, const std::string& fragment, const std::string& defines) {
+    auto [it, fresh] = st.programVariants.try_emplace(fragment + "\n" + defines);
+    if (fresh) it->second = gl::loadProgram(st.shaderDir, "fullscreen.vert", fragment, {}, defines);
+    return it->second;
+}
+
+std::string define(const char* name, int value) { return std::string("#define ") + name + " " + std::to_string(value) + "\n"; }
+
+// The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
+const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges) {
+    std::string defines = define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
+    for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
+    defines += "\n" + define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
+               define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0);
+    return programVariant(st, "shade_vpl.frag", defines);
+}
+
+// The direct pass's program for the lights it evaluates (direct.frag's switches).
+const gl::Program& directProgram(Preview::State& st, bool lightLoop) {
+    const auto has = [&](int kind) { return (st.lightKinds >> kind) & 1; };
+    return programVariant(st, "direct.frag",
+                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) +
+                              define("AREA", has(3)) + define("LUMINAIRE", has(4)));
 }
 
 void bindTextures(std::initializer_list<GLuint> textures) {
@@ -350,12 +365,17 @@ void bindTextures(std::initializer_list<GLuint> textures) {
     for (GLuint t : textures) glBindTextureUnit(unit++, t);
 }
 
-void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH) {
+// The split (split.frag), with the discontinuity buffer when findEdges (seen from `eye`).
+void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH, bool findEdges = false, V3f eye = {}) {
     const gl::Program& p = st.splitProgram;
     glUseProgram(p.id());
     setIvec2(p, "pattern", st.patternX, st.patternY);
     setIvec2(p, "subSize", st.subW, st.subH);
     setInt(p, "blockSize", st.block);
+    setInt(p, "findEdges", findEdges ? 1 : 0);
+    setVec3(p, "cameraPos", eye);
+    setFloat(p, "depthTolerance", 0.05f);
+    setFloat(p, "normalTolerance", 0.9f);
     bindTextures({st.g[0].id(), st.g[1].id()});
     if (!twoPass) {
         setInt(p, "mode", 0);
@@ -368,7 +388,7 @@ void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH) {
     drawFullscreen(st.tFbo.id(), st.splitW(), st.splitH());
     setInt(p, "mode", 2);
     setIvec2(p, "sourceSize", st.splitW(), st.splitH());
-    bindTextures({st.t[0].id(), st.t[1].id()});
+    bindTextures({st.t[0].id(), st.t[1].id(), st.t[2].id()});
     drawFullscreen(st.sFbo.id(), st.splitW(), st.splitH());
 }
 
@@ -455,10 +475,10 @@ Image Preview::render(float jitterX, float jitterY) {
     // are split, gathered and blurred with them.
     const bool areaInterleaved = interleaved && s.direct && st.areaLightCount > 0;
     if (indirect || areaInterleaved) {
-        if (interleaved) runSplit(st, s.twoPassSplit, w, h);
+        if (interleaved) runSplit(st, s.twoPassSplit, w, h, s.blur, eye);
         lap(tm.split);
 
-        const gl::Program& p = shadeProgram(st);
+        const gl::Program& p = shadeProgram(st, areaInterleaved, interleaved && s.blur);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
         setVec3(p, "cameraPos", eye);
@@ -466,22 +486,16 @@ Image Preview::render(float jitterX, float jitterY) {
         setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
         setFloat(p, "shadowBias", 0.03f);
         setInt(p, "firstArea", st.firstAreaLight);
-        setInt(p, "areaCount", areaInterleaved ? st.areaLightCount : 0);
+        setInt(p, "areaCount", st.areaLightCount);
         setFloat(p, "areaShadowBias", 0.02f);
-        const auto& src = interleaved ? st.s : st.g;
         setInt(p, "cubesPerChunk", st.vplCubesPerChunk);
-        glBindTextureUnit(0, src[0].id());
-        glBindTextureUnit(1, src[1].id());
+        glBindTextureUnit(0, interleaved ? st.s[0].id() : st.g[0].id());
+        glBindTextureUnit(1, interleaved ? st.s[1].id() : st.g[1].id());
+        glBindTextureUnit(2, st.s[2].id());
         glBindTextureUnit(4, st.vplShadows[0].distance.id());
         glBindTextureUnit(5, st.directShadows.distance.id());
         for (int c = 1; c < Preview::State::kVplShadowChunks; ++c)
             glBindTextureUnit(GLuint(5 + c), st.vplShadows[size_t(c)].distance.id());
-        // The discontinuity buffer rides in the output's alpha, for the blur.
-        setInt(p, "findEdges", interleaved && s.blur ? 1 : 0);
-        setIvec2(p, "subSize", interleaved ? st.subW : w, interleaved ? st.subH : h);
-        setIvec2(p, "imageSize", w, h);
-        setFloat(p, "depthTolerance", 0.05f);
-        setFloat(p, "normalTolerance", 0.9f);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
         glBindFramebuffer(GL_FRAMEBUFFER, interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
@@ -508,7 +522,9 @@ Image Preview::render(float jitterX, float jitterY) {
     }
     const bool withIndirect = indirect || areaInterleaved;  // the shading pass's output holds light
 
-    const gl::Program& d = st.directProgram;
+    // Lights evaluated here: the delta lights, and the area samples unless the VPL pass had them.
+    const int directLightCount = !s.direct ? 0 : areaInterleaved ? st.firstAreaLight : int(st.directLights.size());
+    const gl::Program& d = directProgram(st, directLightCount > 0);
     glUseProgram(d.id());
     setInt(d, "lightCount", int(st.directLights.size()));
     setVec3(d, "cameraPos", eye);

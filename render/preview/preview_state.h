@@ -9,6 +9,7 @@
 
 #include <array>
 #include <chrono>
+#include <map>
 #include <memory>
 #include <vector>
 
@@ -152,7 +153,7 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 struct Preview::State {
     std::string shaderDir;
     gl::Program gbufferProgram, splitProgram, blurProgram,
-        directProgram, shadowProgram, dirShadowProgram;
+        shadowProgram, dirShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
     gl::Buffer vertices, triangles, materials, vplBuffer, tileVplBlocks, lightBuffer, shadowCentres;
     GLsizei vertexCount = 0;
@@ -173,10 +174,11 @@ struct Preview::State {
     // Frame targets.
     int targetW = 0, targetH = 0, patternX = 0, patternY = 0, block = 0;
     int subW = 0, subH = 0;
-    // G-buffer (gbuffer.glsl's two attachments), its split layout, and the two-pass split's
-    // intermediate; the VPL shading pass's output in split layout (indirectSplit) or, without
+    // G-buffer (gbuffer.glsl's two attachments), its split layout with the discontinuity buffer
+    // third (split.frag), and the two-pass split's intermediate; the VPL shading pass's output in split layout (indirectSplit) or, without
     // interleaving, in image layout (indirect); blurTemp: gathered and blurred horizontally.
-    std::array<gl::Texture, 2> g, s, t;
+    std::array<gl::Texture, 2> g;
+    std::array<gl::Texture, 3> s, t;
     gl::Texture depth, indirectSplit, indirect, blurTemp, final;
     gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, finalFbo;
     preview_detail::CubeShadows directShadows;
@@ -192,8 +194,7 @@ struct Preview::State {
     int firstAreaLight = 0, areaLightCount = 0;  // the area samples' range in directLights
     // The VPL shading pass draws each sub-buffer with its own VPLs: vplBuffer[first, first +
     // count), and with unrolledVpls > 0 the same VPLs as a uniform block at byte `blockOffset`
-    // of tileVplBlocks (unrolledVpls of them, the last padded). shadeProgram is compiled for
-    // shadeProgramKey (shade_vpl.frag's switches: unrolled VPLs, VPL shadow chunks, glossy).
+    // of tileVplBlocks (unrolledVpls of them, the last padded).
     struct TileVpls {
         int first = 0, count = 0;
         GLintptr blockOffset = 0;
@@ -203,8 +204,10 @@ struct Preview::State {
     int unrolledVpls = 0;
     int vplShadowChunks = 0;  // cube map arrays in use (0: VPL visibility off)
     bool glossyScene = false;  // any glossy material with a specular lobe
-    gl::Program shadeProgram;
-    std::array<int, 3> shadeProgramKey{-1, -1, -1};
+    int lightKinds = 0;  // bit k: a light of GpuLight kind k is in the light buffer
+    // The VPL shading and direct programs, compiled for their switches as needed, by file and
+    // #defines (preview_frame.cpp, programVariant).
+    std::map<std::string, gl::Program> programVariants;
     int uploadedVplCount = 0;
     PreviewTimings timings;
 

@@ -4,6 +4,10 @@
 // maps) and, without interleaving, of the area lights' point samples (cube shadow maps), plus the
 // indirect light, which with interleaving also holds the area lights, blurred vertically here
 // (the second half of the box blur; blur.frag did the gather and the horizontal half).
+// Compile-time switches (preview_frame.cpp, directProgram), so that the pass holds only the
+// code the scene's lights need (on llvmpipe an unused light loop still halves this pass's speed):
+//   LIGHT_LOOP   0 when this pass evaluates no light (all light is in the indirect texture);
+//   DIRECTIONAL, SPOT, AREA, LUMINAIRE   1 when lights of that kind are in the light buffer.
 #include_brdf
 #include_gbuffer
 // kind: 0 point, 1 spot, 2 directional, 3 area-light sample, 4 luminaire. intensity is W/sr in
@@ -66,6 +70,7 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
     const int kind = int(l.positionKind.w);
     vec3 wi;
     float scale;
+#if DIRECTIONAL
     if (kind == 2) {
         wi = -l.directionCosCone.xyz;
         scale = 1.0;
@@ -75,14 +80,22 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
             const vec3 c = q.xyz * 0.5 + 0.5;
             scale = texture(dirShadows, vec4(c.xy, float(layer), c.z - dirDepthBias));
         }
-    } else {
+    } else
+#endif
+    {
         const vec3 d = l.positionKind.xyz - y;
         const float d2 = dot(d, d);
         wi = d * inversesqrt(d2);
         scale = 1.0 / d2;
+#if SPOT
         if (kind == 1) scale *= spotFactor(-dot(wi, l.directionCosCone.xyz), l.directionCosCone.w, l.intensityCosFalloff.w);
+#endif
+#if AREA
         if (kind == 3) scale *= max(0.0, -dot(wi, l.normalShadow.xyz));
+#endif
+#if LUMINAIRE
         if (kind == 4) scale *= luminaireCandela(-wi, l.directionCosCone.xyz, l.normalShadow.xyz, l.directionCosCone.w);
+#endif
         const float layer = l.normalShadow.w;
         const float cosY = dot(n, wi);
         if (scale > 0.0 && layer >= 0.0 && cosY > 0.0) {
@@ -131,7 +144,9 @@ void main() {
     const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
     const vec3 wo = normalize(cameraPos - s.position);
     vec3 sum = addIndirect != 0 ? blurredIndirect(p) : vec3(0.0);
+#if LIGHT_LOOP
     const int end = addDirect == 0 ? 0 : areaMode == 1 ? firstArea : lightCount;
     for (int i = 0; i < end; ++i) sum += lightContribution(i, s, wo);
+#endif
     result = vec4(sum, 1.0);
 }

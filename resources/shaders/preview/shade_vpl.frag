@@ -12,7 +12,9 @@
 // SIMD vector of fragments through every branch any of them takes):
 //   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;
 //   VPL_SHADOW_CHUNKS  0: VPL visibility off; else the cube map arrays holding the VPLs' maps;
-//   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse).
+//   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
+//   AREA_SAMPLES       1 when the area lights' samples are shaded here (interleaved);
+//   FIND_EDGES         1 when the box blur follows (the discontinuity buffer is passed on).
 // Lighting y from a VPL at x (render/vpl/vpl.h):
 //   f_y(wo, y->x) power f_x(incident, x->y) min(cos_x cos_y / d^2, maxG) V(x, y),
 // the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
@@ -68,7 +70,7 @@ layout(location = 0) out vec4 result;
 struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
 layout(std430, binding = 2) readonly buffer Lights { Light lights[]; };
 uniform int firstArea;
-uniform int areaCount;           // 0: the direct pass does the area lights
+uniform int areaCount;
 uniform float areaShadowBias;    // relative
 layout(binding = 5) uniform samplerCubeArray areaShadows;
 
@@ -105,37 +107,18 @@ vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
     return c;
 }
 
-// The discontinuity buffer, for the box blur that follows (blur.frag, direct.frag): bit 0 set
-// when this pixel and its right neighbour lie on different surfaces (depth or normal differ too
-// much, or either is not a shaded surface, or the neighbour is off the image), bit 1 the same for
-// the neighbour below. Found here, in the split layout, where the neighbours of image pixel
-// (x, y) are found in the next tiles over, rather than in a pass of its own.
-uniform int findEdges;
-uniform ivec2 subSize;          // a tile's size in the split layout
-uniform ivec2 imageSize;
-uniform float depthTolerance;   // relative
-uniform float normalTolerance;  // minimum cosine between normals
-
-bool continuous(Surface a, ivec2 image) {
-    if (any(greaterThanEqual(image, imageSize))) return false;
-    const ivec2 q = (image % pattern) * subSize + image / pattern;
-    const vec4 g0 = texelFetch(g0Tex, q, 0);
-    if (surfaceKind(g0) != 1) return false;
-    const float da = distance(a.position, cameraPos), db = distance(g0.xyz, cameraPos);
-    if (abs(da - db) > depthTolerance * min(da, db)) return false;
-    return dot(a.normal, decodeNormal(texelFetch(g1Tex, q, 0))) >= normalTolerance;
-}
-
-float edgeBits(Surface a, ivec2 p) {
-    if (findEdges == 0) return 0.0;
-    const ivec2 image = (p - tile * subSize) * pattern + tile;
-    return float((continuous(a, image + ivec2(1, 0)) ? 0 : 1) + (continuous(a, image + ivec2(0, 1)) ? 0 : 2));
-}
+// The discontinuity buffer (split.frag) passes through to the blur in the output's alpha.
+layout(binding = 2) uniform usampler2D edgesTex;
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
-    if (surfaceKind(g0) != 1) { result = vec4(0.0, 0.0, 0.0, 3.0); return; }
+#if FIND_EDGES
+    const float edges = float(texelFetch(edgesTex, p, 0).r);
+#else
+    const float edges = 0.0;
+#endif
+    if (surfaceKind(g0) != 1) { result = vec4(0.0, 0.0, 0.0, edges); return; }
     const Surface sy = decodeSurface(g0, texelFetch(g1Tex, p, 0));
     const vec3 y = sy.position, n = sy.normal, wo = normalize(cameraPos - y);
     // Diffuse receivers and diffuse VPLs (the common case) have constant BSDFs: their albedo / pi
@@ -150,8 +133,9 @@ void main() {
     for (int i = vplFirst; i < vplFirst + vplCount; ++i) sum += vplLight(i, sy, wo, glossyY);
 #endif
     if (!glossyY) sum *= sy.albedo * (1.0 / PI);
-    const int subsets = pattern.x * pattern.y;
     vec3 area = vec3(0.0);
+#if AREA_SAMPLES
+    const int subsets = pattern.x * pattern.y;
     for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets) {
         // Field by field: three of the light's four vec4s, each gathered lane by lane on llvmpipe.
         const vec3 d = lights[i].positionKind.xyz - y;
@@ -163,5 +147,7 @@ void main() {
         if (sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, normalShadow.w)).r) continue;
         area += evalBsdf(n, wo, wi, sy.albedo, sy.specular, sy.alpha) * lights[i].intensityCosFalloff.rgb * (cosY * cosE / d2);
     }
-    result = vec4(sum + area * float(subsets), edgeBits(sy, p));
+    area *= float(subsets);
+#endif
+    result = vec4(sum + area, edges);
 }
