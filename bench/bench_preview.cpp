@@ -147,6 +147,36 @@ int main(int argc, char** argv) {
             }
         }
 
+        // The unrolled VPL loop applies only to small sub-buffers (maxUnrolledVpls), so the 1x1 rows
+        // above always loop: interleaving's own speedup is the loop's against the loop. Here both,
+        // the unrolled one allowed up to 64 VPLs a sub-buffer.
+        std::printf("\n## VPL shading pass at 640x480: a loop over the VPLs against the unrolled body, ms\n\n");
+        std::printf("| VPLs | pattern | 1x1 (loop) | loop | unrolled | speedup over 1x1, loop | speedup, unrolled |\n");
+        std::printf("|---|---|---|---|---|---|---|\n");
+        for (int vpls : {256, 1024}) {
+            if (quick && vpls != 256) continue;
+            std::vector<std::unique_ptr<Preview>> previews;
+            const int configs[5][3] = {{1, 1, 0}, {4, 4, 0}, {4, 4, 64}, {8, 6, 0}, {8, 6, 64}};  // n, m, unroll limit
+            for (const auto& c : configs) {
+                PreviewSettings s;
+                s.vplCount = vpls;
+                s.patternX = c[0];
+                s.patternY = c[1];
+                s.maxUnrolledVpls = c[2];
+                previews.push_back(std::make_unique<Preview>());
+                previews.back()->setSettings(s);
+                previews.back()->setScene(scene, 640, 480);
+            }
+            const std::vector<Row> rows = measureInTurns(previews, frames);
+            const double base = rows[0].best.shading;
+            for (int k : {1, 3}) {
+                const double loop = rows[size_t(k)].best.shading, unrolled = rows[size_t(k) + 1].best.shading;
+                std::printf("| %d | %dx%d | %.2f | %.2f | %.2f | %.1fx | %.1fx |\n", vpls, configs[k][0], configs[k][1], base,
+                            loop, unrolled, base / loop, base / unrolled);
+            }
+            std::fflush(stdout);
+        }
+
         std::printf("\n## G-buffer split (RGBA32F + RGBA32UI attachments): one pass against two\n\n");
         std::printf("| resolution | pattern | one pass ms | two passes ms |\n|---|---|---|---|\n");
         for (const auto& size : {std::pair{640, 480}, std::pair{1024, 768}, std::pair{1024, 1024}}) {

@@ -53,7 +53,8 @@ void Preview::setSettings(const PreviewSettings& s) {
     const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize ||
                          s.patternX != settings_.patternX || s.patternY != settings_.patternY;
     const bool repartition = s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
-                             s.vplShadowSize != settings_.vplShadowSize || s.visibility != settings_.visibility;
+                             s.vplShadowSize != settings_.vplShadowSize || s.visibility != settings_.visibility ||
+                             s.maxUnrolledVpls != settings_.maxUnrolledVpls;
     if (s.patternX < 1 || s.patternY < 1 || s.vplCount < 0 || s.splitBlock < 1)
         throw std::invalid_argument("preview: pattern, block and VPL count must be positive");
     settings_ = s;

@@ -45,6 +45,11 @@ struct PreviewSettings {
     // measured twice as fast (BENCHMARKS.md, issue 5); the two passes win on GPUs (the thesis).
     bool twoPassSplit = false;
     int splitBlock = 8;            // B of the two-pass split
+    // The VPL shading pass unrolls its loop over a sub-buffer's VPLs, read at constant indices
+    // from a uniform block, when no sub-buffer has more than this many (shade_vpl.frag); 0: never.
+    // 16 by measurement on llvmpipe (BENCHMARKS.md, issue 5): unrolled, 16 VPLs a sub-buffer (256
+    // at 4x4) shaded 4 to 27% faster; 22 and 64 (1024 at 8x6 and 4x4) 10% slower.
+    int maxUnrolledVpls = 16;
     bool direct = true, indirect = true;
     // Point samples (shadow-mapped) standing for the emissive triangles' direct light. With
     // interleaving they are rounded up to a multiple of n m and dealt to the sub-buffers like

@@ -136,11 +136,11 @@ void renderDirectionalShadows(Preview::State& st, int mapSize) {
 
 // The sub-buffers' VPLs as uniform blocks, one after the other at the alignment GL asks for,
 // each unrolledVpls long (the shader's block size): when no sub-buffer has more than
-// kMaxUnrolledVpls, shade_vpl.frag reads them at constant indices (its UNROLLED_VPLS).
-void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu) {
+// maxUnrolled, shade_vpl.frag reads them at constant indices (its UNROLLED_VPLS).
+void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int maxUnrolled) {
     int most = 0;
     for (const auto& t : st.tiles) most = std::max(most, t.count);
-    st.unrolledVpls = most <= Preview::State::kMaxUnrolledVpls ? most : 0;
+    st.unrolledVpls = most <= maxUnrolled ? most : 0;
     if (st.unrolledVpls == 0) return;
     GLint align = 1;
     glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
@@ -199,7 +199,7 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
         }
     }
     upload(st.vplBuffer, gpu);
-    uploadTileBlocks(st, gpu);
+    uploadTileBlocks(st, gpu, settings.maxUnrolledVpls);
     st.uploadedVplCount = int(gpu.size());
     st.vplShadowChunks = 0;
     if (settings.visibility && !centres.empty()) {
@@ -345,10 +345,10 @@ std::string define(const char* name, int value) { return std::string("#define ")
 
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
 const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges) {
-    std::string defines = define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
+    std::string defines = define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
+                          define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
+                          define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
-    defines += "\n" + define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
-               define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0);
     return programVariant(st, "shade_vpl.frag", defines);
 }
 

@@ -199,7 +199,6 @@ struct Preview::State {
         int first = 0, count = 0;
         GLintptr blockOffset = 0;
     };
-    static constexpr int kMaxUnrolledVpls = 64;
     std::vector<TileVpls> tiles;
     int unrolledVpls = 0;
     int vplShadowChunks = 0;  // cube map arrays in use (0: VPL visibility off)
