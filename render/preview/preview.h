@@ -2,8 +2,9 @@
 // The interactive preview (seed 002, slides 80 to 95; DESIGN.md "Interleaved sampling with
 // deferred shading"): OpenGL 4.5 core through its own EGL context, a G-buffer drawn once per
 // frame, split into n x m sub-buffers (in one pass or two), each sub-buffer shaded with its own
-// subset of the VPLs (and of the area-light samples) in one draw, gathered, blurred over
-// continuous regions, and blended with direct light from shadow-mapped lights. VPLs come from
+// subset of the VPLs (and of the area-light samples) in one pass (a draw per sub-buffer, none
+// per VPL), gathered, blurred over continuous regions, and blended with direct light from
+// shadow-mapped lights. VPLs come from
 // instant radiosity (per light) or Metropolis instant radiosity (PreviewSettings::vplSource).
 // One object serves the GUI and the command line.
 //

@@ -1,5 +1,5 @@
 // The passes of one preview frame: shadow maps (only when lights or VPLs changed), G-buffer,
-// split, interleaved VPL shading (with the discontinuity buffer), gather with the horizontal
+// split (with the discontinuity buffer), interleaved VPL shading, gather with the horizontal
 // blur, vertical blur with the direct light and the blend.
 
 #include "render/preview/preview_luminaires.h"

@@ -2,10 +2,11 @@
 // Gathers the VPL shading pass's split layout back to the image and blurs it horizontally: the
 // first half of the separable n x m box blur over continuous regions (the vertical half is in
 // direct.frag). Image pixel (x, y) lives in tile (x mod n, y mod m) at (x / n, y / m); each texel
-// carries its discontinuity bits in alpha (shade_vpl.frag). From the centre, walk each way up to
-// the box's reach and stop at the first discontinuity (DESIGN.md: blur only across continuous
-// regions), so that every pixel averages one sample of each VPL subset where the surface is
-// continuous. boxWidth 1: a plain gather. The output keeps the centre's bits for the vertical half.
+// carries its discontinuity bits in alpha (found by split.frag, passed on by shade_vpl.frag).
+// From the centre, walk each way up to the box's reach and stop at the first discontinuity
+// (DESIGN.md: blur only across continuous regions), so that every pixel averages one sample of
+// each VPL subset where the surface is continuous. boxWidth 1: a plain gather. The output keeps
+// the centre's bits for the vertical half.
 uniform ivec2 pattern;
 uniform ivec2 subSize;
 uniform int boxWidth;   // n, or 1
