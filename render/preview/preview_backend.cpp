@@ -14,6 +14,7 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     readOption(settings, "vpls", p.vplCount, 0);
     readOption(settings, "clamp", p.clampDistance, 0.0, std::numeric_limits<float>::max());
     readOption(settings, "area_samples", p.areaLightSamples, 0);
+    readOption(settings, "unroll", p.maxUnrolledVpls, 0);
     for (const auto& [key, value] : settings.options) {
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
