@@ -46,7 +46,7 @@ std::string readFile(const std::string& path) {
 GLuint compile(GLenum stage, const std::string& path, const std::string& defines) {
     std::string src = readFile(path);
     // GLSL has no #include: a line "#include_NAME" is replaced by NAME.glsl of the same folder
-    // (brdf.glsl: the BSDF; gbuffer.glsl: the G-buffer's encoding).
+    // (brdf.glsl: the BSDF; gbuffer.glsl: the G-buffer's encoding; box_blur.glsl: the blur).
     for (size_t inc; (inc = src.find("#include_")) != std::string::npos;) {
         const size_t end = src.find_first_of("\r\n", inc);
         const std::string name = src.substr(inc + 9, end == std::string::npos ? std::string::npos : end - inc - 9);

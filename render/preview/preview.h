@@ -4,8 +4,8 @@
 // frame, split into n x m sub-buffers (in one pass or two), each sub-buffer shaded with its own
 // subset of the VPLs (and of the area-light samples) in one pass (a draw per sub-buffer, none
 // per VPL), gathered, blurred over continuous regions, and blended with direct light from
-// shadow-mapped lights. VPLs come from
-// instant radiosity (per light) or Metropolis instant radiosity (PreviewSettings::vplSource).
+// shadow-mapped lights. VPLs come from instant radiosity (per light) or Metropolis instant
+// radiosity (PreviewSettings::vplSource).
 // One object serves the GUI and the command line.
 //
 // Threading: the object may be used from any one thread at a time; each call makes the context

@@ -152,8 +152,7 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 
 struct Preview::State {
     std::string shaderDir;
-    gl::Program gbufferProgram, splitProgram, blurProgram,
-        shadowProgram, dirShadowProgram;
+    gl::Program gbufferProgram, splitProgram, blurProgram, shadowProgram, dirShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
     gl::Buffer vertices, triangles, materials, vplBuffer, tileVplBlocks, lightBuffer, shadowCentres;
     GLsizei vertexCount = 0;
@@ -175,8 +174,9 @@ struct Preview::State {
     int targetW = 0, targetH = 0, patternX = 0, patternY = 0, block = 0;
     int subW = 0, subH = 0;
     // G-buffer (gbuffer.glsl's two attachments), its split layout with the discontinuity buffer
-    // third (split.frag), and the two-pass split's intermediate; the VPL shading pass's output in split layout (indirectSplit) or, without
-    // interleaving, in image layout (indirect); blurTemp: gathered and blurred horizontally.
+    // third (split.frag), and the two-pass split's intermediate; the VPL shading pass's output in
+    // split layout (indirectSplit) or, without interleaving, in image layout (indirect);
+    // blurTemp: gathered and blurred horizontally.
     std::array<gl::Texture, 2> g;
     std::array<gl::Texture, 3> s, t;
     gl::Texture depth, indirectSplit, indirect, blurTemp, final;

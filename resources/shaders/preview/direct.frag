@@ -10,6 +10,7 @@
 //   DIRECTIONAL, SPOT, AREA, LUMINAIRE   1 when lights of that kind are in the light buffer.
 #include_brdf
 #include_gbuffer
+#include_box_blur
 // kind: 0 point, 1 spot, 2 directional, 3 area-light sample, 4 luminaire. intensity is W/sr in
 // scene units (divided by meters_per_unit^2; a luminaire's per candela of its table), irradiance
 // for a directional light, and for an area sample Le / (samples pdf_area) so that it lights like
@@ -112,29 +113,6 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
     return evalBsdf(n, wo, wi, s.albedo, s.specular, s.alpha) * l.intensityCosFalloff.rgb * (cosY * scale);
 }
 
-// The vertical half of the box blur over continuous regions, as blur.frag's horizontal one.
-vec3 blurredIndirect(ivec2 p) {
-    const vec4 centre = texelFetch(indirectTex, p, 0);
-    const int before = (boxHeight - 1) / 2, after = boxHeight - 1 - before;
-    const int rows = textureSize(indirectTex, 0).y;
-    vec3 sum = centre.rgb;
-    float count = 1.0;
-    int bits = int(centre.a);
-    for (int i = 1; i <= after && (bits & 2) == 0 && p.y + i < rows; ++i) {
-        const vec4 q = texelFetch(indirectTex, p + ivec2(0, i), 0);
-        sum += q.rgb;
-        count += 1.0;
-        bits = int(q.a);
-    }
-    for (int i = 1; i <= before && p.y - i >= 0; ++i) {
-        const vec4 q = texelFetch(indirectTex, p - ivec2(0, i), 0);
-        if ((int(q.a) & 2) != 0) break;
-        sum += q.rgb;
-        count += 1.0;
-    }
-    return sum / count;
-}
-
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
@@ -143,7 +121,8 @@ void main() {
     if (kind != 1) { result = vec4(0.0, 0.0, 0.0, 1.0); return; }
     const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
     const vec3 wo = normalize(cameraPos - s.position);
-    vec3 sum = addIndirect != 0 ? blurredIndirect(p) : vec3(0.0);
+    // The vertical half of the box blur (box_blur.glsl), over the image layout.
+    vec3 sum = addIndirect != 0 ? boxBlur(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1)).rgb : vec3(0.0);
 #if LIGHT_LOOP
     const int end = addDirect == 0 ? 0 : areaMode == 1 ? firstArea : lightCount;
     for (int i = 0; i < end; ++i) sum += lightContribution(i, s, wo);
