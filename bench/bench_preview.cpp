@@ -9,7 +9,8 @@
 // pass (one sample per pixel at 16 samples and 4x4); without, in the direct pass.
 //
 // usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
-// --target: only the llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass.
+// --target: only the llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
+//           with each split mode (fused, one pass, two passes) in turns.
 
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
@@ -104,12 +105,25 @@ int main(int argc, char** argv) {
                 preview.context().platform().c_str(), scenePath.c_str());
 
     if (targetOnly) {
-        preview.setSettings(PreviewSettings());
-        preview.setScene(scene, 640, 480);
-        const PreviewTimings t = measure(preview, frames).best;
-        std::printf("defaults at 640x480 (least of %d frames): G-buffer %.2f, split %.2f, shading %.2f, gather + blur x "
-                    "%.2f, blur y + direct %.2f, read-back %.2f: frame %.2f ms\n",
-                    frames, t.gbuffer, t.split, t.shading, t.gather, t.direct, t.readback, t.total);
+        // The defaults, and the split modes against each other in turns.
+        std::vector<std::unique_ptr<Preview>> previews;
+        const SplitMode modes[] = {SplitMode::Fused, SplitMode::OnePass, SplitMode::TwoPass};
+        const char* names[] = {"fused split (default)", "one-pass split", "two-pass split"};
+        for (SplitMode mode : modes) {
+            PreviewSettings s;
+            s.split = mode;
+            previews.push_back(std::make_unique<Preview>());
+            previews.back()->setSettings(s);
+            previews.back()->setScene(scene, 640, 480);
+        }
+        const std::vector<Row> rows = measureInTurns(previews, frames);
+        std::printf("defaults at 640x480, 256 VPLs, 4x4 (least of %d frames, the modes in turns)\n", frames);
+        for (size_t i = 0; i < rows.size(); ++i) {
+            const PreviewTimings& t = rows[i].best;
+            std::printf("%s: G-buffer %.2f, split %.2f, shading %.2f, gather + blur x %.2f, blur y + direct %.2f, "
+                        "read-back %.2f: frame %.2f ms\n",
+                        names[i], t.gbuffer, t.split, t.shading, t.gather, t.direct, t.readback, t.total);
+        }
         return 0;
     }
     if (!accuracyOnly) {
@@ -186,7 +200,7 @@ int main(int argc, char** argv) {
                     PreviewSettings s;
                     s.patternX = pattern.first;
                     s.patternY = pattern.second;
-                    s.twoPassSplit = two == 1;
+                    s.split = two == 1 ? SplitMode::TwoPass : SplitMode::OnePass;
                     previews.push_back(std::make_unique<Preview>());
                     previews.back()->setSettings(s);
                     previews.back()->setScene(scene, size.first, size.second);

@@ -2,7 +2,8 @@
 // give an OpenGL 4.5 core context, every test FAILS: the preview is a feature, not an option.
 //
 // - the G-buffer split puts texel (x, y) in sub-buffer (x mod n, y mod m) at (x / n, y / m), and
-//   gathering it back is the identity (one-pass and two-pass splits);
+//   gathering it back is the identity (one-pass and two-pass splits), and a frame is the same
+//   whichever way the G-buffer reaches the sub-buffers (two passes, one, fused into the shading);
 // - with a 1 x 1 pattern, no blur and no direct light, the preview (its VPL loop and its unrolled
 //   body alike) equals the CPU sum over the same VPLs (render/vpl/vpl_contribution.h) at every
 //   pixel;
@@ -87,6 +88,8 @@ private slots:
     void eglContext();
     void splitThenGatherIsIdentity_data();
     void splitThenGatherIsIdentity();
+    void splitModesRenderTheSameFrame_data();
+    void splitModesRenderTheSameFrame();
     void oneByOneEqualsCpuSum();
     void directLightMatchesPathTracer_data();
     void directLightMatchesPathTracer();
@@ -122,7 +125,7 @@ void TestPreview::splitThenGatherIsIdentity() {
     PreviewSettings s;
     s.patternX = n;
     s.patternY = m;
-    s.twoPassSplit = twoPass;
+    s.split = twoPass ? SplitMode::TwoPass : SplitMode::OnePass;
     preview.setSettings(s);
     // Sizes that are not multiples of the pattern or of the split's blocks.
     Image in(101, 67);
@@ -138,6 +141,41 @@ void TestPreview::splitThenGatherIsIdentity() {
         }
     QCOMPARE(misplaced, 0);
     QCOMPARE(wrong, 0);
+}
+
+void TestPreview::splitModesRenderTheSameFrame_data() {
+    QTest::addColumn<int>("n");
+    QTest::addColumn<int>("m");
+    QTest::newRow("4x4") << 4 << 4;
+    QTest::newRow("3x2") << 3 << 2;
+}
+
+void TestPreview::splitModesRenderTheSameFrame() {
+    QFETCH(int, n);
+    QFETCH(int, m);
+    const std::string path = std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json";
+    const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(path));
+    Image frames[3];
+    const SplitMode modes[3] = {SplitMode::TwoPass, SplitMode::OnePass, SplitMode::Fused};
+    for (int k = 0; k < 3; ++k) {
+        Preview preview;
+        PreviewSettings s;
+        s.patternX = n;
+        s.patternY = m;
+        s.split = modes[k];
+        preview.setSettings(s);
+        preview.setScene(scene, 101, 67);  // not a multiple of the pattern or of the split's blocks
+        frames[k] = preview.render();
+    }
+    QVERIFY(channelMean(frames[0]) > 0.01);
+    for (int k = 1; k < 3; ++k) {
+        double worst = 0;
+        for (size_t i = 0; i < frames[0].pixels.size(); ++i)
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, double(std::abs(frames[k].pixels[i][c] - frames[0].pixels[i][c])));
+        qInfo("split mode %d against two passes: largest difference %g", k, worst);
+        QVERIFY2(worst <= 1e-6, "the split modes disagree");
+    }
 }
 
 void TestPreview::oneByOneEqualsCpuSum() {

@@ -28,6 +28,11 @@ namespace lucerna {
 // where they light what the camera sees; one set for all lights).
 enum class VplSource { InstantRadiosity, Metropolis };
 
+// How the G-buffer reaches the interleaved sub-buffers: by a split pass in two passes (blocks,
+// then translation: the thesis, for a GPU's texture cache), in one pass, or fused into the VPL
+// shading pass (each fragment reads its texel of the image-layout G-buffer; no split pass).
+enum class SplitMode { TwoPass, OnePass, Fused };
+
 struct PreviewSettings {
     int vplCount = 256;            // indirect VPLs over all lights (MIR: chain steps, at most this many)
     VplSource vplSource = VplSource::InstantRadiosity;
@@ -42,9 +47,9 @@ struct PreviewSettings {
     bool visibility = true;
     int vplShadowSize = 32;        // per cube face
     bool blur = true;              // the n x m box blur over continuous regions
-    // Split in two passes (blocks, then translation) or in one. One pass by default: on llvmpipe it
-    // measured twice as fast (BENCHMARKS.md, issue 5); the two passes win on GPUs (the thesis).
-    bool twoPassSplit = false;
+    // Fused by default: on llvmpipe one pass measured twice as fast as two, and fused faster
+    // than one (BENCHMARKS.md, issue 5); the two passes win on GPUs (the thesis).
+    SplitMode split = SplitMode::Fused;
     int splitBlock = 8;            // B of the two-pass split
     // The VPL shading pass unrolls its loop over a sub-buffer's VPLs, read at constant indices
     // from a uniform block, when no sub-buffer has more than this many (shade_vpl.frag); 0: never.
@@ -120,8 +125,8 @@ public:
     void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
     const PreviewTimings& timings() const;
 
-    // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings and
-    // gathers it back. `split` is the split layout, `gathered` should equal `in`.
+    // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings (the
+    // fused split as one pass: the same addressing) and gathers it back. `split` is the split layout, `gathered` should equal `in`.
     struct SplitCheck {
         Image split, gathered;
         int subWidth = 0, subHeight = 0;  // a tile's size in the split layout

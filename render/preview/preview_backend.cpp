@@ -29,6 +29,9 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
         } else if (key == "visibility" || key == "blur") {
             if (value != "0" && value != "1") throw bad("0 or 1");
             (key == "blur" ? p.blur : p.visibility) = value == "1";
+        } else if (key == "split") {
+            if (value != "fused" && value != "one" && value != "two") throw bad("fused, one or two");
+            p.split = value == "two" ? SplitMode::TwoPass : value == "one" ? SplitMode::OnePass : SplitMode::Fused;
         } else if (key == "vpl_source") {
             if (value != "ir" && value != "mir") throw bad("ir or mir");
             p.vplSource = value == "mir" ? VplSource::Metropolis : VplSource::InstantRadiosity;

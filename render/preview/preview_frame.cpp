@@ -344,9 +344,10 @@ const gl::Program& programVariant(Preview::State& st, const std::string& fragmen
 std::string define(const char* name, int value) { return std::string("#define ") + name + " " + std::to_string(value) + "\n"; }
 
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
-const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges) {
+const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges, bool fusedSplit) {
     std::string defines = define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
                           define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
+                          define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
                           define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
     return programVariant(st, "shade_vpl.frag", defines);
@@ -374,8 +375,6 @@ void runSplit(Preview::State& st, bool twoPass, int sourceW, int sourceH, bool f
     setInt(p, "blockSize", st.block);
     setInt(p, "findEdges", findEdges ? 1 : 0);
     setVec3(p, "cameraPos", eye);
-    setFloat(p, "depthTolerance", 0.05f);
-    setFloat(p, "normalTolerance", 0.9f);
     bindTextures({st.g[0].id(), st.g[1].id()});
     if (!twoPass) {
         setInt(p, "mode", 0);
@@ -437,7 +436,7 @@ Image Preview::render(float jitterX, float jitterY) {
     const int w = st.width, h = st.height;
     const int subsets = s.patternX * s.patternY;
     const bool interleaved = subsets > 1;
-    ensureTargets(st, w, h, s.patternX, s.patternY, s.twoPassSplit ? s.splitBlock : 1);
+    ensureTargets(st, w, h, s.patternX, s.patternY, s.split == SplitMode::TwoPass ? s.splitBlock : 1);
     if (st.vplsDirty) uploadVpls(st, s);
     if (st.lightsDirty) uploadLights(st, s);
     lap(tm.shadows);
@@ -475,12 +474,15 @@ Image Preview::render(float jitterX, float jitterY) {
     // are split, gathered and blurred with them.
     const bool areaInterleaved = interleaved && s.direct && st.areaLightCount > 0;
     if (indirect || areaInterleaved) {
-        if (interleaved) runSplit(st, s.twoPassSplit, w, h, s.blur, eye);
+        const bool fused = interleaved && s.split == SplitMode::Fused;
+        if (interleaved && !fused) runSplit(st, s.split == SplitMode::TwoPass, w, h, s.blur, eye);
         lap(tm.split);
 
-        const gl::Program& p = shadeProgram(st, areaInterleaved, interleaved && s.blur);
+        const gl::Program& p = shadeProgram(st, areaInterleaved, interleaved && s.blur, fused);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
+        setIvec2(p, "subSize", st.subW, st.subH);
+        setIvec2(p, "sourceSize", w, h);
         setVec3(p, "cameraPos", eye);
         setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
         setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
@@ -489,8 +491,9 @@ Image Preview::render(float jitterX, float jitterY) {
         setInt(p, "areaCount", st.areaLightCount);
         setFloat(p, "areaShadowBias", 0.02f);
         setInt(p, "cubesPerChunk", st.vplCubesPerChunk);
-        glBindTextureUnit(0, interleaved ? st.s[0].id() : st.g[0].id());
-        glBindTextureUnit(1, interleaved ? st.s[1].id() : st.g[1].id());
+        const bool splitLayout = interleaved && !fused;
+        glBindTextureUnit(0, splitLayout ? st.s[0].id() : st.g[0].id());
+        glBindTextureUnit(1, splitLayout ? st.s[1].id() : st.g[1].id());
         glBindTextureUnit(2, st.s[2].id());
         glBindTextureUnit(4, st.vplShadows[0].distance.id());
         glBindTextureUnit(5, st.directShadows.distance.id());
@@ -586,7 +589,7 @@ Preview::SplitCheck Preview::splitAndGather(const Image& in) {
     State& st = *state_;
     EglContext::ScopedCurrent current(*context_);
     const PreviewSettings& s = settings_;
-    ensureTargets(st, in.width, in.height, s.patternX, s.patternY, s.twoPassSplit ? s.splitBlock : 1);
+    ensureTargets(st, in.width, in.height, s.patternX, s.patternY, s.split == SplitMode::TwoPass ? s.splitBlock : 1);
     std::vector<float> rgba(in.pixels.size() * 4);
     for (size_t i = 0; i < in.pixels.size(); ++i) {
         rgba[i * 4] = in.pixels[i].x;
@@ -596,7 +599,7 @@ Preview::SplitCheck Preview::splitAndGather(const Image& in) {
     }
     glTextureSubImage2D(st.g[0].id(), 0, 0, 0, in.width, in.height, GL_RGBA, GL_FLOAT, rgba.data());
     glBindVertexArray(st.emptyVao.id());
-    runSplit(st, s.twoPassSplit, in.width, in.height);
+    runSplit(st, s.split == SplitMode::TwoPass, in.width, in.height);
     SplitCheck out;
     out.split = readBack(st.s[0].id(), st.splitW(), st.splitH());
     runGatherBlur(st, st.s[0].id(), 1);

@@ -14,13 +14,19 @@
 //   VPL_SHADOW_CHUNKS  0: VPL visibility off; else the cube map arrays holding the VPLs' maps;
 //   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
 //   AREA_SAMPLES       1 when the area lights' samples are shaded here (interleaved);
-//   FIND_EDGES         1 when the box blur follows (the discontinuity buffer is passed on).
+//   FIND_EDGES         1 when the box blur follows (the discontinuity bits go out in alpha);
+//   FUSED_SPLIT        1: no split pass ran; each fragment of tile t at q reads its G-buffer texel
+//                      q n + t straight from the image-layout G-buffer (and finds its
+//                      discontinuity bits there), as split.frag's one-pass mode would have
+//                      moved it. On llvmpipe, which has no texture cache to keep coherent, this
+//                      saves the split's writes and reads (BENCHMARKS.md, issue 5).
 // Lighting y from a VPL at x (render/vpl/vpl.h):
 //   f_y(wo, y->x) power f_x(incident, x->y) min(cos_x cos_y / d^2, maxG) V(x, y),
 // the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
 // reported by the benchmarks).
 #include_brdf
 #include_gbuffer
+#include_discontinuity
 struct Vpl { vec4 positionIndex; vec4 normalAlpha; vec4 incident; vec4 power; vec4 albedo; vec4 specular; };
 #if UNROLLED_VPLS > 0
 layout(std140, binding = 0) uniform TileVpls { Vpl vpls[UNROLLED_VPLS]; };
@@ -107,19 +113,30 @@ vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
     return c;
 }
 
-// The discontinuity buffer (split.frag) passes through to the blur in the output's alpha.
+// Split layout (interleaved, a split pass ran): the discontinuity bits found by split.frag,
+// passed through to the blur in the output's alpha.
 layout(binding = 2) uniform usampler2D edgesTex;
+uniform ivec2 subSize;      // FUSED_SPLIT: a tile's size in the output
+uniform ivec2 sourceSize;   // FUSED_SPLIT: the G-buffer's size
 
 void main() {
+#if FUSED_SPLIT
+    const ivec2 p = (ivec2(gl_FragCoord.xy) - tile * subSize) * pattern + tile;
+    if (any(greaterThanEqual(p, sourceSize))) { result = vec4(0.0, 0.0, 0.0, 3.0); return; }
+#else
     const ivec2 p = ivec2(gl_FragCoord.xy);
+#endif
     const vec4 g0 = texelFetch(g0Tex, p, 0);
-#if FIND_EDGES
+    const uvec4 g1 = texelFetch(g1Tex, p, 0);
+#if FIND_EDGES && FUSED_SPLIT
+    const float edges = float(edgeBits(g0Tex, g1Tex, sourceSize, cameraPos, p, g0, decodeNormal(g1)));
+#elif FIND_EDGES
     const float edges = float(texelFetch(edgesTex, p, 0).r);
 #else
     const float edges = 0.0;
 #endif
     if (surfaceKind(g0) != 1) { result = vec4(0.0, 0.0, 0.0, edges); return; }
-    const Surface sy = decodeSurface(g0, texelFetch(g1Tex, p, 0));
+    const Surface sy = decodeSurface(g0, g1);
     const vec3 y = sy.position, n = sy.normal, wo = normalize(cameraPos - y);
     // Diffuse receivers and diffuse VPLs (the common case) have constant BSDFs: their albedo / pi
     // is taken out of the loop (receiver) or premultiplied into the power on the CPU (VPL,

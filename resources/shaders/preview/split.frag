@@ -7,12 +7,11 @@
 // MODE 2: second pass: translate the B x B sub-blocks to their tiles (a coherent block copy).
 // Every output is one texelFetch per attachment (gbuffer.glsl: two); texels outside the source
 // read as zero (kind 0, nothing).
-// The third output is the discontinuity buffer, for the box blur (blur.frag, direct.frag): bit 0
-// set when the G-buffer texel and its right neighbour lie on different surfaces (depth or normal
-// differ too much, or either is not a shaded surface, or the neighbour is off the image), bit 1
-// the same for the neighbour below. Found where the G-buffer is read in image layout (MODE 0 and
-// 1: the neighbours are next to the source texel, in cache), moved along with it in MODE 2.
+// The third output is the discontinuity buffer (discontinuity.glsl), found where the G-buffer is
+// read in image layout (MODE 0 and 1: the neighbours are next to the source texel, in cache) and
+// moved along with it in MODE 2.
 #include_gbuffer
+#include_discontinuity
 uniform int mode;
 uniform ivec2 pattern;   // n, m
 uniform ivec2 subSize;   // a tile's size, a multiple of B in both directions
@@ -20,29 +19,12 @@ uniform int blockSize;   // B
 uniform ivec2 sourceSize;
 uniform int findEdges;          // 0: the third output is 0
 uniform vec3 cameraPos;
-uniform float depthTolerance;   // relative
-uniform float normalTolerance;  // minimum cosine between normals
 layout(binding = 0) uniform sampler2D in0;
 layout(binding = 1) uniform usampler2D in1;
 layout(binding = 2) uniform usampler2D in2;  // MODE 2: the intermediate's discontinuity buffer
 layout(location = 0) out vec4 out0;
 layout(location = 1) out uvec4 out1;
 layout(location = 2) out uint out2;
-
-bool continuous(vec4 a0, vec3 na, ivec2 b) {
-    if (any(greaterThanEqual(b, sourceSize))) return false;
-    const vec4 b0 = texelFetch(in0, b, 0);
-    if (surfaceKind(b0) != 1) return false;
-    const float da = distance(a0.xyz, cameraPos), db = distance(b0.xyz, cameraPos);
-    if (abs(da - db) > depthTolerance * min(da, db)) return false;
-    return dot(na, decodeNormal(texelFetch(in1, b, 0))) >= normalTolerance;
-}
-
-uint edgeBits(ivec2 s, vec4 g0, uvec4 g1) {
-    if (surfaceKind(g0) != 1) return 3u;
-    const vec3 n = decodeNormal(g1);
-    return (continuous(g0, n, s + ivec2(1, 0)) ? 0u : 1u) + (continuous(g0, n, s + ivec2(0, 1)) ? 0u : 2u);
-}
 
 ivec2 sourceOf(ivec2 p) {
     if (mode == 0) {
@@ -74,5 +56,5 @@ void main() {
     if (mode == 2)
         out2 = texelFetch(in2, s, 0).r;
     else
-        out2 = findEdges != 0 ? edgeBits(s, out0, out1) : 0u;
+        out2 = findEdges != 0 ? edgeBits(in0, in1, sourceSize, cameraPos, s, out0, decodeNormal(out1)) : 0u;
 }
