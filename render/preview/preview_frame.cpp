@@ -155,6 +155,26 @@ void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int ma
     upload(st.tileVplBlocks, blocks);
 }
 
+// Interleaved, the area samples of each sub-buffer (sample i serves sub-buffer i mod (n m)) as
+// uniform blocks, as uploadTileBlocks does for the VPLs: constant-index reads in shade_vpl.frag.
+void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& lights) {
+    constexpr int kMaxUnrolledArea = 16;
+    const int subsets = st.patternX * st.patternY;
+    const int perTile = subsets > 1 ? st.areaLightCount / subsets : 0;
+    st.areaPerTile = perTile <= kMaxUnrolledArea ? perTile : 0;
+    if (st.areaPerTile == 0) return;
+    GLint align = 1;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    const size_t blockBytes = size_t(perTile) * sizeof(GpuLight);
+    st.areaBlockStride = GLintptr(roundUp(int(blockBytes), std::max(align, 1)));
+    std::vector<GpuLight> blocks(size_t(subsets) * size_t(st.areaBlockStride) / sizeof(GpuLight));
+    for (int k = 0; k < subsets; ++k)
+        for (int j = 0; j < perTile; ++j)
+            blocks[size_t(k) * size_t(st.areaBlockStride) / sizeof(GpuLight) + size_t(j)] =
+                lights[size_t(st.firstAreaLight + k + j * subsets)];
+    upload(st.tileAreaBlocks, blocks);
+}
+
 // Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
 // power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
 // estimates all the indirect light.
@@ -304,6 +324,7 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
             std::swap(lights[size_t(st.firstAreaLight) + i - 1], lights[size_t(st.firstAreaLight) + rng.nextUint() % i]);
     }
     upload(st.lightBuffer, lights);
+    uploadTileAreaBlocks(st, lights);
     st.lightKinds = 0;
     for (const GpuLight& g : lights) st.lightKinds |= 1 << int(g.positionKind[3]);
     st.directLights = std::move(lights);
@@ -347,7 +368,7 @@ std::string define(const char* name, int value) { return std::string("#define ")
 const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges, bool fusedSplit) {
     std::string defines = define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
                           define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
-                          define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
+                          define("FUSED_SPLIT", fusedSplit ? 1 : 0) + define("UNROLLED_AREA", areaSamples ? st.areaPerTile : 0) +
                           define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
     return programVariant(st, "shade_vpl.frag", defines);
@@ -510,6 +531,9 @@ Image Preview::render(float jitterX, float jitterY) {
             if (st.unrolledVpls > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
                                   GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
+            if (areaInterleaved && st.areaPerTile > 0)
+                glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
+                                  GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
             setIvec2(p, "tile", tx, ty);
             setInt(p, "vplFirst", t.first);
             setInt(p, "vplCount", t.count);

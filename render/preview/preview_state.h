@@ -201,6 +201,12 @@ struct Preview::State {
     };
     std::vector<TileVpls> tiles;
     int unrolledVpls = 0;
+    // Interleaved area samples: sub-buffer k's areaPerTile samples as a uniform block at byte
+    // k * areaBlockStride of tileAreaBlocks (shade_vpl.frag's UNROLLED_AREA); 0: none, or more
+    // than an unrolled body should hold (the shader loops over lightBuffer).
+    gl::Buffer tileAreaBlocks;
+    int areaPerTile = 0;
+    GLintptr areaBlockStride = 0;
     int vplShadowChunks = 0;  // cube map arrays in use (0: VPL visibility off)
     bool glossyScene = false;  // any glossy material with a specular lobe
     int lightKinds = 0;  // bit k: a light of GpuLight kind k is in the light buffer

@@ -14,6 +14,8 @@
 //   VPL_SHADOW_CHUNKS  0: VPL visibility off; else the cube map arrays holding the VPLs' maps;
 //   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
 //   AREA_SAMPLES       1 when the area lights' samples are shaded here (interleaved);
+//   UNROLLED_AREA      with AREA_SAMPLES, the samples each sub-buffer gets, read at constant
+//                      indices from a uniform block (as the VPLs); 0: a loop over the buffer;
 //   FIND_EDGES         1 when the box blur follows (the discontinuity bits go out in alpha);
 //   FUSED_SPLIT        1: no split pass ran; each fragment of tile t at q reads its G-buffer texel
 //                      q n + t straight from the image-layout G-buffer (and finds its
@@ -74,11 +76,32 @@ layout(location = 0) out vec4 result;
 // lights[firstArea .. firstArea + areaCount) lights sub-buffer i mod (n m) only, times n m, so
 // the box blur averages them back like the VPLs. Always shadowed (their cube maps), never clamped.
 struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
+#if UNROLLED_AREA > 0
+layout(std140, binding = 1) uniform TileAreas { Light tileAreas[UNROLLED_AREA]; };  // this sub-buffer's
+#else
 layout(std430, binding = 2) readonly buffer Lights { Light lights[]; };
+#endif
 uniform int firstArea;
 uniform int areaCount;
 uniform float areaShadowBias;    // relative
 layout(binding = 5) uniform samplerCubeArray areaShadows;
+
+// An area sample's light at y: at `position`, facing normalShadow.xyz, its shadow cube
+// normalShadow.w, intensity as direct.frag's. A diffuse receiver's albedo / pi is applied by the
+// caller. One exit, as vplLight.
+vec3 areaSampleLight(vec3 position, vec4 normalShadow, vec3 intensity, Surface sy, vec3 wo) {
+    const vec3 d = position - sy.position;
+    const float d2 = dot(d, d);
+    const vec3 wi = d * inversesqrt(d2);
+    const float cosY = dot(sy.normal, wi), cosE = -dot(wi, normalShadow.xyz);
+    float g = cosY > 0.0 && cosE > 0.0 ? cosY * cosE / d2 : 0.0;
+    if (g > 0.0 && sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, normalShadow.w)).r) g = 0.0;
+#if GLOSSY
+    return evalBsdf(sy.normal, wo, wi, sy.albedo, sy.specular, sy.alpha) * intensity * g;
+#else
+    return intensity * g;
+#endif
+}
 
 // VPL i's light at y (normal n, glossy receiver or not; a diffuse receiver's albedo / pi is
 // applied by the caller), its fields read one by one as they are needed: a diffuse VPL (the
@@ -153,17 +176,17 @@ void main() {
     vec3 area = vec3(0.0);
 #if AREA_SAMPLES
     const int subsets = pattern.x * pattern.y;
-    for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets) {
-        // Field by field: three of the light's four vec4s, each gathered lane by lane on llvmpipe.
-        const vec3 d = lights[i].positionKind.xyz - y;
-        const float d2 = dot(d, d);
-        const vec3 wi = d * inversesqrt(d2);
-        const vec4 normalShadow = lights[i].normalShadow;
-        const float cosY = dot(n, wi), cosE = -dot(wi, normalShadow.xyz);
-        if (cosY <= 0.0 || cosE <= 0.0) continue;
-        if (sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, normalShadow.w)).r) continue;
-        area += evalBsdf(n, wo, wi, sy.albedo, sy.specular, sy.alpha) * lights[i].intensityCosFalloff.rgb * (cosY * cosE / d2);
-    }
+#if UNROLLED_AREA > 0
+    for (int j = 0; j < UNROLLED_AREA; ++j)
+        area += areaSampleLight(tileAreas[j].positionKind.xyz, tileAreas[j].normalShadow, tileAreas[j].intensityCosFalloff.rgb, sy, wo);
+#else
+    // Field by field: three of the light's four vec4s, each gathered lane by lane on llvmpipe.
+    for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets)
+        area += areaSampleLight(lights[i].positionKind.xyz, lights[i].normalShadow, lights[i].intensityCosFalloff.rgb, sy, wo);
+#endif
+#if !GLOSSY
+    area *= sy.albedo * (1.0 / PI);
+#endif
     area *= float(subsets);
 #endif
     result = vec4(sum + area, edges);
