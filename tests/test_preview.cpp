@@ -241,14 +241,17 @@ void TestPreview::oneByOneEqualsCpuSum() {
 
 void TestPreview::directLightMatchesPathTracer_data() {
     QTest::addColumn<int>("kind");  // 0 point, 1 spot, 2 directional, 3 area light
-    QTest::newRow("point") << 0;
-    QTest::newRow("spot") << 1;
-    QTest::newRow("directional") << 2;
-    QTest::newRow("area") << 3;
+    QTest::addColumn<int>("areaSamples");
+    QTest::newRow("point") << 0 << 16;
+    QTest::newRow("spot") << 1 << 16;
+    QTest::newRow("directional") << 2 << 16;
+    QTest::newRow("area") << 3 << 16;  // one sample a sub-buffer at 4x4
+    QTest::newRow("area, 4 samples a sub-buffer") << 3 << 64;
 }
 
 void TestPreview::directLightMatchesPathTracer() {
     QFETCH(int, kind);
+    QFETCH(int, areaSamples);
     std::string json;
     std::vector<double> expected;
     if (kind == 3) {
@@ -264,6 +267,9 @@ void TestPreview::directLightMatchesPathTracer() {
     }
     const SceneSnapshot scene = sceneFromJson(json);
     Preview preview;
+    PreviewSettings s;
+    s.areaLightSamples = areaSamples;
+    preview.setSettings(s);
     preview.setScene(scene);
     const Image img = averagedFrames(preview, 16);
     const Image path = render("path", scene, 64, 7);
