@@ -4,12 +4,15 @@
 //     from an exact sample of a small 2D target and advanced k steps, compared by chi-square
 //     (one state per chain: states along a chain are correlated); a chain that forgets to
 //     restore rejected coordinates fails the same test;
-//   - cmlt's lens kernel keeps the density too, and a greedy choice among the candidates fails;
-//   - the backends: no NaN on the hard cases, independent film halves (their closed-form checks
-//     are in test_closed_form).
+//   - cmlt's lens kernel and its multiple-try caustic kernel (mixed with Kelemen's steps) keep
+//     the density too, and a greedy choice among the candidates fails;
+//   - the backends (cmlt also with its caustic sub-chain): no NaN on the hard cases, independent
+//     film halves, the closed sphere's mean (their other closed-form checks are in
+//     test_closed_form).
 
 #include "closed_form_scenes.h"
 #include "hard_case_scenes.h"
+#include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/lens_mutation.h"
 #include "render/trace/pss_sampler.h"
 #include "render_helpers.h"
@@ -97,6 +100,58 @@ V2f runMixedChain(PssSampler& sampler, V2f start, int k, Rng& choice) {
     return current;
 }
 
+// Reads the 2D point a sampler's state maps to: x from the camera stream, y from the light stream.
+V2f readMixed(PssSampler& sampler) {
+    sampler.beginStream(SampleStream::Camera);
+    const float x = sampler.next1D();
+    sampler.beginStream(SampleStream::Light);
+    return V2f(x, sampler.next1D());
+}
+
+// Kelemen's steps mixed with cmlt's multiple-try caustic steps (CausticTries, chooseLensMove, as
+// CmltChain::causticStep uses them); `greedy` breaks the choice.
+V2f runCausticChain(PssSampler& sampler, V2f start, int k, int tries, bool greedy, Rng& choice) {
+    sampler.setState({start.x});
+    sampler.setCoordinate(SampleStream::Light, 0, start.y);
+    double f = target(start.x, start.y);
+    V2f current = start;
+    CausticTries candidates;
+    std::vector<double> fs(static_cast<size_t>(tries));
+    std::vector<V2f> ys(static_cast<size_t>(tries));
+    for (int i = 0; i < k; ++i) {
+        if (choice.nextDouble() < 0.4) {
+            sampler.startIteration();
+            const V2f y = readMixed(sampler);
+            const double fy = target(y.x, y.y);
+            if (sampler.rng().nextDouble() < std::min(1.0, fy / f)) {
+                sampler.accept();
+                current = y;
+                f = fy;
+            } else {
+                sampler.reject();
+            }
+            continue;
+        }
+        candidates.start(sampler, tries, sampler.rng());
+        for (int j = 0; j < tries; ++j) {
+            ys[size_t(j)] = readMixed(candidates.candidate(j));
+            fs[size_t(j)] = target(ys[size_t(j)].x, ys[size_t(j)].y);
+        }
+        LensMove m = chooseLensMove(fs, f, sampler.rng());
+        if (greedy) {  // the bug: always the best candidate, then Metropolis on it
+            m.candidate = int(std::max_element(fs.begin(), fs.end()) - fs.begin());
+            m.accepted = sampler.rng().nextDouble() < std::min(1.0, fs[size_t(m.candidate)] / f);
+        }
+        if (m.accepted) {
+            sampler = candidates.candidate(m.candidate);
+            sampler.accept();
+            current = ys[size_t(m.candidate)];
+            f = fs[size_t(m.candidate)];
+        }
+    }
+    return current;
+}
+
 }  // namespace
 
 class TestMlt : public QObject {
@@ -107,6 +162,8 @@ private slots:
     void streamStepsKeepTheDensity();
     void lensKernelStationaryDensity_data();
     void lensKernelStationaryDensity();
+    void causticKernelStationaryDensity_data();
+    void causticKernelStationaryDensity();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -115,8 +172,15 @@ private slots:
 private:
     static void backends() {
         QTest::addColumn<QString>("backend");
-        QTest::newRow("mlt") << "mlt";
-        QTest::newRow("cmlt") << "cmlt";
+        QTest::addColumn<QString>("option");  // key=value, or empty
+        QTest::newRow("mlt") << "mlt" << "";
+        QTest::newRow("cmlt") << "cmlt" << "";
+        QTest::newRow("cmlt with caustic steps") << "cmlt" << "caustic_steps=1";
+    }
+    static void addOption(const QString& option, RenderSettings& s) {
+        if (option.isEmpty()) return;
+        const QStringList kv = option.split('=');
+        s.options[kv[0].toStdString()] = kv[1].toStdString();
     }
 };
 
@@ -225,13 +289,42 @@ void TestMlt::lensKernelStationaryDensity() {
     QCOMPARE(r.passed, shouldPass);
 }
 
+void TestMlt::causticKernelStationaryDensity_data() {
+    QTest::addColumn<int>("tries");
+    QTest::addColumn<bool>("greedy");
+    QTest::addColumn<bool>("shouldPass");
+    QTest::newRow("1 try") << 1 << false << true;
+    QTest::newRow("4 tries") << 4 << false << true;
+    QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
+}
+
+void TestMlt::causticKernelStationaryDensity() {
+    QFETCH(int, tries);
+    QFETCH(bool, greedy);
+    QFETCH(bool, shouldPass);
+    const double norm = targetIntegral();
+    long long chains = 0;
+    Rng choice(13, 0);
+    const auto sample = [&](Rng& rng, V2f& out) {
+        PssSampler sampler(hashSeed(9, uint64_t(++chains)), 0.06f, 0.1f);
+        out = runCausticChain(sampler, exactSample(rng), 16, tries, greedy, choice);
+        return true;
+    };
+    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
+    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 6, 0.01 / 3);
+    qInfo("%s", r.message.c_str());
+    QCOMPARE(r.passed, shouldPass);
+}
+
 void TestMlt::hardCasesStayFinite() {
     QFETCH(QString, backend);
+    QFETCH(QString, option);
     for (const HardCase& c : hardCaseScenes()) {
         RenderSettings s;
         s.spp = 2;
         s.seed = 3;
         s.options["bootstrap"] = "4096";
+        addOption(option, s);
         const Image img = renderFrame(backend.toStdString(), sceneFromJson(c.json), s).image;
         long nonfinite = 0;
         for (const Rgb& p : img.pixels) nonfinite += isFinite(p) ? 0 : 1;
@@ -244,13 +337,17 @@ void TestMlt::halvesAreIndependent() {
     // Each half has its own bootstrap (b) and chains: their images differ, and both are close to
     // the same answer.
     QFETCH(QString, backend);
+    QFETCH(QString, option);
     SphereWithEmittingCap sphere;
     sphere.resolution = 16;
     const auto scene = sceneFromJson(sphere.json());
     RenderSettings s;
     s.spp = 8;
     s.seed = 9;
+    addOption(option, s);
     const RenderFrame frame = renderFrame(backend.toStdString(), scene, s);
+    qInfo("mean %.5f, closed form %.5f", frame.image.mean(), sphere.expectedRadiance());
+    QVERIFY(std::abs(frame.image.mean() / sphere.expectedRadiance() - 1.0) < 0.02);
     const auto& a = frame.image.attributes;
     QVERIFY(a.count("lucerna:mlt_b_half0") && a.count("lucerna:mlt_b_half1"));
     QVERIFY(a.at("lucerna:mlt_b_half0") != a.at("lucerna:mlt_b_half1"));

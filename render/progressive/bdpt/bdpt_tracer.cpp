@@ -241,21 +241,33 @@ float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
 }
 
 Rgb BdptTracer::sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats) {
-    return sampleTraced(x, y, nullptr, false, rng, splats);
+    return sampleTraced(x, y, nullptr, Reuse::Nothing, rng, splats);
 }
 
 Rgb BdptTracer::sample(float x, float y, const std::optional<SurfacePoint>& primaryHit, bool reuseLightSubpath,
                        SampleGenerator& rng, std::vector<FilmSplat>& splats) {
-    return sampleTraced(x, y, &primaryHit, reuseLightSubpath, rng, splats);
+    return sampleTraced(x, y, &primaryHit, reuseLightSubpath ? Reuse::LightSubpath : Reuse::Nothing, rng, splats);
 }
 
-Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, bool reuseLightSubpath,
-                             SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+void BdptTracer::traceCameraSubpathOnly(float x, float y, SampleGenerator& rng) {
     camera_.clear();
-    const bool lightTracingOnly = settings_.strategies == BdptSettings::Strategies::LightTracing;
     rng.beginStream(SampleStream::Camera);
-    if (!lightTracingOnly) traceCameraSubpath(x, y, primaryHit, rng);
-    if (!reuseLightSubpath) {
+    if (settings_.strategies != BdptSettings::Strategies::LightTracing) traceCameraSubpath(x, y, nullptr, rng);
+}
+
+Rgb BdptTracer::sampleWithCameraSubpath(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+    return sampleTraced(x, y, nullptr, Reuse::CameraSubpath, rng, splats);
+}
+
+Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, Reuse reuse,
+                             SampleGenerator& rng, std::vector<FilmSplat>& splats) {
+    const bool lightTracingOnly = settings_.strategies == BdptSettings::Strategies::LightTracing;
+    if (reuse != Reuse::CameraSubpath) {
+        camera_.clear();
+        rng.beginStream(SampleStream::Camera);
+        if (!lightTracingOnly) traceCameraSubpath(x, y, primaryHit, rng);
+    }
+    if (reuse != Reuse::LightSubpath) {
         light_.clear();
         rng.beginStream(SampleStream::Light);
         traceLightSubpath(rng);

@@ -38,10 +38,17 @@ public:
     // generator would give the same light numbers (a Metropolis kernel that moves only the
     // camera side).
     Rgb sample(float x, float y, const std::optional<SurfacePoint>& primaryHit, bool reuseLightSubpath,
-               SampleGenerator& rng, std::vector<FilmSplat>& splats);
+                   SampleGenerator& rng, std::vector<FilmSplat>& splats);
+    // For a kernel that moves only the light side: traceCameraSubpathOnly traces the camera subpath
+    // through (x, y) from rng's camera stream alone, and sampleWithCameraSubpath then completes a
+    // sample as sample() would, with that camera subpath and a light subpath traced from rng's
+    // light stream (rng giving the same camera numbers).
+    void traceCameraSubpathOnly(float x, float y, SampleGenerator& rng);
+    Rgb sampleWithCameraSubpath(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats);
 
 private:
-    Rgb sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, bool reuseLightSubpath,
+    enum class Reuse { Nothing, LightSubpath, CameraSubpath };
+    Rgb sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, Reuse reuse,
                      SampleGenerator& rng, std::vector<FilmSplat>& splats);
     void traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit, SampleGenerator& rng);
     void traceLightSubpath(SampleGenerator& rng);

@@ -1,7 +1,5 @@
 #include "render/progressive/cmlt/cmlt_chain.h"
 
-#include "render/progressive/cmlt/lens_mutation.h"
-
 #include "render/trace/render_scene.h"
 
 #include <algorithm>
@@ -17,8 +15,24 @@ int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
         mutate(scale, out);  // step 1: a new seed
         ++made;
         for (int i = 0; i < settings_.lensSteps && current().f > 0; ++i) made += lensStep(scale, out);
+        for (int i = 0; i < settings_.causticSteps && current().f > 0; ++i) made += causticStep(scale, out);
     }
     return made;
+}
+
+LensMove CmltChain::depositAndChoose(double scale, std::vector<FilmSplat>& out) {
+    const PathContribution& cur = current();
+    double keep = 0;  // the competitor's total weight
+    candidateF_.resize(candidates_.size());
+    for (size_t i = 0; i < candidates_.size(); ++i) {
+        const PathContribution& c = candidates_[i];
+        const double a = std::min(1.0, c.f / cur.f);
+        if (c.f > 0) depositContribution(c, scale * a / c.f, out);
+        keep += 1.0 - a;
+        candidateF_[i] = c.f;
+    }
+    depositContribution(cur, scale * keep / cur.f, out);
+    return chooseLensMove(candidateF_, cur.f, sampler().rng());
 }
 
 int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
@@ -47,29 +61,42 @@ int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
                        candidates_[size_t(i)]);
     }
 
-    // Step 3: every candidate and its competitor by their expected values.
-    const PathContribution& cur = current();
-    double keep = 0;  // the competitor's total weight
-    for (const PathContribution& c : candidates_) {
-        const double a = std::min(1.0, c.f / cur.f);
-        if (c.f > 0) depositContribution(c, scale * a / c.f, out);
-        keep += 1.0 - a;
-    }
-    depositContribution(cur, scale * keep / cur.f, out);
-
+    const LensMove move = depositAndChoose(scale, out);  // step 3
     counters_.steps += p;
     counters_.lensSteps += p;
-    candidateF_.resize(size_t(p));
-    for (int i = 0; i < p; ++i) candidateF_[size_t(i)] = candidates_[size_t(i)].f;
-    const LensMove move = chooseLensMove(candidateF_, cur.f, sampler.rng());
-    const int chosen = move.candidate;
-    const PathContribution& y = candidates_[size_t(chosen)];
     if (move.accepted) {
-        sampler.setCoordinate(SampleStream::Camera, 0, rasters_[size_t(chosen)].x / w);
-        sampler.setCoordinate(SampleStream::Camera, 1, rasters_[size_t(chosen)].y / h);
-        current() = y;
+        const V2f& r = rasters_[size_t(move.candidate)];
+        sampler.setCoordinate(SampleStream::Camera, 0, r.x / w);
+        sampler.setCoordinate(SampleStream::Camera, 1, r.y / h);
+        current() = candidates_[size_t(move.candidate)];
         counters_.accepted += p;
         counters_.lensAccepted += p;
+    }
+    return p;
+}
+
+int CmltChain::causticStep(double scale, std::vector<FilmSplat>& out) {
+    PssSampler& sampler = this->sampler();
+    // The current state's camera subpath, traced once for every candidate.
+    sampler.startReplay();
+    const V2f r = rasterPoint(camera_, sampler.next2D());
+    tracer().traceCameraSubpathOnly(r.x, r.y, sampler);
+
+    const int p = std::max(1, settings_.tries);
+    causticTries_.start(sampler, p, sampler.rng());
+    candidates_.resize(size_t(p));
+    for (int i = 0; i < p; ++i)
+        evaluateLightSideAt(tracer(), r.x, r.y, causticTries_.candidate(i), candidates_[size_t(i)]);
+
+    const LensMove move = depositAndChoose(scale, out);
+    counters_.steps += p;
+    counters_.causticSteps += p;
+    if (move.accepted) {
+        sampler = causticTries_.candidate(move.candidate);
+        sampler.accept();
+        current() = candidates_[size_t(move.candidate)];
+        counters_.accepted += p;
+        counters_.causticAccepted += p;
     }
     return p;
 }

@@ -20,10 +20,14 @@
 // candidates share the light subpath (the light stream does not move) and their camera rays are
 // one packet: a candidate costs a camera subpath and the connections.
 //
-// Not built: Segovia's caustic perturbation (moving the light side of E S* D S* L paths); here
-// only the camera side moves.
+//   2'. With settings.causticSteps > 0, as many caustic steps after the lens steps
+//      (caustic_mutation.h): the camera subpath of the current state is traced once, and each of
+//      `tries` candidates moves only the light stream (a light subpath and the connections each),
+//      deposited and chosen as in 3.
 
+#include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/cmlt_settings.h"
+#include "render/progressive/cmlt/lens_mutation.h"
 #include "render/progressive/mlt/mlt_chain.h"
 
 namespace lucerna {
@@ -32,12 +36,17 @@ class CmltChain final : public MltChain {
 public:
     CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed);
 
-    // Alternates one MLT step (a new seed) with settings.lensSteps lens steps, until `steps`.
+    // Alternates one MLT step (a new seed) with settings.lensSteps lens steps and
+    // settings.causticSteps caustic steps, until `steps`.
     int run(int steps, double scale, std::vector<FilmSplat>& out) override;
 
 private:
-    // One lens step; returns the steps it counts for (tries: one per candidate evaluated).
+    // One lens or caustic step; each returns the steps it counts for (tries: one per candidate).
     int lensStep(double scale, std::vector<FilmSplat>& out);
+    int causticStep(double scale, std::vector<FilmSplat>& out);
+    // Step 3 over candidates_: deposits every candidate and the competitor by their expected
+    // values, then draws the move (which candidate, accepted or not).
+    LensMove depositAndChoose(double scale, std::vector<FilmSplat>& out);
 
     const RenderScene& scene_;
     CmltSettings settings_;
@@ -46,6 +55,7 @@ private:
     std::vector<std::optional<SurfacePoint>> hits_;
     std::vector<PathContribution> candidates_;
     std::vector<double> candidateF_;
+    CausticTries causticTries_;
 };
 
 }  // namespace lucerna

@@ -37,17 +37,26 @@ void finish(const Rgb& L, float x, float y, PathContribution& out) {
 }
 }  // namespace
 
-void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out) {
-    out.deposits.clear();
-    out.f = 0;
+V2f rasterPoint(const Sensor& camera, const V2f& u) {
     // Uniform over the whole raster; only a product rounded up to the edge is pulled back in (a
     // clamp to the last pixel's centre would pile the last half pixel onto one point, which on
     // an irradiance sensor's 2 x 2 block is a quarter of its directions).
-    const V2f r = sampler.next2D();
     const float w = float(camera.width()), h = float(camera.height());
-    const float x = std::min(r.x * w, std::nextafter(w, 0.0f));
-    const float y = std::min(r.y * h, std::nextafter(h, 0.0f));
-    finish(tracer.sample(x, y, sampler, out.deposits), x, y, out);  // sample() appends the light splats
+    return V2f(std::min(u.x * w, std::nextafter(w, 0.0f)), std::min(u.y * h, std::nextafter(h, 0.0f)));
+}
+
+void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out) {
+    out.deposits.clear();
+    out.f = 0;
+    const V2f r = rasterPoint(camera, sampler.next2D());
+    finish(tracer.sample(r.x, r.y, sampler, out.deposits), r.x, r.y, out);  // sample() appends the light splats
+}
+
+void evaluateLightSideAt(BdptTracer& tracer, float x, float y, PssSampler& sampler, PathContribution& out) {
+    out.deposits.clear();
+    out.f = 0;
+    sampler.next2D();  // the raster point's numbers: keeps every later dimension where it was
+    finish(tracer.sampleWithCameraSubpath(x, y, sampler, out.deposits), x, y, out);
 }
 
 void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,

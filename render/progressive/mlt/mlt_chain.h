@@ -35,6 +35,12 @@ void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler,
 void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,
                     bool reuseLightSubpath, PssSampler& sampler, PathContribution& out);
 
+// The same with the tracer's camera subpath through (x, y) (BdptTracer::traceCameraSubpathOnly,
+// from the same camera numbers) and a light subpath from the sampler's light stream.
+void evaluateLightSideAt(BdptTracer& tracer, float x, float y, PssSampler& sampler, PathContribution& out);
+// The raster point (pixels) that a state's first two numbers u choose.
+V2f rasterPoint(const Sensor& camera, const V2f& u);
+
 // Appends c's deposits times `weight` to `out` (nothing when weight is 0).
 void depositContribution(const PathContribution& c, double weight, std::vector<FilmSplat>& out);
 
