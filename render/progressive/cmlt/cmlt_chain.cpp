@@ -12,9 +12,16 @@ CmltChain::CmltChain(const RenderScene& scene, const CmltSettings& settings, uin
 int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
     int made = 0;
     while (made < steps) {
+        const long long acceptedBefore = counters_.accepted;
         mutate(scale, out);  // step 1: a new seed
         ++made;
-        for (int i = 0; i < settings_.lensSteps && current().f > 0; ++i) made += lensStep(scale, out);
+        // The tracer holds the current state's light subpath if the seed's proposal was
+        // accepted, and after any lens step (the light stream does not move).
+        bool lightSubpathCurrent = counters_.accepted > acceptedBefore;
+        for (int i = 0; i < settings_.lensSteps && current().f > 0; ++i) {
+            made += lensStep(scale, lightSubpathCurrent, out);
+            lightSubpathCurrent = true;
+        }
         for (int i = 0; i < settings_.causticSteps && current().f > 0; ++i) made += causticStep(scale, out);
     }
     return made;
@@ -35,7 +42,7 @@ LensMove CmltChain::depositAndChoose(double scale, std::vector<FilmSplat>& out) 
     return chooseLensMove(candidateF_, cur.f, sampler().rng());
 }
 
-int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
+int CmltChain::lensStep(double scale, bool lightSubpathCurrent, std::vector<FilmSplat>& out) {
     PssSampler& sampler = this->sampler();
     const float w = float(camera_.width()), h = float(camera_.height());
     // The current raster point, from the state's first two numbers.
@@ -55,10 +62,10 @@ int CmltChain::lensStep(double scale, std::vector<FilmSplat>& out) {
     scene_.intersectCoherent(rays_, hits_);  // step 2: the candidates' camera rays as one packet
     for (int i = 0; i < p; ++i) {
         sampler.startReplay();
-        // Only the camera side moves: the first candidate traces the light subpath, the others
-        // reuse it.
-        evaluatePathAt(tracer(), rasters_[size_t(i)].x, rasters_[size_t(i)].y, hits_[size_t(i)], i > 0, sampler,
-                       candidates_[size_t(i)]);
+        // Only the camera side moves: the current state's light subpath serves every candidate
+        // (traced by the first unless the tracer holds it already).
+        evaluatePathAt(tracer(), rasters_[size_t(i)].x, rasters_[size_t(i)].y, hits_[size_t(i)],
+                       i > 0 || lightSubpathCurrent, sampler, candidates_[size_t(i)]);
     }
 
     const LensMove move = depositAndChoose(scale, out);  // step 3

@@ -17,8 +17,10 @@
 //      uniformly, accepted with its a_i: a Metropolis-Hastings step with a symmetric kernel, so
 //      the sub-chain keeps the density f and the seeds' distribution.
 // Every step deposits total weight 1, so the scheduler's W H / steps normalisation holds. The
-// candidates share the light subpath (the light stream does not move) and their camera rays are
-// one packet: a candidate costs a camera subpath and the connections.
+// candidates share the current state's light subpath (the light stream does not move; it is
+// traced again only when the seed's own proposal was rejected) and their camera rays are one
+// packet: a candidate costs a camera subpath and the connections. By measurement the defaults
+// are single tries (BENCHMARKS.md): the saving is the light subpath, not the packet.
 //
 //   2'. With settings.causticSteps > 0, as many caustic steps after the lens steps
 //      (caustic_mutation.h): the camera subpath of the current state is traced once, and each of
@@ -42,7 +44,8 @@ public:
 
 private:
     // One lens or caustic step; each returns the steps it counts for (tries: one per candidate).
-    int lensStep(double scale, std::vector<FilmSplat>& out);
+    // lightSubpathCurrent: the tracer holds the current state's light subpath.
+    int lensStep(double scale, bool lightSubpathCurrent, std::vector<FilmSplat>& out);
     int causticStep(double scale, std::vector<FilmSplat>& out);
     // Step 3 over candidates_: deposits every candidate and the competitor by their expected
     // values, then draws the move (which candidate, accepted or not).
