@@ -63,7 +63,7 @@ void TestAutoBackend::bundledScenes() {
 void TestAutoBackend::indirectlyLitRoom() {
     const AutoChoice diffuse = choose(indirectRoom());
     qInfo("%s", diffuse.reason.c_str());
-    QCOMPARE(diffuse.backend, std::string("bdpt"));
+    QCOMPARE(diffuse.backend, std::string("cmlt"));
     QVERIFY(diffuse.reason.find("indirectly") != std::string::npos);
     const AutoChoice withMirror = choose(indirectRoom(R"(, "chrome": {"type": "mirror", "reflectance": [0.9, 0.9, 0.9]})",
                                                       R"(, {"name": "mirror", "material": "chrome", "mesh": {"quad": [[1,0.2,1.9],[1,1.5,1.9],[1.8,1.5,1.9],[1.8,0.2,1.9]]}})"));
