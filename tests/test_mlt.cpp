@@ -160,9 +160,9 @@ private slots:
     void stationaryDensity_data();
     void stationaryDensity();
     void streamStepsKeepTheDensity();
-    void lensKernelStationaryDensity_data();
+    void lensKernelStationaryDensity_data() { kernelTries(); }
     void lensKernelStationaryDensity();
-    void causticKernelStationaryDensity_data();
+    void causticKernelStationaryDensity_data() { kernelTries(); }
     void causticKernelStationaryDensity();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
@@ -176,6 +176,15 @@ private:
         QTest::newRow("mlt") << "mlt" << "";
         QTest::newRow("cmlt") << "cmlt" << "";
         QTest::newRow("cmlt with caustic steps") << "cmlt" << "caustic_steps=1";
+    }
+    // The multiple-try kernels' rows: one try, four, and four with a greedy choice (must fail).
+    static void kernelTries() {
+        QTest::addColumn<int>("tries");
+        QTest::addColumn<bool>("greedy");
+        QTest::addColumn<bool>("shouldPass");
+        QTest::newRow("1 try") << 1 << false << true;
+        QTest::newRow("4 tries") << 4 << false << true;
+        QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
     }
     static void addOption(const QString& option, RenderSettings& s) {
         if (option.isEmpty()) return;
@@ -243,15 +252,6 @@ void TestMlt::streamStepsKeepTheDensity() {
     }
 }
 
-void TestMlt::lensKernelStationaryDensity_data() {
-    QTest::addColumn<int>("tries");
-    QTest::addColumn<bool>("greedy");
-    QTest::addColumn<bool>("shouldPass");
-    QTest::newRow("1 try") << 1 << false << true;
-    QTest::newRow("4 tries") << 4 << false << true;
-    QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
-}
-
 void TestMlt::lensKernelStationaryDensity() {
     // cmlt's lens kernel (perturbRaster, chooseLensMove) on an "image" of 64 x 48 pixels whose
     // contribution is the 2D target: chains from exact samples, 12 steps each, one state per
@@ -287,15 +287,6 @@ void TestMlt::lensKernelStationaryDensity() {
     const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 5, 0.01 / 3);
     qInfo("%s", r.message.c_str());
     QCOMPARE(r.passed, shouldPass);
-}
-
-void TestMlt::causticKernelStationaryDensity_data() {
-    QTest::addColumn<int>("tries");
-    QTest::addColumn<bool>("greedy");
-    QTest::addColumn<bool>("shouldPass");
-    QTest::newRow("1 try") << 1 << false << true;
-    QTest::newRow("4 tries") << 4 << false << true;
-    QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
 }
 
 void TestMlt::causticKernelStationaryDensity() {
