@@ -87,8 +87,8 @@ uniform float areaShadowBias;    // relative
 layout(binding = 5) uniform samplerCubeArray areaShadows;
 
 // An area sample's light at y: at `position`, facing normalShadow.xyz, its shadow cube
-// normalShadow.w, intensity as direct.frag's. A diffuse receiver's albedo / pi is applied by the
-// caller. One exit, as vplLight.
+// normalShadow.w, intensity as direct.frag's. Without GLOSSY the receiver's BSDF (albedo / pi) is
+// applied by the caller, once for all samples. One exit, as vplLight.
 vec3 areaSampleLight(vec3 position, vec4 normalShadow, vec3 intensity, Surface sy, vec3 wo) {
     const vec3 d = position - sy.position;
     const float d2 = dot(d, d);
