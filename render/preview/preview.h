@@ -126,7 +126,8 @@ public:
     const PreviewTimings& timings() const;
 
     // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings (the
-    // fused split as one pass: the same addressing) and gathers it back. `split` is the split layout, `gathered` should equal `in`.
+    // fused split as one pass: the same addressing) and gathers it back. `split` is the split
+    // layout, `gathered` should equal `in`.
     struct SplitCheck {
         Image split, gathered;
         int subWidth = 0, subHeight = 0;  // a tile's size in the split layout

@@ -134,6 +134,14 @@ void renderDirectionalShadows(Preview::State& st, int mapSize) {
     glDisable(GL_DEPTH_TEST);
 }
 
+// Bytes from one per-sub-buffer uniform block to the next: blockBytes rounded up to the offset
+// alignment GL asks of glBindBufferRange.
+size_t uniformBlockStride(size_t blockBytes) {
+    GLint align = 1;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    return size_t(roundUp(int(blockBytes), std::max(align, 1)));
+}
+
 // The sub-buffers' VPLs as uniform blocks, one after the other at the alignment GL asks for,
 // each unrolledVpls long (the shader's block size): when no sub-buffer has more than
 // maxUnrolled, shade_vpl.frag reads them at constant indices (its UNROLLED_VPLS).
@@ -142,10 +150,8 @@ void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int ma
     for (const auto& t : st.tiles) most = std::max(most, t.count);
     st.unrolledVpls = most <= maxUnrolled ? most : 0;
     if (st.unrolledVpls == 0) return;
-    GLint align = 1;
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
     const size_t blockBytes = size_t(st.unrolledVpls) * sizeof(GpuVpl);
-    const size_t stride = size_t(roundUp(int(blockBytes), std::max(align, 1)));
+    const size_t stride = uniformBlockStride(blockBytes);
     std::vector<unsigned char> blocks(st.tiles.size() * stride + blockBytes);
     for (size_t k = 0; k < st.tiles.size(); ++k) {
         auto& t = st.tiles[k];
@@ -163,15 +169,13 @@ void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& light
     const int perTile = subsets > 1 ? st.areaLightCount / subsets : 0;
     st.areaPerTile = perTile <= kMaxUnrolledArea ? perTile : 0;
     if (st.areaPerTile == 0) return;
-    GLint align = 1;
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
-    const size_t blockBytes = size_t(perTile) * sizeof(GpuLight);
-    st.areaBlockStride = GLintptr(roundUp(int(blockBytes), std::max(align, 1)));
-    std::vector<GpuLight> blocks(size_t(subsets) * size_t(st.areaBlockStride) / sizeof(GpuLight));
+    const size_t stride = uniformBlockStride(size_t(perTile) * sizeof(GpuLight));
+    st.areaBlockStride = GLintptr(stride);
+    std::vector<unsigned char> blocks(size_t(subsets) * stride);
     for (int k = 0; k < subsets; ++k)
         for (int j = 0; j < perTile; ++j)
-            blocks[size_t(k) * size_t(st.areaBlockStride) / sizeof(GpuLight) + size_t(j)] =
-                lights[size_t(st.firstAreaLight + k + j * subsets)];
+            std::memcpy(blocks.data() + size_t(k) * stride + size_t(j) * sizeof(GpuLight),
+                        &lights[size_t(st.firstAreaLight + k + j * subsets)], sizeof(GpuLight));
     upload(st.tileAreaBlocks, blocks);
 }
 

@@ -3,7 +3,6 @@
 namespace lucerna {
 
 void CausticTries::start(const PssSampler& from, int p, Rng& rng) {
-    count_ = p;
     if (candidates_.size() < size_t(p)) candidates_.resize(size_t(p), from);
     for (int i = 0; i < p; ++i) {
         PssSampler& c = candidates_[size_t(i)];

@@ -25,11 +25,9 @@ public:
     // to the chain's sampler.
     void start(const PssSampler& from, int p, Rng& rng);
     PssSampler& candidate(int i) { return candidates_[size_t(i)]; }
-    int size() const { return count_; }
 
 private:
     std::vector<PssSampler> candidates_;  // kept between steps: copies reuse their capacity
-    int count_ = 0;
 };
 
 }  // namespace lucerna
