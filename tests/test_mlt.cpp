@@ -6,6 +6,9 @@
 //     restore rejected coordinates fails the same test;
 //   - cmlt's lens kernel and its multiple-try caustic kernel (mixed with Kelemen's steps) keep
 //     the density too, and a greedy choice among the candidates fails;
+//   - a lens step's sample with the light subpath (and its light-tracing splats) reused equals
+//     the sample traced afresh, on a pinhole and on irradiance sensors (whose light-tracing
+//     connections read numbers);
 //   - the backends (cmlt also with its caustic sub-chain): no NaN on the hard cases, independent
 //     film halves, the closed sphere's mean (their other closed-form checks are in
 //     test_closed_form).
@@ -14,6 +17,8 @@
 #include "hard_case_scenes.h"
 #include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/lens_mutation.h"
+#include "render/progressive/mlt/mlt_chain.h"
+#include "render/trace/render_scene.h"
 #include "render/trace/pss_sampler.h"
 #include "render_helpers.h"
 #include "tests/chi_square.h"
@@ -164,6 +169,8 @@ private slots:
     void lensKernelStationaryDensity();
     void causticKernelStationaryDensity_data() { kernelTries(); }
     void causticKernelStationaryDensity();
+    void reusedLightSubpathMatchesFreshSample_data();
+    void reusedLightSubpathMatchesFreshSample();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -305,6 +312,66 @@ void TestMlt::causticKernelStationaryDensity() {
     const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 6, 0.01 / 3);
     qInfo("%s", r.message.c_str());
     QCOMPARE(r.passed, shouldPass);
+}
+
+void TestMlt::reusedLightSubpathMatchesFreshSample_data() {
+    QTest::addColumn<bool>("sensors");
+    QTest::newRow("pinhole") << false;
+    QTest::newRow("irradiance sensors") << true;
+}
+
+// What a lens step does: the state's sample is evaluated (the tracer keeps its light subpath and
+// light-tracing splats), then the same numbers at another raster point with them reused. A
+// second tracer evaluates that from scratch; the deposits must be the same, splat for splat.
+void TestMlt::reusedLightSubpathMatchesFreshSample() {
+    QFETCH(bool, sensors);
+    // Glossy, diffuse, mirror and glass under a small area light: long subpaths of every kind.
+    const SceneSnapshot snapshot = sceneFromJson(R"({"lucerna": 1,
+      "camera": {"position": [0, 1.2, -3], "target": [0, 0.5, 0], "fov_y": 50, "resolution": [40, 30]},
+      "materials": {"floor": {"type": "glossy", "albedo": [0.3, 0.3, 0.3], "specular": [0.5, 0.5, 0.5], "roughness": 0.15},
+                    "wall": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
+                    "chrome": {"type": "mirror", "reflectance": [0.9, 0.9, 0.9]},
+                    "glass": {"type": "dielectric", "ior": 1.5},
+                    "lamp": {"type": "emitter", "radiance": [30, 30, 30]}},
+      "objects": [
+        {"name": "floor", "material": "floor", "mesh": {"quad": [[2,0,-4],[-2,0,-4],[-2,0,2],[2,0,2]]}},
+        {"name": "back", "material": "wall", "mesh": {"quad": [[2,0,2],[-2,0,2],[-2,2.5,2],[2,2.5,2]]}},
+        {"name": "ceiling", "material": "wall", "mesh": {"quad": [[2,2.5,-4],[2,2.5,2],[-2,2.5,2],[-2,2.5,-4]]}},
+        {"name": "lamp", "material": "lamp", "mesh": {"quad": [[0.2,2.49,0],[0.2,2.49,0.4],[-0.2,2.49,0.4],[-0.2,2.49,0]]}},
+        {"name": "mirror", "material": "chrome", "mesh": {"quad": [[0.4,0,1],[0.4,1,1],[1.2,1,0.6],[1.2,0,0.6]]}},
+        {"name": "glass", "material": "glass", "mesh": {"vertices": [[-0.8,0.05,0],[-0.2,0.05,0],[-0.5,0.05,0.5],[-0.5,0.8,0.2]],
+                                                        "triangles": [[0,2,1],[0,1,3],[1,2,3],[2,0,3]]}}]})");
+    const Sensor sensor({{V3f(0, 0.01f, 0), V3f(0, 1, 0)}, {V3f(1, 0.01f, -1), V3f(0, 1, 0)}, {V3f(0, 1, 1.99f), V3f(0, 0, -1)}}, 4);
+    const RenderScene scene(snapshot, 0, 0, sensors ? &sensor : nullptr);
+    const Sensor& camera = scene.camera();
+    BdptSettings settings;
+    BdptTracer reusing(scene, settings), fresh(scene, settings);
+    Rng rng(7, 0);
+    int lightSplats = 0;
+    for (int i = 0; i < 400; ++i) {
+        PssSampler sampler(uint64_t(i) + 1, 0.01f, 0.3f);
+        sampler.startLargeStep();
+        PathContribution state, reused, traced;
+        evaluatePath(reusing, camera, sampler, state);
+        sampler.accept();
+        const V2f r = rasterPoint(camera, rng.next2D());
+        const auto hit = scene.intersect(camera.ray(r.x, r.y));
+        sampler.startReplay();
+        evaluatePathAt(reusing, r.x, r.y, hit, true, sampler, reused);
+        sampler.startReplay();
+        evaluatePathAt(fresh, r.x, r.y, hit, false, sampler, traced);
+        QCOMPARE(reused.deposits.size(), traced.deposits.size());
+        for (size_t k = 0; k < traced.deposits.size(); ++k) {
+            const FilmSplat &a = reused.deposits[k], &b = traced.deposits[k];
+            QVERIFY2(a.x == b.x && a.y == b.y && a.value == b.value,
+                     qPrintable(QString("state %1, deposit %2 differs").arg(i).arg(k)));
+        }
+        // The camera sample's deposit is the last one, when there is one.
+        const bool cameraDeposit = !traced.deposits.empty() && traced.deposits.back().x == int(r.x) &&
+                                   traced.deposits.back().y == int(r.y);
+        lightSplats += int(traced.deposits.size()) - (cameraDeposit ? 1 : 0);
+    }
+    QVERIFY2(lightSplats > 40, qPrintable(QString("only %1 light-tracing splats: the test sees too little").arg(lightSplats)));
 }
 
 void TestMlt::hardCasesStayFinite() {

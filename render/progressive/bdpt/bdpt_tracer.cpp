@@ -2,6 +2,26 @@
 
 namespace lucerna {
 
+namespace {
+// Counts the numbers a caller reads.
+class CountingGenerator final : public SampleGenerator {
+public:
+    explicit CountingGenerator(SampleGenerator& inner) : inner_(inner) {}
+    float next1D() override {
+        ++count;
+        return inner_.next1D();
+    }
+    V2f next2D() override {
+        count += 2;
+        return inner_.next2D();
+    }
+    int count = 0;
+
+private:
+    SampleGenerator& inner_;
+};
+}  // namespace
+
 BdptTracer::BdptTracer(const RenderScene& scene, const BdptSettings& settings)
     : scene_(scene), settings_(settings), densities_(scene) {
     camera_.reserve(16);
@@ -293,17 +313,35 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
         return Rgb(0, 0, 0);
     }
 
-    Rgb L(0, 0, 0);
     const int nCamera = int(camera_.size());
-    for (int t = 1; t <= nCamera; ++t)
+    if (nCamera >= 1) {
+        // t = 1 first, as the connection numbers are laid out. Its contributions depend on the
+        // light subpath and the numbers they read alone (the camera subpath is replaced by a
+        // sensor point), so a reused light subpath brings its splats along: only the numbers
+        // are read again, to keep every later one where it was.
+        if (reuse == Reuse::LightSubpath) {
+            // (Reuse is for Metropolis samplers, whose pairs are two single numbers.)
+            for (int i = 0; i < lightTracingNumbers_; ++i) rng.next1D();
+        } else {
+            CountingGenerator counted(rng);
+            lightTracingSplats_.clear();
+            for (int s = 2; s <= std::min(nLight, settings_.maxDepth + 1); ++s) {
+                float rx = 0, ry = 0;
+                const Rgb c = connect(s, 1, true, counted, rx, ry);
+                if (!isBlack(c) && isFinite(c)) lightTracingSplats_.push_back({rx, ry, c});
+            }
+            lightTracingNumbers_ = counted.count;
+        }
+        for (const LightTracingSplat& s : lightTracingSplats_) splat(s.value, s.rasterX, s.rasterY);
+    }
+    Rgb L(0, 0, 0);
+    for (int t = 2; t <= nCamera; ++t)
         for (int s = 0; s <= std::max(nLight, 1); ++s) {
-            const int depth = s + t - 2;
-            if ((s == 1 && t == 1) || depth < 0 || depth > settings_.maxDepth) continue;
+            if (s + t - 2 > settings_.maxDepth) continue;
             if (s >= 2 && s > nLight) continue;
             float rx = 0, ry = 0;
             const Rgb c = connect(s, t, true, rng, rx, ry);
-            if (t == 1) splat(c, rx, ry);
-            else if (isFinite(c)) L += c;
+            if (isFinite(c)) L += c;
         }
     return L;
 }

@@ -34,11 +34,12 @@ public:
     // The same, with the camera ray's closest hit already traced (as part of a packet of
     // coherent camera rays); `primaryHit` must be what RenderScene::intersect gives for the
     // camera ray through (x, y). With reuseLightSubpath, the light subpath of the previous call
-    // is used again instead of being traced from rng's light stream: for a caller whose
-    // generator would give the same light numbers (a Metropolis kernel that moves only the
-    // camera side).
+    // is used again instead of being traced from rng's light stream, and so are its
+    // light-tracing (t = 1) contributions, which do not depend on the camera subpath: for a
+    // caller whose generator would give the same light and connection numbers (a Metropolis
+    // kernel that moves only the camera side).
     Rgb sample(float x, float y, const std::optional<SurfacePoint>& primaryHit, bool reuseLightSubpath,
-                   SampleGenerator& rng, std::vector<FilmSplat>& splats);
+               SampleGenerator& rng, std::vector<FilmSplat>& splats);
     // For a kernel that moves only the light side: traceCameraSubpathOnly traces the camera subpath
     // through (x, y) from rng's camera stream alone, and sampleWithCameraSubpath then completes a
     // sample as sample() would, with that camera subpath and a light subpath traced from rng's
@@ -70,6 +71,13 @@ private:
     BdptSettings settings_;
     VertexDensities densities_;
     std::vector<PathVertex> camera_, light_;  // reused from sample to sample
+    // The t = 1 contributions of light_ and how many numbers they read (kept for Reuse::LightSubpath).
+    struct LightTracingSplat {
+        float rasterX, rasterY;
+        Rgb value;
+    };
+    std::vector<LightTracingSplat> lightTracingSplats_;
+    int lightTracingNumbers_ = 0;
 };
 
 }  // namespace lucerna

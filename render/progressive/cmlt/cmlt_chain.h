@@ -17,10 +17,11 @@
 //      uniformly, accepted with its a_i: a Metropolis-Hastings step with a symmetric kernel, so
 //      the sub-chain keeps the density f and the seeds' distribution.
 // Every step deposits total weight 1, so the scheduler's W H / steps normalisation holds. The
-// candidates share the current state's light subpath (the light stream does not move; it is
-// traced again only when the seed's own proposal was rejected) and their camera rays are one
-// packet: a candidate costs a camera subpath and the connections. By measurement the defaults
-// are single tries (BENCHMARKS.md): the saving is the light subpath, not the packet.
+// candidates share the current state's light subpath and its light-tracing splats (the light
+// and connection streams do not move; the subpath is traced again only when the seed's own
+// proposal was rejected) and their camera rays are one packet: a candidate costs a camera
+// subpath and its connections. By measurement the defaults are single tries (BENCHMARKS.md):
+// the saving is the light subpath, not the packet.
 //
 //   2'. With settings.causticSteps > 0, as many caustic steps after the lens steps
 //      (caustic_mutation.h): the camera subpath of the current state is traced once, and each of

@@ -31,7 +31,8 @@ struct PathContribution {
 void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out);
 // The same with the raster point (x, y) (pixels) and its camera ray's closest hit given: the
 // sampler's first two numbers, which would have chosen the raster point, are read and ignored;
-// with reuseLightSubpath, the tracer's previous light subpath stands for the light stream's.
+// with reuseLightSubpath, the tracer's previous light subpath (and its light-tracing splats)
+// stands for the light stream's.
 void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,
                     bool reuseLightSubpath, PssSampler& sampler, PathContribution& out);
 
