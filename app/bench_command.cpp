@@ -97,6 +97,15 @@ BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
     if (!(b.settings.seconds > 0)) throw UsageError("bench: no time budget given (--time SECONDS)");
     if ((b.settings.width > 0) != (b.settings.height > 0)) throw UsageError("bench: --width and --height go together");
     b.runs = parseBackends(backends);
+    // Before any backend runs: an entry's own options are its backend's, --option's any entry's.
+    std::vector<const BackendInfo*> all;
+    for (const BenchRun& run : b.runs) all.push_back(findBackend(run.backend));
+    try {
+        requireKnownOptions(b.settings.options, all);
+        for (size_t i = 0; i < b.runs.size(); ++i) requireKnownOptions(b.runs[i].options, std::span(&all[i], 1));
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(std::string("bench: ") + e.what());
+    }
     return b;
 }
 

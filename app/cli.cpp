@@ -96,6 +96,11 @@ int renderImpl(const std::vector<std::string>& args) {
     }
     std::unique_ptr<ProgressiveBackend> backend;
     try {
+        // auto passes the options to whichever backend it picks: any backend's are fine.
+        std::vector<const BackendInfo*> readers{info};
+        if (r.backend == "auto")
+            for (const BackendInfo& b : backendTable()) readers.push_back(&b);
+        requireKnownOptions(r.settings.options, readers);
         backend = (r.layers & kLightLayers) ? makeLayeredBackend(info->make, scene, r.settings)
                                             : info->make(scene, r.settings);
     } catch (const std::invalid_argument& e) {

@@ -124,7 +124,9 @@ int gridImpl(const std::vector<std::string>& args) {
         RenderSettings check;  // the backend's own parser judges the options before any work
         check.options = g.settings.backendOptions;
         try {
-            findBackend(gridMethodName(g.settings.method))->make(scene, check);
+            const BackendInfo* method = findBackend(gridMethodName(g.settings.method));
+            requireKnownOptions(check.options, std::span(&method, 1));
+            method->make(scene, check);
         } catch (const std::invalid_argument& e) {
             throw UsageError(e.what());
         }

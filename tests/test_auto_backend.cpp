@@ -1,5 +1,7 @@
-// `--backend auto` (render/progressive/auto_backend.cpp): different scenes get the backends their
-// light transport needs, each with a one-line reason.
+// The backend table (render/progressive/backend.h): `--backend auto` (auto_backend.cpp) gives
+// different scenes the backends their light transport needs, each with a one-line reason; every
+// option key the table lists for a backend is one its settings read, and a key none of the
+// given backends reads is refused with a one-line message.
 
 #include "core/scene_io.h"
 #include "render/progressive/backend.h"
@@ -40,7 +42,52 @@ private slots:
     void bundledScenes();
     void indirectlyLitRoom();
     void noLight();
+    void listedOptionsAreRead();
+    void unknownOptionsAreRefused();
 };
+
+void TestAutoBackend::listedOptionsAreRead() {
+    // A value no option accepts: a backend that reads the key throws, naming it.
+    const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(kResources + "/scenes/cornell-box.json"));
+    int checked = 0;
+    for (const BackendInfo& b : backendTable()) {
+        QVERIFY2(!b.options.empty(), qPrintable(QString::fromUtf8(b.name.data(), qsizetype(b.name.size()))));
+        for (std::string_view key : b.options) {
+            RenderSettings settings;
+            settings.options[std::string(key)] = "?";
+            const QString where = QString("%1 %2").arg(QString::fromUtf8(b.name.data(), qsizetype(b.name.size())),
+                                                       QString::fromUtf8(key.data(), qsizetype(key.size())));
+            try {
+                b.make(scene, settings);
+                QFAIL(qPrintable(where + ": not read"));
+            } catch (const std::invalid_argument& e) {
+                QVERIFY2(std::string(e.what()).find(key) != std::string::npos, qPrintable(where + ": " + e.what()));
+            }
+            ++checked;
+        }
+    }
+    QVERIFY(checked >= 40);
+}
+
+void TestAutoBackend::unknownOptionsAreRefused() {
+    const BackendInfo* mlt = findBackend("mlt");
+    const BackendInfo* cmlt = findBackend("cmlt");
+    QVERIFY(mlt && cmlt);
+    const std::map<std::string, std::string> lens{{"lens_steps", "3"}}, typo{{"lens_step", "3"}};
+    requireKnownOptions(lens, std::span(&cmlt, 1));  // must not throw
+    const std::vector<const BackendInfo*> both{mlt, cmlt};
+    requireKnownOptions(lens, both);  // one of them reads it
+    QVERIFY_THROWS_EXCEPTION(std::invalid_argument, requireKnownOptions(lens, std::span(&mlt, 1)));
+    try {
+        requireKnownOptions(typo, both);
+        QFAIL("lens_step accepted");
+    } catch (const std::invalid_argument& e) {
+        const std::string m = e.what();
+        QVERIFY2(m.find("lens_step") != std::string::npos && m.find("lens_steps") != std::string::npos &&
+                     m.find('\n') == std::string::npos,
+                 m.c_str());
+    }
+}
 
 void TestAutoBackend::bundledScenes() {
     // The pair: a diffuse/glossy interior lit directly, and a caustic scene.

@@ -91,6 +91,9 @@ void TestCli::renderBadUsage_data() {
     QTest::newRow("missing value") << QStringList{"render", kCornell, "-o", "x.exr", "--seed"};
     QTest::newRow("missing scene") << QStringList{"render", "/nonexistent/scene.json", "-o", "x.exr"};
     QTest::newRow("bad path option") << QStringList{"render", kCornell, "-o", "x.exr", "--option", "max_depth=-3"};
+    QTest::newRow("mistyped cmlt option")
+        << QStringList{"render", kCornell, "-o", "x.exr", "--backend", "cmlt", "--option", "lens_step=3"};
+    QTest::newRow("option no backend reads (auto)") << QStringList{"render", kCornell, "-o", "x.exr", "--option", "speed=2"};
 }
 
 void TestCli::renderBadUsage() {
@@ -276,6 +279,8 @@ void TestCli::benchBadUsage() {
         {"bench", kCornell, "--reference", dir.filePath("missing.exr"), "--backends", "path", "--time", "1"},
         {"bench", kCornell, "--reference", small, "--backends", "path", "--time", "1", "--width", "8", "--height", "8"},
         {"bench", kCornell, "--reference", small, "--backends", "mir:tries=0", "--time", "1"},  // bad option
+        {"bench", kCornell, "--reference", small, "--backends", "path,mlt:lens_steps=2", "--time", "1"},  // cmlt's
+        {"bench", kCornell, "--reference", small, "--backends", "path,mlt", "--option", "lens_steps=2", "--time", "1"},
     };
     for (const QStringList& args : cases) {
         const Run r = runLucerna(args);
