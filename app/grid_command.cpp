@@ -130,6 +130,9 @@ int gridImpl(const std::vector<std::string>& args) {
         } catch (const std::invalid_argument& e) {
             throw UsageError(e.what());
         }
+    } else if (!g.settings.backendOptions.empty()) {
+        throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
+                         " takes no backend options (path and ir are set with --samples and --vpl-paths)");
     }
 
     catchInterrupts();

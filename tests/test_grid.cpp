@@ -412,6 +412,18 @@ private slots:
         QCOMPARE(bad.exitCode(), 2);
         const QString err = QString::fromUtf8(bad.readAllStandardError()).trimmed();
         QVERIFY2(!err.contains('\n') && err.contains("--v"), qPrintable(err));
+
+        // Backend options the method does not read: refused, not ignored.
+        const QStringList grid{"grid", scenePath, "--corner", "-1,0,1", "--u", "2,0,0", "--v", "0,0,-2"};
+        for (const QStringList& extra : {QStringList{"--method", "path", "--option", "max_depth=3"},
+                                         QStringList{"--method", "mlt", "--option", "tries=2"}}) {
+            QProcess refused;
+            refused.start(LUCERNA_BINARY, grid + extra);
+            QVERIFY(refused.waitForFinished(30000));
+            QCOMPARE(refused.exitCode(), 2);
+            const QString message = QString::fromUtf8(refused.readAllStandardError()).trimmed();
+            QVERIFY2(!message.contains('\n') && message.contains("option"), qPrintable(message));
+        }
     }
 };
 
