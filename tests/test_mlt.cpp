@@ -26,6 +26,7 @@
 #include <QtTest>
 
 #include <cmath>
+#include <functional>
 
 using namespace lucerna;
 using namespace lucerna::test;
@@ -52,6 +53,16 @@ V2f exactSample(Rng& rng) {
         const V2f p = rng.next2D();
         if (rng.nextDouble() * 1.6 < target(p.x, p.y)) return p;
     }
+}
+
+// Chi-square of `sample`'s states against the normalised target on [0,1]^2 (24 x 24 cells,
+// 100000 chains), the message logged.
+ChiSquareResult chiSquareAgainstTarget(const std::function<bool(Rng&, V2f&)>& sample, uint64_t seed) {
+    const double norm = targetIntegral();
+    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
+    ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, seed, 0.01 / 3);
+    qInfo("%s", r.message.c_str());
+    return r;
 }
 
 // k Metropolis steps of a chain in primary sample space; `restore` false breaks reject().
@@ -213,7 +224,6 @@ void TestMlt::stationaryDensity() {
     QFETCH(float, largeStep);
     QFETCH(bool, restore);
     QFETCH(bool, shouldPass);
-    const double norm = targetIntegral();
     long long chains = 0;
     const auto sample = [&](Rng& rng, V2f& out) {
         // Larger small steps than the renderer's 0.01, so that 12 steps move across the bump.
@@ -221,16 +231,13 @@ void TestMlt::stationaryDensity() {
         out = runChain(sampler, exactSample(rng), 12, restore);
         return true;
     };
-    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
-    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 3, 0.01 / 3);
-    qInfo("%s", r.message.c_str());
+    const ChiSquareResult r = chiSquareAgainstTarget(sample, 3);
     QCOMPARE(r.passed, shouldPass);
 }
 
 // Stream steps (pss_sampler.h) mixed with Kelemen's: a stream left alone by a step must not move,
 // and one that missed steps must catch up with exactly the steps its stream took.
 void TestMlt::streamStepsKeepTheDensity() {
-    const double norm = targetIntegral();
     long long chains = 0;
     Rng choice(11, 0);
     const auto sample = [&](Rng& rng, V2f& out) {
@@ -238,9 +245,7 @@ void TestMlt::streamStepsKeepTheDensity() {
         out = runMixedChain(sampler, exactSample(rng), 16, choice);
         return true;
     };
-    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
-    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 4, 0.01 / 3);
-    qInfo("%s", r.message.c_str());
+    const ChiSquareResult r = chiSquareAgainstTarget(sample, 4);
     QVERIFY2(r.passed, r.message.c_str());
 
     // A light-stream step leaves the camera stream's number where it was, accepted or not.
@@ -267,7 +272,6 @@ void TestMlt::lensKernelStationaryDensity() {
     QFETCH(bool, greedy);
     QFETCH(bool, shouldPass);
     const float w = 64, h = 48;
-    const double norm = targetIntegral();
     const auto f = [&](const V2f& r) { return target(r.x / w, r.y / h); };
     std::vector<double> fs(static_cast<size_t>(tries));
     std::vector<V2f> ys(static_cast<size_t>(tries));
@@ -290,9 +294,7 @@ void TestMlt::lensKernelStationaryDensity() {
         out = V2f(x.x / w, x.y / h);
         return true;
     };
-    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
-    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 5, 0.01 / 3);
-    qInfo("%s", r.message.c_str());
+    const ChiSquareResult r = chiSquareAgainstTarget(sample, 5);
     QCOMPARE(r.passed, shouldPass);
 }
 
@@ -300,7 +302,6 @@ void TestMlt::causticKernelStationaryDensity() {
     QFETCH(int, tries);
     QFETCH(bool, greedy);
     QFETCH(bool, shouldPass);
-    const double norm = targetIntegral();
     long long chains = 0;
     Rng choice(13, 0);
     const auto sample = [&](Rng& rng, V2f& out) {
@@ -308,9 +309,7 @@ void TestMlt::causticKernelStationaryDensity() {
         out = runCausticChain(sampler, exactSample(rng), 16, tries, greedy, choice);
         return true;
     };
-    const auto pdf = [&](const V2f& p) { return target(p.x, p.y) / norm; };
-    const ChiSquareResult r = chiSquareRect(sample, pdf, V2f(0, 0), V2f(1, 1), 24, 24, 100000, 6, 0.01 / 3);
-    qInfo("%s", r.message.c_str());
+    const ChiSquareResult r = chiSquareAgainstTarget(sample, 6);
     QCOMPARE(r.passed, shouldPass);
 }
 

@@ -47,8 +47,7 @@ int CmltChain::lensStep(double scale, bool lightSubpathCurrent, std::vector<Film
     const float w = float(camera_.width()), h = float(camera_.height());
     // The current raster point, from the state's first two numbers.
     sampler.startReplay();
-    const V2f u = sampler.next2D();
-    const V2f x(u.x * w, u.y * h);
+    const V2f x = rasterPoint(camera_, sampler.next2D());
 
     const int p = std::max(1, settings_.tries);
     rasters_.resize(size_t(p));
