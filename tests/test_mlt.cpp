@@ -9,6 +9,9 @@
 //   - a lens step's sample with the light subpath (and its light-tracing splats) reused equals
 //     the sample traced afresh, on a pinhole and on irradiance sensors (whose light-tracing
 //     connections read numbers);
+//   - cmlt's path-space lens perturbation evaluates every recorded path of a sample at its own
+//     raster point to that path's contribution: the colour always, the value itself where the
+//     constant rest is known (next-event paths and emitters seen directly or in mirrors);
 //   - the backends (cmlt also with its caustic sub-chain): no NaN on the hard cases, independent
 //     film halves, the closed sphere's mean (their other closed-form checks are in
 //     test_closed_form).
@@ -17,6 +20,7 @@
 #include "hard_case_scenes.h"
 #include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/lens_mutation.h"
+#include "render/progressive/cmlt/path_lens.h"
 #include "render/progressive/mlt/mlt_chain.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/pss_sampler.h"
@@ -182,6 +186,7 @@ private slots:
     void causticKernelStationaryDensity();
     void reusedLightSubpathMatchesFreshSample_data();
     void reusedLightSubpathMatchesFreshSample();
+    void pathLensReproducesRecordedPaths();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -194,6 +199,7 @@ private:
         QTest::newRow("mlt") << "mlt" << "";
         QTest::newRow("cmlt") << "cmlt" << "";
         QTest::newRow("cmlt with caustic steps") << "cmlt" << "caustic_steps=1";
+        QTest::newRow("cmlt with PSS lens steps only") << "cmlt" << "path_lens_steps=0,lens_steps=2";
     }
     // The multiple-try kernels' rows: one try, four, and four with a greedy choice (must fail).
     static void kernelTries() {
@@ -204,10 +210,12 @@ private:
         QTest::newRow("4 tries") << 4 << false << true;
         QTest::newRow("4 tries, greedy choice (broken)") << 4 << true << false;
     }
-    static void addOption(const QString& option, RenderSettings& s) {
-        if (option.isEmpty()) return;
-        const QStringList kv = option.split('=');
-        s.options[kv[0].toStdString()] = kv[1].toStdString();
+    // "key=value[,key=value...]"
+    static void addOption(const QString& options, RenderSettings& s) {
+        for (const QString& option : options.split(',', Qt::SkipEmptyParts)) {
+            const QStringList kv = option.split('=');
+            s.options[kv[0].toStdString()] = kv[1].toStdString();
+        }
     }
 };
 
@@ -371,6 +379,86 @@ void TestMlt::reusedLightSubpathMatchesFreshSample() {
         lightSplats += int(traced.deposits.size()) - (cameraDeposit ? 1 : 0);
     }
     QVERIFY2(lightSplats > 40, qPrintable(QString("only %1 light-tracing splats: the test sees too little").arg(lightSplats)));
+}
+
+// Every path a sample records, rebuilt and evaluated by the lens perturbation at its own raster
+// point, is that path again: the same colour as its contribution (every BSDF, the light and the
+// mirror tints on it), and where the rest R is the light alone, the same value. There the
+// unweighted contribution is F / p: p the light point's area density for next-event paths
+// (s = 1), 1 for emitters seen directly or through mirrors (s = 0).
+void TestMlt::pathLensReproducesRecordedPaths() {
+    // Coloured diffuse, glossy, mirror and glass under a small coloured area light.
+    const SceneSnapshot snapshot = sceneFromJson(R"({"lucerna": 1,
+      "camera": {"position": [0, 1.2, -3], "target": [0, 0.5, 0], "fov_y": 50, "resolution": [40, 30]},
+      "materials": {"floor": {"type": "glossy", "albedo": [0.5, 0.3, 0.2], "specular": [0.4, 0.5, 0.6], "roughness": 0.2},
+                    "wall": {"type": "diffuse", "albedo": [0.7, 0.6, 0.3]},
+                    "blue": {"type": "diffuse", "albedo": [0.2, 0.3, 0.7]},
+                    "chrome": {"type": "mirror", "reflectance": [0.9, 0.7, 0.5]},
+                    "glass": {"type": "dielectric", "ior": 1.5},
+                    "lamp": {"type": "emitter", "radiance": [30, 24, 12]}},
+      "objects": [
+        {"name": "floor", "material": "floor", "mesh": {"quad": [[2,0,-4],[-2,0,-4],[-2,0,2],[2,0,2]]}},
+        {"name": "back", "material": "blue", "mesh": {"quad": [[2,0,2],[-2,0,2],[-2,2.5,2],[2,2.5,2]]}},
+        {"name": "ceiling", "material": "wall", "mesh": {"quad": [[2,2.5,-4],[2,2.5,2],[-2,2.5,2],[-2,2.5,-4]]}},
+        {"name": "lamp", "material": "lamp", "mesh": {"quad": [[0.2,2.49,0],[0.2,2.49,0.4],[-0.2,2.49,0.4],[-0.2,2.49,0]]}},
+        {"name": "mirror", "material": "chrome", "mesh": {"quad": [[0.4,0,1],[0.4,1.6,1],[1.2,1.6,0.6],[1.2,0,0.6]]}},
+        {"name": "glass", "material": "glass", "mesh": {"vertices": [[-0.8,0.05,0],[-0.2,0.05,0],[-0.5,0.05,0.5],[-0.5,0.8,0.2]],
+                                                        "triangles": [[0,2,1],[0,1,3],[1,2,3],[2,0,3]]}}]})");
+    const RenderScene scene(snapshot, 0, 0);
+    const Sensor& camera = scene.camera();
+    BdptTracer tracer(scene, BdptSettings{});
+    const VertexDensities densities(scene);
+    LensPath lens(scene, densities);
+    std::vector<PathVertex> path;
+    int built = 0, throughSpecular = 0, valued = 0, missed = 0;
+    for (int i = 0; i < 2000; ++i) {
+        PssSampler sampler(uint64_t(i) + 1, 0.01f, 0.3f);
+        sampler.startLargeStep();
+        PathContribution state;
+        state.recordPaths = true;
+        evaluatePath(tracer, camera, sampler, state);
+        for (const StrategyRecord& r : state.paths.strategies) {
+            state.paths.path(r, path);
+            if (!lens.build(path)) continue;
+            ++built;
+            const Rgb c = lens.contribution(r.rasterX, r.rasterY, scene.intersect(camera.ray(r.rasterX, r.rasterY)));
+            if (!(luminance(c) > 0)) {  // a light-tracing splat's raster point may round onto an edge
+                ++missed;
+                continue;
+            }
+            const Rgb want = r.weighted / r.misWeight;
+            for (int k = 0; k < 3; ++k)
+                QVERIFY2(std::abs(c[k] / luminance(c) - want[k] / luminance(want)) < 1e-3f * (1 + want[k] / luminance(want)),
+                         qPrintable(QString("sample %1, strategy (%2, %3): colour %4 %5 %6 against %7 %8 %9")
+                                        .arg(i).arg(r.s).arg(r.t).arg(c[0]).arg(c[1]).arg(c[2])
+                                        .arg(want[0]).arg(want[1]).arg(want[2])));
+            bool glass = false, specular = false;
+            for (int j = 1; j + 1 < int(path.size()) && path[size_t(j)].delta; ++j) {
+                specular = true;
+                glass = glass || scene.material(path[size_t(j)].sp.material).type == MaterialType::Dielectric;
+            }
+            throughSpecular += specular;
+            // The value: where nothing but the light follows the first diffuse vertex.
+            const bool nextEvent = r.s == 1 && r.t >= 2 && !path[size_t(r.t - 1)].delta;
+            const bool emitterSeen = r.s == 0 && path.size() >= 2 && [&] {
+                for (size_t j = 1; j + 1 < path.size(); ++j)
+                    if (!path[j].delta) return false;
+                return true;
+            }();
+            bool firstDiffuseAtT = true;
+            for (int j = 1; j < r.t - 1; ++j) firstDiffuseAtT = firstDiffuseAtT && path[size_t(j)].delta;
+            if (glass || !(emitterSeen || (nextEvent && firstDiffuseAtT))) continue;
+            const double p = r.s == 1 ? double(r.sampled.pdfFwd) : 1.0;
+            QVERIFY2(std::abs(luminance(c) / (luminance(want) * p) - 1.0) < 1e-3,
+                     qPrintable(QString("sample %1, strategy (%2, %3): F %4 against %5")
+                                    .arg(i).arg(r.s).arg(r.t).arg(luminance(c)).arg(luminance(want) * p)));
+            ++valued;
+        }
+    }
+    qInfo("%d paths built, %d of them through mirrors or glass, %d values checked, %d missed", built,
+          throughSpecular, valued, missed);
+    QVERIFY(built > 1000 && throughSpecular > 50 && valued > 200);
+    QVERIFY(missed < built / 100);
 }
 
 void TestMlt::hardCasesStayFinite() {

@@ -142,7 +142,17 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
         light_[1].pdfFwd = densities_.pdfLight(light_[0], light_[1]);
 }
 
-Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY) const {
+void SampledPaths::path(const StrategyRecord& r, std::vector<PathVertex>& out) const {
+    out.clear();
+    if (r.t == 1) out.push_back(r.sampled);
+    else out.insert(out.end(), camera.begin(), camera.begin() + r.t);
+    if (r.s == 1) out.push_back(r.sampled);
+    else
+        for (int i = r.s - 1; i >= 0; --i) out.push_back(light[size_t(i)]);
+}
+
+Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY,
+                        StrategyRecord* record) const {
     Rgb L(0, 0, 0);
     PathVertex sampled;
     const PathVertex* sampledPtr = nullptr;
@@ -181,6 +191,7 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         const LightSampler& lights = scene_.lights();
         sampled.light = ls.light;
         sampled.sp.p = ls.position;
+        sampled.sp.pError = V3f(0, 0, 0);
         if (ls.light < lights.emitters().size()) {
             const EmitterTriangle& e = lights.emitters()[ls.light];
             sampled.kind = VertexKind::AreaLight;
@@ -215,7 +226,12 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         if (!scene_.unoccluded(qs.sp, pt.sp)) return Rgb(0, 0, 0);
     }
     if (!weighted) return L;
-    return L * misWeight(s, t, sampledPtr);
+    const float w = misWeight(s, t, sampledPtr);
+    if (record) {
+        record->misWeight = w;
+        if (sampledPtr) record->sampled = *sampledPtr;
+    }
+    return L * w;
 }
 
 float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
@@ -282,6 +298,7 @@ Rgb BdptTracer::sampleWithCameraSubpath(float x, float y, SampleGenerator& rng, 
 Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, Reuse reuse,
                              SampleGenerator& rng, std::vector<FilmSplat>& splats) {
     const bool lightTracingOnly = settings_.strategies == BdptSettings::Strategies::LightTracing;
+    if (record_) record_->strategies.clear();  // (light tracing alone records nothing)
     if (reuse != Reuse::CameraSubpath) {
         camera_.clear();
         rng.beginStream(SampleStream::Camera);
@@ -327,12 +344,21 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
             lightTracingSplats_.clear();
             for (int s = 2; s <= std::min(nLight, settings_.maxDepth + 1); ++s) {
                 float rx = 0, ry = 0;
-                const Rgb c = connect(s, 1, true, counted, rx, ry);
-                if (!isBlack(c) && isFinite(c)) lightTracingSplats_.push_back({rx, ry, c});
+                StrategyRecord r;
+                r.s = s;
+                r.t = 1;
+                const Rgb c = connect(s, 1, true, counted, rx, ry, &r);
+                r.weighted = c;
+                r.rasterX = rx;
+                r.rasterY = ry;
+                if (!isBlack(c) && isFinite(c)) lightTracingSplats_.push_back(r);
             }
             lightTracingNumbers_ = counted.count;
         }
-        for (const LightTracingSplat& s : lightTracingSplats_) splat(s.value, s.rasterX, s.rasterY);
+        for (const StrategyRecord& s : lightTracingSplats_) splat(s.weighted, s.rasterX, s.rasterY);
+    }
+    if (record_) {
+        record_->strategies = lightTracingSplats_;
     }
     Rgb L(0, 0, 0);
     for (int t = 2; t <= nCamera; ++t)
@@ -340,9 +366,23 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
             if (s + t - 2 > settings_.maxDepth) continue;
             if (s >= 2 && s > nLight) continue;
             float rx = 0, ry = 0;
-            const Rgb c = connect(s, t, true, rng, rx, ry);
-            if (isFinite(c)) L += c;
+            StrategyRecord r;
+            r.s = s;
+            r.t = t;
+            const Rgb c = connect(s, t, true, rng, rx, ry, record_ ? &r : nullptr);
+            if (!isFinite(c)) continue;
+            L += c;
+            if (record_ && !isBlack(c)) {
+                r.weighted = c;
+                r.rasterX = x;
+                r.rasterY = y;
+                record_->strategies.push_back(r);
+            }
         }
+    if (record_) {
+        record_->camera = camera_;
+        record_->light = light_;
+    }
     return L;
 }
 

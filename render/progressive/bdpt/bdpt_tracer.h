@@ -21,6 +21,25 @@
 
 namespace lucerna {
 
+// The paths behind one sample, for kernels that perturb a single path of it (cmlt's path-space
+// lens sub-chain): the two subpaths and, for every strategy that contributed, its (s, t), its
+// MIS-weighted contribution, where it lands and the vertex it sampled afresh (s = 1: the light
+// point; t = 1: the sensor point), so that each path can be rebuilt vertex by vertex.
+struct StrategyRecord {
+    int s = 0, t = 0;
+    Rgb weighted{0, 0, 0};   // finite, not black
+    float misWeight = 1;     // weighted = misWeight times the unweighted contribution
+    float rasterX = 0, rasterY = 0;
+    PathVertex sampled;      // s = 1 or t = 1 only
+};
+struct SampledPaths {
+    std::vector<PathVertex> camera, light;
+    std::vector<StrategyRecord> strategies;
+
+    // Path x_0 (the sensor) ... x_k (the light) of strategy i, appended to `out` (cleared).
+    void path(const StrategyRecord& r, std::vector<PathVertex>& out) const;
+};
+
 class BdptTracer {
 public:
     BdptTracer(const RenderScene& scene, const BdptSettings& settings);
@@ -47,6 +66,9 @@ public:
     void traceCameraSubpathOnly(float x, float y, SampleGenerator& rng);
     Rgb sampleWithCameraSubpath(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats);
 
+    // While set, every sample also writes its paths there (nullptr: not recorded).
+    void recordPaths(SampledPaths* sink) { record_ = sink; }
+
 private:
     enum class Reuse { Nothing, LightSubpath, CameraSubpath };
     Rgb sampleTraced(float x, float y, const std::optional<SurfacePoint>* primaryHit, Reuse reuse,
@@ -60,7 +82,9 @@ private:
                     std::vector<PathVertex>& path, const std::optional<SurfacePoint>* firstHit = nullptr) const;
     // Unweighted contribution of strategy (s, t), times its MIS weight when `weighted`. For
     // t = 1 it writes the raster point it lands on.
-    Rgb connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY) const;
+    // `record`, when given, receives the MIS weight and the vertex sampled afresh (s = 1, t = 1).
+    Rgb connect(int s, int t, bool weighted, SampleGenerator& rng, float& rasterX, float& rasterY,
+                StrategyRecord* record = nullptr) const;
     // Power-heuristic weight of strategy (s, t); `sampled` is the fresh light vertex (s = 1) or
     // the pinhole (t = 1) that replaces the subpath's own.
     float misWeight(int s, int t, const PathVertex* sampled) const;
@@ -72,12 +96,9 @@ private:
     VertexDensities densities_;
     std::vector<PathVertex> camera_, light_;  // reused from sample to sample
     // The t = 1 contributions of light_ and how many numbers they read (kept for Reuse::LightSubpath).
-    struct LightTracingSplat {
-        float rasterX, rasterY;
-        Rgb value;
-    };
-    std::vector<LightTracingSplat> lightTracingSplats_;
+    std::vector<StrategyRecord> lightTracingSplats_;
     int lightTracingNumbers_ = 0;
+    SampledPaths* record_ = nullptr;
 };
 
 }  // namespace lucerna

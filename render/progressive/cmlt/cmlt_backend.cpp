@@ -16,6 +16,7 @@ CmltSettings CmltSettings::fromOptions(const RenderSettings& settings) {
     readOption(settings, "tries", s.tries, 1, 64);
     readOption(settings, "sigma_pixels", s.sigmaPixels, 1e-3, 1e4);
     readOption(settings, "caustic_steps", s.causticSteps, 0, 10000);
+    readOption(settings, "path_lens_steps", s.pathLensSteps, 0, 10000);
     return s;
 }
 

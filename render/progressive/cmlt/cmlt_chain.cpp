@@ -7,7 +7,8 @@
 namespace lucerna {
 
 CmltChain::CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed)
-    : MltChain(scene, settings.mlt, bootstrapSeed), scene_(scene), settings_(settings) {}
+    : MltChain(scene, settings.mlt, bootstrapSeed, settings.pathLensSteps > 0), scene_(scene), settings_(settings),
+      densities_(scene), lensPath_(scene, densities_) {}
 
 int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
     int made = 0;
@@ -23,12 +24,30 @@ int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
             lightSubpathCurrent = true;
         }
         for (int i = 0; i < settings_.causticSteps && current().f > 0; ++i) made += causticStep(scale, out);
+        if (settings_.pathLensSteps > 0 && current().f > 0) made += pathLensSubChain(scale, out);
     }
     return made;
 }
 
-LensMove CmltChain::depositAndChoose(double scale, std::vector<FilmSplat>& out) {
-    const PathContribution& cur = current();
+void CmltChain::prepareCandidates(int p) {
+    candidates_.resize(size_t(p));
+    for (PathContribution& c : candidates_) c.recordPaths = current().recordPaths;  // any may become the state
+}
+
+void CmltChain::proposeRasters(const V2f& x, int p) {
+    prepareCandidates(p);
+    rasters_.resize(size_t(p));
+    rays_.resize(size_t(p));
+    hits_.resize(size_t(p));
+    const float w = float(camera_.width()), h = float(camera_.height());
+    for (int i = 0; i < p; ++i) {
+        rasters_[size_t(i)] = perturbRaster(x, settings_.sigmaPixels, w, h, sampler().rng());
+        rays_[size_t(i)] = camera_.ray(rasters_[size_t(i)].x, rasters_[size_t(i)].y);
+    }
+    scene_.intersectCoherent(rays_, hits_);  // the candidates' camera rays as one packet
+}
+
+LensMove CmltChain::depositAndChoose(const PathContribution& cur, double scale, std::vector<FilmSplat>& out) {
     double keep = 0;  // the competitor's total weight
     candidateF_.resize(candidates_.size());
     for (size_t i = 0; i < candidates_.size(); ++i) {
@@ -50,15 +69,7 @@ int CmltChain::lensStep(double scale, bool lightSubpathCurrent, std::vector<Film
     const V2f x = rasterPoint(camera_, sampler.next2D());
 
     const int p = std::max(1, settings_.tries);
-    rasters_.resize(size_t(p));
-    rays_.resize(size_t(p));
-    hits_.resize(size_t(p));
-    candidates_.resize(size_t(p));
-    for (int i = 0; i < p; ++i) {
-        rasters_[size_t(i)] = perturbRaster(x, settings_.sigmaPixels, w, h, sampler.rng());
-        rays_[size_t(i)] = camera_.ray(rasters_[size_t(i)].x, rasters_[size_t(i)].y);
-    }
-    scene_.intersectCoherent(rays_, hits_);  // step 2: the candidates' camera rays as one packet
+    proposeRasters(x, p);
     for (int i = 0; i < p; ++i) {
         sampler.startReplay();
         // Only the camera side moves: the current state's light subpath serves every candidate
@@ -67,7 +78,7 @@ int CmltChain::lensStep(double scale, bool lightSubpathCurrent, std::vector<Film
                        i > 0 || lightSubpathCurrent, sampler, candidates_[size_t(i)]);
     }
 
-    const LensMove move = depositAndChoose(scale, out);  // step 3
+    const LensMove move = depositAndChoose(current(), scale, out);  // step 3
     counters_.steps += p;
     counters_.lensSteps += p;
     if (move.accepted) {
@@ -90,11 +101,11 @@ int CmltChain::causticStep(double scale, std::vector<FilmSplat>& out) {
 
     const int p = std::max(1, settings_.tries);
     causticTries_.start(sampler, p, sampler.rng());
-    candidates_.resize(size_t(p));
+    prepareCandidates(p);
     for (int i = 0; i < p; ++i)
         evaluateLightSideAt(tracer(), r.x, r.y, causticTries_.candidate(i), candidates_[size_t(i)]);
 
-    const LensMove move = depositAndChoose(scale, out);
+    const LensMove move = depositAndChoose(current(), scale, out);
     counters_.steps += p;
     counters_.causticSteps += p;
     if (move.accepted) {
@@ -105,6 +116,61 @@ int CmltChain::causticStep(double scale, std::vector<FilmSplat>& out) {
         counters_.causticAccepted += p;
     }
     return p;
+}
+
+namespace {
+// One path of the sample, chosen in proportion to its contribution; nullptr when none is recorded.
+const StrategyRecord* choosePath(const SampledPaths& paths, Rng& rng) {
+    double total = 0;
+    for (const StrategyRecord& r : paths.strategies) total += luminance(r.weighted);
+    if (!(total > 0)) return nullptr;
+    double pick = rng.nextDouble() * total;
+    size_t i = 0;
+    while (i + 1 < paths.strategies.size() && (pick -= luminance(paths.strategies[i].weighted)) >= 0) ++i;
+    return &paths.strategies[i];
+}
+
+// A path's contribution as a deposit at its raster point (x, y).
+void asDeposit(const Sensor& camera, float x, float y, const Rgb& c, PathContribution& out) {
+    out.deposits.clear();
+    out.f = std::max(0.0f, luminance(c));
+    if (out.f > 0)
+        out.deposits.push_back({std::clamp(int(x), 0, camera.width() - 1), std::clamp(int(y), 0, camera.height() - 1), c});
+}
+}  // namespace
+
+int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
+    const StrategyRecord* seed = choosePath(current().paths, sampler().rng());
+    if (!seed) return 0;  // (only where nothing is recorded: light tracing alone)
+    const int p = std::max(1, settings_.tries), made = settings_.pathLensSteps * p;
+    counters_.steps += made;
+    counters_.pathLensSteps += made;
+    current().paths.path(*seed, pathVertices_);
+    V2f x(seed->rasterX, seed->rasterY);
+    if (lensPath_.build(pathVertices_))
+        asDeposit(camera_, x.x, x.y, lensPath_.contribution(x.x, x.y, scene_.intersect(camera_.ray(x.x, x.y))), lensState_);
+    else
+        lensState_.f = 0;
+    if (!(lensState_.f > 0)) {
+        // No perturbation moves this path: every step stays on it.
+        asDeposit(camera_, x.x, x.y, seed->weighted, lensState_);
+        depositContribution(lensState_, scale * made / lensState_.f, out);
+        return made;
+    }
+    for (int step = 0; step < settings_.pathLensSteps; ++step) {
+        proposeRasters(x, p);
+        for (int i = 0; i < p; ++i) {
+            const V2f& r = rasters_[size_t(i)];
+            asDeposit(camera_, r.x, r.y, lensPath_.contribution(r.x, r.y, hits_[size_t(i)]), candidates_[size_t(i)]);
+        }
+        const LensMove move = depositAndChoose(lensState_, scale, out);
+        if (move.accepted) {
+            x = rasters_[size_t(move.candidate)];
+            std::swap(lensState_, candidates_[size_t(move.candidate)]);
+            counters_.pathLensAccepted += p;
+        }
+    }
+    return made;
 }
 
 }  // namespace lucerna

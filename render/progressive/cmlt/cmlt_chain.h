@@ -1,36 +1,44 @@
 #pragma once
 // The per-thread part of the cmlt backend: coherent Metropolis light transport (Segovia et al.
-// 2007, "Coherent Metropolis Light Transport with Multiple-Try Mutations"), in primary sample
-// space over the bidirectional sampler.
+// 2007, "Coherent Metropolis Light Transport with Multiple-Try Mutations"), with the primary
+// sample space chain over the bidirectional sampler as its seed generator.
 //
 //   1. The MLT chain (mlt_chain.h) explores path space; each of its states is a seed, distributed
 //      in proportion to its image contribution f.
-//   2. Around each seed, a sub-chain of lens mutations: only the raster point moves, by a
-//      Gaussian of sigmaPixels (wrapped around the image, so symmetric), every other number of
-//      the state stays; the path behind the pixel follows (for E S* D ... paths this is the lens
-//      perturbation). Each step draws `tries` candidates from the current state together; their
-//      camera rays are neighbours and are traced as one coherent Embree packet.
+//   2. Around each seed, a sub-chain of lens mutations in path space (path_lens.h): one path of
+//      the seed's sample, chosen in proportion to its share of f, is perturbed by Veach's lens
+//      perturbation: the raster point moves by a Gaussian of sigmaPixels (wrapped around the
+//      image, so symmetric), the camera ray is traced through the same specular vertices to the
+//      first diffuse one and joined to the rest of the path, which stays. A candidate costs a
+//      camera ray, the specular chain behind it and one shadow ray, against a whole
+//      bidirectional sample for an MLT mutation. Each step draws `tries` candidates together;
+//      their camera rays are neighbours and are traced as one coherent Embree packet.
 //   3. Every candidate is accumulated with its expected value: candidate y_i with
-//      a_i / f(y_i), its competitor (the current state x) with (1 - a_i) / f(x),
-//      a_i = min(1, f(y_i) / f(x)). Each pair is one step's expected deposit from x, so the lens
-//      step counts as `tries` steps of weight 1. The chain then moves to one candidate chosen
-//      uniformly, accepted with its a_i: a Metropolis-Hastings step with a symmetric kernel, so
-//      the sub-chain keeps the density f and the seeds' distribution.
-// Every step deposits total weight 1, so the scheduler's W H / steps normalisation holds. The
-// candidates share the current state's light subpath and its light-tracing splats (the light
-// and connection streams do not move; the subpath is traced again only when the seed's own
-// proposal was rejected) and their camera rays are one packet: a candidate costs a camera
-// subpath and its connections. By measurement the defaults are single tries (BENCHMARKS.md):
-// the saving is the light subpath, not the packet.
+//      a_i / F(y_i), its competitor (the current state x) with (1 - a_i) / F(x),
+//      a_i = min(1, F(y_i) / F(x)). Each pair is one step's expected deposit from x, so a step
+//      counts as `tries` steps of weight 1. The sub-chain then moves to one candidate chosen
+//      uniformly, accepted with its a_i: a Metropolis-Hastings step with a symmetric kernel.
+// The sub-chain leaves the MLT chain's state alone. Its start is distributed as F / b over paths
+// (a path of a state u ~ f / b, chosen with probability f_i(u) / f(u), comes from strategy i
+// with density w_i F / b, and the MIS weights w_i sum to 1), and its steps keep that density, so
+// its deposits estimate the same image, normalised like the chain's own. A path that no lens
+// perturbation moves (its vertex after the first diffuse one on a mirror or glass: caustics seen
+// directly) keeps its steps where it is, depositing them at once.
 //
-//   2'. With settings.causticSteps > 0, as many caustic steps after the lens steps
-//      (caustic_mutation.h): the camera subpath of the current state is traced once, and each of
-//      `tries` candidates moves only the light stream (a light subpath and the connections each),
-//      deposited and chosen as in 3.
+//   2'. With settings.lensSteps > 0, lens steps in primary sample space on the MLT chain itself
+//      first: only the raster numbers move and the whole sample is traced again, sharing the
+//      state's light subpath and its light-tracing splats (the light and connection streams do
+//      not move); deposited and chosen as in 3 with f for F.
+//   2''. With settings.causticSteps > 0, caustic steps on the chain (caustic_mutation.h): the
+//      camera subpath of the current state is traced once, and each of `tries` candidates moves
+//      only the light stream (a light subpath and the connections each), deposited and chosen
+//      as in 3.
+// Every step deposits total weight 1, so the scheduler's W H / steps normalisation holds.
 
 #include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/cmlt_settings.h"
 #include "render/progressive/cmlt/lens_mutation.h"
+#include "render/progressive/cmlt/path_lens.h"
 #include "render/progressive/mlt/mlt_chain.h"
 
 namespace lucerna {
@@ -39,8 +47,8 @@ class CmltChain final : public MltChain {
 public:
     CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed);
 
-    // Alternates one MLT step (a new seed) with settings.lensSteps lens steps and
-    // settings.causticSteps caustic steps, until `steps`.
+    // Alternates one MLT step (a new seed) with settings.lensSteps lens steps,
+    // settings.causticSteps caustic steps and a path-space lens sub-chain, until `steps`.
     int run(int steps, double scale, std::vector<FilmSplat>& out) override;
 
 private:
@@ -48,9 +56,16 @@ private:
     // lightSubpathCurrent: the tracer holds the current state's light subpath.
     int lensStep(double scale, bool lightSubpathCurrent, std::vector<FilmSplat>& out);
     int causticStep(double scale, std::vector<FilmSplat>& out);
-    // Step 3 over candidates_: deposits every candidate and the competitor by their expected
-    // values, then draws the move (which candidate, accepted or not).
-    LensMove depositAndChoose(double scale, std::vector<FilmSplat>& out);
+    // The path-space lens sub-chain (step 2) of settings.pathLensSteps steps; returns the steps made.
+    int pathLensSubChain(double scale, std::vector<FilmSplat>& out);
+    // Room for p candidates, recording their paths as the state does.
+    void prepareCandidates(int p);
+    // Step 2's proposals: p raster points around x (rasters_) and the closest hits of their
+    // camera rays (hits_), traced as one packet; room for p candidates.
+    void proposeRasters(const V2f& x, int p);
+    // Step 3 over candidates_ against the current state `cur`: deposits every candidate and the
+    // competitor by their expected values, then draws the move (which candidate, accepted or not).
+    LensMove depositAndChoose(const PathContribution& cur, double scale, std::vector<FilmSplat>& out);
 
     const RenderScene& scene_;
     CmltSettings settings_;
@@ -60,6 +75,10 @@ private:
     std::vector<PathContribution> candidates_;
     std::vector<double> candidateF_;
     CausticTries causticTries_;
+    VertexDensities densities_;
+    LensPath lensPath_;
+    PathContribution lensState_;  // the path-space sub-chain's current path
+    std::vector<PathVertex> pathVertices_;
 };
 
 }  // namespace lucerna

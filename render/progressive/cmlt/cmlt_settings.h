@@ -7,20 +7,24 @@ namespace lucerna {
 
 struct CmltSettings {
     MltSettings mlt;          // step 1: the chain that explores path space and yields seeds
-    // Defaults by measurement at equal time (BENCHMARKS.md, issue 4, session 6): on the door
-    // scene two single-try lens steps reach mlt's error about 2x sooner, four tries of one step
-    // 1.3x: the candidates of one step are strongly correlated, and on a CPU a packet of a few
-    // camera rays saves little, while every lens step reuses the light subpath.
-    int lensSteps = 2;        // step 2: lens sub-chain steps around each seed
-    int tries = 1;            // candidates per lens or caustic step, their camera rays one packet
-    float sigmaPixels = 4.0f; // the lens perturbation's Gaussian, in pixels
-    // Caustic sub-chain steps around each seed (caustic_mutation.h), after the lens steps: the
-    // light stream moves, the camera subpath is traced once for all `tries` candidates. Off:
-    // it made the door and caustic scenes 1.7 to 2.3 times worse at equal time.
+    // Defaults by measurement at equal time (BENCHMARKS.md, issue 4, session 8): 16 path-space
+    // lens steps a seed reach mlt's error about 5 times sooner on the door scene and 1.7 times
+    // on the caustic scene; 8 or 32 steps, four tries a step, or primary-sample-space lens
+    // steps besides, did no better on both.
+    int pathLensSteps = 16;   // step 2: path-space lens sub-chain steps around each seed (path_lens.h)
+    int tries = 1;            // candidates a step (all lens kinds), their camera rays one packet
+    float sigmaPixels = 4.0f; // the lens perturbations' Gaussian, in pixels
+    // Primary-sample-space lens steps on the chain before the path-space sub-chain (the whole
+    // sample traced again at the moved raster point, the light subpath and its splats reused).
+    // Off: with the path-space steps they no longer paid (session 6 default: 2).
+    int lensSteps = 0;
+    // Caustic steps on the chain after the lens steps (caustic_mutation.h): the light stream
+    // moves, the camera subpath is traced once for all `tries` candidates. Off: it made the door
+    // and caustic scenes 1.7 to 2.3 times worse at equal time.
     int causticSteps = 0;
 
-    // Reads "lens_steps", "tries", "sigma_pixels", "caustic_steps" and mlt's own options; throws
-    // std::invalid_argument on bad values.
+    // Reads "path_lens_steps", "tries", "sigma_pixels", "lens_steps", "caustic_steps" and mlt's
+    // own options; throws std::invalid_argument on bad values.
     static CmltSettings fromOptions(const RenderSettings& settings);
 };
 

@@ -16,6 +16,8 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
     lensAccepted += o.lensAccepted;
     causticSteps += o.causticSteps;
     causticAccepted += o.causticAccepted;
+    pathLensSteps += o.pathLensSteps;
+    pathLensAccepted += o.pathLensAccepted;
     largeStepSum += o.largeStepSum;
     return *this;
 }
@@ -46,6 +48,7 @@ V2f rasterPoint(const Sensor& camera, const V2f& u) {
 }
 
 void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler, PathContribution& out) {
+    tracer.recordPaths(out.recordPaths ? &out.paths : nullptr);
     out.deposits.clear();
     out.f = 0;
     const V2f r = rasterPoint(camera, sampler.next2D());
@@ -53,6 +56,7 @@ void evaluatePath(BdptTracer& tracer, const Sensor& camera, PssSampler& sampler,
 }
 
 void evaluateLightSideAt(BdptTracer& tracer, float x, float y, PssSampler& sampler, PathContribution& out) {
+    tracer.recordPaths(out.recordPaths ? &out.paths : nullptr);
     out.deposits.clear();
     out.f = 0;
     sampler.next2D();  // the raster point's numbers: keeps every later dimension where it was
@@ -61,16 +65,18 @@ void evaluateLightSideAt(BdptTracer& tracer, float x, float y, PssSampler& sampl
 
 void evaluatePathAt(BdptTracer& tracer, float x, float y, const std::optional<SurfacePoint>& primaryHit,
                     bool reuseLightSubpath, PssSampler& sampler, PathContribution& out) {
+    tracer.recordPaths(out.recordPaths ? &out.paths : nullptr);
     out.deposits.clear();
     out.f = 0;
     sampler.next2D();  // the raster point's numbers: keeps every later dimension where it was
     finish(tracer.sample(x, y, primaryHit, reuseLightSubpath, sampler, out.deposits), x, y, out);
 }
 
-MltChain::MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed)
+MltChain::MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed, bool recordPaths)
     : camera_(scene.camera()), tracer_(scene, settings.bdpt),
       sampler_(bootstrapSeed, settings.sigma, settings.largeStepProbability),
       causticProbability_(settings.causticProbability) {
+    current_.recordPaths = proposed_.recordPaths = recordPaths;
     sampler_.startLargeStep();
     evaluatePath(tracer_, camera_, sampler_, current_);
     sampler_.accept();

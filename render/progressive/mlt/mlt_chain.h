@@ -25,6 +25,8 @@ namespace lucerna {
 struct PathContribution {
     std::vector<FilmSplat> deposits;  // the camera sample at its pixel and the light splats
     double f = 0;                     // sum of their luminances: the chain's target
+    bool recordPaths = false;         // whether evaluating it fills `paths`
+    SampledPaths paths;               // the paths behind the deposits (BdptTracer::recordPaths)
 };
 
 // Evaluates the BDPT sample that `sampler`'s current iteration maps to.
@@ -51,6 +53,7 @@ struct ChainCounters {
     long long largeSteps = 0, largeAccepted = 0;  // of those, Kelemen's large steps
     long long lensSteps = 0, lensAccepted = 0;    // cmlt's lens sub-chain steps
     long long causticSteps = 0, causticAccepted = 0;  // light-stream-only small steps
+    long long pathLensSteps = 0, pathLensAccepted = 0;  // cmlt's path-space lens sub-chain steps
     double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
     ChainCounters& operator+=(const ChainCounters& o);
 };
@@ -58,8 +61,9 @@ struct ChainCounters {
 class MltChain {
 public:
     // A chain whose first state is the bootstrap sample drawn with seed `bootstrapSeed` (the
-    // sampler's first large step replays it exactly).
-    MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed);
+    // sampler's first large step replays it exactly). With recordPaths, every state keeps the
+    // paths behind it (current().paths).
+    MltChain(const RenderScene& scene, const MltSettings& settings, uint64_t bootstrapSeed, bool recordPaths = false);
     virtual ~MltChain() = default;
 
     // At least `steps` steps, each depositing its expected value (total weight 1) scaled by
