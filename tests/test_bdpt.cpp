@@ -1,12 +1,15 @@
 // The bdpt backend on its own: light tracing alone (the t = 1 strategies, splatted) against path
 // tracing, the full estimator against path tracing on a scene with every material and light type
 // (a check of the MIS weights: a wrong weight is a bias there), the Pc estimate against a closed
-// form, reproducibility, and no NaN or infinity on the hard cases.
+// form, reproducibility, no NaN or infinity on the hard cases, and no roulette at delta bounces
+// (an emitter seen through a stack of glass panes is never brighter than itself).
 
 #include "closed_form_scenes.h"
 #include "core/scene_io.h"
 #include "hard_case_scenes.h"
 #include "render/progressive/bdpt/bdpt_backend.h"
+#include "render/progressive/bdpt/bdpt_tracer.h"
+#include "render/trace/rng.h"
 #include "render/trace/render_scene.h"
 #include "render_helpers.h"
 
@@ -94,6 +97,7 @@ private slots:
     void reproducibleAcrossThreadCounts();
     void hardCasesStayFinite_data();
     void hardCasesStayFinite();
+    void deltaBouncesAreNotRouletted();
 };
 
 void TestBdpt::lightTracingMatchesPathTracing() {
@@ -181,6 +185,47 @@ void TestBdpt::hardCasesStayFinite() {
         QCOMPARE(nonFinitePixels(f.image), 0L);
         QVERIFY(std::isfinite(f.image.mean()));
     }
+}
+
+// A camera subpath through four glass panes (eight delta bounces, past the roulette's start
+// depth) to an emitter: each bounce's weight is 1 (Fresnel chooses the branch), so the emitter
+// seen that way (s = 0) contributes at most its radiance. A roulette at those bounces would
+// divide the throughput by 0.95 each time; a Metropolis chain stalls on such inflated paths.
+void TestBdpt::deltaBouncesAreNotRouletted() {
+    // Each pane: a face toward the camera (front -z) and one away from it (front +z), so that the
+    // glass lies between them.
+    std::string panes;
+    for (int i = 0; i < 4; ++i)
+        for (const bool back : {false, true}) {
+            const std::string z = std::to_string(0.2 * i + (back ? 0.05 : 0.0));
+            const std::string a = "[-2,-2," + z + "]", b = back ? "[2,-2," + z + "]" : "[-2,2," + z + "]",
+                              c = "[2,2," + z + "]", d = back ? "[-2,2," + z + "]" : "[2,-2," + z + "]";
+            panes += R"({"name": "pane)" + std::to_string(2 * i + back) + R"(", "material": "glass", "mesh": {"quad": [)" +
+                     a + "," + b + "," + c + "," + d + "]}},";
+        }
+    const SceneSnapshot snapshot = sceneFromJson(R"({"lucerna": 1,
+      "camera": {"position": [0, 0, -1], "target": [0, 0, 1], "fov_y": 30, "resolution": [16, 16]},
+      "materials": {"glass": {"type": "dielectric", "ior": 1.5}, "lamp": {"type": "emitter", "radiance": [10, 10, 10]}},
+      "objects": [)" + panes + R"({"name": "lamp", "material": "lamp", "mesh": {"quad": [[-3,-3,2],[-3,3,2],[3,3,2],[3,-3,2]]}}]})");
+    const RenderScene scene(snapshot, 0, 0);
+    BdptTracer tracer(scene, BdptSettings{});
+    SampledPaths paths;
+    tracer.recordPaths(&paths);
+    Rng rng(3, 0);
+    std::vector<FilmSplat> splats;
+    int seen = 0;
+    for (int i = 0; i < 4000; ++i) {
+        const V2f r = rng.next2D() * 16.0f;
+        tracer.sample(r.x, r.y, rng, splats);
+        for (const StrategyRecord& rec : paths.strategies) {
+            if (rec.s != 0 || rec.t < 8) continue;
+            ++seen;
+            const float unweighted = luminance(rec.weighted) / rec.misWeight;
+            QVERIFY2(unweighted <= 10.0f * 1.0001f, qPrintable(QString("emitter seen through %1 delta bounces: %2 against 10")
+                                                                   .arg(rec.t - 2).arg(unweighted)));
+        }
+    }
+    QVERIFY2(seen > 1000, qPrintable(QString("only %1 paths through all the panes").arg(seen)));
 }
 
 QTEST_GUILESS_MAIN(TestBdpt)

@@ -37,6 +37,24 @@ using namespace lucerna::test;
 
 namespace {
 
+// Coloured diffuse, glossy, mirror and glass under a small coloured area light, 40 x 30.
+const std::string kColouredSpecularScene = R"({"lucerna": 1,
+      "camera": {"position": [0, 1.2, -3], "target": [0, 0.5, 0], "fov_y": 50, "resolution": [40, 30]},
+      "materials": {"floor": {"type": "glossy", "albedo": [0.5, 0.3, 0.2], "specular": [0.4, 0.5, 0.6], "roughness": 0.2},
+                    "wall": {"type": "diffuse", "albedo": [0.7, 0.6, 0.3]},
+                    "blue": {"type": "diffuse", "albedo": [0.2, 0.3, 0.7]},
+                    "chrome": {"type": "mirror", "reflectance": [0.9, 0.7, 0.5]},
+                    "glass": {"type": "dielectric", "ior": 1.5},
+                    "lamp": {"type": "emitter", "radiance": [30, 24, 12]}},
+      "objects": [
+        {"name": "floor", "material": "floor", "mesh": {"quad": [[2,0,-4],[-2,0,-4],[-2,0,2],[2,0,2]]}},
+        {"name": "back", "material": "blue", "mesh": {"quad": [[2,0,2],[-2,0,2],[-2,2.5,2],[2,2.5,2]]}},
+        {"name": "ceiling", "material": "wall", "mesh": {"quad": [[2,2.5,-4],[2,2.5,2],[-2,2.5,2],[-2,2.5,-4]]}},
+        {"name": "lamp", "material": "lamp", "mesh": {"quad": [[0.2,2.49,0],[0.2,2.49,0.4],[-0.2,2.49,0.4],[-0.2,2.49,0]]}},
+        {"name": "mirror", "material": "chrome", "mesh": {"quad": [[0.4,0,1],[0.4,1.6,1],[1.2,1.6,0.6],[1.2,0,0.6]]}},
+        {"name": "glass", "material": "glass", "mesh": {"vertices": [[-0.8,0.05,0],[-0.2,0.05,0],[-0.5,0.05,0.5],[-0.5,0.8,0.2]],
+                                                        "triangles": [[0,2,1],[0,1,3],[1,2,3],[2,0,3]]}}]})";
+
 // A Gaussian bump and a ridge on a floor over [0,1]^2; normalised numerically.
 double target(double x, double y) {
     const double dx = x - 0.3, dy = y - 0.65;
@@ -187,6 +205,7 @@ private slots:
     void reusedLightSubpathMatchesFreshSample_data();
     void reusedLightSubpathMatchesFreshSample();
     void pathLensReproducesRecordedPaths();
+    void cmltMatchesBdptThroughMirrorsAndGlass();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -387,23 +406,7 @@ void TestMlt::reusedLightSubpathMatchesFreshSample() {
 // unweighted contribution is F / p: p the light point's area density for next-event paths
 // (s = 1), 1 for emitters seen directly or through mirrors (s = 0).
 void TestMlt::pathLensReproducesRecordedPaths() {
-    // Coloured diffuse, glossy, mirror and glass under a small coloured area light.
-    const SceneSnapshot snapshot = sceneFromJson(R"({"lucerna": 1,
-      "camera": {"position": [0, 1.2, -3], "target": [0, 0.5, 0], "fov_y": 50, "resolution": [40, 30]},
-      "materials": {"floor": {"type": "glossy", "albedo": [0.5, 0.3, 0.2], "specular": [0.4, 0.5, 0.6], "roughness": 0.2},
-                    "wall": {"type": "diffuse", "albedo": [0.7, 0.6, 0.3]},
-                    "blue": {"type": "diffuse", "albedo": [0.2, 0.3, 0.7]},
-                    "chrome": {"type": "mirror", "reflectance": [0.9, 0.7, 0.5]},
-                    "glass": {"type": "dielectric", "ior": 1.5},
-                    "lamp": {"type": "emitter", "radiance": [30, 24, 12]}},
-      "objects": [
-        {"name": "floor", "material": "floor", "mesh": {"quad": [[2,0,-4],[-2,0,-4],[-2,0,2],[2,0,2]]}},
-        {"name": "back", "material": "blue", "mesh": {"quad": [[2,0,2],[-2,0,2],[-2,2.5,2],[2,2.5,2]]}},
-        {"name": "ceiling", "material": "wall", "mesh": {"quad": [[2,2.5,-4],[2,2.5,2],[-2,2.5,2],[-2,2.5,-4]]}},
-        {"name": "lamp", "material": "lamp", "mesh": {"quad": [[0.2,2.49,0],[0.2,2.49,0.4],[-0.2,2.49,0.4],[-0.2,2.49,0]]}},
-        {"name": "mirror", "material": "chrome", "mesh": {"quad": [[0.4,0,1],[0.4,1.6,1],[1.2,1.6,0.6],[1.2,0,0.6]]}},
-        {"name": "glass", "material": "glass", "mesh": {"vertices": [[-0.8,0.05,0],[-0.2,0.05,0],[-0.5,0.05,0.5],[-0.5,0.8,0.2]],
-                                                        "triangles": [[0,2,1],[0,1,3],[1,2,3],[2,0,3]]}}]})");
+    const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
     const RenderScene scene(snapshot, 0, 0);
     const Sensor& camera = scene.camera();
     BdptTracer tracer(scene, BdptSettings{});
@@ -459,6 +462,36 @@ void TestMlt::pathLensReproducesRecordedPaths() {
           throughSpecular, valued, missed);
     QVERIFY(built > 1000 && throughSpecular > 50 && valued > 200);
     QVERIFY(missed < built / 100);
+}
+
+// The whole estimator on the coloured scene, where paths reach the camera through the mirror and
+// the glass: cmlt's image (its path-space lens sub-chains doing most of the deposits) against
+// bdpt's, block by block (5 x 5 pixels) and in the mean.
+void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
+    const SceneSnapshot scene = sceneFromJson(kColouredSpecularScene);
+    RenderSettings s;
+    s.seed = 5;
+    s.spp = 512;
+    const Image bdpt = renderFrame("bdpt", scene, s).image;
+    s.spp = 2048;
+    const Image cmlt = renderFrame("cmlt", scene, s).image;
+    const int b = 5;
+    double worst = 0, sumC = 0, sumB = 0;
+    for (int by = 0; by + b <= bdpt.height; by += b)
+        for (int bx = 0; bx + b <= bdpt.width; bx += b) {
+            double c = 0, r = 0;
+            for (int y = by; y < by + b; ++y)
+                for (int x = bx; x < bx + b; ++x) {
+                    c += luminance(cmlt.at(x, y));
+                    r += luminance(bdpt.at(x, y));
+                }
+            worst = std::max(worst, std::abs(c / r - 1.0));
+            sumC += c;
+            sumB += r;
+        }
+    qInfo("mean cmlt / bdpt %.4f, worst 5x5 block %.1f%%", sumC / sumB, 100 * worst);
+    QVERIFY(std::abs(sumC / sumB - 1.0) < 0.02);
+    QVERIFY(worst < 0.1);
 }
 
 void TestMlt::hardCasesStayFinite() {
