@@ -404,7 +404,8 @@ void TestMlt::reusedLightSubpathMatchesFreshSample() {
 // point, is that path again: the same colour as its contribution (every BSDF, the light and the
 // mirror tints on it), and where the rest R is the light alone, the same value. There the
 // unweighted contribution is F / p: p the light point's area density for next-event paths
-// (s = 1), 1 for emitters seen directly or through mirrors (s = 0).
+// (s = 1), 1 for emitters seen directly (s = 0), times the probabilities of the glass branches
+// on the way (so a Fresnel factor swapped or left out of the perturbation's chain shows).
 void TestMlt::pathLensReproducesRecordedPaths() {
     const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
     const RenderScene scene(snapshot, 0, 0);
@@ -413,7 +414,7 @@ void TestMlt::pathLensReproducesRecordedPaths() {
     const VertexDensities densities(scene);
     LensPath lens(scene, densities);
     std::vector<PathVertex> path;
-    int built = 0, throughSpecular = 0, valued = 0, missed = 0;
+    int built = 0, throughSpecular = 0, throughGlass = 0, valued = 0, valuedThroughGlass = 0, missed = 0;
     for (int i = 0; i < 2000; ++i) {
         PssSampler sampler(uint64_t(i) + 1, 0.01f, 0.3f);
         sampler.startLargeStep();
@@ -435,12 +436,24 @@ void TestMlt::pathLensReproducesRecordedPaths() {
                          qPrintable(QString("sample %1, strategy (%2, %3): colour %4 %5 %6 against %7 %8 %9")
                                         .arg(i).arg(r.s).arg(r.t).arg(c[0]).arg(c[1]).arg(c[2])
                                         .arg(want[0]).arg(want[1]).arg(want[2])));
-            bool glass = false, specular = false;
+            // The specular chain from the camera, and the probability with which the sampler chose
+            // each of its glass branches (Fresnel's: the sampled weight is 1), from the vertices.
+            bool specular = false;
+            int glass = 0;
+            double branches = 1;
             for (int j = 1; j + 1 < int(path.size()) && path[size_t(j)].delta; ++j) {
                 specular = true;
-                glass = glass || scene.material(path[size_t(j)].sp.material).type == MaterialType::Dielectric;
+                const PathVertex& v = path[size_t(j)];
+                const ShadingMaterial& mat = scene.material(v.sp.material);
+                if (mat.type != MaterialType::Dielectric) continue;
+                ++glass;
+                const float cosFrom = v.sp.ng.dot((path[size_t(j - 1)].p() - v.p()).normalized());
+                const float cosTo = v.sp.ng.dot((path[size_t(j + 1)].p() - v.p()).normalized());
+                const float fr = fresnelDielectric(std::abs(cosFrom), cosFrom >= 0 ? mat.ior : 1.0f / mat.ior);
+                branches *= cosFrom * cosTo < 0 ? 1.0 - fr : fr;
             }
             throughSpecular += specular;
+            throughGlass += glass > 0;
             // The value: where nothing but the light follows the first diffuse vertex.
             const bool nextEvent = r.s == 1 && r.t >= 2 && !path[size_t(r.t - 1)].delta;
             const bool emitterSeen = r.s == 0 && path.size() >= 2 && [&] {
@@ -450,17 +463,20 @@ void TestMlt::pathLensReproducesRecordedPaths() {
             }();
             bool firstDiffuseAtT = true;
             for (int j = 1; j < r.t - 1; ++j) firstDiffuseAtT = firstDiffuseAtT && path[size_t(j)].delta;
-            if (glass || !(emitterSeen || (nextEvent && firstDiffuseAtT))) continue;
-            const double p = r.s == 1 ? double(r.sampled.pdfFwd) : 1.0;
+            if (!(emitterSeen || (nextEvent && firstDiffuseAtT))) continue;
+            // F = unweighted contribution times the path's density: the light point's (s = 1) and
+            // the glass branches'.
+            const double p = (r.s == 1 ? double(r.sampled.pdfFwd) : 1.0) * branches;
             QVERIFY2(std::abs(luminance(c) / (luminance(want) * p) - 1.0) < 1e-3,
                      qPrintable(QString("sample %1, strategy (%2, %3): F %4 against %5")
                                     .arg(i).arg(r.s).arg(r.t).arg(luminance(c)).arg(luminance(want) * p)));
+            valuedThroughGlass += glass > 0;
             ++valued;
         }
     }
-    qInfo("%d paths built, %d of them through mirrors or glass, %d values checked, %d missed", built,
-          throughSpecular, valued, missed);
-    QVERIFY(built > 1000 && throughSpecular > 50 && valued > 200);
+    qInfo("%d paths built, %d of them through mirrors or glass (%d glass), %d values checked (%d through glass), "
+          "%d missed", built, throughSpecular, throughGlass, valued, valuedThroughGlass, missed);
+    QVERIFY(built > 1000 && throughSpecular > 50 && throughGlass > 20 && valued > 200 && valuedThroughGlass > 10);
     QVERIFY(missed < built / 100);
 }
 
@@ -490,8 +506,11 @@ void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
             sumB += r;
         }
     qInfo("mean cmlt / bdpt %.4f, worst 5x5 block %.1f%%", sumC / sumB, 100 * worst);
+    // As test_closed_form bounds the Metropolis backends' 8x8 blocks: their chains' noise in a dim
+    // block reaches several percent at this work (8.3% measured here), while a specular factor
+    // wrong on the lens perturbation's chain (a Fresnel term missing or swapped) is off by far more.
     QVERIFY(std::abs(sumC / sumB - 1.0) < 0.02);
-    QVERIFY(worst < 0.1);
+    QVERIFY(worst < 0.15);
 }
 
 void TestMlt::hardCasesStayFinite() {
