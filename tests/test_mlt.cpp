@@ -20,6 +20,7 @@
 #include "hard_case_scenes.h"
 #include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/lens_mutation.h"
+#include "render/progressive/cmlt/path_caustic.h"
 #include "render/progressive/cmlt/path_lens.h"
 #include "render/progressive/mlt/mlt_chain.h"
 #include "render/trace/render_scene.h"
@@ -352,21 +353,7 @@ void TestMlt::reusedLightSubpathMatchesFreshSample_data() {
 void TestMlt::reusedLightSubpathMatchesFreshSample() {
     QFETCH(bool, sensors);
     // Glossy, diffuse, mirror and glass under a small area light: long subpaths of every kind.
-    const SceneSnapshot snapshot = sceneFromJson(R"({"lucerna": 1,
-      "camera": {"position": [0, 1.2, -3], "target": [0, 0.5, 0], "fov_y": 50, "resolution": [40, 30]},
-      "materials": {"floor": {"type": "glossy", "albedo": [0.3, 0.3, 0.3], "specular": [0.5, 0.5, 0.5], "roughness": 0.15},
-                    "wall": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
-                    "chrome": {"type": "mirror", "reflectance": [0.9, 0.9, 0.9]},
-                    "glass": {"type": "dielectric", "ior": 1.5},
-                    "lamp": {"type": "emitter", "radiance": [30, 30, 30]}},
-      "objects": [
-        {"name": "floor", "material": "floor", "mesh": {"quad": [[2,0,-4],[-2,0,-4],[-2,0,2],[2,0,2]]}},
-        {"name": "back", "material": "wall", "mesh": {"quad": [[2,0,2],[-2,0,2],[-2,2.5,2],[2,2.5,2]]}},
-        {"name": "ceiling", "material": "wall", "mesh": {"quad": [[2,2.5,-4],[2,2.5,2],[-2,2.5,2],[-2,2.5,-4]]}},
-        {"name": "lamp", "material": "lamp", "mesh": {"quad": [[0.2,2.49,0],[0.2,2.49,0.4],[-0.2,2.49,0.4],[-0.2,2.49,0]]}},
-        {"name": "mirror", "material": "chrome", "mesh": {"quad": [[0.4,0,1],[0.4,1,1],[1.2,1,0.6],[1.2,0,0.6]]}},
-        {"name": "glass", "material": "glass", "mesh": {"vertices": [[-0.8,0.05,0],[-0.2,0.05,0],[-0.5,0.05,0.5],[-0.5,0.8,0.2]],
-                                                        "triangles": [[0,2,1],[0,1,3],[1,2,3],[2,0,3]]}}]})");
+    const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
     const Sensor sensor({{V3f(0, 0.01f, 0), V3f(0, 1, 0)}, {V3f(1, 0.01f, -1), V3f(0, 1, 0)}, {V3f(0, 1, 1.99f), V3f(0, 0, -1)}}, 4);
     const RenderScene scene(snapshot, 0, 0, sensors ? &sensor : nullptr);
     const Sensor& camera = scene.camera();
@@ -413,7 +400,37 @@ void TestMlt::pathLensReproducesRecordedPaths() {
     BdptTracer tracer(scene, BdptSettings{});
     const VertexDensities densities(scene);
     LensPath lens(scene, densities);
+    CausticPath caustic(scene, densities);
     std::vector<PathVertex> path;
+    // A caustic seen directly, from light tracing (t = 1): the caustic perturbation's F at the
+    // path's own emission direction is the unweighted splat times the densities of the light
+    // point, of the emission direction and of the glass branches, and lands where the splat did.
+    int caustics = 0, causticValues = 0;
+    const auto checkCaustic = [&](const StrategyRecord& r) {
+        ++caustics;
+        float x = 0, y = 0;
+        const Rgb c = caustic.contribution(caustic.direction(), x, y);
+        if (r.t != 1 || !(luminance(c) > 0)) return;
+        const size_t k = path.size() - 1;
+        const PathVertex &light = path[k], &first = path[k - 1];
+        const V3f d = first.p() - light.p();
+        const double pdfDirection = densities.pdfLight(light, first) * d.length2() / std::abs(first.sp.ng.dot(d.normalized()));
+        double branches = 1;
+        for (size_t j = 2; j < k; ++j) {
+            const PathVertex& v = path[j];
+            const ShadingMaterial& mat = scene.material(v.sp.material);
+            if (mat.type != MaterialType::Dielectric) continue;
+            const float cosFrom = v.sp.ng.dot((path[j + 1].p() - v.p()).normalized());  // the light's side
+            const float cosTo = v.sp.ng.dot((path[j - 1].p() - v.p()).normalized());
+            const float fr = fresnelDielectric(std::abs(cosFrom), cosFrom >= 0 ? mat.ior : 1.0f / mat.ior);
+            branches *= cosFrom * cosTo < 0 ? 1.0 - fr : fr;
+        }
+        const double want = luminance(r.weighted / r.misWeight) / light.beta.x * pdfDirection * branches;
+        QVERIFY2(std::abs(luminance(c) / want - 1.0) < 1e-3 && std::abs(x - r.rasterX) < 1e-2f && std::abs(y - r.rasterY) < 1e-2f,
+                 qPrintable(QString("caustic (%1, %2): F %3 against %4, at %5 %6 against %7 %8")
+                                .arg(r.s).arg(r.t).arg(luminance(c)).arg(want).arg(x).arg(y).arg(r.rasterX).arg(r.rasterY)));
+        ++causticValues;
+    };
     int built = 0, throughSpecular = 0, throughGlass = 0, valued = 0, valuedThroughGlass = 0, missed = 0;
     for (int i = 0; i < 2000; ++i) {
         PssSampler sampler(uint64_t(i) + 1, 0.01f, 0.3f);
@@ -423,6 +440,10 @@ void TestMlt::pathLensReproducesRecordedPaths() {
         evaluatePath(tracer, camera, sampler, state);
         for (const StrategyRecord& r : state.paths.strategies) {
             state.paths.path(r, path);
+            if (caustic.build(path)) {
+                checkCaustic(r);
+                continue;
+            }
             if (!lens.build(path)) continue;
             ++built;
             const Rgb c = lens.contribution(r.rasterX, r.rasterY, scene.intersect(camera.ray(r.rasterX, r.rasterY)));
@@ -476,7 +497,9 @@ void TestMlt::pathLensReproducesRecordedPaths() {
     }
     qInfo("%d paths built, %d of them through mirrors or glass (%d glass), %d values checked (%d through glass), "
           "%d missed", built, throughSpecular, throughGlass, valued, valuedThroughGlass, missed);
+    qInfo("%d caustics seen directly, %d of their values checked", caustics, causticValues);
     QVERIFY(built > 1000 && throughSpecular > 50 && throughGlass > 20 && valued > 200 && valuedThroughGlass > 10);
+    QVERIFY(caustics > 20 && causticValues > 10);
     QVERIFY(missed < built / 100);
 }
 

@@ -8,9 +8,9 @@
 //   - Light that reaches what the camera sees mostly indirectly (a room lit through a door ajar):
 //     coherent Metropolis light transport, whose chains stay on the few paths that come through
 //     (door scene, time to bdpt's 30 s error: cmlt 3.0 s; mlt about equal to bdpt; 60 s: bdpt
-//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene cmlt is no
-//     faster than bdpt (time ratios 1.1 and 0.47), on the Cornell box the path tracer is 4 to 5
-//     times faster than cmlt.
+//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene bdpt stays
+//     ahead of cmlt (time ratio 0.69 in two runs), on the Cornell box the path tracer 4 to 5
+//     times (BENCHMARKS.md, issue 4, session 8).
 //   - Otherwise (diffuse and glossy surfaces lit mostly directly): the path tracer with
 //     next-event estimation converges fastest (Cornell box, 60 s: path 3.4e-4, bdpt 4.3e-4).
 

@@ -25,9 +25,9 @@ constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_st
                                             "norm_stride", "max_bounces", "clamp",   "compensate"};
 constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations", "large_step", "sigma",
                                             "caustic",   "max_depth", "rr_depth",  "strategies"};
-constexpr std::string_view kCmltOptions[] = {"lens_steps", "tries",      "sigma_pixels", "caustic_steps", "path_lens_steps",
-                                             "bootstrap",  "chains",     "mutations",    "large_step",    "sigma",
-                                             "caustic",    "max_depth",  "rr_depth",     "strategies"};
+constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
+                                             "caustic_steps",   "bootstrap", "chains",       "mutations",     "large_step",
+                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
 constexpr std::string_view kPreviewOptions[] = {"vpls",    "clamp",      "area_samples", "unroll", "pattern",
                                                 "visibility", "blur",    "split",        "vpl_source"};
 

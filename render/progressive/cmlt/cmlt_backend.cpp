@@ -15,6 +15,7 @@ CmltSettings CmltSettings::fromOptions(const RenderSettings& settings) {
     readOption(settings, "lens_steps", s.lensSteps, 0, 10000);
     readOption(settings, "tries", s.tries, 1, 64);
     readOption(settings, "sigma_pixels", s.sigmaPixels, 1e-3, 1e4);
+    readOption(settings, "caustic_sigma", s.causticSigma, 1e-5, 1);
     readOption(settings, "caustic_steps", s.causticSteps, 0, 10000);
     readOption(settings, "path_lens_steps", s.pathLensSteps, 0, 10000);
     return s;

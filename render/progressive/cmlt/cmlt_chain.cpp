@@ -8,7 +8,7 @@ namespace lucerna {
 
 CmltChain::CmltChain(const RenderScene& scene, const CmltSettings& settings, uint64_t bootstrapSeed)
     : MltChain(scene, settings.mlt, bootstrapSeed, settings.pathLensSteps > 0), scene_(scene), settings_(settings),
-      densities_(scene), lensPath_(scene, densities_) {}
+      densities_(scene), lensPath_(scene, densities_), causticPath_(scene, densities_) {}
 
 int CmltChain::run(int steps, double scale, std::vector<FilmSplat>& out) {
     int made = 0;
@@ -144,19 +144,26 @@ int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
     if (!seed) return 0;  // (only where nothing is recorded: light tracing alone)
     const int p = std::max(1, settings_.tries), made = settings_.pathLensSteps * p;
     counters_.steps += made;
-    counters_.pathLensSteps += made;
     current().paths.path(*seed, pathVertices_);
-    V2f x(seed->rasterX, seed->rasterY);
-    if (lensPath_.build(pathVertices_))
-        asDeposit(camera_, x.x, x.y, lensPath_.contribution(x.x, x.y, scene_.intersect(camera_.ray(x.x, x.y))), lensState_);
-    else
-        lensState_.f = 0;
-    if (!(lensState_.f > 0)) {
+    if (lensSubChain(*seed, p, scale, out)) {
+        counters_.pathLensSteps += made;
+    } else if (causticSubChain(p, scale, out)) {
+        counters_.pathCausticSteps += made;
+    } else {
         // No perturbation moves this path: every step stays on it.
-        asDeposit(camera_, x.x, x.y, seed->weighted, lensState_);
+        counters_.pathLensSteps += made;
+        asDeposit(camera_, seed->rasterX, seed->rasterY, seed->weighted, lensState_);
         depositContribution(lensState_, scale * made / lensState_.f, out);
-        return made;
     }
+    return made;
+}
+
+bool CmltChain::lensSubChain(const StrategyRecord& seed, int p, double scale, std::vector<FilmSplat>& out) {
+    if (!lensPath_.build(pathVertices_)) return false;
+    V2f x(seed.rasterX, seed.rasterY);
+    const Rgb c = lensPath_.contribution(x.x, x.y, scene_.intersect(camera_.ray(x.x, x.y)));
+    asDeposit(camera_, x.x, x.y, c, lensState_);
+    if (!(lensState_.f > 0)) return false;
     for (int step = 0; step < settings_.pathLensSteps; ++step) {
         proposeRasters(x, p);
         for (int i = 0; i < p; ++i) {
@@ -170,7 +177,32 @@ int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
             counters_.pathLensAccepted += p;
         }
     }
-    return made;
+    return true;
+}
+
+bool CmltChain::causticSubChain(int p, double scale, std::vector<FilmSplat>& out) {
+    if (!causticPath_.build(pathVertices_)) return false;
+    V3f w = causticPath_.direction();
+    float x = 0, y = 0;
+    const Rgb c = causticPath_.contribution(w, x, y);
+    asDeposit(camera_, x, y, c, lensState_);
+    if (!(lensState_.f > 0)) return false;
+    prepareCandidates(p);
+    directions_.resize(size_t(p));
+    for (int step = 0; step < settings_.pathLensSteps; ++step) {
+        for (int i = 0; i < p; ++i) {
+            directions_[size_t(i)] = perturbDirection(w, settings_.causticSigma, sampler().rng());
+            const Rgb ci = causticPath_.contribution(directions_[size_t(i)], x, y);
+            asDeposit(camera_, x, y, ci, candidates_[size_t(i)]);
+        }
+        const LensMove move = depositAndChoose(lensState_, scale, out);
+        if (move.accepted) {
+            w = directions_[size_t(move.candidate)];
+            std::swap(lensState_, candidates_[size_t(move.candidate)]);
+            counters_.pathCausticAccepted += p;
+        }
+    }
+    return true;
 }
 
 }  // namespace lucerna

@@ -21,9 +21,12 @@
 // The sub-chain leaves the MLT chain's state alone. Its start is distributed as F / b over paths
 // (a path of a state u ~ f / b, chosen with probability f_i(u) / f(u), comes from strategy i
 // with density w_i F / b, and the MIS weights w_i sum to 1), and its steps keep that density, so
-// its deposits estimate the same image, normalised like the chain's own. A path that no lens
-// perturbation moves (its vertex after the first diffuse one on a mirror or glass: caustics seen
-// directly) keeps its steps where it is, depositing them at once.
+// its deposits estimate the same image, normalised like the chain's own. A path that the lens
+// perturbation cannot move because a mirror or glass follows its first diffuse vertex is moved
+// by Veach's caustic perturbation instead when it goes straight on to the light (a caustic seen
+// directly, path_caustic.h: the emission direction turns, the light ray crosses the same
+// specular chain to a new diffuse vertex, which is joined to the sensor); any other path keeps
+// its steps where it is, depositing them at once.
 //
 //   2'. With settings.lensSteps > 0, lens steps in primary sample space on the MLT chain itself
 //      first: only the raster numbers move and the whole sample is traced again, sharing the
@@ -38,6 +41,7 @@
 #include "render/progressive/cmlt/caustic_mutation.h"
 #include "render/progressive/cmlt/cmlt_settings.h"
 #include "render/progressive/cmlt/lens_mutation.h"
+#include "render/progressive/cmlt/path_caustic.h"
 #include "render/progressive/cmlt/path_lens.h"
 #include "render/progressive/mlt/mlt_chain.h"
 
@@ -56,8 +60,13 @@ private:
     // lightSubpathCurrent: the tracer holds the current state's light subpath.
     int lensStep(double scale, bool lightSubpathCurrent, std::vector<FilmSplat>& out);
     int causticStep(double scale, std::vector<FilmSplat>& out);
-    // The path-space lens sub-chain (step 2) of settings.pathLensSteps steps; returns the steps made.
+    // The path-space sub-chain (step 2) of settings.pathLensSteps steps of `tries` candidates;
+    // returns the steps made. Its path (pathVertices_) is moved by the lens perturbation, else by
+    // the caustic perturbation, else not at all; lensSubChain and causticSubChain return false,
+    // having deposited nothing, when theirs cannot move it.
     int pathLensSubChain(double scale, std::vector<FilmSplat>& out);
+    bool lensSubChain(const StrategyRecord& seed, int p, double scale, std::vector<FilmSplat>& out);
+    bool causticSubChain(int p, double scale, std::vector<FilmSplat>& out);
     // Room for p candidates, recording their paths as the state does.
     void prepareCandidates(int p);
     // Step 2's proposals: p raster points around x (rasters_) and the closest hits of their
@@ -77,7 +86,9 @@ private:
     CausticTries causticTries_;
     VertexDensities densities_;
     LensPath lensPath_;
-    PathContribution lensState_;  // the path-space sub-chain's current path
+    CausticPath causticPath_;
+    std::vector<V3f> directions_;  // the caustic candidates' emission directions
+    PathContribution lensState_;   // the path-space sub-chain's current path
     std::vector<PathVertex> pathVertices_;
 };
 

@@ -14,6 +14,7 @@ struct CmltSettings {
     int pathLensSteps = 16;   // step 2: path-space lens sub-chain steps around each seed (path_lens.h)
     int tries = 1;            // candidates a step (all lens kinds), their camera rays one packet
     float sigmaPixels = 4.0f; // the lens perturbations' Gaussian, in pixels
+    float causticSigma = 0.01f;  // the path-space caustic perturbation's turn (Rayleigh scale), radians
     // Primary-sample-space lens steps on the chain before the path-space sub-chain (the whole
     // sample traced again at the moved raster point, the light subpath and its splats reused).
     // Off: with the path-space steps they no longer paid (session 6 default: 2).
@@ -23,8 +24,8 @@ struct CmltSettings {
     // and caustic scenes 1.7 to 2.3 times worse at equal time.
     int causticSteps = 0;
 
-    // Reads "path_lens_steps", "tries", "sigma_pixels", "lens_steps", "caustic_steps" and mlt's
-    // own options; throws std::invalid_argument on bad values.
+    // Reads "path_lens_steps", "tries", "sigma_pixels", "caustic_sigma", "lens_steps",
+    // "caustic_steps" and mlt's own options; throws std::invalid_argument on bad values.
     static CmltSettings fromOptions(const RenderSettings& settings);
 };
 

@@ -1,20 +1,12 @@
 #include "render/progressive/cmlt/path_lens.h"
 
+#include "render/progressive/cmlt/specular_chain.h"
 #include "render/trace/ray_offset.h"
 
 namespace lucerna {
 
 namespace {
 V3f toward(const PathVertex& from, const PathVertex& to) { return (to.p() - from.p()).normalized(); }
-
-// A specular vertex's factor in path space: the mirror's reflectance, glass's Fresnel
-// reflectance or transmittance (the sampled weight is 1 because the branch is chosen by them).
-Rgb specularFactor(const ShadingMaterial& mat, const V3f& woLocal, bool refracted) {
-    if (mat.type == MaterialType::Mirror) return mat.reflectance;
-    const bool outside = woLocal.z >= 0.0f;
-    const float fr = fresnelDielectric(std::abs(woLocal.z), outside ? mat.ior : 1.0f / mat.ior);
-    return Rgb(refracted ? 1.0f - fr : fr);
-}
 }  // namespace
 
 bool LensPath::build(const std::vector<PathVertex>& path) {
@@ -24,11 +16,7 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     while (m_ < k && path[size_t(m_)].delta) ++m_;
     if (path[size_t(m_)].delta) return false;
     refracted_.assign(size_t(m_), false);
-    for (int j = 1; j < m_; ++j) {
-        const PathVertex& v = path[size_t(j)];
-        const float a = v.sp.ng.dot(toward(v, path[size_t(j - 1)])), b = v.sp.ng.dot(toward(v, path[size_t(j + 1)]));
-        refracted_[size_t(j)] = a * b < 0.0f;
-    }
+    for (int j = 1; j < m_; ++j) refracted_[size_t(j)] = refractedAt(path, j);
     endsAtM_ = m_ == k;
     rest_ = Rgb(1, 1, 1);
     if (endsAtM_) return true;
@@ -72,20 +60,7 @@ Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& 
     std::optional<SurfacePoint> traced;
     Rgb throughput(1, 1, 1);  // P
     for (int j = 1; j < m_; ++j) {
-        if (!hit) return Rgb(0, 0, 0);
-        const ShadingMaterial& mat = scene_.material(hit->material);
-        if (!mat.isDelta()) return Rgb(0, 0, 0);
-        const V3f wo = -ray.direction.normalized();
-        const Frame frame(shadingNormalToward(mat, hit->ng, wo));
-        const V3f woLocal = frame.toLocal(wo);
-        BsdfSample bs;
-        // The recorded branch, forced: uLobe 0 reflects whenever glass can, 1 refracts whenever it can.
-        if (!bsdfSample(mat, woLocal, V2f(0, 0), refracted_[size_t(j)] ? 1.0f : 0.0f, bs) ||
-            bs.refracted != refracted_[size_t(j)])
-            return Rgb(0, 0, 0);
-        throughput *= specularFactor(mat, woLocal, bs.refracted);
-        const V3f wi = frame.toWorld(bs.wi);
-        ray = Ray{hit->spawnOrigin(wi), wi};
+        if (!hit || !followSpecular(scene_, *hit, refracted_[size_t(j)], ray, throughput)) return Rgb(0, 0, 0);
         traced = scene_.intersect(ray);
         hit = traced ? &*traced : nullptr;
     }

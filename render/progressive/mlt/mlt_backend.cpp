@@ -85,13 +85,17 @@ public:
         ChainCounters c = halves_[0].counters();
         c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
-        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps;
-        d["mlt_acceptance_small"] = number(rate(
-            c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted - c.pathLensAccepted, smallSteps));
+        const long long smallSteps =
+            c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps - c.pathCausticSteps;
+        d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted -
+                                                    c.pathLensAccepted - c.pathCausticAccepted,
+                                                smallSteps));
         if (c.causticSteps > 0) d["mlt_acceptance_caustic"] = number(rate(c.causticAccepted, c.causticSteps));
         d["mlt_acceptance_large"] = number(rate(c.largeAccepted, c.largeSteps));
         if (c.lensSteps > 0) d["mlt_acceptance_lens"] = number(rate(c.lensAccepted, c.lensSteps));
         if (c.pathLensSteps > 0) d["mlt_acceptance_path_lens"] = number(rate(c.pathLensAccepted, c.pathLensSteps));
+        if (c.pathCausticSteps > 0)
+            d["mlt_acceptance_path_caustic"] = number(rate(c.pathCausticAccepted, c.pathCausticSteps));
         // The spread between the independent halves (each its own chains and b): how far their
         // image means disagree, relative to the combined mean.
         const double m0 = film_->halfImage(0).mean(), m1 = film_->halfImage(1).mean();

@@ -18,6 +18,8 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
     causticAccepted += o.causticAccepted;
     pathLensSteps += o.pathLensSteps;
     pathLensAccepted += o.pathLensAccepted;
+    pathCausticSteps += o.pathCausticSteps;
+    pathCausticAccepted += o.pathCausticAccepted;
     largeStepSum += o.largeStepSum;
     return *this;
 }

@@ -54,6 +54,7 @@ struct ChainCounters {
     long long lensSteps = 0, lensAccepted = 0;    // cmlt's lens sub-chain steps
     long long causticSteps = 0, causticAccepted = 0;  // light-stream-only small steps
     long long pathLensSteps = 0, pathLensAccepted = 0;  // cmlt's path-space lens sub-chain steps
+    long long pathCausticSteps = 0, pathCausticAccepted = 0;  // and its path-space caustic steps
     double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
     ChainCounters& operator+=(const ChainCounters& o);
 };
