@@ -9,7 +9,9 @@
 //      the seed's sample, chosen in proportion to its share of f, is perturbed by Veach's lens
 //      perturbation: the raster point moves by a Gaussian of sigmaPixels (wrapped around the
 //      image, so symmetric), the camera ray is traced through the same specular vertices to the
-//      first diffuse one and joined to the rest of the path, which stays. A candidate costs a
+//      first diffuse one and joined to the rest of the path, which stays (or, where only mirrors
+//      and glass lead on to the light, sent on in the direction the path left it: Veach's
+//      multi-chain form). A candidate costs a
 //      camera ray, the specular chain behind it and one shadow ray, against a whole
 //      bidirectional sample for an MLT mutation. Each step draws `tries` candidates together;
 //      their camera rays are neighbours and are traced as one coherent Embree packet.

@@ -19,7 +19,9 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     for (int j = 1; j < m_; ++j) refracted_[size_t(j)] = refractedAt(path, j);
     endsAtM_ = m_ == k;
     rest_ = Rgb(1, 1, 1);
+    keepsDirection_ = false;
     if (endsAtM_) return true;
+    if (path[size_t(m_ + 1)].delta) return buildKeepingDirection(path);
 
     next_ = path[size_t(m_ + 1)];
     nextIsLast_ = m_ + 1 == k;
@@ -54,6 +56,21 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     return !isBlack(rest_) && isFinite(rest_);
 }
 
+bool LensPath::buildKeepingDirection(const std::vector<PathVertex>& path) {
+    const int k = int(path.size()) - 1;
+    if (m_ < 2) return false;  // (E D S+ L: the caustic perturbation's, path_caustic.h)
+    const PathVertex& light = path[size_t(k)];
+    if (!light.onSurface()) return false;
+    lightSideRefracted_.clear();
+    for (int j = m_ + 1; j < k; ++j) {
+        if (!path[size_t(j)].delta) return false;
+        lightSideRefracted_.push_back(refractedAt(path, j));
+    }
+    direction_ = toward(path[size_t(m_)], path[size_t(m_ + 1)]);
+    keepsDirection_ = true;
+    return true;
+}
+
 Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& primaryHit) const {
     Ray ray = scene_.camera().ray(x, y);
     const SurfacePoint* hit = primaryHit ? &*primaryHit : nullptr;
@@ -72,6 +89,7 @@ Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& 
     const ShadingMaterial& mat = scene_.material(hit->material);
     if (endsAtM_) return mat.isEmitter() ? throughput * densities_.emitted(ym, ym.wo) : Rgb(0, 0, 0);
     if (mat.isDelta() || mat.isEmitter()) return Rgb(0, 0, 0);
+    if (keepsDirection_) return throughput * alongDirection(ym);
 
     const V3f d = next_.p() - ym.p();
     const float dist2 = d.length2();
@@ -84,6 +102,23 @@ Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& 
     if (next_.onSurface()) return scene_.unoccluded(ym.sp, next_.sp) ? c : Rgb(0, 0, 0);
     const V3f from = ym.sp.spawnOrigin(w);
     return scene_.occluded(Ray{from, next_.p() - from, 0.0f, kShadowRayEnd}) ? Rgb(0, 0, 0) : c;
+}
+
+Rgb LensPath::alongDirection(const PathVertex& ym) const {
+    Rgb c = densities_.bsdf(ym, direction_) * std::abs(ym.sp.ng.dot(direction_));
+    if (isBlack(c)) return c;
+    Ray ray{ym.sp.spawnOrigin(direction_), direction_};
+    std::optional<SurfacePoint> hit = scene_.intersect(ray);
+    for (const bool refracted : lightSideRefracted_) {
+        if (!hit || !followSpecular(scene_, *hit, refracted, ray, c)) return Rgb(0, 0, 0);
+        hit = scene_.intersect(ray);
+    }
+    if (!hit) return Rgb(0, 0, 0);
+    PathVertex emitter;
+    emitter.kind = VertexKind::Surface;
+    emitter.sp = *hit;
+    c *= densities_.emitted(emitter, -ray.direction.normalized());
+    return isFinite(c) ? c : Rgb(0, 0, 0);
 }
 
 }  // namespace lucerna

@@ -15,6 +15,12 @@
 //
 // Only the colour of R matters (a constant scale cancels from F(y) / F(x) and from the deposits
 // C / F), so R is the product of the fixed vertices' BSDF colours and the light's.
+//
+// Where a mirror or glass follows x_m and the path goes on through specular vertices alone to an
+// emitter (E S+ D S+ L, m >= 2: a caustic seen through glass or in a mirror), nothing can be
+// joined; Veach's multi-chain perturbation keeps instead the direction w in which the path leaves
+// x_m: from y_m the ray goes on along w through the same specular vertices and must hit an
+// emitter. Parameterised by (raster point, w), F = P(r) f(y_m, w) |cos| P' Le.
 
 #include "render/progressive/bdpt/bdpt_vertex.h"
 
@@ -28,7 +34,8 @@ public:
     LensPath(const RenderScene& scene, const VertexDensities& densities) : scene_(scene), densities_(densities) {}
 
     // Takes path x_0 ... x_k (SampledPaths::path). False when no perturbation can move it (x_{m+1}
-    // on a mirror or glass, or a directional light): its class holds this path alone.
+    // on a mirror or glass and neither form above, or a directional light): its class holds this
+    // path alone.
     bool build(const std::vector<PathVertex>& path);
 
     // The contribution (up to the constant scale of R) of the path of the same structure through
@@ -37,6 +44,10 @@ public:
     Rgb contribution(float x, float y, const std::optional<SurfacePoint>& primaryHit) const;
 
 private:
+    bool buildKeepingDirection(const std::vector<PathVertex>& path);
+    // The multi-chain form's factors from y_m on: f |cos| along w, the chain, the emitter's Le.
+    Rgb alongDirection(const PathVertex& ym) const;
+
     const RenderScene& scene_;
     const VertexDensities& densities_;
     int m_ = 0;                   // the first non-specular vertex
@@ -45,6 +56,9 @@ private:
     PathVertex next_;             // x_{m+1}; wo toward x_{m+2}
     std::vector<bool> refracted_; // per specular vertex 1 ... m-1
     Rgb rest_{1, 1, 1};           // R
+    bool keepsDirection_ = false; // the multi-chain form: w kept, the chain x_{m+1} ... x_{k-1} traced
+    V3f direction_{0, 0, 1};      // w
+    std::vector<bool> lightSideRefracted_;  // per specular vertex m+1 ... k-1
 };
 
 }  // namespace lucerna
