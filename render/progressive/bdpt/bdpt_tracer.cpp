@@ -348,23 +348,17 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
             CountingGenerator counted(rng);
             lightTracingSplats_.clear();
             for (int s = 2; s <= std::min(nLight, settings_.maxDepth + 1); ++s) {
-                float rx = 0, ry = 0;
                 StrategyRecord r;
                 r.s = s;
                 r.t = 1;
-                const Rgb c = connect(s, 1, true, counted, rx, ry, &r);
-                r.weighted = c;
-                r.rasterX = rx;
-                r.rasterY = ry;
-                if (!isBlack(c) && isFinite(c)) lightTracingSplats_.push_back(r);
+                r.weighted = connect(s, 1, true, counted, r.rasterX, r.rasterY, &r);
+                if (!isBlack(r.weighted) && isFinite(r.weighted)) lightTracingSplats_.push_back(r);
             }
             lightTracingNumbers_ = counted.count;
         }
         for (const StrategyRecord& s : lightTracingSplats_) splat(s.weighted, s.rasterX, s.rasterY);
     }
-    if (record_) {
-        record_->strategies = lightTracingSplats_;
-    }
+    if (record_) record_->strategies = lightTracingSplats_;
     Rgb L(0, 0, 0);
     for (int t = 2; t <= nCamera; ++t)
         for (int s = 0; s <= std::max(nLight, 1); ++s) {
