@@ -3,8 +3,10 @@
 
 usage: time_to_error.py bench.csv BACKEND_A BACKEND_B
 
-The error is the larger of the two curves' final relmse (so both reach it); each time is read
-off its curve by log-log interpolation between the samples around it. Prints both times, their
+The error is the larger of the two curves' final relmse (so both reach it); each time is when its
+curve comes down to that error for good (a Metropolis curve can rise again when a chain sticks,
+and the first crossing would flatter it), read off by log-log interpolation between the samples
+around it. Prints both times, their
 ratio (A / B: how many times sooner B gets there) and each backend's rays per second from the
 `rays` column.
 """
@@ -21,13 +23,16 @@ def curve(path, name):
 
 
 def time_to(c, target):
-    if c[0][1] <= target:
+    # The last sample above the target; the curve stays at or below it after the next one.
+    above = [i for i, (_, e, _) in enumerate(c) if e > target]
+    if not above:
         return c[0][0]
-    for (t0, e0, _), (t1, e1, _) in zip(c, c[1:]):
-        if e1 <= target:
-            a = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
-            return math.exp(math.log(t0) + a * (math.log(t1) - math.log(t0)))
-    return c[-1][0]
+    i = above[-1]
+    if i + 1 == len(c):
+        return c[-1][0]
+    (t0, e0, _), (t1, e1, _) = c[i], c[i + 1]
+    a = (math.log(target) - math.log(e0)) / (math.log(e1) - math.log(e0))
+    return math.exp(math.log(t0) + a * (math.log(t1) - math.log(t0)))
 
 
 def main():

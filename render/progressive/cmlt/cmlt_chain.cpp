@@ -151,7 +151,7 @@ int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
         counters_.pathCausticSteps += made;
     } else {
         // No perturbation moves this path: every step stays on it.
-        counters_.pathLensSteps += made;
+        counters_.pathStillSteps += made;
         asDeposit(camera_, seed->rasterX, seed->rasterY, seed->weighted, lensState_);
         depositContribution(lensState_, scale * made / lensState_.f, out);
     }
@@ -174,6 +174,7 @@ bool CmltChain::lensSubChain(const StrategyRecord& seed, int p, double scale, st
         if (move.accepted) {
             x = rasters_[size_t(move.candidate)];
             std::swap(lensState_, candidates_[size_t(move.candidate)]);
+            counters_.accepted += p;
             counters_.pathLensAccepted += p;
         }
     }
@@ -199,6 +200,7 @@ bool CmltChain::causticSubChain(int p, double scale, std::vector<FilmSplat>& out
         if (move.accepted) {
             w = directions_[size_t(move.candidate)];
             std::swap(lensState_, candidates_[size_t(move.candidate)]);
+            counters_.accepted += p;
             counters_.pathCausticAccepted += p;
         }
     }

@@ -9,12 +9,12 @@
 //      the seed's sample, chosen in proportion to its share of f, is perturbed by Veach's lens
 //      perturbation: the raster point moves by a Gaussian of sigmaPixels (wrapped around the
 //      image, so symmetric), the camera ray is traced through the same specular vertices to the
-//      first diffuse one and joined to the rest of the path, which stays (or, where only mirrors
-//      and glass lead on to the light, sent on in the direction the path left it: Veach's
-//      multi-chain form). A candidate costs a
-//      camera ray, the specular chain behind it and one shadow ray, against a whole
-//      bidirectional sample for an MLT mutation. Each step draws `tries` candidates together;
-//      their camera rays are neighbours and are traced as one coherent Embree packet.
+//      first diffuse one and joined to the rest of the path, which stays (or, where a mirror
+//      or glass follows that vertex, sent on in the direction the path left it through the same
+//      specular chain, to the light or to a diffuse vertex joined there: Veach's multi-chain
+//      form). A candidate costs a camera ray, the specular chains and one shadow ray, against a
+//      whole bidirectional sample for an MLT mutation. Each step draws `tries` candidates
+//      together; their camera rays are neighbours and are traced as one coherent Embree packet.
 //   3. Every candidate is accumulated with its expected value: candidate y_i with
 //      a_i / F(y_i), its competitor (the current state x) with (1 - a_i) / F(x),
 //      a_i = min(1, F(y_i) / F(x)). Each pair is one step's expected deposit from x, so a step
@@ -24,11 +24,11 @@
 // (a path of a state u ~ f / b, chosen with probability f_i(u) / f(u), comes from strategy i
 // with density w_i F / b, and the MIS weights w_i sum to 1), and its steps keep that density, so
 // its deposits estimate the same image, normalised like the chain's own. A path that the lens
-// perturbation cannot move because a mirror or glass follows its first diffuse vertex is moved
-// by Veach's caustic perturbation instead when it goes straight on to the light (a caustic seen
-// directly, path_caustic.h: the emission direction turns, the light ray crosses the same
-// specular chain to a new diffuse vertex, which is joined to the sensor); any other path keeps
-// its steps where it is, depositing them at once.
+// perturbation cannot move (a caustic seen directly: a mirror or glass follows its first diffuse
+// vertex and leads straight on to the light) is moved by Veach's caustic perturbation instead
+// (path_caustic.h: the emission direction turns, the light ray crosses the same specular chain
+// to a new diffuse vertex, which is joined to the sensor); any other path keeps its steps where
+// it is, depositing them at once (the diagnostic mlt_path_unmoved: their share).
 //
 //   2'. With settings.lensSteps > 0, lens steps in primary sample space on the MLT chain itself
 //      first: only the raster numbers move and the whole sample is traced again, sharing the

@@ -18,21 +18,38 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     refracted_.assign(size_t(m_), false);
     for (int j = 1; j < m_; ++j) refracted_[size_t(j)] = refractedAt(path, j);
     endsAtM_ = m_ == k;
+    kept_.clear();
+    keptEndsAtEmitter_ = false;
     rest_ = Rgb(1, 1, 1);
-    keepsDirection_ = false;
     if (endsAtM_) return true;
-    if (path[size_t(m_ + 1)].delta) return buildKeepingDirection(path);
+    // The multi-chain form: a direction kept wherever a mirror or glass follows a diffuse vertex.
+    int n = m_;
+    while (path[size_t(n + 1)].delta) {
+        KeptDirection d;
+        d.w = toward(path[size_t(n)], path[size_t(n + 1)]);
+        for (n = n + 1; n < k && path[size_t(n)].delta; ++n) d.refracted.push_back(refractedAt(path, n));
+        kept_.push_back(std::move(d));
+        if (n == k) {
+            keptEndsAtEmitter_ = true;
+            const bool causticSeenDirectly = m_ == 1 && kept_.size() == 1;  // path_caustic.h's
+            return path[size_t(k)].onSurface() && !causticSeenDirectly;
+        }
+    }
+    return buildJoin(path, n);
+}
 
-    next_ = path[size_t(m_ + 1)];
-    nextIsLast_ = m_ + 1 == k;
+bool LensPath::buildJoin(const std::vector<PathVertex>& path, int n) {
+    const int k = int(path.size()) - 1;
+    next_ = path[size_t(n + 1)];
+    nextIsLast_ = n + 1 == k;
     if (next_.kind == VertexKind::DirectionalLight || next_.kind == VertexKind::Camera) return false;
     if (next_.kind == VertexKind::Surface) {
         const ShadingMaterial& mat = scene_.material(next_.sp.material);
         if (mat.isDelta() || mat.isEmitter() != nextIsLast_) return false;
-        if (!nextIsLast_) next_.wo = toward(next_, path[size_t(m_ + 2)]);
+        if (!nextIsLast_) next_.wo = toward(next_, path[size_t(n + 2)]);
     }
-    // R: the vertices after x_{m+1}, and the light's colour.
-    for (int j = m_ + 2; j < k; ++j) {
+    // R: the vertices after x_{n+1}, and the light's colour.
+    for (int j = n + 2; j < k; ++j) {
         PathVertex v = path[size_t(j)];
         const ShadingMaterial& mat = scene_.material(v.sp.material);
         if (mat.isDelta()) {
@@ -56,21 +73,6 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     return !isBlack(rest_) && isFinite(rest_);
 }
 
-bool LensPath::buildKeepingDirection(const std::vector<PathVertex>& path) {
-    const int k = int(path.size()) - 1;
-    if (m_ < 2) return false;  // (E D S+ L: the caustic perturbation's, path_caustic.h)
-    const PathVertex& light = path[size_t(k)];
-    if (!light.onSurface()) return false;
-    lightSideRefracted_.clear();
-    for (int j = m_ + 1; j < k; ++j) {
-        if (!path[size_t(j)].delta) return false;
-        lightSideRefracted_.push_back(refractedAt(path, j));
-    }
-    direction_ = toward(path[size_t(m_)], path[size_t(m_ + 1)]);
-    keepsDirection_ = true;
-    return true;
-}
-
 Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& primaryHit) const {
     Ray ray = scene_.camera().ray(x, y);
     const SurfacePoint* hit = primaryHit ? &*primaryHit : nullptr;
@@ -89,36 +91,46 @@ Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& 
     const ShadingMaterial& mat = scene_.material(hit->material);
     if (endsAtM_) return mat.isEmitter() ? throughput * densities_.emitted(ym, ym.wo) : Rgb(0, 0, 0);
     if (mat.isDelta() || mat.isEmitter()) return Rgb(0, 0, 0);
-    if (keepsDirection_) return throughput * alongDirection(ym);
-
-    const V3f d = next_.p() - ym.p();
-    const float dist2 = d.length2();
-    if (!(dist2 > 0.0f)) return Rgb(0, 0, 0);
-    const V3f w = d / std::sqrt(dist2);  // y_m toward x_{m+1}
-    const float g = std::abs(ym.sp.ng.dot(w)) * (next_.onSurface() ? std::abs(next_.sp.ng.dot(w)) : 1.0f) / dist2;
-    const Rgb atNext = nextIsLast_ ? densities_.emitted(next_, -w) : densities_.bsdf(next_, -w);
-    const Rgb c = throughput * densities_.bsdf(ym, w) * atNext * rest_ * g;
+    const Rgb c = throughput * alongKeptDirections(ym);  // ym is y_n from here on
     if (isBlack(c) || !isFinite(c)) return Rgb(0, 0, 0);
-    if (next_.onSurface()) return scene_.unoccluded(ym.sp, next_.sp) ? c : Rgb(0, 0, 0);
-    const V3f from = ym.sp.spawnOrigin(w);
-    return scene_.occluded(Ray{from, next_.p() - from, 0.0f, kShadowRayEnd}) ? Rgb(0, 0, 0) : c;
+    return keptEndsAtEmitter_ ? c : joined(ym, c);
 }
 
-Rgb LensPath::alongDirection(const PathVertex& ym) const {
-    Rgb c = densities_.bsdf(ym, direction_) * std::abs(ym.sp.ng.dot(direction_));
-    if (isBlack(c)) return c;
-    Ray ray{ym.sp.spawnOrigin(direction_), direction_};
-    std::optional<SurfacePoint> hit = scene_.intersect(ray);
-    for (const bool refracted : lightSideRefracted_) {
-        if (!hit || !followSpecular(scene_, *hit, refracted, ray, c)) return Rgb(0, 0, 0);
-        hit = scene_.intersect(ray);
+Rgb LensPath::alongKeptDirections(PathVertex& y) const {
+    Rgb c(1, 1, 1);
+    for (size_t i = 0; i < kept_.size(); ++i) {
+        const KeptDirection& d = kept_[i];
+        c *= densities_.bsdf(y, d.w) * std::abs(y.sp.ng.dot(d.w));
+        if (isBlack(c)) return c;
+        Ray ray{y.sp.spawnOrigin(d.w), d.w};
+        std::optional<SurfacePoint> hit = scene_.intersect(ray);
+        for (const bool refracted : d.refracted) {
+            if (!hit || !followSpecular(scene_, *hit, refracted, ray, c)) return Rgb(0, 0, 0);
+            hit = scene_.intersect(ray);
+        }
+        if (!hit) return Rgb(0, 0, 0);
+        y.sp = *hit;
+        y.wo = -ray.direction.normalized();
+        const ShadingMaterial& mat = scene_.material(hit->material);
+        if (keptEndsAtEmitter_ && i + 1 == kept_.size())
+            return mat.isEmitter() ? c * densities_.emitted(y, y.wo) : Rgb(0, 0, 0);
+        if (mat.isDelta() || mat.isEmitter()) return Rgb(0, 0, 0);
     }
-    if (!hit) return Rgb(0, 0, 0);
-    PathVertex emitter;
-    emitter.kind = VertexKind::Surface;
-    emitter.sp = *hit;
-    c *= densities_.emitted(emitter, -ray.direction.normalized());
-    return isFinite(c) ? c : Rgb(0, 0, 0);
+    return c;
+}
+
+Rgb LensPath::joined(const PathVertex& yn, const Rgb& before) const {
+    const V3f d = next_.p() - yn.p();
+    const float dist2 = d.length2();
+    if (!(dist2 > 0.0f)) return Rgb(0, 0, 0);
+    const V3f w = d / std::sqrt(dist2);  // y_n toward x_{n+1}
+    const float g = std::abs(yn.sp.ng.dot(w)) * (next_.onSurface() ? std::abs(next_.sp.ng.dot(w)) : 1.0f) / dist2;
+    const Rgb atNext = nextIsLast_ ? densities_.emitted(next_, -w) : densities_.bsdf(next_, -w);
+    const Rgb c = before * densities_.bsdf(yn, w) * atNext * rest_ * g;
+    if (isBlack(c) || !isFinite(c)) return Rgb(0, 0, 0);
+    if (next_.onSurface()) return scene_.unoccluded(yn.sp, next_.sp) ? c : Rgb(0, 0, 0);
+    const V3f from = yn.sp.spawnOrigin(w);
+    return scene_.occluded(Ray{from, next_.p() - from, 0.0f, kShadowRayEnd}) ? Rgb(0, 0, 0) : c;
 }
 
 }  // namespace lucerna

@@ -16,11 +16,16 @@
 // Only the colour of R matters (a constant scale cancels from F(y) / F(x) and from the deposits
 // C / F), so R is the product of the fixed vertices' BSDF colours and the light's.
 //
-// Where a mirror or glass follows x_m and the path goes on through specular vertices alone to an
-// emitter (E S+ D S+ L, m >= 2: a caustic seen through glass or in a mirror), nothing can be
-// joined; Veach's multi-chain perturbation keeps instead the direction w in which the path leaves
-// x_m: from y_m the ray goes on along w through the same specular vertices and must hit an
-// emitter. Parameterised by (raster point, w), F = P(r) f(y_m, w) |cos| P' Le.
+// Where a mirror or glass follows x_m, nothing can be joined there; Veach's multi-chain
+// perturbation keeps instead the direction w_m in which the path leaves x_m: from y_m the ray goes
+// on along w_m through the same specular vertices to the next vertex that is not specular, which
+// must be an emitter (E S+ D S+ L, m >= 2: a caustic seen through glass or in a mirror; E D S+ L
+// is the caustic perturbation's, path_caustic.h) or a diffuse or glossy y_n, from which the path
+// is joined to x_{n+1} as above, or goes on along its kept w_n if a mirror or glass follows x_n
+// too. Parameterised by (raster point, w_m, w_n, ..., the fixed rest), each kept direction
+// contributes f(y_a, w_a) |cos(y_a, w_a)| P_a: the generalised geometric term through a specular
+// chain times the Jacobian of the area at its end against w_a's solid angle is the cosine at
+// y_a. The directions do not move, so the step stays symmetric.
 
 #include "render/progressive/bdpt/bdpt_vertex.h"
 
@@ -33,9 +38,9 @@ class LensPath {
 public:
     LensPath(const RenderScene& scene, const VertexDensities& densities) : scene_(scene), densities_(densities) {}
 
-    // Takes path x_0 ... x_k (SampledPaths::path). False when no perturbation can move it (x_{m+1}
-    // on a mirror or glass and neither form above, or a directional light): its class holds this
-    // path alone.
+    // Takes path x_0 ... x_k (SampledPaths::path). False when no perturbation can move it (a
+    // specular chain from x_1 straight to the light, a specular chain ending at a point or
+    // directional light, a directional light joined): its class holds this path alone.
     bool build(const std::vector<PathVertex>& path);
 
     // The contribution (up to the constant scale of R) of the path of the same structure through
@@ -44,21 +49,32 @@ public:
     Rgb contribution(float x, float y, const std::optional<SurfacePoint>& primaryHit) const;
 
 private:
-    bool buildKeepingDirection(const std::vector<PathVertex>& path);
-    // The multi-chain form's factors from y_m on: f |cos| along w, the chain, the emitter's Le.
-    Rgb alongDirection(const PathVertex& ym) const;
+    // A kept direction (the multi-chain form): the ray leaves y_a along w and crosses the
+    // specular vertices a+1 ... n-1, each reflecting or refracting as before.
+    struct KeptDirection {
+        V3f w{0, 0, 1};
+        std::vector<bool> refracted;
+    };
+
+    bool buildJoin(const std::vector<PathVertex>& path, int n);
+    // f |cos| P along each kept direction from y (y_m), which moves to the vertex that ends the
+    // last chain: the emitter, whose Le is included, or the diffuse y_n, whose join is left to
+    // the caller. Black when a chain does not reach a vertex of the path's kind.
+    Rgb alongKeptDirections(PathVertex& y) const;
+    // `before` times f(y_n) G(y_n, x_{n+1}) f(x_{n+1}) R if y_n sees x_{n+1}, else black.
+    Rgb joined(const PathVertex& yn, const Rgb& before) const;
 
     const RenderScene& scene_;
     const VertexDensities& densities_;
     int m_ = 0;                   // the first non-specular vertex
     bool endsAtM_ = false;        // m = k: y_m must be an emitter
-    bool nextIsLast_ = false;     // x_{m+1} = x_k: its factor is its emission toward y_m
-    PathVertex next_;             // x_{m+1}; wo toward x_{m+2}
     std::vector<bool> refracted_; // per specular vertex 1 ... m-1
-    Rgb rest_{1, 1, 1};           // R
-    bool keepsDirection_ = false; // the multi-chain form: w kept, the chain x_{m+1} ... x_{k-1} traced
-    V3f direction_{0, 0, 1};      // w
-    std::vector<bool> lightSideRefracted_;  // per specular vertex m+1 ... k-1
+    std::vector<KeptDirection> kept_;  // the multi-chain form's kept directions, in path order
+    bool keptEndsAtEmitter_ = false;   // the last kept direction's chain ends at the emitter x_k
+    // The join from the last diffuse vertex y_n (n = m without kept directions) to x_{n+1}.
+    bool nextIsLast_ = false;     // x_{n+1} = x_k: its factor is its emission toward y_n
+    PathVertex next_;             // x_{n+1}; wo toward x_{n+2}
+    Rgb rest_{1, 1, 1};           // R: x_{n+2} ... x_k
 };
 
 }  // namespace lucerna

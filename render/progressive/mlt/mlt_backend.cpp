@@ -86,7 +86,7 @@ public:
         c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
         const long long smallSteps =
-            c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps - c.pathCausticSteps;
+            c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps - c.pathCausticSteps - c.pathStillSteps;
         d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted -
                                                     c.pathLensAccepted - c.pathCausticAccepted,
                                                 smallSteps));
@@ -96,6 +96,10 @@ public:
         if (c.pathLensSteps > 0) d["mlt_acceptance_path_lens"] = number(rate(c.pathLensAccepted, c.pathLensSteps));
         if (c.pathCausticSteps > 0)
             d["mlt_acceptance_path_caustic"] = number(rate(c.pathCausticAccepted, c.pathCausticSteps));
+        // How much of cmlt's path-space sub-chains stays on paths that no perturbation moves.
+        if (c.pathStillSteps > 0)
+            d["mlt_path_unmoved"] =
+                number(rate(c.pathStillSteps, c.pathLensSteps + c.pathCausticSteps + c.pathStillSteps));
         // The spread between the independent halves (each its own chains and b): how far their
         // image means disagree, relative to the combined mean.
         const double m0 = film_->halfImage(0).mean(), m1 = film_->halfImage(1).mean();

@@ -20,6 +20,7 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
     pathLensAccepted += o.pathLensAccepted;
     pathCausticSteps += o.pathCausticSteps;
     pathCausticAccepted += o.pathCausticAccepted;
+    pathStillSteps += o.pathStillSteps;
     largeStepSum += o.largeStepSum;
     return *this;
 }

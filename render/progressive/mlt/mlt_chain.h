@@ -55,6 +55,7 @@ struct ChainCounters {
     long long causticSteps = 0, causticAccepted = 0;  // light-stream-only small steps
     long long pathLensSteps = 0, pathLensAccepted = 0;  // cmlt's path-space lens sub-chain steps
     long long pathCausticSteps = 0, pathCausticAccepted = 0;  // and its path-space caustic steps
+    long long pathStillSteps = 0;  // and its steps on paths no perturbation moves (deposited at once)
     double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
     ChainCounters& operator+=(const ChainCounters& o);
 };
