@@ -34,6 +34,7 @@
 
 #include <cmath>
 #include <functional>
+#include <limits>
 
 using namespace lucerna;
 using namespace lucerna::test;
@@ -232,6 +233,7 @@ private slots:
     void multiChainLensReproducesRecordedPaths();
     void cmltMatchesBdptThroughMirrorsAndGlass_data();
     void cmltMatchesBdptThroughMirrorsAndGlass();
+    void tinyContributionsDepositFinitely();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -608,6 +610,23 @@ void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
     // wrong on the lens perturbation's chain (a Fresnel term missing or swapped) is off by far more.
     QVERIFY(std::abs(sumC / sumB - 1.0) < 0.02);
     QVERIFY(worst < 0.15);
+}
+
+// A path-space contribution's scale is free and can be tiny (a path through many glass faces of
+// the caustic scene came to 4e-41, a denormal); deposited with weight 1 / f it must still give its
+// colour: a float weight overflowed to inf and left infinite pixels in the image.
+void TestMlt::tinyContributionsDepositFinitely() {
+    PathContribution c;
+    c.f = 4.0e-41f;
+    c.deposits.push_back({3, 4, Rgb(4.8e-41f, 4.0e-41f, 3.2e-41f)});
+    std::vector<FilmSplat> out;
+    depositContribution(c, 1.0 / double(c.f), out);
+    QCOMPARE(out.size(), size_t(1));
+    QVERIFY2(isFinite(out[0].value) && std::abs(out[0].value.x / 1.2f - 1.0f) < 1e-3f && std::abs(out[0].value.z / 0.8f - 1.0f) < 1e-3f,
+             qPrintable(QString("deposit %1 %2 %3").arg(out[0].value.x).arg(out[0].value.y).arg(out[0].value.z)));
+    out.clear();
+    depositContribution(c, std::numeric_limits<double>::infinity(), out);
+    QVERIFY(out.empty());
 }
 
 void TestMlt::hardCasesStayFinite() {

@@ -119,41 +119,67 @@ int CmltChain::causticStep(double scale, std::vector<FilmSplat>& out) {
 }
 
 namespace {
-// One path of the sample, chosen in proportion to its contribution; nullptr when none is recorded.
+// The least luminance a path-space contribution F may have. F's scale is free (only ratios and
+// the colour matter) and far from the image's: a path through many glass faces carries their
+// Fresnel factors, down to 1e-45 on the caustic scene, where a float keeps one bit of a colour and
+// 1 / F overflows. Below this the path counts as outside its perturbation's class (F = 0): its
+// candidates are rejected, and a seed there keeps its steps in place, which keeps the density.
+constexpr float kMinPathContribution = 1e-30f;
+
+// One path of the sample, chosen in proportion to its contribution; nullptr when none has
+// kMinPathContribution (or none is recorded: light tracing alone).
 const StrategyRecord* choosePath(const SampledPaths& paths, Rng& rng) {
+    const auto weight = [](const StrategyRecord& r) {
+        const float l = luminance(r.weighted);
+        return l >= kMinPathContribution ? double(l) : 0.0;
+    };
     double total = 0;
-    for (const StrategyRecord& r : paths.strategies) total += luminance(r.weighted);
+    for (const StrategyRecord& r : paths.strategies) total += weight(r);
     if (!(total > 0)) return nullptr;
     double pick = rng.nextDouble() * total;
-    size_t i = 0;
-    while (i + 1 < paths.strategies.size() && (pick -= luminance(paths.strategies[i].weighted)) >= 0) ++i;
-    return &paths.strategies[i];
+    const StrategyRecord* chosen = nullptr;
+    for (const StrategyRecord& r : paths.strategies) {
+        const double w = weight(r);
+        if (!(w > 0)) continue;
+        chosen = &r;  // the last with weight, should rounding leave pick >= 0
+        if ((pick -= w) < 0) break;
+    }
+    return chosen;
 }
 
 // A path's contribution as a deposit at its raster point (x, y).
 void asDeposit(const Sensor& camera, float x, float y, const Rgb& c, PathContribution& out) {
     out.deposits.clear();
-    out.f = std::max(0.0f, luminance(c));
+    const float f = luminance(c);
+    out.f = f >= kMinPathContribution && isFinite(c) ? f : 0.0f;
     if (out.f > 0)
         out.deposits.push_back({std::clamp(int(x), 0, camera.width() - 1), std::clamp(int(y), 0, camera.height() - 1), c});
 }
 }  // namespace
 
 int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
-    const StrategyRecord* seed = choosePath(current().paths, sampler().rng());
-    if (!seed) return 0;  // (only where nothing is recorded: light tracing alone)
     const int p = std::max(1, settings_.tries), made = settings_.pathLensSteps * p;
     counters_.steps += made;
-    current().paths.path(*seed, pathVertices_);
-    if (lensSubChain(*seed, p, scale, out)) {
-        counters_.pathLensSteps += made;
-    } else if (causticSubChain(p, scale, out)) {
-        counters_.pathCausticSteps += made;
-    } else {
-        // No perturbation moves this path: every step stays on it.
-        counters_.pathStillSteps += made;
+    const StrategyRecord* seed = choosePath(current().paths, sampler().rng());
+    if (seed) {
+        current().paths.path(*seed, pathVertices_);
+        if (lensSubChain(*seed, p, scale, out)) {
+            counters_.pathLensSteps += made;
+            return made;
+        }
+        if (causticSubChain(p, scale, out)) {
+            counters_.pathCausticSteps += made;
+            return made;
+        }
+    }
+    // No perturbation moves this path: every step stays on it (on the whole sample where no
+    // path of it can be chosen), so that every seed weighs the same.
+    counters_.pathStillSteps += made;
+    if (seed) {
         asDeposit(camera_, seed->rasterX, seed->rasterY, seed->weighted, lensState_);
         depositContribution(lensState_, scale * made / lensState_.f, out);
+    } else {
+        depositContribution(current(), scale * made / current().f, out);
     }
     return made;
 }

@@ -26,8 +26,10 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
 }
 
 void depositContribution(const PathContribution& c, double weight, std::vector<FilmSplat>& out) {
-    if (!(weight > 0.0)) return;
-    for (const FilmSplat& s : c.deposits) out.push_back({s.x, s.y, s.value * float(weight)});
+    if (!(weight > 0.0) || !std::isfinite(weight)) return;
+    // In double: weight is about 1 / c.f, beyond a float's range where c's values are tiny.
+    for (const FilmSplat& s : c.deposits)
+        out.push_back({s.x, s.y, Rgb(float(s.value.x * weight), float(s.value.y * weight), float(s.value.z * weight))});
 }
 
 namespace {

@@ -44,7 +44,8 @@ void evaluateLightSideAt(BdptTracer& tracer, float x, float y, PssSampler& sampl
 // The raster point (pixels) that a state's first two numbers u choose.
 V2f rasterPoint(const Sensor& camera, const V2f& u);
 
-// Appends c's deposits times `weight` to `out` (nothing when weight is 0).
+// Appends c's deposits times `weight` to `out` (nothing when weight is 0 or not finite); the
+// product is taken in double, so a weight beyond a float's range (1 / a tiny f) still deposits.
 void depositContribution(const PathContribution& c, double weight, std::vector<FilmSplat>& out);
 
 // Counts of a chain's steps, summed over chains for the render's diagnostics.
