@@ -85,8 +85,8 @@ public:
         ChainCounters c = halves_[0].counters();
         c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
-        const long long smallSteps =
-            c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps - c.pathCausticSteps - c.pathStillSteps;
+        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps -
+                                     c.pathCausticSteps - c.pathStillSteps;
         d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted -
                                                     c.pathLensAccepted - c.pathCausticAccepted,
                                                 smallSteps));
