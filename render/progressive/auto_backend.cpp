@@ -8,9 +8,10 @@
 //   - Light that reaches what the camera sees mostly indirectly (a room lit through a door ajar):
 //     coherent Metropolis light transport, whose chains stay on the few paths that come through
 //     (door scene, time to bdpt's 30 s error: cmlt 3.0 s; mlt about equal to bdpt; 60 s: bdpt
-//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene bdpt stays
-//     ahead of cmlt (time ratio 0.69 in two runs), on the Cornell box the path tracer 4 to 5
-//     times (BENCHMARKS.md, issue 4, session 8).
+//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene cmlt and
+//     bdpt are even (bdpt's expected error 1.07 times sooner by cmlt over three runs, single runs
+//     0.77 to 1.46; session 9), and bdpt has no chains to stick, so it stays the choice there; on
+//     the Cornell box the path tracer is 4 to 5 times ahead of cmlt (BENCHMARKS.md, issue 4).
 //   - Otherwise (diffuse and glossy surfaces lit mostly directly): the path tracer with
 //     next-event estimation converges fastest (Cornell box, 60 s: path 3.4e-4, bdpt 4.3e-4).
 
