@@ -184,6 +184,14 @@ int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
     return made;
 }
 
+bool CmltChain::takeSubChainMove(const LensMove& move, int p, long long& acceptedOfKind) {
+    if (!move.accepted) return false;
+    std::swap(lensState_, candidates_[size_t(move.candidate)]);
+    counters_.accepted += p;
+    acceptedOfKind += p;
+    return true;
+}
+
 bool CmltChain::lensSubChain(const StrategyRecord& seed, int p, double scale, std::vector<FilmSplat>& out) {
     if (!lensPath_.build(pathVertices_)) return false;
     V2f x(seed.rasterX, seed.rasterY);
@@ -197,12 +205,7 @@ bool CmltChain::lensSubChain(const StrategyRecord& seed, int p, double scale, st
             asDeposit(camera_, r.x, r.y, lensPath_.contribution(r.x, r.y, hits_[size_t(i)]), candidates_[size_t(i)]);
         }
         const LensMove move = depositAndChoose(lensState_, scale, out);
-        if (move.accepted) {
-            x = rasters_[size_t(move.candidate)];
-            std::swap(lensState_, candidates_[size_t(move.candidate)]);
-            counters_.accepted += p;
-            counters_.pathLensAccepted += p;
-        }
+        if (takeSubChainMove(move, p, counters_.pathLensAccepted)) x = rasters_[size_t(move.candidate)];
     }
     return true;
 }
@@ -223,12 +226,7 @@ bool CmltChain::causticSubChain(int p, double scale, std::vector<FilmSplat>& out
             asDeposit(camera_, x, y, ci, candidates_[size_t(i)]);
         }
         const LensMove move = depositAndChoose(lensState_, scale, out);
-        if (move.accepted) {
-            w = directions_[size_t(move.candidate)];
-            std::swap(lensState_, candidates_[size_t(move.candidate)]);
-            counters_.accepted += p;
-            counters_.pathCausticAccepted += p;
-        }
+        if (takeSubChainMove(move, p, counters_.pathCausticAccepted)) w = directions_[size_t(move.candidate)];
     }
     return true;
 }

@@ -68,6 +68,10 @@ private:
     // having deposited nothing, when theirs cannot move it.
     int pathLensSubChain(double scale, std::vector<FilmSplat>& out);
     bool lensSubChain(const StrategyRecord& seed, int p, double scale, std::vector<FilmSplat>& out);
+    // The sub-chain's move drawn by depositAndChoose: if accepted, the candidate becomes
+    // lensState_ and the step counts as accepted, overall and in `acceptedOfKind`; returns
+    // whether it moved (the caller then moves its own parameter: raster point or direction).
+    bool takeSubChainMove(const LensMove& move, int p, long long& acceptedOfKind);
     bool causticSubChain(int p, double scale, std::vector<FilmSplat>& out);
     // Room for p candidates, recording their paths as the state does.
     void prepareCandidates(int p);
