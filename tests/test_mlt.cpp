@@ -21,6 +21,7 @@
 #include "closed_form_scenes.h"
 #include "hard_case_scenes.h"
 #include "render/progressive/cmlt/caustic_mutation.h"
+#include "render/progressive/cmlt/cmlt_settings.h"
 #include "render/progressive/cmlt/lens_mutation.h"
 #include "render/progressive/cmlt/path_caustic.h"
 #include "render/progressive/cmlt/path_lens.h"
@@ -234,6 +235,8 @@ private slots:
     void cmltMatchesBdptThroughMirrorsAndGlass_data();
     void cmltMatchesBdptThroughMirrorsAndGlass();
     void tinyContributionsDepositFinitely();
+    void coherentRaysMatchSingleRays();
+    void cmltChainTakesMoreLargeSteps();
     void hardCasesStayFinite_data() { backends(); }
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
@@ -612,6 +615,42 @@ void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
     QVERIFY(worst < 0.15);
 }
 
+// cmlt traces its lens candidates' camera rays as Embree packets (one ray alone as a single ray):
+// every bundle size must give what intersect() gives ray by ray, misses included.
+void TestMlt::coherentRaysMatchSingleRays() {
+    const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
+    const RenderScene scene(snapshot, 64, 48);
+    const Sensor& camera = scene.camera();
+    Rng rng(11, 0);
+    int hits = 0, misses = 0;
+    for (const size_t n : {size_t(1), size_t(3), size_t(8), size_t(13)}) {
+        for (int bundle = 0; bundle < 50; ++bundle) {
+            const V2f centre = rasterPoint(camera, rng.next2D());
+            std::vector<Ray> rays;
+            for (size_t i = 0; i < n; ++i) {
+                const V2f r = perturbRaster(centre, 3.0f, float(camera.width()), float(camera.height()), rng);
+                rays.push_back(camera.ray(r.x, r.y));
+            }
+            std::vector<std::optional<SurfacePoint>> packet(n);
+            scene.intersectCoherent(rays, packet);
+            for (size_t i = 0; i < n; ++i) {
+                const std::optional<SurfacePoint> single = scene.intersect(rays[i]);
+                QCOMPARE(packet[i].has_value(), single.has_value());
+                if (!single) {
+                    ++misses;
+                    continue;
+                }
+                ++hits;
+                QCOMPARE(packet[i]->triangle, single->triangle);
+                QVERIFY2((packet[i]->p - single->p).length() <= 1e-5f * (1.0f + single->p.length()),
+                         qPrintable(QString("bundle of %1, ray %2: the hit points differ").arg(n).arg(i)));
+            }
+        }
+    }
+    QVERIFY2(hits > 500 && misses > 0, qPrintable(QString("%1 hits, %2 misses: the rays see too little").arg(hits).arg(misses)));
+}
+
+
 // A path-space contribution's scale is free and can be tiny (a path through many glass faces of
 // the caustic scene came to 4e-41, a denormal); deposited with weight 1 / f it must still give its
 // colour: a float weight overflowed to inf and left infinite pixels in the image.
@@ -673,6 +712,17 @@ void TestMlt::halvesAreIndependent() {
         QVERIFY2(rate >= 0 && rate <= 1, qPrintable(QString("%1 = %2").arg(key.c_str()).arg(rate)));
     }
     QVERIFY(std::isfinite(frame.estimatedRelmse) && frame.estimatedRelmse > 0);
+}
+
+// cmlt's chain takes half its steps large by default (mlt's: 0.3; BENCHMARKS.md, issue 4, session
+// 10), and `large_step` still sets it; the other chain settings are mlt's.
+void TestMlt::cmltChainTakesMoreLargeSteps() {
+    RenderSettings s;
+    QCOMPARE(MltSettings::fromOptions(s).largeStepProbability, 0.3f);
+    QCOMPARE(CmltSettings::fromOptions(s).mlt.largeStepProbability, 0.5f);
+    QCOMPARE(CmltSettings::fromOptions(s).mlt.sigma, MltSettings::fromOptions(s).sigma);
+    addOption("large_step=0.2", s);
+    QCOMPARE(CmltSettings::fromOptions(s).mlt.largeStepProbability, 0.2f);
 }
 
 QTEST_GUILESS_MAIN(TestMlt)

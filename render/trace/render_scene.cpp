@@ -76,6 +76,10 @@ std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t) con
 }
 
 void RenderScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfacePoint>> hits) const {
+    if (rays.size() == 1) {  // a packet of one ray would only run the wide traversal on one lane
+        hits[0] = intersect(rays[0]);
+        return;
+    }
     std::vector<RayHit> raw(rays.size());
     accel_->intersectCoherent(rays.data(), raw.data(), rays.size());
     for (size_t i = 0; i < rays.size(); ++i)

@@ -11,7 +11,7 @@ namespace lucerna {
 
 CmltSettings CmltSettings::fromOptions(const RenderSettings& settings) {
     CmltSettings s;
-    s.mlt = MltSettings::fromOptions(settings);
+    s.mlt = MltSettings::fromOptions(settings, s.mlt);
     readOption(settings, "lens_steps", s.lensSteps, 0, 10000);
     readOption(settings, "tries", s.tries, 1, 64);
     readOption(settings, "sigma_pixels", s.sigmaPixels, 1e-3, 1e4);

@@ -6,7 +6,15 @@
 namespace lucerna {
 
 struct CmltSettings {
-    MltSettings mlt;          // step 1: the chain that explores path space and yields seeds
+    // Step 1: the chain that explores path space and yields seeds. Half its steps are large
+    // (mlt's own: 0.3): the sub-chains explore around each seed, so the chain's work is to go
+    // everywhere and to leave a path that is a spike soon; a chain stuck there carries its
+    // sub-chains with it (BENCHMARKS.md, issue 4, session 10).
+    MltSettings mlt = [] {
+        MltSettings m;
+        m.largeStepProbability = 0.5f;
+        return m;
+    }();
     // Defaults by measurement at equal time (BENCHMARKS.md, issue 4, sessions 8 and 9): 8
     // path-space lens steps a seed reach mlt's expected error 1.46 times sooner on the caustic
     // scene (24 runs; 16 steps: 0.9, 4: 1.41; with fewer steps the chain mutates more often, so a

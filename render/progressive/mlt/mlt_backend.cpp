@@ -149,8 +149,8 @@ private:
 
 }  // namespace
 
-MltSettings MltSettings::fromOptions(const RenderSettings& settings) {
-    MltSettings s;
+MltSettings MltSettings::fromOptions(const RenderSettings& settings, MltSettings defaults) {
+    MltSettings s = std::move(defaults);
     s.bdpt = BdptSettings::fromOptions(settings);
     readOption(settings, "bootstrap", s.bootstrapSamples, 1, 100000000);
     readOption(settings, "chains", s.chains, 1, 1000000);

@@ -16,9 +16,10 @@ struct MltSettings {
     // in primary sample space; pss_sampler.h).
     float causticProbability = 0.0f;
 
-    // Reads "bootstrap", "chains", "mutations", "large_step", "sigma", "caustic" and bdpt's own options;
-    // throws std::invalid_argument on bad values.
-    static MltSettings fromOptions(const RenderSettings& settings);
+    // Reads "bootstrap", "chains", "mutations", "large_step", "sigma", "caustic" and bdpt's own
+    // options over `defaults`; throws std::invalid_argument on bad values.
+    static MltSettings fromOptions(const RenderSettings& settings, MltSettings defaults);
+    static MltSettings fromOptions(const RenderSettings& settings) { return fromOptions(settings, MltSettings()); }
 };
 
 }  // namespace lucerna
