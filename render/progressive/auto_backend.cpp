@@ -8,9 +8,9 @@
 //   - Light that reaches what the camera sees mostly indirectly (a room lit through a door ajar):
 //     coherent Metropolis light transport, whose chains stay on the few paths that come through
 //     (door scene, time to bdpt's 30 s error: cmlt 3.0 s; mlt about equal to bdpt; 60 s: bdpt
-//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene cmlt and
-//     bdpt are even (bdpt's expected error 1.07 times sooner by cmlt over three runs, single runs
-//     0.77 to 1.46; session 9), and bdpt has no chains to stick, so it stays the choice there; on
+//     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene bdpt is
+//     ahead (cmlt takes 1.4 times bdpt's time to the same expected error over four runs, single
+//     runs 0.9 to 1.8 times; session 10), and bdpt has no chains to stick, so it stays the choice; on
 //     the Cornell box the path tracer is 4 to 5 times ahead of cmlt (BENCHMARKS.md, issue 4).
 //   - Otherwise (diffuse and glossy surfaces lit mostly directly): the path tracer with
 //     next-event estimation converges fastest (Cornell box, 60 s: path 3.4e-4, bdpt 4.3e-4).
