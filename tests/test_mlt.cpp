@@ -616,14 +616,15 @@ void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
 }
 
 // cmlt traces its lens candidates' camera rays as Embree packets (one ray alone as a single ray):
-// every bundle size must give what intersect() gives ray by ray, misses included.
+// every bundle size (9: a lone ray after a full packet) must give what intersect() gives ray by
+// ray, misses included.
 void TestMlt::coherentRaysMatchSingleRays() {
     const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
     const RenderScene scene(snapshot, 64, 48);
     const Sensor& camera = scene.camera();
     Rng rng(11, 0);
     int hits = 0, misses = 0;
-    for (const size_t n : {size_t(1), size_t(3), size_t(8), size_t(13)}) {
+    for (const size_t n : {size_t(1), size_t(3), size_t(8), size_t(9), size_t(13)}) {
         for (int bundle = 0; bundle < 50; ++bundle) {
             const V2f centre = rasterPoint(camera, rng.next2D());
             std::vector<Ray> rays;
@@ -649,7 +650,6 @@ void TestMlt::coherentRaysMatchSingleRays() {
     }
     QVERIFY2(hits > 500 && misses > 0, qPrintable(QString("%1 hits, %2 misses: the rays see too little").arg(hits).arg(misses)));
 }
-
 
 // A path-space contribution's scale is free and can be tiny (a path through many glass faces of
 // the caustic scene came to 4e-41, a denormal); deposited with weight 1 / f it must still give its

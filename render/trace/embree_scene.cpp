@@ -104,6 +104,10 @@ size_t EmbreeScene::replay(const std::vector<RayRecorder::Entry>& rays) const {
 
 RayHit EmbreeScene::intersect(const Ray& ray) const {
     if (recorder_) [[unlikely]] record(ray, false);
+    return intersectUnrecorded(ray);
+}
+
+RayHit EmbreeScene::intersectUnrecorded(const Ray& ray) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRayHit rh;
@@ -141,6 +145,10 @@ void EmbreeScene::intersectCoherent(const Ray* rays, RayHit* hits, size_t count)
     alignas(32) int valid[8];
     for (size_t base = 0; base < count; base += 8) {
         const size_t n = std::min<size_t>(8, count - base);
+        if (n == 1) {  // a packet of one ray would only run the wide traversal on one lane
+            hits[base] = intersectUnrecorded(rays[base]);
+            continue;
+        }
         for (size_t i = 0; i < 8; ++i) {
             valid[i] = i < n ? -1 : 0;
             const Ray& ray = rays[base + (i < n ? i : 0)];

@@ -68,8 +68,9 @@ public:
     // True when anything lies in (tNear, tFar).
     bool occluded(const Ray& ray) const;
 
-    // Closest hits for many rays at once, traced as 8-wide packets with Embree's coherent flag:
-    // for camera rays and other bundles whose rays share an origin region and direction.
+    // Closest hits for many rays at once, traced as 8-wide packets with Embree's coherent flag
+    // (a lone ray as a single ray): for camera rays and other bundles whose rays share an origin
+    // region and direction.
     void intersectCoherent(const Ray* rays, RayHit* hits, size_t count) const;
 
     // Benchmarks only: while set, intersect() and occluded() append their rays to it.
@@ -80,6 +81,7 @@ public:
 
 private:
     void record(const Ray& ray, bool shadow) const;
+    RayHit intersectUnrecorded(const Ray& ray) const;
 
     RayRecorder* recorder_ = nullptr;
     struct Impl;

@@ -1,5 +1,7 @@
 #include "render/trace/render_scene.h"
 
+#include <algorithm>
+
 namespace lucerna {
 
 RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Sensor* sensor)
@@ -76,14 +78,14 @@ std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t) con
 }
 
 void RenderScene::intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfacePoint>> hits) const {
-    if (rays.size() == 1) {  // a packet of one ray would only run the wide traversal on one lane
-        hits[0] = intersect(rays[0]);
-        return;
+    // A packet's width at a time, so that the lens steps' bundles need no heap buffer.
+    for (size_t base = 0; base < rays.size(); base += 8) {
+        const size_t n = std::min<size_t>(8, rays.size() - base);
+        RayHit raw[8];
+        accel_->intersectCoherent(rays.data() + base, raw, n);
+        for (size_t i = 0; i < n; ++i)
+            hits[base + i] = raw[i].found() ? std::optional(surfacePoint(raw[i].triangle, raw[i].b1, raw[i].b2)) : std::nullopt;
     }
-    std::vector<RayHit> raw(rays.size());
-    accel_->intersectCoherent(rays.data(), raw.data(), rays.size());
-    for (size_t i = 0; i < rays.size(); ++i)
-        hits[i] = raw[i].found() ? std::optional(surfacePoint(raw[i].triangle, raw[i].b1, raw[i].b2)) : std::nullopt;
 }
 
 bool RenderScene::unoccluded(const SurfacePoint& a, const SurfacePoint& b) const {

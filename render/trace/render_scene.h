@@ -44,7 +44,7 @@ public:
     // Closest surface along the ray, if any.
     std::optional<SurfacePoint> intersect(const Ray& ray, float* t = nullptr) const;
     // Closest hits of a bundle of coherent rays (camera rays through nearby pixels), traced as
-    // Embree packets (a single ray alone): the same answers as intersect(), ray by ray.
+    // Embree packets: the same answers as intersect(), ray by ray.
     void intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfacePoint>> hits) const;
     // Point at barycentrics (b1, b2) of a triangle, with its error bound.
     SurfacePoint surfacePoint(uint32_t tri, float b1, float b2) const;
