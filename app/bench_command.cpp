@@ -5,10 +5,11 @@
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
+#include "core/number_format.h"
 #include "core/scene_io.h"
 #include "core/task_system.h"
-#include "render/progressive/backend.h"
-#include "render/progressive/progressive_render.h"
+#include "render/backend/pass_loop.h"
+#include "render/engine/backend_table.h"
 
 #include <charconv>
 #include <chrono>
@@ -110,10 +111,7 @@ BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
 }
 
 std::string formatValue(double v) {
-    if (!std::isfinite(v)) return "nan";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
+    return std::isfinite(v) ? formatNumber(v, 6) : "nan";
 }
 
 // One backend for the budget. The driver publishes a frame after every pass (publishSeconds 0:
@@ -138,7 +136,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
         rays.resetCounts();  // the passes' rays only, as the time is the passes' only
-        runProgressive(*backend, run.backend, settings, ctx, &latest, 0.0);
+        runProgressive(*backend, run.backend, settings, ctx, &latest, {.publishSeconds = 0});
     });
 
     std::vector<BenchSample> samples;

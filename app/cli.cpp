@@ -4,14 +4,15 @@
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
 #include "core/luminaire.h"
+#include "core/number_format.h"
 #include "core/scene_io.h"
 #include "core/task_system.h"
-#include "render/progressive/backend.h"
-#include "render/progressive/progressive_render.h"
+#include "render/backend/light_layers/layered_backend.h"
+#include "render/backend/pass_loop.h"
+#include "render/display/display.h"
+#include "render/engine/backend_table.h"
 #include "render/photometry/illuminance_layer.h"
-#include "render/progressive/light_layers/layered_backend.h"
 #include "render/trace/surface_layers.h"
-#include "ui/display.h"
 
 #include <QSaveFile>
 
@@ -172,11 +173,7 @@ const char* materialTypeName(MaterialType t) {
     return "?";
 }
 
-std::string formatLumens(double lm) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.6g", lm);
-    return buf;
-}
+std::string formatLumens(double lm) { return formatNumber(lm, 6); }
 
 // A luminaire's file against itself: the flux it states, the flux its table integrates to (exact
 // for the bilinear table), its peak; then what the scene makes of it. Files whose two fluxes
@@ -208,11 +205,7 @@ void printLuminaire(const Light& l) {
 // lights from their distribution's solid angle, of emissive objects pi A L (one-sided Lambertian,
 // A in m^2), and the illuminance a directional light gives a surface facing it.
 void printPhotometry(const Scene& scene) {
-    const auto lumens = [](double watts) {
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.6g", watts * kLumensPerWatt);
-        return std::string(buf);
-    };
+    const auto lumens = [](double watts) { return formatLumens(watts * kLumensPerWatt); };
     for (const Light& l : scene.lights) {
         std::cout << "  " << l.name << ": ";
         switch (l.type) {

@@ -3,10 +3,10 @@
 
 #include "core/atomic_file.h"
 #include "core/calculation_grid.h"
+#include "core/scene_geometry.h"
 #include "core/scene_io.h"
+#include "render/engine/backend_table.h"
 #include "render/photometry/grid_calculation.h"
-#include "render/progressive/backend.h"
-#include "ui/scene_geometry.h"
 
 #include <cmath>
 #include <cstdio>

@@ -10,9 +10,9 @@
 
 #include "core/scene_io.h"
 #include "core/task_system.h"
-#include "render/progressive/film.h"
+#include "render/backend/film.h"
 #include "render/progressive/path/path_backend.h"
-#include "render/progressive/path/path_settings.h"
+#include "render/trace/path_settings.h"
 #include "render/trace/render_scene.h"
 
 #include <chrono>

@@ -3,7 +3,7 @@
 // save(load(file)) loses nothing, plus the resolved world-space triangle meshes that backends use.
 
 #include "core/math.h"
-#include "core/photometry.h"
+#include "core/photometric_units.h"
 
 #include <memory>
 #include <optional>

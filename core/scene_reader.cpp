@@ -3,15 +3,16 @@
 // "<file>: <JSON path>: <problem>".
 
 #include "core/json_reader.h"
+#include "core/json_string.h"
 #include "core/luminaire.h"
 #include "core/mesh_file.h"
+#include "core/number_format.h"
 #include "core/scene_io.h"
 
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
 
-#include <charconv>
 #include <cfloat>
 #include <map>
 #include <unordered_map>
@@ -26,30 +27,9 @@ using json::Value;
 inline constexpr int kMaxResolution = 16384;
 inline constexpr const char* kTopLevel = "top level";
 
-std::string formatNumber(double x) {
-    char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
-
 // A string from the file, quoted as JSON would, so that a message stays on one line whatever
 // the file holds.
-std::string quote(const std::string& s) {
-    std::string out = "\"";
-    for (unsigned char c : s) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += char(c);
-        } else if (c < 0x20 || c == 0x7f) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04X", c);
-            out += buf;
-        } else {
-            out += char(c);
-        }
-    }
-    return out + "\"";
-}
+std::string quote(const std::string& s) { return jsonQuoted(s, JsonEscapes::OneLine); }
 
 bool isPlainKey(const std::string& key) {
     if (key.empty() || std::isdigit(static_cast<unsigned char>(key[0]))) return false;
@@ -76,13 +56,13 @@ public:
         // The version first: a newer file may well have keys this reader does not know.
         const Value& version = required(root, top, "lucerna");
         const double v = integer(version, "lucerna");
-        if (v != 1) fail("lucerna", "unsupported format version " + formatNumber(v) + " (this reader reads version 1)");
+        if (v != 1) fail("lucerna", "unsupported format version " + shortestNumber(v) + " (this reader reads version 1)");
         checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights"});
         scene.version = 1;
         if (const Value* mpu = root.find("meters_per_unit")) {
             scene.metersPerUnit = number(*mpu, "meters_per_unit");
             if (!(scene.metersPerUnit > 0))
-                fail("meters_per_unit", "must be positive, got " + formatNumber(scene.metersPerUnit));
+                fail("meters_per_unit", "must be positive, got " + shortestNumber(scene.metersPerUnit));
             scene.metersPerUnitGiven = true;
         }
         scene.camera = parseCamera(required(root, top, "camera"), "camera");
@@ -138,7 +118,7 @@ private:
     // fractional part (2, 2.0, 2e0) is an integer.
     double integer(const Value& v, const std::string& place) const {
         const double x = number(v, place);
-        if (x != std::floor(x)) fail(place, "expected an integer, got " + formatNumber(x));
+        if (x != std::floor(x)) fail(place, "expected an integer, got " + shortestNumber(x));
         return x;
     }
 
@@ -147,8 +127,8 @@ private:
         const double x = number(v, place);
         const bool ok = (loOpen ? x > lo : x >= lo) && (hiOpen ? x < hi : x <= hi);
         if (!ok)
-            fail(place, "must be in " + std::string(loOpen ? "(" : "[") + formatNumber(lo) + ", " + formatNumber(hi) +
-                            (hiOpen ? ")" : "]") + unit + ", got " + formatNumber(x));
+            fail(place, "must be in " + std::string(loOpen ? "(" : "[") + shortestNumber(lo) + ", " + shortestNumber(hi) +
+                            (hiOpen ? ")" : "]") + unit + ", got " + shortestNumber(x));
         return x;
     }
 
@@ -184,7 +164,7 @@ private:
         for (size_t i = 0; i < 3; ++i) {
             c[i] = fraction ? numberIn(a.array[i], item(place, i), 0, false, 1, false)
                             : number(a.array[i], item(place, i));
-            if (!fraction && c[i] < 0) fail(item(place, i), "must be at least 0, got " + formatNumber(c[i]));
+            if (!fraction && c[i] < 0) fail(item(place, i), "must be at least 0, got " + shortestNumber(c[i]));
         }
         return Rgbd(c[0], c[1], c[2]);
     }
@@ -202,7 +182,7 @@ private:
         for (size_t i = 0; i < 2; ++i) {
             const double n = integer(res.array[i], item(resPlace, i));
             if (n < 1 || n > kMaxResolution)
-                fail(item(resPlace, i), "must be from 1 to " + std::to_string(kMaxResolution) + ", got " + formatNumber(n));
+                fail(item(resPlace, i), "must be from 1 to " + std::to_string(kMaxResolution) + ", got " + shortestNumber(n));
             size[i] = int(n);
         }
         c.width = size[0];
@@ -243,7 +223,7 @@ private:
                 mat.type = MaterialType::Dielectric;
                 checkKeys(m.value, here, {"type", "ior"}, what);
                 mat.ior = number(required(m.value, here, "ior"), member(here, "ior"));
-                if (!(mat.ior > 0)) fail(member(here, "ior"), "must be positive, got " + formatNumber(mat.ior));
+                if (!(mat.ior > 0)) fail(member(here, "ior"), "must be positive, got " + shortestNumber(mat.ior));
             } else if (type == "emitter") {
                 mat.type = MaterialType::Emitter;
                 checkKeys(m.value, here, {"type", "radiance"}, what);
@@ -312,7 +292,7 @@ private:
                 for (size_t k = 0; k < 3; ++k) {
                     const double n = integer(t.array[k], item(here, k));
                     if (n < 0 || n >= double(m.vertices.size()))
-                        fail(item(here, k), "index " + formatNumber(n) + " is out of range (the mesh has " +
+                        fail(item(here, k), "index " + shortestNumber(n) + " is out of range (the mesh has " +
                                                 std::to_string(m.vertices.size()) + " vertices)");
                     idx[k] = int(n);
                 }
@@ -433,7 +413,7 @@ private:
         if (const Value* r = v.find("rotation")) s.rotationDeg = number(*r, member(place, "rotation"));
         if (const Value* lm = v.find("lumens")) {
             s.lumens = number(*lm, member(place, "lumens"));
-            if (!(*s.lumens >= 0)) fail(member(place, "lumens"), "must be at least 0, got " + formatNumber(*s.lumens));
+            if (!(*s.lumens >= 0)) fail(member(place, "lumens"), "must be at least 0, got " + shortestNumber(*s.lumens));
         }
         const Value* colourValue = v.find("color");
         const Value* temperature = v.find("temperature");
@@ -465,7 +445,7 @@ private:
         p.quantity = lumens ? PhotometricSpec::Quantity::Lumens : PhotometricSpec::Quantity::Candela;
         const std::string key = lumens ? "lumens" : "candela";
         p.value = number(lumens ? *lumens : *candela, member(place, key));
-        if (!(p.value >= 0)) fail(member(place, key), "must be at least 0, got " + formatNumber(p.value));
+        if (!(p.value >= 0)) fail(member(place, key), "must be at least 0, got " + shortestNumber(p.value));
         if (colourValue && temperature) fail(place, "give color or temperature, not both");
         if (colourValue) {
             p.colour = colour(*colourValue, member(place, "color"), false);

@@ -3,12 +3,13 @@
 // keeps the order of everything, writes numbers in their shortest form that reads back to the
 // same double, and wraps long vertex and index lists.
 
+#include "core/json_string.h"
+#include "core/number_format.h"
 #include "core/scene_io.h"
 
 #include <QSaveFile>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -17,33 +18,8 @@ namespace lucerna {
 
 namespace {
 
-std::string num(double x) {
-    char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest round-trip form
-    return std::string(buf, r.ptr);
-}
-
-std::string str(const std::string& s) {
-    std::string out = "\"";
-    for (unsigned char c : s) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        case '\r': out += "\\r"; break;
-        default:
-            if (c < 0x20) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04X", c);
-                out += buf;
-            } else {
-                out += char(c);
-            }
-        }
-    }
-    return out + "\"";
-}
+std::string num(double x) { return shortestNumber(x); }
+std::string str(const std::string& s) { return jsonQuoted(s, JsonEscapes::Short); }
 
 std::string vec(double x, double y, double z) { return "[" + num(x) + ", " + num(y) + ", " + num(z) + "]"; }
 std::string vec(const V3d& v) { return vec(v.x, v.y, v.z); }

@@ -3,8 +3,8 @@
 
 #include "core/scene_io.h"
 #include "core/task_system.h"
-#include "render/progressive/backend.h"
-#include "render/progressive/progressive_render.h"
+#include "render/backend/pass_loop.h"
+#include "render/engine/backend_table.h"
 
 #include <stdexcept>
 #include <string>

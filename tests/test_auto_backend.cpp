@@ -1,10 +1,10 @@
-// The backend table (render/progressive/backend.h): `--backend auto` (auto_backend.cpp) gives
+// The backend table (render/engine/backend_table.h): `--backend auto` (auto_backend.cpp) gives
 // different scenes the backends their light transport needs, each with a one-line reason; every
 // option key the table lists for a backend is one its settings read, and a key none of the
 // given backends reads is refused with a one-line message.
 
 #include "core/scene_io.h"
-#include "render/progressive/backend.h"
+#include "render/engine/backend_table.h"
 
 #include <QtTest>
 

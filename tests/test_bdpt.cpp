@@ -9,8 +9,8 @@
 #include "hard_case_scenes.h"
 #include "render/progressive/bdpt/bdpt_backend.h"
 #include "render/progressive/bdpt/bdpt_tracer.h"
-#include "render/trace/rng.h"
 #include "render/trace/render_scene.h"
+#include "render/trace/rng.h"
 #include "render_helpers.h"
 
 #include <QtTest>

@@ -6,11 +6,11 @@
 // go to the test's working directory (the build's tests/ folder).
 
 #include "core/image_metrics.h"
+#include "render/display/display.h"
+#include "render/display/false_colour.h"
 #include "ui/compare_canvas.h"
 #include "ui/compare_view.h"
-#include "ui/display.h"
 #include "ui/display_controls.h"
-#include "ui/false_colour.h"
 #include "ui/pixel_probe.h"
 #include "ui/view_transform.h"
 

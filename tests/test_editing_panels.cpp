@@ -6,9 +6,8 @@
 #include "core/exr_io.h"
 #include "core/luminaire.h"
 #include "core/scene_io.h"
-#include "render/trace/camera.h"
 #include "file_helpers.h"
-#include "window_test_helpers.h"
+#include "render/trace/camera.h"
 #include "ui/colour_edit.h"
 #include "ui/commands/material_commands.h"
 #include "ui/converging_render.h"
@@ -19,6 +18,7 @@
 #include "ui/outliner.h"
 #include "ui/properties_panel.h"
 #include "ui/viewport.h"
+#include "window_test_helpers.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,9 +4,9 @@
 // of a closed sphere (indirect light only, uniform), for the path and the VPL estimators.
 
 #include "closed_form_scenes.h"
-#include "csv_table.h"
 #include "core/calculation_grid.h"
 #include "core/exr_io.h"
+#include "csv_table.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/grid_statistics.h"
 #include "render/photometry/illuminance_layer.h"

@@ -3,18 +3,18 @@
 // the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
 
 #include "closed_form_scenes.h"
-#include "csv_table.h"
 #include "core/calculation_grid.h"
+#include "csv_table.h"
+#include "render/display/display.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/commands/light_commands.h"
-#include "window_test_helpers.h"
-#include "ui/grid_panel.h"
 #include "ui/compare_view.h"
-#include "ui/display.h"
 #include "ui/display_controls.h"
+#include "ui/grid_panel.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
 #include "ui/viewport.h"
+#include "window_test_helpers.h"
 
 #include <QAction>
 #include <QComboBox>

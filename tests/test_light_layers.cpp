@@ -4,8 +4,8 @@
 // floor, Lambert's formula and E = I cos / r^2), for several backends.
 
 #include "closed_form_scenes.h"
-#include "render/progressive/light_layers/layered_backend.h"
-#include "render/progressive/light_layers/light_groups.h"
+#include "render/backend/light_layers/layered_backend.h"
+#include "render/backend/light_layers/light_groups.h"
 #include "render_helpers.h"
 
 #include <QTest>

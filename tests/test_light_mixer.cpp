@@ -3,7 +3,7 @@
 // (a light moved) restarts it. Checks the frames' pixels against the layers they carry.
 
 #include "closed_form_scenes.h"
-#include "render/progressive/light_layers/light_groups.h"
+#include "render/backend/light_layers/light_groups.h"
 #include "ui/commands/light_commands.h"
 #include "ui/converging_render.h"
 #include "ui/main_window.h"

@@ -2,8 +2,8 @@
 // the flux carried by emitted particles against the lights' total power in closed form.
 
 #include "chi_square.h"
-#include "render_helpers.h"
 #include "render/trace/render_scene.h"
+#include "render_helpers.h"
 
 #include <QtTest>
 

@@ -6,8 +6,8 @@
 // E = I(C, gamma) cos / d^2 for path, bdpt (all strategies and light tracing alone), ir, mir,
 // mlt, cmlt and the preview, with the luminaire turned about its nadir; and `lucerna info`.
 
-#include "closed_form_scenes.h"
 #include "chi_square.h"
+#include "closed_form_scenes.h"
 #include "core/eulumdat_file.h"
 #include "core/ies_file.h"
 #include "core/luminaire.h"

@@ -2,9 +2,9 @@
 // file, the rotation and the flux in place of the intensity, and edits of the rotation and the
 // flux are undoable document edits that the scene file keeps.
 
-#include "core/document.h"
 #include "core/luminaire.h"
 #include "core/scene_io.h"
+#include "ui/document.h"
 #include "ui/light_properties.h"
 
 #include <QDoubleSpinBox>

@@ -5,23 +5,23 @@
 // the test's working directory, the build's tests/ folder).
 
 #include "core/exr_io.h"
-#include "core/scene_io.h"
-#include "window_test_helpers.h"
-#include "ui/autosave.h"
-#include "ui/commands/light_commands.h"
-#include "ui/recent_files.h"
 #include "core/image_metrics.h"
+#include "core/scene_io.h"
+#include "render/display/display.h"
+#include "ui/autosave.h"
 #include "ui/camera_navigation.h"
+#include "ui/commands/light_commands.h"
 #include "ui/compare_canvas.h"
 #include "ui/compare_view.h"
-#include "ui/display.h"
 #include "ui/converging_render.h"
 #include "ui/light_properties.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
 #include "ui/outliner.h"
+#include "ui/recent_files.h"
 #include "ui/render_panel.h"
 #include "ui/viewport.h"
+#include "window_test_helpers.h"
 
 #include <QAction>
 #include <QApplication>

@@ -1,4 +1,4 @@
-// The Metropolis kernel of the `mir` backend (render/progressive/mir/metropolis.h) on a small 2D
+// The Metropolis kernel of the `mir` backend (render/vpl/metropolis.h) on a small 2D
 // target with a known integral:
 //   - stationary density: many independent chains, each started from an exact sample of the
 //     target (rejection sampling) and advanced k steps; their final states must follow the
@@ -9,7 +9,7 @@
 // A kernel with a wrong acceptance ratio (e.g. the MTM ratio without the reference set) fails
 // the chi-square test: see brokenKernelIsDetected.
 
-#include "render/progressive/mir/metropolis.h"
+#include "render/vpl/metropolis.h"
 #include "tests/chi_square.h"
 
 #include <QtTest/QtTest>

@@ -26,8 +26,8 @@
 #include "render/progressive/cmlt/path_caustic.h"
 #include "render/progressive/cmlt/path_lens.h"
 #include "render/progressive/mlt/mlt_chain.h"
-#include "render/trace/render_scene.h"
 #include "render/trace/pss_sampler.h"
+#include "render/trace/render_scene.h"
 #include "render_helpers.h"
 #include "tests/chi_square.h"
 

@@ -6,11 +6,11 @@
 
 #include "core/model_import.h"
 #include "core/scene_io.h"
-#include "render/trace/camera.h"
 #include "file_helpers.h"
-#include "window_test_helpers.h"
+#include "render/trace/camera.h"
 #include "ui/live_preview.h"
 #include "ui/main_window.h"
+#include "window_test_helpers.h"
 
 #include <QAction>
 #include <QBuffer>

@@ -1,8 +1,8 @@
-// Photometric lights (core/photometry.h; README "Photometric lights"): lumens and candela with a
+// Photometric lights (core/photometric_units.h; README "Photometric lights"): lumens and candela with a
 // colour or a blackbody temperature, converted to radiant intensity by 683 lm/W and Rec.709
 // luminance; read, written back, rejected when malformed, and rendered as a closed form says.
 
-#include "core/photometry.h"
+#include "core/photometric_units.h"
 #include "core/scene_io.h"
 #include "render_helpers.h"
 

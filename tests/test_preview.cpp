@@ -288,7 +288,7 @@ void TestPreview::directLightMatchesPathTracer() {
 }
 
 // The preview's albedo layer (from its G-buffer) is the floor's albedo under every pixel, and
-// illuminance read off the preview as pi L / albedo (ui/display.h) is E = I cos / r^2.
+// illuminance read off the preview as pi L / albedo (render/display/display.h) is E = I cos / r^2.
 void TestPreview::albedoLayerGivesIlluminance() {
     DeltaLightOverPlane sc;
     const SceneSnapshot scene = sceneFromJson(sc.json());

@@ -8,7 +8,6 @@
 #include "core/image.h"
 #include "core/scene_io.h"
 #include "render/trace/surface_pick.h"
-#include "window_test_helpers.h"
 #include "ui/camera_navigation.h"
 #include "ui/light_gizmo.h"
 #include "ui/light_placement.h"
@@ -16,6 +15,7 @@
 #include "ui/main_window.h"
 #include "ui/outliner.h"
 #include "ui/viewport.h"
+#include "window_test_helpers.h"
 
 #include <QAction>
 #include <QApplication>

@@ -4,7 +4,7 @@
 // close removes the file. A recovery file found at the next start was left by a session that did
 // not end cleanly, and is offered back.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QObject>
 #include <QString>

@@ -4,7 +4,7 @@
 // second), with an optional false-colour legend. Wheel zooms about the cursor, a drag pans, and
 // the cursor's image point is reported for the pixel probe.
 
-#include "ui/false_colour.h"
+#include "render/display/false_colour.h"
 
 #include <QImage>
 #include <QWidget>

@@ -1,9 +1,9 @@
 #include "ui/compare_view.h"
 
 #include "core/image_metrics.h"
+#include "render/display/false_colour.h"
 #include "ui/compare_canvas.h"
 #include "ui/display_controls.h"
-#include "ui/false_colour.h"
 #include "ui/pixel_probe.h"
 #include "ui/view_transform.h"
 

@@ -8,7 +8,7 @@
 // resampled (nearest) to the converged image's size, which is what the eye compares.
 
 #include "core/image.h"
-#include "ui/display.h"
+#include "render/display/display.h"
 
 #include <QWidget>
 

@@ -1,53 +1,12 @@
 #include "ui/converging_render.h"
 
-#include "render/progressive/backend.h"
-#include "render/progressive/light_layers/layered_backend.h"
-#include "render/trace/surface_layers.h"
+#include "render/backend/light_layers/layered_backend.h"
+#include "render/engine/backend_table.h"
 
 #include <algorithm>
-#include <chrono>
-#include <optional>
 #include <cmath>
-#include <thread>
 
 namespace lucerna {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-
-// Passes until cancelled, holding between passes while paused or while the gate is held. Render
-// time excludes the held time, so the error plot is against time actually spent rendering.
-// Frames carry the albedo under each pixel from the fifth pass on (traced once, after the first
-// pictures are out), so that the lux view can divide by it (display.h, pixelIlluminance).
-void runUntilCancelled(ProgressiveBackend& backend, const SceneSnapshot& scene, const std::string& name,
-                       const RenderSettings& settings, TaskContext& ctx, Latest<RenderFrame>& latest,
-                       const std::atomic<bool>& paused, const std::atomic<int>& gate) {
-    double rendered = 0, lastPublish = -1;
-    int passes = 0;
-    std::optional<SurfaceLayers> surfaces;
-    const auto publish = [&] {
-        RenderFrame frame = makeRenderFrame(backend, name, settings, rendered, passes);
-        if (passes >= 4 && !surfaces)
-            surfaces = traceSurfaceLayers(RenderScene(scene, backend.film().width(), backend.film().height()));
-        if (surfaces) addSurfaceLayers(frame.image, *surfaces, kAlbedoLayer);
-        latest.publish(std::make_shared<const RenderFrame>(std::move(frame)));
-        lastPublish = rendered;
-    };
-    while (!ctx.isCancelled()) {
-        if (paused.load() || gate.load() > 0) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(10));
-            continue;
-        }
-        const auto t0 = Clock::now();
-        backend.renderPass(ctx, passes);
-        if (ctx.isCancelled()) break;
-        ++passes;
-        rendered += std::chrono::duration<double>(Clock::now() - t0).count();
-        // Frequent frames at first (the picture changes most), then every half second.
-        if (passes <= 4 || rendered - lastPublish >= 0.5) publish();
-    }
-}
-}  // namespace
 
 ConvergingRender::ConvergingRender(TaskSystem& tasks, const YieldGate& gate, QObject* parent)
     : QObject(parent), tasks_(tasks), gate_(gate) {
@@ -164,7 +123,12 @@ void ConvergingRender::relaunch() {
                           latest = latest_, paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
         auto backend = layered ? makeLayeredBackend(make, scene, settings) : make(scene, settings);
         backend->prepare(ctx);
-        runUntilCancelled(*backend, scene, name, settings, ctx, *latest, *paused, *gate);
+        PassLoopOptions loop;
+        loop.openEnded = true;
+        loop.eagerPasses = 4;
+        loop.hold = [&paused = *paused, &gate = *gate] { return paused.load() || gate.load() > 0; };
+        loop.albedoScene = scene;
+        runProgressive(*backend, name, settings, ctx, latest.get(), loop);
     });
     emit stateChanged();
 }

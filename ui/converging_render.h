@@ -7,8 +7,8 @@
 
 #include "core/scene.h"
 #include "core/task_system.h"
-#include "render/progressive/light_layers/light_groups.h"
-#include "render/progressive/progressive_render.h"
+#include "render/backend/light_layers/light_groups.h"
+#include "render/backend/pass_loop.h"
 #include "ui/yield_gate.h"
 
 #include <QObject>
@@ -38,7 +38,7 @@ public:
     const std::string& backendInUse() const { return inUse_; }
     const std::string& autoReason() const { return reason_; }
 
-    // Per-light layers (render/progressive/light_layers): the backend renders one layer per
+    // Per-light layers (render/backend/light_layers): the backend renders one layer per
     // light, and an edit that changes only the lights' emission (dimming, switching off,
     // recolouring) re-mixes the layers at once instead of restarting. Restarts when running.
     void setLightLayers(bool on);

@@ -2,7 +2,7 @@
 // The display settings a user changes: exposure in stops, and how radiance becomes a picture
 // (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range).
 
-#include "ui/display.h"
+#include "render/display/display.h"
 
 #include <QWidget>
 

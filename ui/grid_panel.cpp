@@ -1,8 +1,8 @@
 #include "ui/grid_panel.h"
 
 #include "core/atomic_file.h"
-#include "ui/display.h"
-#include "ui/scene_geometry.h"
+#include "core/scene_geometry.h"
+#include "render/display/display.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

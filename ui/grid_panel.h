@@ -9,9 +9,9 @@
 // passes indefinitely) and holds the yield gate, so the render waits until it is done.
 
 #include "core/calculation_grid.h"
-#include "core/document.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
+#include "ui/document.h"
 #include "ui/yield_gate.h"
 
 #include <QTimer>

@@ -1,5 +1,6 @@
 #include "ui/image_export.h"
 
+#include "core/number_format.h"
 #include "render/trace/surface_layers.h"
 
 #include <QDir>

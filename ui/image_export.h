@@ -4,7 +4,7 @@
 // and the lucerna: attributes; and the picture on the screen as a PNG.
 
 #include "core/image.h"
-#include "render/progressive/progressive_render.h"
+#include "render/backend/pass_loop.h"
 #include "ui/live_preview.h"
 
 #include <QImage>

@@ -4,7 +4,7 @@
 // plain QWidget rather than a QOpenGLWidget: the frames are images already, and Qt's offscreen
 // platform, which the tests use, cannot run a QOpenGLWidget.
 
-#include "ui/false_colour.h"
+#include "render/display/false_colour.h"
 
 #include <QImage>
 #include <QWidget>

@@ -1,8 +1,8 @@
 #include "ui/light_properties.h"
 
 #include "core/luminaire.h"
+#include "core/scene_geometry.h"
 #include "ui/commands/light_commands.h"
-#include "ui/scene_geometry.h"
 #include "ui/viewport.h"
 
 #include <QDoubleSpinBox>

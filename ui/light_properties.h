@@ -5,7 +5,7 @@
 // total flux in lumens instead of the intensity. Every change is an EditLightCommand: the arrow steps
 // of one field merge into one undo step until the field's editing finishes.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QWidget>
 

@@ -1,8 +1,8 @@
 #include "ui/live_preview.h"
 
 #include "core/resources.h"
+#include "render/engine/backend_table.h"
 #include "render/preview/preview.h"
-#include "render/progressive/backend.h"
 
 #include <chrono>
 #include <condition_variable>
@@ -22,18 +22,6 @@ struct LivePreview::Shared {
 
 namespace {
 using Clock = std::chrono::steady_clock;
-
-// Same geometry and materials: only the camera or lights differ, so the OpenGL preview can keep
-// its G-buffer inputs and regenerate only what changed.
-bool sameGeometry(const Scene& a, const Scene& b) {
-    if (a.objects.size() != b.objects.size() || a.lights.size() != b.lights.size()) return false;
-    if (a.materials != b.materials || a.metersPerUnit != b.metersPerUnit) return false;
-    if (a.camera.width != b.camera.width || a.camera.height != b.camera.height) return false;
-    for (size_t i = 0; i < a.objects.size(); ++i)
-        if (a.objects[i].worldMesh != b.objects[i].worldMesh || a.objects[i].material != b.objects[i].material)
-            return false;
-    return true;
-}
 
 void previewSize(const Camera& c, int longSide, int& w, int& h) {
     const double s = std::min(1.0, double(longSide) / std::max(c.width, c.height));
@@ -60,7 +48,7 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
         std::unique_ptr<Preview> gl;
         bool glFailed = engine == Engine::Path;
         std::string engineName = glFailed ? "path tracer (chosen)" : "";
-        SceneSnapshot shown;
+        bool rebuild = true;  // the first scene, or after a failed frame: everything anew
         uint64_t done = 0;
         while (!ctx.isCancelled()) {
             SceneSnapshot scene;
@@ -92,14 +80,9 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
             frame->scene = scene;
             try {
                 if (gl) {
-                    if (shown && sameGeometry(*shown, *scene)) {
-                        if (!(shown->camera == scene->camera)) gl->setCamera(scene->camera);
-                        for (size_t i = 0; i < scene->lights.size(); ++i)
-                            if (!(shown->lights[i] == scene->lights[i])) gl->setLight(i, scene->lights[i]);
-                    } else {
-                        gl->setScene(scene, w, h);
-                    }
-                    shown = scene;
+                    if (rebuild) gl->setScene(scene, w, h);
+                    else gl->update(scene, w, h);  // the preview redraws what changed
+                    rebuild = false;
                     gl->setAlbedoLayer(albedoLayer);
                     frame->image = gl->render();
                 } else {
@@ -107,7 +90,7 @@ LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QOb
                 }
             } catch (const std::exception& e) {
                 // A frame that fails (a driver error) leaves the old one up; the next edit retries.
-                shown.reset();
+                rebuild = true;
                 std::lock_guard lock(shared->mutex);
                 shared->engine = engineName + "; last frame failed: " + e.what();
                 continue;

@@ -1,7 +1,7 @@
 #pragma once
 // Edit > Add Luminaire: a goniometric luminaire from a manufacturer's IES or EULUMDAT file.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QString>
 

@@ -6,7 +6,7 @@
 
 // oneTBB before any Qt header: Qt's `emit` macro breaks TBB's headers.
 #include "core/task_system.h"
-#include "core/document.h"
+#include "ui/document.h"
 #include "ui/yield_gate.h"
 
 #include <QMainWindow>

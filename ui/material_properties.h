@@ -5,7 +5,7 @@
 // and an emitter's radiance in W sr^-1 m^-2 with its luminance in cd/m^2 (683 Y). Every change is
 // an EditMaterialCommand; a slider drag or a field's arrow steps merge into one undo step.
 
-#include "core/document.h"
+#include "ui/document.h"
 #include "ui/property_rows.h"
 
 #include <QWidget>

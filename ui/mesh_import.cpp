@@ -1,7 +1,7 @@
 #include "ui/mesh_import.h"
 
 #include "core/mesh_file.h"
-#include "ui/scene_geometry.h"
+#include "core/scene_geometry.h"
 
 #include <QDir>
 #include <QFileInfo>

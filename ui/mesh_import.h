@@ -2,7 +2,7 @@
 // File > Import mesh: a mesh file (OBJ, PLY, OFF, STL, as the scene loader reads them) becomes a
 // new object with a diffuse material of its own.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QString>
 

@@ -1,8 +1,8 @@
 #include "ui/model_import_action.h"
 
 #include "core/model_import.h"
+#include "core/scene_geometry.h"
 #include "ui/commands/import_commands.h"
-#include "ui/scene_geometry.h"
 
 #include <QDialogButtonBox>
 #include <QFileInfo>

@@ -3,7 +3,7 @@
 // core/model_import.h into the document as one undo step, and the window that shows what was
 // mapped and what was approximated.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QDialog>
 #include <QStringList>

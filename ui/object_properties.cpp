@@ -1,8 +1,8 @@
 #include "ui/object_properties.h"
 
 #include "core/mesh_file.h"
+#include "core/scene_geometry.h"
 #include "ui/commands/object_commands.h"
-#include "ui/scene_geometry.h"
 
 #include <QComboBox>
 #include <QDir>

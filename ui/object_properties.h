@@ -6,7 +6,7 @@
 // the converging render see the moved object; a field's arrow steps merge into one undo step.
 // A transform given as a matrix is shown as such and not edited here.
 
-#include "core/document.h"
+#include "ui/document.h"
 #include "ui/property_rows.h"
 
 #include <QWidget>

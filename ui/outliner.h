@@ -3,7 +3,7 @@
 // itself when the document's structure changes (add, delete, rename) and keeps the selection
 // where it can.
 
-#include "core/document.h"
+#include "ui/document.h"
 
 #include <QTreeWidget>
 

@@ -1,6 +1,6 @@
 #include "ui/pixel_probe.h"
 
-#include "ui/display.h"
+#include "render/display/display.h"
 
 #include <cmath>
 

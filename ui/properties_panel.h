@@ -2,7 +2,7 @@
 // The properties dock: the panel of what the outliner selects. A light shows the light panel; an
 // object shows the object panel above its material's panel; a material shows the material panel.
 
-#include "core/document.h"
+#include "ui/document.h"
 #include "ui/outliner.h"
 
 #include <QStackedWidget>

@@ -1,8 +1,8 @@
 #include "ui/render_panel.h"
 
-#include "render/progressive/backend.h"
-#include "ui/display.h"
-#include "ui/false_colour.h"
+#include "render/display/display.h"
+#include "render/display/false_colour.h"
+#include "render/engine/backend_table.h"
 #include "ui/error_plot.h"
 #include "ui/image_view.h"
 

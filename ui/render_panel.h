@@ -4,8 +4,8 @@
 // elapsed render time, samples per pixel, the error estimated from the half-buffers, and their
 // plot against time.
 
+#include "render/display/display.h"
 #include "ui/converging_render.h"
-#include "ui/display.h"
 
 #include <QWidget>
 

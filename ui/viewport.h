@@ -12,8 +12,8 @@
 // Each drag, and each run of held fly keys, is one undo command (its steps merge); while a
 // button is down the converging render yields.
 
-#include "core/document.h"
 #include "render/trace/surface_pick.h"
+#include "ui/document.h"
 #include "ui/image_view.h"
 #include "ui/light_gizmo.h"
 #include "ui/yield_gate.h"

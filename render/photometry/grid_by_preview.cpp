@@ -4,8 +4,8 @@
 #include "render/photometry/grid_statistics.h"
 #include "render/photometry/sensor_render.h"
 
-#include "render/preview/preview_backend.h"
-#include "render/preview/preview_irradiance.h"
+#include "render/preview/headless_backend.h"
+#include "render/preview/hemicube_irradiance.h"
 
 #include <chrono>
 

@@ -10,7 +10,7 @@
 //     bar comes from the spread of the replicas' estimates (Student's t), since the passes of a
 //     Markov chain are not independent. Delta lights, which no ray can hit, are summed exactly
 //     and added, as the path and ir estimators do.
-//   - preview: a hemicube of preview frames at each point (preview_irradiance.h), fresh VPLs and
+//   - preview: a hemicube of preview frames at each point (hemicube_irradiance.h), fresh VPLs and
 //     area-light samples each pass, error bars from the pass means as for path and ir. It
 //     converges to the preview's own answer (clamped VPLs, shadow maps), not to the exact one.
 //

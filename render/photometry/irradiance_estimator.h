@@ -16,10 +16,10 @@
 // choosing one light at random: in a room lit by a few spots, the choice is most of the variance
 // of a point's illuminance.
 
-#include "render/progressive/ir/vpl_gatherer.h"
-#include "render/progressive/path/path_tracer.h"
+#include "render/trace/path_tracer.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"
+#include "render/vpl/vpl_gatherer.h"
 
 #include <span>
 

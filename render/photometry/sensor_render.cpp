@@ -1,5 +1,7 @@
 #include "render/photometry/sensor_render.h"
 
+#include "render/engine/backend_table.h"
+
 #include <numbers>
 #include <stdexcept>
 

@@ -5,8 +5,8 @@
 // measures; the backend sees the sensors from just above their surfaces.
 
 #include "core/task_system.h"
+#include "render/backend/backend.h"
 #include "render/photometry/irradiance_estimator.h"
-#include "render/progressive/backend.h"
 
 #include <memory>
 #include <string>

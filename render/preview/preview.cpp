@@ -1,8 +1,10 @@
 #include "render/preview/preview.h"
 
-#include "render/preview/preview_mir_vpls.h"
-#include "render/preview/preview_state.h"
-#include "render/preview/preview_vpls.h"
+#include "core/scene_change.h"
+
+#include "render/preview/gpu_state.h"
+#include "render/preview/mir_vpl_source.h"
+#include "render/preview/per_light_vpls.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"
 
@@ -65,8 +67,25 @@ void Preview::setSettings(const PreviewSettings& s) {
     if (repartition) st.vplsDirty = true;
 }
 
+void Preview::update(SceneSnapshot scene, int width, int height) {
+    const State& st = *state_;
+    if (current_ && st.scene) {
+        const SceneChange change = diff(*current_, *scene);
+        const int w = width > 0 ? width : scene->camera.width, h = height > 0 ? height : scene->camera.height;
+        if (!change.geometry && !change.materials && !change.lightSet && !change.resolution && w == st.width &&
+            h == st.height) {
+            if (change.camera) setCamera(scene->camera);
+            for (size_t i : change.lights) setLight(i, scene->lights[i]);
+            current_ = std::move(scene);
+            return;
+        }
+    }
+    setScene(std::move(scene), width, height);
+}
+
 void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     State& st = *state_;
+    current_ = snapshot;
     st.snapshot = snapshot;
     st.scene = std::make_unique<RenderScene>(snapshot, width, height);
     // New geometry: every shadow map must be drawn again, wherever its light or VPL is.

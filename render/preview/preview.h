@@ -24,7 +24,7 @@
 namespace lucerna {
 
 // Where the indirect VPLs come from: instant radiosity light paths (per light, so that a light
-// edit regenerates only its set), or Metropolis instant radiosity (preview_mir_vpls.h: VPLs
+// edit regenerates only its set), or Metropolis instant radiosity (mir_vpl_source.h: VPLs
 // where they light what the camera sees; one set for all lights).
 enum class VplSource { InstantRadiosity, Metropolis };
 
@@ -95,6 +95,11 @@ public:
     // Takes a new scene: geometry, materials, lights; generates every light's VPLs.
     // width/height override the camera's resolution (0: keep).
     void setScene(SceneSnapshot scene, int width = 0, int height = 0);
+    // Takes the newest version of the scene and redraws only what changed since the one before
+    // (core/scene_change.h): the camera, the lights that differ (a light whose power alone
+    // changed keeps its VPLs, scaled), or everything (setScene) when geometry, materials, the
+    // number of lights or the size changed. width/height as for setScene.
+    void update(SceneSnapshot scene, int width = 0, int height = 0);
     // A camera move: no VPL is regenerated (MIR's camera-dependent VPLs follow at regenerate()).
     void setCamera(const Camera& camera);
     // Light `index` of the scene changed (same type of edit as the GUI's): only its VPLs and its
@@ -134,7 +139,7 @@ public:
     };
     SplitCheck splitAndGather(const Image& in);
 
-    // The GL objects and CPU-side scene data; opaque (defined in preview_state.h) and public
+    // The GL objects and CPU-side scene data; opaque (defined in gpu_state.h) and public
     // only so that the passes' free functions can take it.
     struct State;
 
@@ -143,6 +148,7 @@ private:
 
     std::unique_ptr<EglContext> context_;
     std::unique_ptr<State> state_;
+    SceneSnapshot current_;  // the scene as of the last setScene() or update()
     PreviewSettings settings_;
     bool albedoLayer_ = false;
     bool whiteReceivers_ = false;

@@ -5,8 +5,8 @@
 
 #include "core/scene.h"
 #include "render/trace/discrete_distribution.h"
-#include "render/trace/goniometric_sampler.h"
 #include "render/trace/embree_scene.h"
+#include "render/trace/goniometric_sampler.h"
 #include "render/trace/surface_point.h"
 
 #include <vector>

@@ -5,9 +5,9 @@
 
 #include "core/scene.h"
 #include "render/trace/bsdf.h"
-#include "render/trace/sensor.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/light_sampler.h"
+#include "render/trace/sensor.h"
 #include "render/trace/surface_point.h"
 
 #include <memory>

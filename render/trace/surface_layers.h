@@ -28,7 +28,7 @@ SurfaceLayers traceSurfaceLayers(const RenderScene& scene);
 // Which layers go into an image (bit flags). kAllLayers is the three surface layers; the
 // illuminance layer (render/photometry/illuminance_layer.h) is a Monte Carlo estimate that costs
 // as much as a render, so it is asked for by name only, and addSurfaceLayers ignores its bit.
-// The per-light layers (render/progressive/light_layers) are rendered by the backend itself.
+// The per-light layers (render/backend/light_layers) are rendered by the backend itself.
 enum LayerBits : unsigned {
     kAlbedoLayer = 1u, kNormalLayer = 2u, kDepthLayer = 4u, kAllLayers = 7u, kIlluminanceLayer = 8u,
     kLightLayers = 16u

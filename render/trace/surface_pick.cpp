@@ -1,5 +1,6 @@
 #include "render/trace/surface_pick.h"
 
+#include "core/scene_change.h"
 #include "render/trace/embree_scene.h"
 
 #include <limits>
@@ -15,13 +16,12 @@ V3d cameraRayDirection(const Camera& c, double x, double y) {
     return (f + r * ((2 * x / c.width - 1) * aspect * t) + u * ((1 - 2 * y / c.height) * t)).normalized();
 }
 
-SurfacePicker::SurfacePicker(const Scene& scene) {
+SurfacePicker::SurfacePicker(const Scene& scene) : scene_(scene) {
     std::vector<V3f> positions;
     std::vector<V3i> triangles;
     V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const auto& mesh = scene.objects[i].worldMesh;
-        meshes_.push_back(mesh);
         if (!mesh) continue;
         const int base = int(positions.size());
         for (const V3d& v : mesh->vertices) {
@@ -42,10 +42,7 @@ SurfacePicker::SurfacePicker(const Scene& scene) {
 SurfacePicker::~SurfacePicker() = default;
 
 bool SurfacePicker::sameGeometry(const Scene& scene) const {
-    if (scene.objects.size() != meshes_.size()) return false;
-    for (size_t i = 0; i < meshes_.size(); ++i)
-        if (scene.objects[i].worldMesh != meshes_[i]) return false;
-    return true;
+    return !diff(scene_, scene).geometry;
 }
 
 std::optional<SurfaceHit> SurfacePicker::intersect(const V3d& origin, const V3d& direction) const {
@@ -53,7 +50,7 @@ std::optional<SurfaceHit> SurfacePicker::intersect(const V3d& origin, const V3d&
     const RayHit hit = accel_->intersect(Ray{toFloat(origin), toFloat(d)});
     if (!hit.found()) return std::nullopt;
     const auto [object, triangle] = owner_[hit.triangle];
-    const TriangleMesh& mesh = *meshes_[size_t(object)];
+    const TriangleMesh& mesh = *scene_.objects[size_t(object)].worldMesh;
     const V3i& tri = mesh.triangles[size_t(triangle)];
     const V3d &a = mesh.vertices[size_t(tri.x)], &b = mesh.vertices[size_t(tri.y)], &c = mesh.vertices[size_t(tri.z)];
     SurfaceHit h;

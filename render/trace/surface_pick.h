@@ -37,7 +37,8 @@ public:
     SurfacePicker& operator=(const SurfacePicker&) = delete;
 
     // True when `scene` has exactly the world meshes this picker was built over (the same
-    // shared mesh data, in the same objects), so that its answers hold for that scene too.
+    // shared mesh data, in the same objects: no geometry change by core/scene_change.h), so that
+    // its answers hold for that scene too.
     bool sameGeometry(const Scene& scene) const;
 
     // The closest surface along the ray (direction need not be unit), if any.
@@ -49,7 +50,7 @@ public:
     double diagonal() const { return diagonal_; }
 
 private:
-    std::vector<std::shared_ptr<const TriangleMesh>> meshes_;  // per object; null where it has none
+    Scene scene_;  // the scene it was built over (its world meshes are shared, not copied)
     std::vector<std::pair<int, int>> owner_;                   // per traced triangle: object, triangle
     std::unique_ptr<EmbreeScene> accel_;
     double diagonal_ = 0;

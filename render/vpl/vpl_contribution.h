@@ -2,7 +2,7 @@
 // What one VPL contributes to a surface point (the formula of vpl.h), with the geometric term
 // clamped: G = |cos_x| |cos_y| / d^2 is singular where a VPL nears the shaded point, so the
 // gatherers use min(G, maxG) and estimate the clamped-away part, (G - maxG)^+, separately
-// (Kollig & Keller 2004; see progressive/ir/ir_integrator.h). The CPU backends gather with it and
+// (Kollig & Keller 2004; see render/vpl/vpl_gatherer.h). The CPU backends gather with it and
 // it is the CPU reference of the preview's shader.
 
 #include "render/trace/render_scene.h"

@@ -1,6 +1,6 @@
 #include "ui/commands/light_commands.h"
 
-#include "ui/scene_geometry.h"
+#include "core/scene_geometry.h"
 
 namespace lucerna {
 

@@ -2,9 +2,9 @@
 // Undo commands on the camera. (Material and object commands have files of their own, included
 // here for the callers that used to find them in this one.)
 
-#include "core/document.h"
 #include "ui/commands/material_commands.h"
 #include "ui/commands/object_commands.h"
+#include "ui/document.h"
 
 #include <QUndoCommand>
 

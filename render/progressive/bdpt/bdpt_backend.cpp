@@ -1,6 +1,7 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 
-#include "render/progressive/backend_options.h"
+#include "render/backend/backend_options.h"
+#include "render/backend/tracing_backend.h"
 #include "render/progressive/bdpt/bdpt_tracer.h"
 #include "render/trace/sobol_sampler.h"
 
@@ -70,22 +71,18 @@ CameraPower estimateCameraPower(const RenderScene& scene, const BdptSettings& se
 
 namespace {
 
-class BdptBackend final : public ProgressiveBackend {
+class BdptBackend final : public TracingBackend {
 public:
     BdptBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), bdptSettings_(BdptSettings::fromOptions(settings)) {}
+        : TracingBackend(std::move(scene), settings), bdptSettings_(BdptSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
-        scene_->setRayRecorder(settings_.rayRecorder);
-        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        prepareSceneAndFilm();
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
         renderBdptPass(*scene_, bdptSettings_, settings_.seed, pass, *film_, ctx);
     }
-
-    const Film& film() const override { return *film_; }
 
     std::map<std::string, std::string> diagnostics() const override {
         const CameraPower pc = cameraPower(*film_);
@@ -95,11 +92,7 @@ public:
     }
 
 private:
-    SceneSnapshot snapshot_;
-    RenderSettings settings_;
     BdptSettings bdptSettings_;
-    std::unique_ptr<RenderScene> scene_;
-    std::unique_ptr<Film> film_;
 };
 
 }  // namespace

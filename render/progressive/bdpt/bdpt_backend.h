@@ -8,7 +8,7 @@
 // and film half) depend only on (seed, pass, pixel) and the light-tracing splats of each tile are added to the film in tile order after
 // the pass, so a render is reproducible bit for bit whatever the number of threads.
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 #include "render/progressive/bdpt/bdpt_settings.h"
 
 namespace lucerna {

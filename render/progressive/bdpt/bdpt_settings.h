@@ -1,6 +1,6 @@
 #pragma once
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 
 namespace lucerna {
 

@@ -11,9 +11,9 @@
 // so that nothing is counted twice. Delta lights (no s = 0), delta BSDFs (mirror, glass: never a
 // connection vertex) and one-sided emitters are handled as the path backend handles them.
 
+#include "render/backend/film.h"
 #include "render/progressive/bdpt/bdpt_settings.h"
 #include "render/progressive/bdpt/bdpt_vertex.h"
-#include "render/progressive/film.h"
 #include "render/trace/sample_generator.h"
 
 #include <optional>

@@ -2,7 +2,7 @@
 // The cmlt backend: the Metropolis scheduler of mlt (mlt_backend.h) with coherent lens
 // sub-chains (cmlt_chain.h).
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 
 namespace lucerna {
 

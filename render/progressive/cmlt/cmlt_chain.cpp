@@ -79,15 +79,13 @@ int CmltChain::lensStep(double scale, bool lightSubpathCurrent, std::vector<Film
     }
 
     const LensMove move = depositAndChoose(current(), scale, out);  // step 3
-    counters_.steps += p;
-    counters_.lensSteps += p;
+    countSteps(cmltCounters_.lensSteps, p);
     if (move.accepted) {
         const V2f& r = rasters_[size_t(move.candidate)];
         sampler.setCoordinate(SampleStream::Camera, 0, r.x / w);
         sampler.setCoordinate(SampleStream::Camera, 1, r.y / h);
         current() = candidates_[size_t(move.candidate)];
-        counters_.accepted += p;
-        counters_.lensAccepted += p;
+        countAccepted(cmltCounters_.lensAccepted, p);
     }
     return p;
 }
@@ -159,22 +157,21 @@ void asDeposit(const Sensor& camera, float x, float y, const Rgb& c, PathContrib
 
 int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
     const int p = std::max(1, settings_.tries), made = settings_.pathLensSteps * p;
-    counters_.steps += made;
     const StrategyRecord* seed = choosePath(current().paths, sampler().rng());
     if (seed) {
         current().paths.path(*seed, pathVertices_);
         if (lensSubChain(*seed, p, scale, out)) {
-            counters_.pathLensSteps += made;
+            countSteps(cmltCounters_.pathLensSteps, made);
             return made;
         }
         if (causticSubChain(p, scale, out)) {
-            counters_.pathCausticSteps += made;
+            countSteps(cmltCounters_.pathCausticSteps, made);
             return made;
         }
     }
     // No perturbation moves this path: every step stays on it (on the whole sample where no
     // path of it can be chosen), so that every seed weighs the same.
-    counters_.pathStillSteps += made;
+    countSteps(cmltCounters_.pathStillSteps, made);
     if (seed) {
         asDeposit(camera_, seed->rasterX, seed->rasterY, seed->weighted, lensState_);
         depositContribution(lensState_, scale * made / lensState_.f, out);
@@ -184,11 +181,33 @@ int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
     return made;
 }
 
+void CmltChain::countSteps(long long& kernelSteps, long long steps) {
+    counters_.steps += steps;
+    counters_.variantSteps += steps;
+    kernelSteps += steps;
+}
+
+void CmltChain::countAccepted(long long& kernelAccepted, long long accepted) {
+    counters_.accepted += accepted;
+    counters_.variantAccepted += accepted;
+    kernelAccepted += accepted;
+}
+
+std::map<std::string, long long> CmltChain::variantCounts() const {
+    const Counters& c = cmltCounters_;
+    return {{"lens_steps", c.lensSteps},
+            {"lens_accepted", c.lensAccepted},
+            {"path_lens_steps", c.pathLensSteps},
+            {"path_lens_accepted", c.pathLensAccepted},
+            {"path_caustic_steps", c.pathCausticSteps},
+            {"path_caustic_accepted", c.pathCausticAccepted},
+            {"path_still_steps", c.pathStillSteps}};
+}
+
 bool CmltChain::takeSubChainMove(const LensMove& move, int p, long long& acceptedOfKind) {
     if (!move.accepted) return false;
     std::swap(lensState_, candidates_[size_t(move.candidate)]);
-    counters_.accepted += p;
-    acceptedOfKind += p;
+    countAccepted(acceptedOfKind, p);
     return true;
 }
 
@@ -205,7 +224,7 @@ bool CmltChain::lensSubChain(const StrategyRecord& seed, int p, double scale, st
             asDeposit(camera_, r.x, r.y, lensPath_.contribution(r.x, r.y, hits_[size_t(i)]), candidates_[size_t(i)]);
         }
         const LensMove move = depositAndChoose(lensState_, scale, out);
-        if (takeSubChainMove(move, p, counters_.pathLensAccepted)) x = rasters_[size_t(move.candidate)];
+        if (takeSubChainMove(move, p, cmltCounters_.pathLensAccepted)) x = rasters_[size_t(move.candidate)];
     }
     return true;
 }
@@ -226,7 +245,7 @@ bool CmltChain::causticSubChain(int p, double scale, std::vector<FilmSplat>& out
             asDeposit(camera_, x, y, ci, candidates_[size_t(i)]);
         }
         const LensMove move = depositAndChoose(lensState_, scale, out);
-        if (takeSubChainMove(move, p, counters_.pathCausticAccepted)) w = directions_[size_t(move.candidate)];
+        if (takeSubChainMove(move, p, cmltCounters_.pathCausticAccepted)) w = directions_[size_t(move.candidate)];
     }
     return true;
 }

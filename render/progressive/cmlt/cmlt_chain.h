@@ -56,8 +56,24 @@ public:
     // Alternates one MLT step (a new seed) with settings.lensSteps lens steps,
     // settings.causticSteps caustic steps and a path-space lens sub-chain, until `steps`.
     int run(int steps, double scale, std::vector<FilmSplat>& out) override;
+    // "lens_steps", "lens_accepted" (primary-sample-space lens steps), "path_lens_steps",
+    // "path_lens_accepted", "path_caustic_steps", "path_caustic_accepted" (the path-space
+    // sub-chains) and "path_still_steps" (steps on paths no perturbation moves).
+    std::map<std::string, long long> variantCounts() const override;
 
 private:
+    // Steps of cmlt's own kernels, each also counted as a step (and acceptance) of the chain.
+    struct Counters {
+        long long lensSteps = 0, lensAccepted = 0;
+        long long pathLensSteps = 0, pathLensAccepted = 0;
+        long long pathCausticSteps = 0, pathCausticAccepted = 0;
+        long long pathStillSteps = 0;  // deposited at once
+    };
+    // Counts `steps` (and `accepted` of them) of one of cmlt's kernels, in its own counter and
+    // the chain's.
+    void countSteps(long long& kernelSteps, long long steps);
+    void countAccepted(long long& kernelAccepted, long long accepted);
+
     // One lens or caustic step; each returns the steps it counts for (tries: one per candidate).
     // lightSubpathCurrent: the tracer holds the current state's light subpath.
     int lensStep(double scale, bool lightSubpathCurrent, std::vector<FilmSplat>& out);
@@ -96,6 +112,7 @@ private:
     std::vector<V3f> directions_;  // the caustic candidates' emission directions
     PathContribution lensState_;   // the path-space sub-chain's current path
     std::vector<PathVertex> pathVertices_;
+    Counters cmltCounters_;
 };
 
 }  // namespace lucerna

@@ -1,7 +1,9 @@
 #include "render/progressive/ir/ir_backend.h"
 
-#include "render/progressive/ir/pixel_loop.h"
-#include "render/progressive/ir/vpl_gatherer.h"
+#include "render/backend/tracing_backend.h"
+#include "render/progressive/ir/ir_settings.h"
+#include "render/vpl/tile_scheduler.h"
+#include "render/vpl/vpl_gatherer.h"
 
 #include <atomic>
 
@@ -9,15 +11,13 @@ namespace lucerna {
 
 namespace {
 
-class IrBackend final : public ProgressiveBackend {
+class IrBackend final : public TracingBackend {
 public:
     IrBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), ir_(IrSettings::fromOptions(settings)) {}
+        : TracingBackend(std::move(scene), settings), ir_(IrSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
-        scene_->setRayRecorder(settings_.rayRecorder);
-        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        prepareSceneAndFilm();
         gatherer_ = std::make_unique<VplGatherer>(*scene_, ir_.gather);
     }
 
@@ -42,8 +42,6 @@ public:
         }
     }
 
-    const Film& film() const override { return *film_; }
-
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
         d["ir_light_paths_per_pass"] = std::to_string(ir_.lightPathsPerPass);
@@ -54,11 +52,7 @@ public:
     }
 
 private:
-    SceneSnapshot snapshot_;
-    RenderSettings settings_;
     IrSettings ir_;
-    std::unique_ptr<RenderScene> scene_;
-    std::unique_ptr<Film> film_;
     std::unique_ptr<VplGatherer> gatherer_;
     size_t vplCount_ = 0;
     int passes_ = 0;

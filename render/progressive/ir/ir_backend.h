@@ -5,7 +5,7 @@
 // the residual by short path-traced paths). The film averages the passes; even and odd passes
 // use disjoint VPL sets, so the two half-buffers are independent.
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 
 namespace lucerna {
 

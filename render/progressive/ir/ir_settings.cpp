@@ -1,19 +1,8 @@
 #include "render/progressive/ir/ir_settings.h"
 
-#include "render/progressive/backend_options.h"
-
-#include <stdexcept>
+#include "render/backend/backend_options.h"
 
 namespace lucerna {
-
-GatherSettings gatherSettingsFromOptions(const RenderSettings& settings) {
-    GatherSettings g;
-    readOption(settings, "clamp", g.clampFraction, 0.0, 1e3);
-    int compensate = g.compensate ? 1 : 0;
-    readOption(settings, "compensate", compensate, 0, 1);
-    g.compensate = compensate == 1;
-    return g;
-}
 
 IrSettings IrSettings::fromOptions(const RenderSettings& settings) {
     IrSettings s;

@@ -1,9 +1,10 @@
 #include "render/progressive/mir/mir_backend.h"
 
-#include "render/progressive/ir/pixel_loop.h"
-#include "render/progressive/mir/mir_path.h"
-#include "render/progressive/progressive_render.h"
+#include "core/number_format.h"
+#include "render/backend/tracing_backend.h"
 #include "render/progressive/mir/mir_settings.h"
+#include "render/vpl/mir_path.h"
+#include "render/vpl/tile_scheduler.h"
 
 #include <cstdio>
 
@@ -25,15 +26,13 @@ struct MirChain {
 
 std::string number(double v) { return formatNumber(v, 6); }
 
-class MirBackend final : public ProgressiveBackend {
+class MirBackend final : public TracingBackend {
 public:
     MirBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), mir_(MirSettings::fromOptions(settings)) {}
+        : TracingBackend(std::move(scene), settings), mir_(MirSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
-        scene_->setRayRecorder(settings_.rayRecorder);
-        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        prepareSceneAndFilm();
         gatherer_ = std::make_unique<VplGatherer>(*scene_, mir_.gather);
         layout_ = mirPathLayout(mir_.gather, mir_.vpl);
         MetropolisParams params;
@@ -66,8 +65,6 @@ public:
         geometricVplCount_ += geo.vpls.size();
         ++passes_;
     }
-
-    const Film& film() const override { return *film_; }
 
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
@@ -154,11 +151,7 @@ private:
         });
     }
 
-    SceneSnapshot snapshot_;
-    RenderSettings settings_;
     MirSettings mir_;
-    std::unique_ptr<RenderScene> scene_;
-    std::unique_ptr<Film> film_;
     std::unique_ptr<VplGatherer> gatherer_;
     MirPathLayout layout_;
     std::vector<std::unique_ptr<MirChain>> chains_;

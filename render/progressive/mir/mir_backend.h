@@ -23,7 +23,7 @@
 // The VPLs only stand for the CLAMPED indirect term; the residual is estimated independently of
 // them, so nothing is counted twice: P_i and P'_i are both measured on the clamped term.
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 
 namespace lucerna {
 

@@ -1,9 +1,9 @@
 #pragma once
 // Settings of the Metropolis instant radiosity backend.
 
-#include "render/progressive/backend_options.h"
+#include "render/backend/backend_options.h"
 #include "render/progressive/ir/ir_settings.h"
-#include "render/progressive/mir/metropolis.h"
+#include "render/vpl/metropolis.h"
 
 namespace lucerna {
 

@@ -1,8 +1,9 @@
 #include "render/progressive/mlt/mlt_backend.h"
 
-#include "render/progressive/backend_options.h"
-#include "render/progressive/film.h"
-#include "render/progressive/progressive_render.h"
+#include "core/number_format.h"
+#include "render/backend/backend_options.h"
+#include "render/backend/film.h"
+#include "render/backend/tracing_backend.h"
 #include "render/progressive/mlt/mlt_chain.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/render_scene.h"
@@ -27,6 +28,10 @@ struct ChainSet {
         for (const auto& c : chains) total += c->counters();
         return total;
     }
+    void addVariantCounts(std::map<std::string, long long>& total) const {
+        for (const auto& c : chains)
+            for (const auto& [name, count] : c->variantCounts()) total[name] += count;
+    }
     // b = int f du: the mean of f over every uniform sample so far, the bootstrap's and the
     // chains' large steps'.
     double b() const {
@@ -36,15 +41,15 @@ struct ChainSet {
     }
 };
 
-class MetropolisBackend final : public ProgressiveBackend {
+class MetropolisBackend final : public TracingBackend {
 public:
-    MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make)
-        : snapshot_(std::move(scene)), settings_(settings), mlt_(mlt), makeChain_(std::move(make)) {}
+    MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make,
+                      VariantDiagnostics variantDiagnostics)
+        : TracingBackend(std::move(scene), settings), mlt_(mlt), makeChain_(std::move(make)),
+          variantDiagnostics_(std::move(variantDiagnostics)) {}
 
     void prepare(TaskContext& ctx) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
-        scene_->setRayRecorder(settings_.rayRecorder);
-        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        prepareSceneAndFilm();
         for (int half = 0; half < 2 && !ctx.isCancelled(); ++half) halves_[half] = bootstrap(ctx, half);
     }
 
@@ -78,28 +83,22 @@ public:
         film_->setHalfScale(half, set.b());
     }
 
-    const Film& film() const override { return *film_; }
-
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
         ChainCounters c = halves_[0].counters();
         c += halves_[1].counters();
         const auto rate = [](long long a, long long n) { return n > 0 ? double(a) / double(n) : 0.0; };
-        const long long smallSteps = c.steps - c.largeSteps - c.lensSteps - c.causticSteps - c.pathLensSteps -
-                                     c.pathCausticSteps - c.pathStillSteps;
-        d["mlt_acceptance_small"] = number(rate(c.accepted - c.largeAccepted - c.lensAccepted - c.causticAccepted -
-                                                    c.pathLensAccepted - c.pathCausticAccepted,
-                                                smallSteps));
+        const long long smallSteps = c.steps - c.largeSteps - c.causticSteps - c.variantSteps;
+        d["mlt_acceptance_small"] =
+            number(rate(c.accepted - c.largeAccepted - c.causticAccepted - c.variantAccepted, smallSteps));
         if (c.causticSteps > 0) d["mlt_acceptance_caustic"] = number(rate(c.causticAccepted, c.causticSteps));
         d["mlt_acceptance_large"] = number(rate(c.largeAccepted, c.largeSteps));
-        if (c.lensSteps > 0) d["mlt_acceptance_lens"] = number(rate(c.lensAccepted, c.lensSteps));
-        if (c.pathLensSteps > 0) d["mlt_acceptance_path_lens"] = number(rate(c.pathLensAccepted, c.pathLensSteps));
-        if (c.pathCausticSteps > 0)
-            d["mlt_acceptance_path_caustic"] = number(rate(c.pathCausticAccepted, c.pathCausticSteps));
-        // How much of cmlt's path-space sub-chains stays on paths that no perturbation moves.
-        if (c.pathStillSteps > 0)
-            d["mlt_path_unmoved"] =
-                number(rate(c.pathStillSteps, c.pathLensSteps + c.pathCausticSteps + c.pathStillSteps));
+        if (variantDiagnostics_) {
+            std::map<std::string, long long> counts;
+            halves_[0].addVariantCounts(counts);
+            halves_[1].addVariantCounts(counts);
+            variantDiagnostics_(counts, d);
+        }
         // The spread between the independent halves (each its own chains and b): how far their
         // image means disagree, relative to the combined mean.
         const double m0 = film_->halfImage(0).mean(), m1 = film_->halfImage(1).mean();
@@ -138,12 +137,9 @@ private:
         return set;
     }
 
-    SceneSnapshot snapshot_;
-    RenderSettings settings_;
     MltSettings mlt_;
     ChainFactory makeChain_;
-    std::unique_ptr<RenderScene> scene_;
-    std::unique_ptr<Film> film_;
+    VariantDiagnostics variantDiagnostics_;
     ChainSet halves_[2];
 };
 
@@ -162,8 +158,10 @@ MltSettings MltSettings::fromOptions(const RenderSettings& settings, MltSettings
 }
 
 std::unique_ptr<ProgressiveBackend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
-                                                          const MltSettings& mlt, ChainFactory makeChain) {
-    return std::make_unique<MetropolisBackend>(std::move(scene), settings, mlt, std::move(makeChain));
+                                                          const MltSettings& mlt, ChainFactory makeChain,
+                                                          VariantDiagnostics variantDiagnostics) {
+    return std::make_unique<MetropolisBackend>(std::move(scene), settings, mlt, std::move(makeChain),
+                                               std::move(variantDiagnostics));
 }
 
 std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings) {

@@ -11,10 +11,11 @@
 // mutationsPerPixel * W * H steps; their deposits are added in chain order, so a render is
 // reproducible whatever the number of threads.
 
-#include "render/progressive/backend.h"
+#include "render/backend/backend.h"
 #include "render/progressive/mlt/mlt_settings.h"
 
 #include <functional>
+#include <map>
 
 namespace lucerna {
 
@@ -24,8 +25,14 @@ class RenderScene;
 // Makes a chain whose first state replays the bootstrap sample of seed `bootstrapSeed`.
 using ChainFactory = std::function<std::unique_ptr<MltChain>(const RenderScene& scene, uint64_t bootstrapSeed)>;
 
+// A variant's diagnostics (EXR attributes without the "lucerna:" prefix) from its chains'
+// variantCounts(), summed over every chain of both film halves.
+using VariantDiagnostics = std::function<void(const std::map<std::string, long long>& counts,
+                                              std::map<std::string, std::string>& diagnostics)>;
+
 std::unique_ptr<ProgressiveBackend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
-                                                          const MltSettings& mlt, ChainFactory makeChain);
+                                                          const MltSettings& mlt, ChainFactory makeChain,
+                                                          VariantDiagnostics variantDiagnostics = {});
 
 std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings);
 

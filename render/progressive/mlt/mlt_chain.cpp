@@ -12,15 +12,10 @@ ChainCounters& ChainCounters::operator+=(const ChainCounters& o) {
     accepted += o.accepted;
     largeSteps += o.largeSteps;
     largeAccepted += o.largeAccepted;
-    lensSteps += o.lensSteps;
-    lensAccepted += o.lensAccepted;
     causticSteps += o.causticSteps;
     causticAccepted += o.causticAccepted;
-    pathLensSteps += o.pathLensSteps;
-    pathLensAccepted += o.pathLensAccepted;
-    pathCausticSteps += o.pathCausticSteps;
-    pathCausticAccepted += o.pathCausticAccepted;
-    pathStillSteps += o.pathStillSteps;
+    variantSteps += o.variantSteps;
+    variantAccepted += o.variantAccepted;
     largeStepSum += o.largeStepSum;
     return *this;
 }

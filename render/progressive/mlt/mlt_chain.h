@@ -17,6 +17,8 @@
 #include "render/progressive/mlt/mlt_settings.h"
 #include "render/trace/pss_sampler.h"
 
+#include <map>
+#include <string>
 #include <vector>
 
 namespace lucerna {
@@ -52,11 +54,8 @@ void depositContribution(const PathContribution& c, double weight, std::vector<F
 struct ChainCounters {
     long long steps = 0, accepted = 0;            // every step that deposits (weight 1 each)
     long long largeSteps = 0, largeAccepted = 0;  // of those, Kelemen's large steps
-    long long lensSteps = 0, lensAccepted = 0;    // cmlt's lens sub-chain steps
     long long causticSteps = 0, causticAccepted = 0;  // light-stream-only small steps
-    long long pathLensSteps = 0, pathLensAccepted = 0;  // cmlt's path-space lens sub-chain steps
-    long long pathCausticSteps = 0, pathCausticAccepted = 0;  // and its path-space caustic steps
-    long long pathStillSteps = 0;  // and its steps on paths no perturbation moves (deposited at once)
+    long long variantSteps = 0, variantAccepted = 0;  // the steps of a variant's own kernels
     double largeStepSum = 0;                      // f over the large steps' (uniform) proposals
     ChainCounters& operator+=(const ChainCounters& o);
 };
@@ -83,6 +82,9 @@ public:
     PathContribution& current() { return current_; }
 
     const ChainCounters& counters() const { return counters_; }
+    // A variant's own counts (cmlt: its sub-chains' steps and acceptances) by name, to be summed
+    // over chains; they are in counters().variantSteps and variantAccepted too.
+    virtual std::map<std::string, long long> variantCounts() const { return {}; }
 
 protected:
     const Sensor& camera_;

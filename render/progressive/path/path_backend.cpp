@@ -1,14 +1,15 @@
 #include "render/progressive/path/path_backend.h"
 
-#include "render/progressive/backend_options.h"
-#include "render/progressive/path/path_tracer.h"
+#include "render/backend/backend_options.h"
+#include "render/backend/tracing_backend.h"
+#include "render/trace/path_tracer.h"
 #include "render/trace/sobol_sampler.h"
 
 #include <stdexcept>
 
 namespace lucerna {
 
-PathSettings PathSettings::fromOptions(const RenderSettings& settings) {
+PathSettings pathSettingsFromOptions(const RenderSettings& settings) {
     PathSettings s;
     readOption(settings, "max_depth", s.maxDepth, 1);
     readOption(settings, "rr_depth", s.rouletteStartDepth, 1);
@@ -42,29 +43,21 @@ void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint
 
 namespace {
 
-class PathBackend final : public ProgressiveBackend {
+class PathBackend final : public TracingBackend {
 public:
     PathBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), pathSettings_(PathSettings::fromOptions(settings)) {}
+        : TracingBackend(std::move(scene), settings), pathSettings_(pathSettingsFromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
-        scene_->setRayRecorder(settings_.rayRecorder);
-        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+        prepareSceneAndFilm();
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
         renderPathPass(*scene_, pathSettings_, settings_.seed, pass, *film_, ctx);
     }
 
-    const Film& film() const override { return *film_; }
-
 private:
-    SceneSnapshot snapshot_;
-    RenderSettings settings_;
     PathSettings pathSettings_;
-    std::unique_ptr<RenderScene> scene_;
-    std::unique_ptr<Film> film_;
 };
 
 }  // namespace

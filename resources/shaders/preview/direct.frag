@@ -4,7 +4,7 @@
 // maps) and, without interleaving, of the area lights' point samples (cube shadow maps), plus the
 // indirect light, which with interleaving also holds the area lights, blurred vertically here
 // (the second half of the box blur; blur.frag did the gather and the horizontal half).
-// Compile-time switches (preview_frame.cpp, directProgram), so that the pass holds only the
+// Compile-time switches (frame_passes.cpp, directProgram), so that the pass holds only the
 // code the scene's lights need (on llvmpipe an unused light loop still halves this pass's speed):
 //   LIGHT_LOOP   0 when this pass evaluates no light (all light is in the indirect texture);
 //   DIRECTIONAL, SPOT, AREA, LUMINAIRE   1 when lights of that kind are in the light buffer.
@@ -42,7 +42,7 @@ uniform mat4 dirShadowMatrix[MAX_DIRECTIONAL_SHADOWS];
 uniform float dirNormalOffset;  // world units
 uniform float dirDepthBias;     // in [0, 1] depth
 layout(binding = 6) uniform sampler2DArrayShadow dirShadows;
-// Luminaire tables (preview_luminaires.h): candela over (C / 360, gamma / 180), a layer each.
+// Luminaire tables (luminaire_textures.h): candela over (C / 360, gamma / 180), a layer each.
 layout(binding = 7) uniform sampler2DArray luminaireTables;
 uniform ivec2 luminaireTableSize;
 layout(location = 0) out vec4 result;

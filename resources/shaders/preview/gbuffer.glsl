@@ -6,7 +6,7 @@
 //   g1 (RGBA32UI): kind 1: x = the normal turned toward the camera (octahedral, 2 x snorm16),
 //        y, z, w = albedo and specular reflectance (6 x unorm16: both are fractions);
 //        kind 2: xyz = the emitter's radiance as float bits (exact, any magnitude).
-// The albedo layer (preview_frame.cpp) decodes g1 the same way on the CPU.
+// The albedo layer (frame_passes.cpp) decodes g1 the same way on the CPU.
 
 struct Surface { vec3 position; vec3 normal; vec3 albedo; vec3 specular; float alpha; };
 

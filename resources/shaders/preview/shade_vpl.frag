@@ -7,7 +7,7 @@
 // FOR_EACH_TILE_VPL), which llvmpipe loads once for all its SIMD lanes instead of gathering them
 // lane by lane (BENCHMARKS.md, issue 5). Otherwise, for tiles with more VPLs than an unrolled body
 // should hold, a loop over [vplFirst, vplFirst + vplCount) of the storage buffer.
-// Compile-time switches, set by the C++ side (preview_frame.cpp, shadeProgram) from the settings
+// Compile-time switches, set by the C++ side (frame_passes.cpp, shadeProgram) from the settings
 // and the scene, so that an unrolled body holds only the code the scene needs (llvmpipe runs a
 // SIMD vector of fragments through every branch any of them takes):
 //   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;

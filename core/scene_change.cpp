@@ -1,0 +1,69 @@
+#include "core/scene_change.h"
+
+namespace lucerna {
+
+namespace {
+
+bool sameWorldMeshes(const Scene& a, const Scene& b) {
+    if (a.objects.size() != b.objects.size()) return false;
+    for (size_t i = 0; i < a.objects.size(); ++i)
+        if (a.objects[i].worldMesh != b.objects[i].worldMesh) return false;
+    return true;
+}
+
+bool sameMaterials(const Scene& a, const Scene& b) {
+    if (a.materials != b.materials || a.metersPerUnit != b.metersPerUnit) return false;
+    for (size_t i = 0; i < a.objects.size() && i < b.objects.size(); ++i)
+        if (a.objects[i].material != b.objects[i].material) return false;
+    return true;
+}
+
+// `after` with `before`'s emission put back equals `before` (compared part by part, so that no
+// copy of the scene is made: the picker asks on every pointer move).
+bool differOnlyInEmission(const Scene& before, const Scene& after) {
+    if (before.version != after.version || before.metersPerUnit != after.metersPerUnit ||
+        !(before.camera == after.camera) || before.objects != after.objects ||
+        before.lights.size() != after.lights.size() || before.materials.size() != after.materials.size())
+        return false;
+    for (size_t i = 0; i < after.lights.size(); ++i) {
+        Light l = after.lights[i];
+        const Light& r = before.lights[i];
+        l.intensity = r.intensity;
+        l.irradiance = r.irradiance;
+        l.photometric = r.photometric;
+        if (l.luminaire && r.luminaire) {
+            l.luminaire->lumens = r.luminaire->lumens;
+            l.luminaire->colour = r.luminaire->colour;
+            l.luminaire->temperatureK = r.luminaire->temperatureK;
+        }
+        if (!(l == r)) return false;
+    }
+    for (size_t i = 0; i < after.materials.size(); ++i) {
+        Material m = after.materials[i];
+        const Material& r = before.materials[i];
+        if (m.type == MaterialType::Emitter && r.type == MaterialType::Emitter) m.radiance = r.radiance;
+        if (!(m == r)) return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+SceneChange diff(const Scene& before, const Scene& after) {
+    SceneChange c;
+    c.geometry = !sameWorldMeshes(before, after);
+    c.materials = !sameMaterials(before, after);
+    c.resolution = before.camera.width != after.camera.width || before.camera.height != after.camera.height;
+    Camera pose = after.camera;
+    pose.width = before.camera.width;
+    pose.height = before.camera.height;
+    c.camera = !(pose == before.camera);
+    c.lightSet = before.lights.size() != after.lights.size();
+    if (!c.lightSet)
+        for (size_t i = 0; i < after.lights.size(); ++i)
+            if (!(before.lights[i] == after.lights[i])) c.lights.push_back(i);
+    c.emissionOnly = differOnlyInEmission(before, after);
+    return c;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,33 @@
+#pragma once
+// What differs between two versions of a scene, computed in one place for every part that keeps
+// state derived from a scene: the interactive preview (what to redraw), the editor's surface
+// picker (when to rebuild) and the per-light layers (whether an edit is a re-mix).
+
+#include "core/scene.h"
+
+#include <vector>
+
+namespace lucerna {
+
+struct SceneChange {
+    bool geometry = false;    // objects added or removed, or an object's world mesh replaced
+    bool materials = false;   // a material, an object's material or the scene's unit
+    bool camera = false;      // the camera's pose or field of view
+    bool resolution = false;  // the camera's width or height
+    bool lightSet = false;    // lights added or removed (then `lights` is empty)
+    std::vector<size_t> lights;  // the indices of the lights that differ (same count)
+    // The scenes differ at most in the emission of their lights (intensity, irradiance,
+    // photometric values, a luminaire's lumens and colour) and of their emitters' radiance;
+    // true when they are equal.
+    bool emissionOnly = false;
+
+    bool none() const {
+        return !geometry && !materials && !camera && !resolution && !lightSet && lights.empty() && emissionOnly;
+    }
+};
+
+// What changed from `before` to `after`. Meshes compare by their shared data (a mesh reloaded
+// from the same file is a change), everything else by value.
+SceneChange diff(const Scene& before, const Scene& after);
+
+}  // namespace lucerna

@@ -1,0 +1,54 @@
+#pragma once
+// The interface every backend implements (the progressive ones and the headless preview). A
+// backend owns its film; the pass loop (pass_loop.h) schedules its passes and publishes frames.
+// The table that names the backends is a layer above (render/engine/backend_table.h).
+
+#include "core/image.h"
+#include "core/scene.h"
+#include "core/task_system.h"
+#include "render/backend/film.h"
+#include "render/trace/sensor.h"
+
+#include <map>
+#include <memory>
+#include <string>
+
+namespace lucerna {
+
+struct RenderSettings {
+    int spp = 0;            // work equal to this many samples per pixel (0: not given)
+    double seconds = 0.0;   // wall-clock budget after prepare() (0: not given)
+    uint64_t seed = 0;
+    int width = 0, height = 0;  // override the camera's resolution (0: keep)
+    // Irradiance sensors to measure instead of the camera (calculation grids, the illuminance
+    // layer); nullptr: the camera. Backends that cannot measure them (the preview) refuse in
+    // prepare().
+    std::shared_ptr<const Sensor> sensor;
+    // Benchmarks: counts (or records) every ray the backend traces, prepare() included; the
+    // preview traces none. Must outlive the backend.
+    RayRecorder* rayRecorder = nullptr;
+    // Backend-specific options, "name=value" from the command line or the UI.
+    std::map<std::string, std::string> options;
+};
+
+class ProgressiveBackend {
+public:
+    virtual ~ProgressiveBackend() = default;
+
+    // Builds what rendering needs (acceleration structure, light tables). Not part of a --time
+    // budget. May throw std::runtime_error.
+    virtual void prepare(TaskContext& ctx) = 0;
+    // Adds one pass to the film: one sample per pixel's worth of work. Pass p goes to half p % 2.
+    // Returns without finishing the pass when ctx is cancelled (the film is then abandoned).
+    virtual void renderPass(TaskContext& ctx, int pass) = 0;
+    virtual const Film& film() const = 0;
+    // Figures for the EXR header and the convergence panel (name -> value).
+    virtual std::map<std::string, std::string> diagnostics() const { return {}; }
+    // Adds named channels of the film's combined image to `image` (per-light layers), if any.
+    virtual void addImageLayers(Image& image) const { (void)image; }
+};
+
+// Makes a backend for a scene; the backend prepares nothing until prepare().
+using BackendFactory = std::unique_ptr<ProgressiveBackend> (*)(SceneSnapshot, const RenderSettings&);
+
+}  // namespace lucerna

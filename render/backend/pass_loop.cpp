@@ -1,0 +1,87 @@
+#include "render/backend/pass_loop.h"
+
+#include "core/number_format.h"
+#include "render/trace/render_scene.h"
+#include "render/trace/surface_layers.h"
+
+#include <algorithm>
+#include <chrono>
+#include <optional>
+#include <thread>
+
+namespace lucerna {
+
+RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view backendName,
+                            const RenderSettings& settings, double seconds, int passes) {
+    RenderFrame f;
+    f.image = backend.film().image();
+    f.seconds = seconds;
+    f.samplesPerPixel = backend.film().samplesPerPixel();
+    f.passes = passes;
+    f.estimatedRelmse = backend.film().estimatedRelmse();
+    f.image.attributes["lucerna:backend"] = std::string(backendName);
+    f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
+    f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
+    f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
+    for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
+    backend.addImageLayers(f.image);
+    return f;
+}
+
+RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
+                           TaskContext& ctx, Latest<RenderFrame>* latest, const PassLoopOptions& options) {
+    using Clock = std::chrono::steady_clock;
+    const int targetPasses =
+        options.openEnded ? 0 : (settings.spp > 0 ? settings.spp : (settings.seconds > 0 ? 0 : 64));
+    const double budget = settings.seconds;
+    const auto start = Clock::now();
+    double heldSeconds = 0;
+    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count() - heldSeconds; };
+
+    std::optional<SurfaceLayers> surfaces;
+    const auto makeFrame = [&](int passes) {
+        RenderFrame frame = makeRenderFrame(backend, backendName, settings, elapsed(), passes);
+        if (options.albedoScene && passes >= 4) {
+            if (!surfaces)
+                surfaces = traceSurfaceLayers(
+                    RenderScene(options.albedoScene, backend.film().width(), backend.film().height()));
+            addSurfaceLayers(frame.image, *surfaces, kAlbedoLayer);
+        }
+        return frame;
+    };
+
+    int passes = 0;
+    double lastPublish = 0;
+    while (!ctx.isCancelled()) {
+        if (options.hold && options.hold()) {
+            const auto t0 = Clock::now();
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+            heldSeconds += std::chrono::duration<double>(Clock::now() - t0).count();
+            continue;
+        }
+        if (!options.openEnded) {
+            if (targetPasses > 0 && passes >= targetPasses) break;
+            if (targetPasses == 0 && elapsed() >= budget) break;
+        }
+        backend.renderPass(ctx, passes);
+        if (ctx.isCancelled()) break;
+        ++passes;
+        const double t = elapsed();
+        if (!options.openEnded) {
+            double fraction = targetPasses > 0 ? double(passes) / targetPasses : t / budget;
+            if (targetPasses > 0 && budget > 0) fraction = std::max(fraction, t / budget);
+            ctx.setProgress(std::min(1.0, fraction));
+            if (targetPasses > 0 && budget > 0 && t >= budget) break;  // both given: whichever comes first
+        }
+        if (latest && (passes <= options.eagerPasses || t - lastPublish >= options.publishSeconds)) {
+            latest->publish(std::make_shared<const RenderFrame>(makeFrame(passes)));
+            lastPublish = t;
+        }
+    }
+    if (options.openEnded) return {};
+    RenderFrame final = makeFrame(passes);
+    if (latest) latest->publish(std::make_shared<const RenderFrame>(final));
+    return final;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,70 @@
+#include "render/engine/backend_table.h"
+
+#include "render/preview/headless_backend.h"
+#include "render/progressive/bdpt/bdpt_backend.h"
+#include "render/progressive/cmlt/cmlt_backend.h"
+#include "render/progressive/ir/ir_backend.h"
+#include "render/progressive/mir/mir_backend.h"
+#include "render/progressive/mlt/mlt_backend.h"
+#include "render/progressive/path/path_backend.h"
+
+#include <algorithm>
+#include <set>
+#include <stdexcept>
+
+namespace lucerna {
+
+namespace {
+// The option keys each backend's settings read (fromOptions): a test checks that every key listed
+// here is read, and the command line refuses a key not listed, so a new option goes in both
+// places. mlt reads bdpt's, cmlt mlt's, mir ir's gathering options.
+constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth"};
+constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies"};
+constexpr std::string_view kIrOptions[] = {"vpl_paths", "max_bounces", "clamp", "compensate"};
+constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples",
+                                            "norm_stride", "max_bounces", "clamp",   "compensate"};
+constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations", "large_step", "sigma",
+                                            "caustic",   "max_depth", "rr_depth",  "strategies"};
+constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
+                                             "caustic_steps",   "bootstrap", "chains",       "mutations",     "large_step",
+                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
+constexpr std::string_view kPreviewOptions[] = {"vpls",    "clamp",      "area_samples", "unroll", "pattern",
+                                                "visibility", "blur",    "split",        "vpl_source"};
+
+// The explicit factory table: one row per backend.
+const BackendInfo kBackends[] = {
+    {"path", "unidirectional path tracing with next-event estimation and MIS", &makePathBackend, kPathOptions},
+    {"bdpt", "bidirectional path tracing: every connection strategy, light-tracing splats, power-heuristic MIS", &makeBdptBackend, kBdptOptions},
+    {"ir", "instant radiosity: fresh VPLs per pass, clamped gathering with path-traced bias compensation", &makeIrBackend, kIrOptions},
+    {"mir", "Metropolis instant radiosity: VPLs from a multiple-try Metropolis chain over camera-to-light paths", &makeMirBackend, kMirOptions},
+    {"mlt", "Metropolis light transport: primary-sample-space chains driving the bidirectional sampler", &makeMltBackend, kMltOptions},
+    {"cmlt", "coherent Metropolis light transport: MLT seeds, lens sub-chains of candidates traced as packets, expected-value deposits", &makeCmltBackend, kCmltOptions},
+    {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend, kPreviewOptions},
+};
+}  // namespace
+
+std::span<const BackendInfo> backendTable() { return kBackends; }
+
+const BackendInfo* findBackend(std::string_view name) {
+    for (const BackendInfo& b : kBackends)
+        if (b.name == name) return &b;
+    return nullptr;
+}
+
+void requireKnownOptions(const std::map<std::string, std::string>& options, std::span<const BackendInfo* const> backends) {
+    for (const auto& [key, value] : options) {
+        bool known = false;
+        for (const BackendInfo* b : backends) known = known || std::ranges::find(b->options, key) != b->options.end();
+        if (known) continue;
+        std::string names, keys;
+        std::set<std::string_view> all;
+        for (const BackendInfo* b : backends) {
+            names += (names.empty() ? "" : ", ") + std::string(b->name);
+            all.insert(b->options.begin(), b->options.end());
+        }
+        for (std::string_view k : all) keys += (keys.empty() ? "" : ", ") + std::string(k);
+        throw std::invalid_argument("no option '" + key + "' for " + names + " (options: " + keys + ")");
+    }
+}
+
+}  // namespace lucerna

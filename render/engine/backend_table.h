@@ -1,0 +1,37 @@
+#pragma once
+// The explicit table that names the backends (Tungsten-style), the refusal of unknown options,
+// and `--backend auto`'s choice. Above the backends' own folders (render/progressive/,
+// render/preview/), which it lists; nothing below includes it.
+
+#include "render/backend/backend.h"
+
+#include <span>
+#include <string>
+#include <string_view>
+
+namespace lucerna {
+
+struct BackendInfo {
+    std::string_view name;
+    std::string_view summary;
+    BackendFactory make;
+    std::span<const std::string_view> options;  // every option key its settings read
+};
+
+// Every backend that exists, in the order the UI lists them.
+std::span<const BackendInfo> backendTable();
+// nullptr when no backend has that name.
+const BackendInfo* findBackend(std::string_view name);
+// Throws std::invalid_argument, one line naming the key and the options there are, when
+// `options` holds a key that none of `backends` reads (a mistyped option would otherwise be
+// ignored and the render made with the default).
+void requireKnownOptions(const std::map<std::string, std::string>& options, std::span<const BackendInfo* const> backends);
+
+// What `--backend auto` picks for a scene, and why, in one line.
+struct AutoChoice {
+    std::string backend;
+    std::string reason;
+};
+AutoChoice chooseAutoBackend(const Scene& scene);
+
+}  // namespace lucerna

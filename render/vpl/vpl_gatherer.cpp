@@ -1,0 +1,127 @@
+#include "render/vpl/vpl_gatherer.h"
+
+namespace lucerna {
+
+namespace {
+V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
+    if (mat.type == MaterialType::Dielectric) return ng;
+    return ng.dot(wo) < 0.0f ? -ng : ng;
+}
+
+PathSettings residualPathSettings() { return PathSettings{}; }
+}  // namespace
+
+CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth) {
+    CameraVertex cv;
+    for (int depth = 0; depth <= maxSpecularDepth; ++depth) {
+        const auto hit = scene.intersect(ray);
+        const V2f ud = u.next2D();
+        const float uLobe = u.next1D();
+        if (!hit) break;
+        const ShadingMaterial& mat = scene.material(hit->material);
+        const V3f wo = -ray.direction.normalized();
+        if (mat.isEmitter()) {
+            if (hit->ng.dot(wo) > 0.0f) cv.emitted += cv.throughput * mat.radiance;
+            break;
+        }
+        if (!mat.isDelta()) {
+            cv.found = true;
+            cv.receiver = VplReceiver{*hit, &mat, wo};
+            break;
+        }
+        const Frame frame(shadingNormal(mat, hit->ng, wo));
+        BsdfSample bs;
+        if (!bsdfSample(mat, frame.toLocal(wo), ud, uLobe, bs)) break;
+        cv.throughput *= bs.weight;
+        if (isBlack(cv.throughput)) break;
+        const V3f wi = frame.toWorld(bs.wi);
+        ray = Ray{hit->spawnOrigin(wi), wi};
+    }
+    return cv;
+}
+
+VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& settings)
+    : scene_(scene), settings_(settings), pathTracer_(scene, residualPathSettings()),
+      maxG_(geometricClampBound(scene, settings.clampFraction)) {}
+
+// Direct light at x1 by next-event estimation and one BSDF sample (power heuristic); the same
+// BSDF sample estimates the residual of the clamp and the light arriving through specular surfaces.
+Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const {
+    const ShadingMaterial& mat = *r.material;
+    const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
+    const V3f woLocal = frame.toLocal(r.wo);
+    Rgb L(0, 0, 0);
+
+    // Next-event estimation.
+    LightSample ls;
+    const V2f uLight = rng.next2D();
+    const float uSelect = rng.next1D();
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls) && !(withoutDeltaLights && ls.isDelta)) {
+        const V3f wiLocal = frame.toLocal(ls.wi);
+        const Rgb f = bsdfEval(mat, woLocal, wiLocal);
+        if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
+            const Rgb unweighted = f * ls.value * (std::abs(wiLocal.z) / ls.pdf);
+            L += ls.isDelta ? unweighted : unweighted * powerHeuristic(ls.pdf, bsdfPdf(mat, woLocal, wiLocal));
+        }
+    }
+
+    // The BSDF sample.
+    BsdfSample bs;
+    const V2f u = rng.next2D();
+    const float uLobe = rng.next1D();
+    if (!bsdfSample(mat, woLocal, u, uLobe, bs)) return L;
+    const V3f wi = frame.toWorld(bs.wi);
+    const Ray ray{r.x.spawnOrigin(wi), wi};
+    float t = 0;
+    const auto hit = scene_.intersect(ray, &t);
+    if (!hit) return L;
+    const ShadingMaterial& m2 = scene_.material(hit->material);
+    if (m2.isEmitter()) {
+        if (hit->ng.dot(-wi) > 0.0f) {
+            const float w = powerHeuristic(bs.pdf, scene_.lights().pdfEmitter(hit->triangle, r.x.p, hit->p, hit->ng));
+            L += bs.weight * m2.radiance * w;
+        }
+        return L;
+    }
+    if (!settings_.compensate) return L;
+    float weight = 1.0f;  // through a mirror or glass: not in the VPL term at all
+    if (!m2.isDelta()) {
+        if (!std::isfinite(maxG_)) return L;
+        const V3f d = hit->p - r.x.p;
+        const float dist2 = d.length2();
+        const float g = std::abs(bs.wi.z) * std::abs(hit->ng.dot(wi)) / dist2;
+        weight = g > maxG_ ? 1.0f - maxG_ / g : 0.0f;
+        if (!(weight > 0.0f)) return L;
+    }
+    // Light leaving x2 toward x1: x2 does not emit, so the path tracer returns reflected light only.
+    const Rgb Lx2 = pathTracer_.radiance(ray, rng);
+    L += bs.weight * Lx2 * weight;
+    return L;
+}
+
+Rgb VplGatherer::radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
+    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
+    Rgb L = cv.emitted;
+    if (!cv.found) return L;
+    return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
+}
+
+Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale,
+                           bool withoutDeltaLights) const {
+    Rgb L = directAndResidual(r, rng, withoutDeltaLights);
+    if (!vpls.empty()) L += gatherVpls(scene_, vpls, scale, r, maxG_);
+    return L;
+}
+
+void VplGatherer::addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const {
+    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
+    if (!cv.found) return;
+    const float throughputY = luminance(cv.throughput);
+    if (!(throughputY > 0.0f)) return;
+    for (size_t i = 0; i < vpls.size(); ++i) {
+        const Rgb c = vplContribution(scene_, vpls[i], cv.receiver, maxG_);
+        if (!isBlack(c)) perVpl[i] += double(luminance(cv.throughput * c));
+    }
+}
+
+}  // namespace lucerna

@@ -1,0 +1,68 @@
+#pragma once
+// The camera side of instant radiosity, shared by `ir` and `mir`: the radiance along a camera ray
+// as
+//   L = (emitters seen directly or through mirrors and glass)
+//     + direct light at the first diffuse/glossy vertex x1 (next-event estimation and a BSDF
+//       sample, combined by the power heuristic, as the path backend does)
+//     + indirect light at x1 from the VPLs, geometric term clamped to maxG
+//     + the clamped-away residual (Kollig & Keller 2004): the same BSDF sample, when it hits a
+//       diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
+//       tracing; when it hits a mirror or glass, continued by path tracing unweighted (VPL
+//       connections are straight segments, so light reaching x1 through a specular surface is
+//       not in the VPL term).
+// Since  int f L G V dA = int f L min(G, b) V dA + int f L G max(0, 1 - b/G) V dA,  the sum is
+// consistent whatever the clamp: the VPLs estimate the first integral, the paths the second.
+
+#include "render/trace/path_tracer.h"
+#include "render/trace/rng.h"
+#include "render/vpl/gather_settings.h"
+#include "render/vpl/instant_radiosity.h"
+#include "render/vpl/vpl_contribution.h"
+
+#include <span>
+
+namespace lucerna {
+
+// The first non-specular vertex of a camera path (through mirrors and glass).
+struct CameraVertex {
+    bool found = false;
+    VplReceiver receiver;         // x1, its material, the direction back along the path
+    Rgb throughput{1, 1, 1};      // of the specular chain before x1
+    Rgb emitted{0, 0, 0};         // emitters seen directly or through the specular chain
+};
+
+// Follows `ray` through delta surfaces (drawing 3 numbers per delta bounce from u) to the first
+// diffuse/glossy vertex.
+CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth);
+
+class VplGatherer {
+public:
+    VplGatherer(const RenderScene& scene, const GatherSettings& settings);
+
+    float maxG() const { return maxG_; }
+
+    // Radiance along a camera ray; the VPL term is sum_i scale[i] * contribution_i (scale empty:
+    // all 1).
+    Rgb radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
+
+    // Radiance leaving the receiver toward r.wo by reflection (its emission not included): direct
+    // light, the clamp residual and the VPL term, as radiance() computes at x1. With
+    // withoutDeltaLights, the direct light of point, spot, directional lights and luminaires is
+    // left out (the caller adds it exactly); the rest stays unbiased.
+    Rgb reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
+                  bool withoutDeltaLights = false) const;
+
+    // Adds to perVpl[i] the luminance that VPL i (clamped, visibility included) sends along the
+    // camera ray: the image contribution of each VPL, for the Metropolis backend's normalisation.
+    void addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const;
+
+private:
+    Rgb directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const;
+
+    const RenderScene& scene_;
+    GatherSettings settings_;
+    PathTracer pathTracer_;
+    float maxG_;
+};
+
+}  // namespace lucerna

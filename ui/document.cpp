@@ -1,0 +1,127 @@
+#include "ui/document.h"
+
+namespace lucerna {
+
+Document::Document(Scene scene, std::string path, QObject* parent)
+    : QObject(parent), scene_(std::make_shared<const Scene>(std::move(scene))), path_(std::move(path)) {}
+
+void Document::setPath(std::string path) {
+    path_ = std::move(path);
+    emit pathChanged();
+}
+
+void Document::publish(std::shared_ptr<Scene> copy) {
+    scene_ = std::move(copy);
+    emit changed(++version_);
+}
+
+void Document::modify(const std::function<void(Scene&)>& edit) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    edit(*copy);
+    publish(std::move(copy));
+}
+
+void Document::reset(Scene scene) {
+    undo_.clear();
+    scene_ = std::make_shared<const Scene>(std::move(scene));
+    undo_.setClean();
+    emit changed(++version_);
+    emit structureChanged();
+    emit cameraChanged();
+}
+
+void Document::setLight(int index, Light light) {
+    const bool renamed = scene_->lights.at(size_t(index)).name != light.name;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights[size_t(index)] = std::move(light);
+    publish(std::move(copy));
+    emit lightChanged(index);
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertLight(int index, Light light) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights.insert(copy->lights.begin() + index, std::move(light));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeLight(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights.erase(copy->lights.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setMaterial(int index, Material material) {
+    // The outliner shows each material's type.
+    const Material& old = scene_->materials.at(size_t(index));
+    const bool renamed = old.name != material.name || old.type != material.type;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials[size_t(index)] = std::move(material);
+    publish(std::move(copy));
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertMaterial(int index, Material material) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials.insert(copy->materials.begin() + index, std::move(material));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeMaterial(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->materials.erase(copy->materials.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setObject(int index, Object object) {
+    // The outliner shows each object's material.
+    const Object& old = scene_->objects.at(size_t(index));
+    const bool renamed = old.name != object.name || old.material != object.material;
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects[size_t(index)] = std::move(object);
+    publish(std::move(copy));
+    if (renamed) emit structureChanged();
+}
+
+void Document::insertObject(int index, Object object) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects.insert(copy->objects.begin() + index, std::move(object));
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::removeObject(int index) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->objects.erase(copy->objects.begin() + index);
+    publish(std::move(copy));
+    emit structureChanged();
+}
+
+void Document::setCamera(const Camera& camera) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->camera = camera;
+    publish(std::move(copy));
+    emit cameraChanged();
+}
+
+bool Document::nameInUse(const std::string& name) const {
+    for (const Object& o : scene_->objects)
+        if (o.name == name) return true;
+    for (const Light& l : scene_->lights)
+        if (l.name == name) return true;
+    return false;
+}
+
+std::string Document::uniqueName(const std::string& base) const {
+    if (!nameInUse(base)) return base;
+    for (int i = 2;; ++i) {
+        std::string candidate = base + "-" + std::to_string(i);
+        if (!nameInUse(candidate)) return candidate;
+    }
+}
+
+}  // namespace lucerna
