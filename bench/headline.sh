@@ -261,7 +261,7 @@ fi
 
 # ---------------------------------------------------------------------------------------------
 # Calculation grid: time to a 2% error bar on every point of the interior's work plane
-for m in path ir bdpt mlt; do
+for m in path ir bdpt; do
     cmd="$B/app/lucerna grid $INTERIOR --work-plane 0.8 --method $m --error 0.02 --time 60 --seed 1"
     if run "grid-$m" "$LUCERNA" grid "$INTERIOR" --work-plane 0.8 --method "$m" --error 0.02 --time 60 --seed 1; then
         row "Interior work plane, $m: time to a 2% error bar on every point; Eavg" \
