@@ -1,6 +1,9 @@
 #include "core/eulumdat_file.h"
 
+#include "core/message_text.h"
+
 #include <algorithm>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -52,7 +55,7 @@ public:
         const char* end = word.data() + word.size();
         const auto r = std::from_chars(word.data(), end, x);
         if (word.empty() || r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(here, "expected a number for " + what + ", found \"" + word + "\"");
+            fail(here, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
         return x;
     }
     int integer(const std::string& what, int lo, int hi) {
@@ -105,6 +108,7 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     here = in.line();
     const double cfli = in.number("the conversion factor for luminous intensities");
     if (!(cfli > 0)) in.fail(here, "the conversion factor must be positive, got " + formatNumber(cfli));
+    const size_t cfliLine = here;
     in.number("the measurement tilt");
     const int sets = in.integer("the number of standard sets of lamps", 1, 20);
     for (int i = 0; i < sets; ++i) in.number("the number of lamps");
@@ -115,6 +119,7 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
         const double f = in.number("the total luminous flux of lamps");
         if (!(f > 0)) in.fail(here, "the total luminous flux of lamps must be positive, got " + formatNumber(f));
         lampFlux += f;
+        if (!(lampFlux <= FLT_MAX)) in.fail(here, "the lamps' total flux lies beyond single-precision range");
     }
     for (int i = 0; i < sets; ++i) in.text("the colour temperature");
     for (int i = 0; i < sets; ++i) in.text("the colour rendering index");
@@ -161,9 +166,18 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
                                std::to_string(values.size() + in.remaining()));
 
     const double scale = lampFlux / 1000.0 * cfli;
+    // The renderer works in single precision: a product beyond it (1e308 overflows to inf) would
+    // give infinite flux and a black image.
     std::vector<std::vector<double>> columns(count);
     for (size_t c = 0; c < count; ++c)
-        for (size_t g = 0; g < size_t(ng); ++g) columns[c].push_back(values[c * size_t(ng) + g] * scale);
+        for (size_t g = 0; g < size_t(ng); ++g) {
+            const double value = values[c * size_t(ng) + g];
+            if (!(value * scale <= FLT_MAX))
+                in.fail(cfliLine, "intensity " + formatNumber(value) + " cd/klm times the lamps' " +
+                                      formatNumber(lampFlux) + " lm and the conversion factor " + formatNumber(cfli) +
+                                      " (this line) lies beyond single-precision range");
+            columns[c].push_back(value * scale);
+        }
 
     std::vector<CPlane> planes;
     for (size_t c = 0; c < count; ++c) {
@@ -184,6 +198,9 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     GoniometricDistribution d = assembleDistribution(std::move(planes), std::move(gamma), columns, label);
     d.name = name;
     d.statedFluxLm = lampFlux * lor / 100.0;
+    if (!(d.integratedFlux() <= FLT_MAX))
+        in.fail(cfliLine, "the intensities times the conversion factor " + formatNumber(cfli) +
+                              " (this line) integrate to a flux beyond single-precision range");
     return d;
 }
 

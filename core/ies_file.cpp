@@ -1,6 +1,9 @@
 #include "core/ies_file.h"
 
+#include "core/message_text.h"
+
 #include <algorithm>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -53,7 +56,7 @@ public:
         const char* end = word.data() + word.size();
         const auto r = std::from_chars(word.data(), end, x);
         if (r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(line, "expected a number for " + what + ", found \"" + word + "\"");
+            fail(line, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
         ++next_;
         return x;
     }
@@ -128,7 +131,7 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     const std::string tilt = eq == std::string::npos ? std::string() : upper(trim(tiltText.substr(eq + 1)));
     const int tiltLineNumber = int(tiltLine + 1);
     if (tilt != "NONE" && tilt != "INCLUDE")
-        throw LuminaireFileError(label + ": line " + std::to_string(tiltLineNumber) + ": " + tiltText +
+        throw LuminaireFileError(label + ": line " + std::to_string(tiltLineNumber) + ": " + printableWord(tiltText, 60) +
                                  ": a separate tilt file is not supported (use TILT=INCLUDE or TILT=NONE)");
 
     Tokens t(lines, tiltLine + 1, label);
@@ -150,9 +153,11 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     const double lumensPerLamp = t.number("lumens per lamp");
     if (!(lumensPerLamp > 0 || lumensPerLamp == -1))
         t.fail(line, "lumens per lamp must be positive, or -1 for absolute photometry, got " + formatNumber(lumensPerLamp));
+    const int lumensLine = line;
     line = t.line();
     const double multiplier = t.number("the candela multiplier");
     if (!(multiplier > 0)) t.fail(line, "the candela multiplier must be positive, got " + formatNumber(multiplier));
+    const int multiplierLine = line;
     const int nV = t.integer("the number of vertical angles", 2, 100000);
     const int nH = t.integer("the number of horizontal angles", 1, 100000);
     line = t.line();
@@ -164,6 +169,7 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     line = t.line();
     const double ballast = t.number("the ballast factor");
     if (!(ballast > 0)) t.fail(line, "the ballast factor must be positive, got " + formatNumber(ballast));
+    const int ballastLine = line;
     t.number("the ballast-lamp factor (future use, or file generation type)");
     t.number("the input watts");
 
@@ -190,9 +196,23 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
         t.fail(t.line(), "expected " + std::to_string(count) + " candela values, found " +
                              std::to_string(count + t.remaining()));
 
+    // The renderer works in single precision: a product beyond it (1e308 overflows to inf) would
+    // give infinite flux and a black image.
     std::vector<std::vector<double>> columns(static_cast<size_t>(nH));
     for (size_t h = 0; h < size_t(nH); ++h)
-        for (size_t v = 0; v < size_t(nV); ++v) columns[h].push_back(values[h * size_t(nV) + v] * multiplier * ballast);
+        for (size_t v = 0; v < size_t(nV); ++v) {
+            const double value = values[h * size_t(nV) + v];
+            const double cd = value * multiplier * ballast;
+            if (!(cd <= FLT_MAX))
+                t.fail(multiplierLine, "candela value " + formatNumber(value) + " times the candela multiplier " +
+                                           formatNumber(multiplier) + " (this line) and the ballast factor " +
+                                           formatNumber(ballast) + " (line " + std::to_string(ballastLine) +
+                                           ") lies beyond single-precision range");
+            columns[h].push_back(cd);
+        }
+    if (!(double(lamps) * lumensPerLamp * ballast <= FLT_MAX))
+        t.fail(lumensLine, "the lamps' flux, " + std::to_string(lamps) + " x " + formatNumber(lumensPerLamp) +
+                               " lm times the ballast factor, lies beyond single-precision range");
     std::vector<CPlane> planes;
     for (size_t h = 0; h < horizontal.size(); ++h) planes.push_back({horizontal[h], h});
     if (last <= 90)  // quadrant (or rotational) symmetry: mirror about C90-C270 into 90..180
@@ -207,6 +227,9 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     full.tiltAngles = std::move(d.tiltAngles);
     full.tiltMultipliers = std::move(d.tiltMultipliers);
     full.statedFluxLm = lumensPerLamp > 0 ? lamps * lumensPerLamp * ballast : 0.0;
+    if (!(full.integratedFlux() <= FLT_MAX))
+        t.fail(multiplierLine, "the candela values times the candela multiplier " + formatNumber(multiplier) +
+                                   " (this line) integrate to a flux beyond single-precision range");
     return full;
 }
 
