@@ -1,6 +1,7 @@
 #include "core/exr_io.h"
 
 #include "core/atomic_file.h"
+#include "core/regular_file.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
@@ -8,8 +9,11 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 #include <OpenEXR/ImfStringAttribute.h>
+#include <OpenEXR/openexr.h>
 
 #include <exception>
+#include <new>
+#include <sys/stat.h>
 
 namespace lucerna {
 
@@ -48,18 +52,95 @@ void writeExr(const std::string& path, const Image& image) {
     } catch (const ImageError&) {
         throw;
     } catch (const std::exception& e) {
-        throw ImageError(path + ": cannot write: " + e.what());
+        std::string msg = e.what();
+        if (const auto nl = msg.find('\n'); nl != std::string::npos) msg.resize(nl);
+        throw ImageError(path + ": cannot write: " + msg);
     }
 }
 
+namespace {
+
+// The header alone decides how much readExr allocates, and a 200 KB file can claim 16384 x 16384
+// pixels; so before anything is allocated (OpenEXR's InputFile allocates the offset table the
+// header implies), the file must hold that offset table, and every chunk of pixel data a
+// scan-line header promises must lie within the file: OpenEXR's core library reads each chunk's
+// offset and size (a few bytes each). A chunk may not unpack to more than 65536 times its packed
+// size either (deflate, the strongest of EXR's codecs on constant data, stops near 1032; an
+// uncompressed chunk unpacks to its own size), which bounds the image by the file's size.
+// Tiled and deep files are left to InputFile::isComplete. Returns the problem, or nothing.
+std::string missingPixelData(const std::string& path) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return {};
+    const uint64_t fileSize = uint64_t(st.st_size);
+    exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
+    init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char*) {};  // reported below instead
+    exr_context_t ctx = nullptr;
+    std::string problem;
+    if (exr_start_read(&ctx, path.c_str(), &init) == EXR_ERR_SUCCESS) {
+        int parts = 0;
+        exr_get_count(ctx, &parts);
+        uint64_t tables = 0;
+        for (int p = 0; p < parts; ++p) {
+            int32_t chunks = 0;
+            if (exr_get_chunk_count(ctx, p, &chunks) == EXR_ERR_SUCCESS && chunks > 0) tables += 8 * uint64_t(chunks);
+        }
+        if (tables > fileSize)
+            problem = "the file (" + std::to_string(fileSize) + " bytes) is shorter than the offset table its header implies (" +
+                      std::to_string(tables) + " bytes)";
+        for (int p = 0; p < parts && problem.empty(); ++p) {
+            exr_storage_t storage{};
+            exr_attr_box2i_t dw{};
+            exr_compression_t compression{};
+            int32_t lines = 0;
+            if (exr_get_storage(ctx, p, &storage) != EXR_ERR_SUCCESS || storage != EXR_STORAGE_SCANLINE ||
+                exr_get_data_window(ctx, p, &dw) != EXR_ERR_SUCCESS ||
+                exr_get_compression(ctx, p, &compression) != EXR_ERR_SUCCESS ||
+                exr_get_scanlines_per_chunk(ctx, p, &lines) != EXR_ERR_SUCCESS || lines <= 0)
+                continue;
+            const uint64_t ratio = compression == EXR_COMPRESSION_NONE ? 1 : 65536;
+            for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
+                exr_chunk_info_t chunk{};
+                if (exr_read_scanline_chunk_info(ctx, p, int(y), &chunk) != EXR_ERR_SUCCESS ||
+                    chunk.data_offset > fileSize || chunk.packed_size > fileSize - chunk.data_offset) {
+                    problem = "the file lacks the pixel data its header promises (scan line " + std::to_string(y) + " of " +
+                              std::to_string(dw.min.y) + " to " + std::to_string(dw.max.y) + ")";
+                    break;
+                }
+                if (chunk.unpacked_size / ratio > chunk.packed_size) {
+                    problem = "the pixel data of scan line " + std::to_string(y) + " (" + std::to_string(chunk.packed_size) +
+                              " bytes) cannot hold the " + std::to_string(chunk.unpacked_size) + " bytes its header claims";
+                    break;
+                }
+            }
+        }
+    }
+    exr_finish(&ctx);
+    return problem;
+}
+
+}  // namespace
+
 Image readExr(const std::string& path) {
+    if (const std::string kind = nonRegularFileKind(path); !kind.empty())
+        throw ImageError(path + ": cannot read: not a regular file (" + kind + ")");
+    if (const std::string problem = missingPixelData(path); !problem.empty()) throw ImageError(path + ": " + problem);
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i dw = file.header().dataWindow();
         const int w = dw.max.x - dw.min.x + 1, h = dw.max.y - dw.min.y + 1;
         if (w <= 0 || h <= 0 || int64_t(w) * h > (int64_t(1) << 30))
             throw ImageError(path + ": unreasonable data window");
-        Image image(w, h);
+        if (!file.isComplete()) throw ImageError(path + ": the file lacks the pixel data its header promises");
+        Image image;
+        try {
+            image = Image(w, h);
+            for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+                if (std::string name = it.name(); name != "R" && name != "G" && name != "B")
+                    image.channels[name].assign(size_t(w) * h, 0.0f);
+        } catch (const std::bad_alloc&) {
+            throw ImageError(path + ": a " + std::to_string(w) + " x " + std::to_string(h) +
+                             " image with its channels is more than the memory available");
+        }
         const Imf::ChannelList& channels = file.header().channels();
         for (const char* c : {"R", "G", "B"})
             if (!channels.findChannel(c))
@@ -75,8 +156,7 @@ Image readExr(const std::string& path) {
         for (auto it = channels.begin(); it != channels.end(); ++it) {
             const std::string name = it.name();
             if (name == "R" || name == "G" || name == "B") continue;
-            auto& data = image.channels[name];
-            data.assign(size_t(w) * h, 0.0f);
+            auto& data = image.channels[name];  // allocated above
             char* cbase = reinterpret_cast<char*>(data.data()) + origin * ptrdiff_t(sizeof(float));
             fb.insert(name, Imf::Slice(Imf::FLOAT, cbase, sizeof(float), sizeof(float) * size_t(w)));
         }
