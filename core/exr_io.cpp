@@ -76,7 +76,12 @@ std::string missingPixelData(const std::string& path) {
     init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char*) {};  // reported below instead
     exr_context_t ctx = nullptr;
     std::string problem;
-    if (exr_start_read(&ctx, path.c_str(), &init) == EXR_ERR_SUCCESS) {
+    // The core library checks each header attribute's size against the file; InputFile does not
+    // (a string attribute claiming 2 GB makes it allocate 2 GB), so a header the core library
+    // refuses is not handed on.
+    if (const exr_result_t started = exr_start_read(&ctx, path.c_str(), &init); started != EXR_ERR_SUCCESS) {
+        problem = std::string("not a valid EXR file (") + exr_get_default_error_message(started) + ")";
+    } else {
         int parts = 0;
         exr_get_count(ctx, &parts);
         uint64_t tables = 0;

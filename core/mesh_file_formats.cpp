@@ -221,7 +221,11 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
             } else if (line[0] == "element") {
                 PlyElement e;
                 e.name = word(1);
-                e.count = (unsigned long long)integer(line.size() > 2 ? line[2] : "").value_or(-1);
+                // Every record takes at least a byte (or a word): no count beyond the file's size.
+                const std::optional<long long> count = integer(line.size() > 2 ? line[2] : "");
+                if (!count || *count < 0 || (unsigned long long)*count > bytes.size())
+                    refuse("the PLY header's count of " + printableWord(e.name) + " is not a count the file can hold");
+                e.count = (unsigned long long)*count;
                 elements.push_back(e);
             } else if (line[0] == "property" && !elements.empty()) {
                 PlyProperty p;
@@ -292,7 +296,7 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
     for (const PlyElement& e : elements) {
         const bool isVertex = e.name == "vertex", isFace = e.name == "face";
         if (isVertex) mesh.vertices.reserve(size_t(std::min<unsigned long long>(e.count, bytes.size() / 3)));
-        for (unsigned long long i = 0; i < e.count; ++i) {
+        for (unsigned long long i = 0; i < e.count && !e.properties.empty(); ++i) {
             float xyz[3] = {0, 0, 0};
             for (const PlyProperty& p : e.properties) {
                 double v = 0;

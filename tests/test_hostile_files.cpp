@@ -172,7 +172,7 @@ QByteArray plyBinaryTriangle(qint32 listCount) {
 
 // A scan-line EXR header claiming width x height float RGB, uncompressed, followed by an offset
 // table of one entry per line, each `offset`, and no pixel data.
-QByteArray exrWithoutPixels(int width, int height, quint64 offset) {
+QByteArray exrWithoutPixels(int width, int height, quint64 offset, const QByteArray& extraAttribute = {}) {
     QByteArray b("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
     const auto attribute = [&](const char* name, const char* type, const QByteArray& value) {
         b += QByteArray(name) + '\0' + QByteArray(type) + '\0' + le32(qint32(value.size())) + value;
@@ -189,6 +189,7 @@ QByteArray exrWithoutPixels(int width, int height, quint64 offset) {
     attribute("pixelAspectRatio", "float", lef(1));
     attribute("screenWindowCenter", "v2f", lef(0) + lef(0));
     attribute("screenWindowWidth", "float", lef(1));
+    b += extraAttribute;
     b += '\0';
     for (int y = 0; y < height; ++y) b += QByteArray(reinterpret_cast<const char*>(&offset), 8);
     return b;
@@ -224,8 +225,8 @@ class TestHostileFiles : public QObject {
 private slots:
     void meshCountsBeyondTheFile_data();
     void meshCountsBeyondTheFile();
-    void objVerticesGiveTheTrueReason_data();
-    void objVerticesGiveTheTrueReason();
+    void objLinesGiveTheTrueReason_data();
+    void objLinesGiveTheTrueReason();
     void importRefusesOrWritesALoadableScene_data();
     void importRefusesOrWritesALoadableScene();
     void importToAFolderLeavesNothing();
@@ -235,6 +236,7 @@ private slots:
     void nonRegularPathsAreRefusedAtOnce();
     void exrHeaderWithoutPixels_data();
     void exrHeaderWithoutPixels();
+    void exrAttributeClaimingGigabytes();
     void staleTemporariesAreRemoved();
     void badOutputPathIsRefusedBeforeRendering();
     void interruptBeforeTheSceneHasLoaded();
@@ -272,6 +274,10 @@ void TestHostileFiles::meshCountsBeyondTheFile_data() {
     QTest::newRow("binary PLY vertices cut short")
         << "few.ply" << QByteArray(kPlyBinaryHeader).replace("vertex 3", "vertex 9") + QByteArray(20, '\0')
         << "the file ends inside vertex";
+    // Found by fuzz_mesh: a count the header check read as 1 and the reader as -1 (it looped).
+    QTest::newRow("PLY element count 1.0")
+        << "fraction.ply" << QByteArray(kPlyBinaryHeader).replace("element vertex 3", "element junk 1.0\nelement vertex 3")
+        << "is not a count the file can hold";
 }
 
 void TestHostileFiles::meshCountsBeyondTheFile() {
@@ -284,16 +290,18 @@ void TestHostileFiles::meshCountsBeyondTheFile() {
     VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), expected);
 }
 
-void TestHostileFiles::objVerticesGiveTheTrueReason_data() {
+void TestHostileFiles::objLinesGiveTheTrueReason_data() {
     QTest::addColumn<QByteArray>("vertex");
     QTest::addColumn<QString>("expected");
     QTest::newRow("nan") << QByteArray("v nan 0 0") << "nan is not a finite number";
     QTest::newRow("1e39") << QByteArray("v 1e39 0 0") << "1e39 lies beyond single-precision range";
     QTest::newRow("letters") << QByteArray("v a b c") << "\"a\" is not a number";
     QTest::newRow("two coordinates") << QByteArray("v 1 2") << "fewer than three coordinates";
+    // Found by fuzz_mesh: a corner without its vertex index aborts OpenMesh on an assertion.
+    QTest::newRow("corner without index") << QByteArray("f /1/1 2/2/1 3/3/1") << "face corner \"/1/1\" has no vertex index";
 }
 
-void TestHostileFiles::objVerticesGiveTheTrueReason() {
+void TestHostileFiles::objLinesGiveTheTrueReason() {
     QFETCH(QByteArray, vertex);
     QFETCH(QString, expected);
     QTemporaryDir dir;
@@ -472,6 +480,15 @@ void TestHostileFiles::exrHeaderWithoutPixels() {
     VERIFY_REFUSED(QStringList({"compare", "huge.exr", "also.exr"}), dir.path(), "huge.exr: ");
     VERIFY_REFUSED(QStringList({"convert", "huge.exr", "out.png"}), dir.path(), "huge.exr: ");
     QVERIFY(!QFile::exists(dir.filePath("out.png")));
+}
+
+// Found by fuzz_exr: OpenEXR's InputFile allocates a string attribute's declared size before
+// reading it (1.9 GB and 6 s for a file of 700 bytes).
+void TestHostileFiles::exrAttributeClaimingGigabytes() {
+    QTemporaryDir dir;
+    const QByteArray comment = QByteArray("comments") + '\0' + "string" + '\0' + le32(0x7fffffff) + "a few bytes";
+    writeFile(dir.filePath("attr.exr"), exrWithoutPixels(4, 4, 0, comment));
+    VERIFY_REFUSED(QStringList({"compare", "attr.exr", "attr.exr"}), dir.path(), "attr.exr: ");
 }
 
 void TestHostileFiles::staleTemporariesAreRemoved() {
