@@ -33,7 +33,7 @@ std::optional<float> coordinate(std::string_view word, std::string* problem) {
     r = std::from_chars(digits.data(), end, d);
     const bool number = !digits.empty() && r.ptr == end && (r.ec == std::errc() || r.ec == std::errc::result_out_of_range);
     if (!number)
-        *problem = "\"" + printableWord(word) + "\" is not a number";
+        *problem = '"' + printableWord(word).append("\" is not a number");
     else if (r.ec == std::errc() && !std::isfinite(d))
         *problem = printableWord(word) + " is not a finite number";
     else if (r.ec == std::errc() && std::abs(d) <= FLT_MAX)
