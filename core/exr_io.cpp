@@ -60,13 +60,29 @@ void writeExr(const std::string& path, const Image& image) {
 
 namespace {
 
+// How many times its packed size a chunk may unpack to, by codec, with room to spare: none 1;
+// RLE stores a run of up to 128 bytes in 2; B44 a 4 x 4 block of halves in at least 3 bytes;
+// deflate (ZIP, ZIPS, and PXR24 after it drops a byte of each float) stops near 1032 to 1;
+// PIZ and DWA, whose stages multiply, get 65536.
+uint64_t maxCompressionRatio(exr_compression_t c) {
+    switch (c) {
+    case EXR_COMPRESSION_NONE: return 1;
+    case EXR_COMPRESSION_RLE: return 128;
+    case EXR_COMPRESSION_B44:
+    case EXR_COMPRESSION_B44A: return 64;
+    case EXR_COMPRESSION_ZIPS:
+    case EXR_COMPRESSION_ZIP: return 2048;
+    case EXR_COMPRESSION_PXR24: return 4096;
+    default: return 65536;
+    }
+}
+
 // The header alone decides how much readExr allocates, and a 200 KB file can claim 16384 x 16384
 // pixels; so before anything is allocated (OpenEXR's InputFile allocates the offset table the
 // header implies), the file must hold that offset table, and every chunk of pixel data a
 // scan-line header promises must lie within the file: OpenEXR's core library reads each chunk's
-// offset and size (a few bytes each). A chunk may not unpack to more than 65536 times its packed
-// size either (deflate, the strongest of EXR's codecs on constant data, stops near 1032; an
-// uncompressed chunk unpacks to its own size), which bounds the image by the file's size.
+// offset and size (a few bytes each). A chunk may not unpack to more than its codec can make of
+// its packed size either (maxCompressionRatio), which bounds the image by the file's size.
 // Tiled and deep files are left to InputFile::isComplete. Returns the problem, or nothing.
 std::string missingPixelData(const std::string& path) {
     struct stat st {};
@@ -102,7 +118,7 @@ std::string missingPixelData(const std::string& path) {
                 exr_get_compression(ctx, p, &compression) != EXR_ERR_SUCCESS ||
                 exr_get_scanlines_per_chunk(ctx, p, &lines) != EXR_ERR_SUCCESS || lines <= 0)
                 continue;
-            const uint64_t ratio = compression == EXR_COMPRESSION_NONE ? 1 : 65536;
+            const uint64_t ratio = maxCompressionRatio(compression);
             for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
                 exr_chunk_info_t chunk{};
                 if (exr_read_scanline_chunk_info(ctx, p, int(y), &chunk) != EXR_ERR_SUCCESS ||
