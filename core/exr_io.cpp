@@ -81,8 +81,10 @@ uint64_t maxCompressionRatio(exr_compression_t c) {
 // pixels; so before anything is allocated (OpenEXR's InputFile allocates the offset table the
 // header implies), the file must hold that offset table, and every chunk of pixel data a
 // scan-line header promises must lie within the file: OpenEXR's core library reads each chunk's
-// offset and size (a few bytes each). A chunk may not unpack to more than its codec can make of
-// its packed size either (maxCompressionRatio), which bounds the image by the file's size.
+// offset and size (a few bytes each); together they must fit in the file (chunks that overlap
+// would let one stretch of bytes claim to be every chunk). A chunk may not unpack to more than
+// its codec can make of its packed size either (maxCompressionRatio), which bounds the image by
+// the file's size.
 // Tiled and deep files are left to InputFile::isComplete. Returns the problem, or nothing.
 std::string missingPixelData(const std::string& path) {
     struct stat st {};
@@ -119,12 +121,19 @@ std::string missingPixelData(const std::string& path) {
                 exr_get_scanlines_per_chunk(ctx, p, &lines) != EXR_ERR_SUCCESS || lines <= 0)
                 continue;
             const uint64_t ratio = maxCompressionRatio(compression);
+            uint64_t packedTotal = 0;  // chunks do not overlap: together they fit in the file
             for (int64_t y = dw.min.y; y <= dw.max.y; y += lines) {
                 exr_chunk_info_t chunk{};
                 if (exr_read_scanline_chunk_info(ctx, p, int(y), &chunk) != EXR_ERR_SUCCESS ||
                     chunk.data_offset > fileSize || chunk.packed_size > fileSize - chunk.data_offset) {
                     problem = "the file lacks the pixel data its header promises (scan line " + std::to_string(y) + " of " +
                               std::to_string(dw.min.y) + " to " + std::to_string(dw.max.y) + ")";
+                    break;
+                }
+                packedTotal += chunk.packed_size;
+                if (packedTotal > fileSize) {
+                    problem = "the chunks of pixel data up to scan line " + std::to_string(y) +
+                              " add up to more than the file holds (they overlap)";
                     break;
                 }
                 if (chunk.unpacked_size / ratio > chunk.packed_size) {
