@@ -11,6 +11,7 @@
 #include <OpenEXR/ImfStringAttribute.h>
 #include <OpenEXR/openexr.h>
 
+#include <algorithm>
 #include <exception>
 #include <new>
 #include <sys/stat.h>
@@ -110,6 +111,21 @@ std::string missingPixelData(const std::string& path) {
         if (tables > fileSize)
             problem = "the file (" + std::to_string(fileSize) + " bytes) is shorter than the offset table its header implies (" +
                       std::to_string(tables) + " bytes)";
+        // Every storage (tiled and deep parts too): what readExr would allocate, a float per
+        // channel and pixel, at most 131072 times the file (65536 for the codecs, 2 for halves).
+        for (int p = 0; p < parts && problem.empty(); ++p) {
+            exr_attr_box2i_t dw{};
+            const exr_attr_chlist_t* channels = nullptr;
+            if (exr_get_data_window(ctx, p, &dw) != EXR_ERR_SUCCESS || exr_get_channels(ctx, p, &channels) != EXR_ERR_SUCCESS ||
+                !channels)
+                continue;
+            const double pixels = (double(dw.max.x) - dw.min.x + 1) * (double(dw.max.y) - dw.min.y + 1);
+            const double bytes = pixels * 4.0 * std::max(3, channels->num_channels);
+            if (bytes > 131072.0 * double(fileSize))
+                problem = "the file's " + std::to_string(fileSize) + " bytes cannot hold the " +
+                          std::to_string(dw.max.x - int64_t(dw.min.x) + 1) + " x " +
+                          std::to_string(dw.max.y - int64_t(dw.min.y) + 1) + " pixels its header claims";
+        }
         for (int p = 0; p < parts && problem.empty(); ++p) {
             exr_storage_t storage{};
             exr_attr_box2i_t dw{};
