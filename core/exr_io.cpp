@@ -1,6 +1,7 @@
 #include "core/exr_io.h"
 
 #include "core/atomic_file.h"
+#include "core/message_text.h"
 #include "core/regular_file.h"
 
 #include <OpenEXR/ImfChannelList.h>
@@ -12,6 +13,7 @@
 #include <OpenEXR/openexr.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <exception>
 #include <new>
 #include <sys/stat.h>
@@ -61,6 +63,55 @@ void writeExr(const std::string& path, const Image& image) {
 
 namespace {
 
+// OpenEXR's InputFile allocates each header attribute's declared size before reading it (a
+// string or an attribute of unknown type claiming 1.7 GB in a file of 700 bytes): every declared
+// size must fit in what follows it in the file. Walks the header(s) (several in a multi-part
+// file); returns the problem, or nothing.
+std::string attributeBeyondFile(const std::string& path, uint64_t fileSize) {
+    std::FILE* f = std::fopen(path.c_str(), "rb");
+    if (!f) return {};
+    unsigned char head[8];
+    std::string problem;
+    if (std::fread(head, 1, 8, f) == 8) {
+        const bool multipart = head[5] & 0x10;  // version flags 0x1000
+        const auto text = [&](std::string& out) {  // a NUL-terminated name, at most 255 characters
+            out.clear();
+            for (int c; (c = std::fgetc(f)) != EOF;) {
+                if (c == 0) return true;
+                if (out.size() == 255) return false;
+                out += char(c);
+            }
+            return false;
+        };
+        for (bool more = true; more && problem.empty();) {
+            std::string name, type;
+            while (problem.empty()) {
+                if (!text(name)) return std::fclose(f), std::string();  // cut short: InputFile says so
+                if (name.empty()) break;                                 // the end of this header
+                unsigned char size[4];
+                if (!text(type) || std::fread(size, 1, 4, f) != 4) return std::fclose(f), std::string();
+                const int64_t bytes = int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 |
+                                              uint32_t(size[3]) << 24);
+                const int64_t at = std::ftell(f);
+                if (bytes < 0 || at < 0 || uint64_t(at) + uint64_t(bytes) > fileSize)
+                    problem = "the header's attribute \"" + printableWord(name) + "\" claims " + std::to_string(bytes) +
+                              " bytes, more than the file holds";
+                else
+                    std::fseek(f, long(bytes), SEEK_CUR);
+            }
+            // A multi-part file ends its list of headers with an empty one.
+            more = multipart && problem.empty() && [&] {
+                const int c = std::fgetc(f);
+                if (c == 0 || c == EOF) return false;
+                std::ungetc(c, f);
+                return true;
+            }();
+        }
+    }
+    std::fclose(f);
+    return problem;
+}
+
 // How many times its packed size a chunk may unpack to, by codec, with room to spare: none 1;
 // RLE stores a run of up to 128 bytes in 2; B44 a 4 x 4 block of halves in at least 3 bytes;
 // deflate (ZIP, ZIPS, and PXR24 after it drops a byte of each float) stops near 1032 to 1;
@@ -94,7 +145,8 @@ std::string missingPixelData(const std::string& path) {
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.error_handler_fn = [](exr_const_context_t, exr_result_t, const char*) {};  // reported below instead
     exr_context_t ctx = nullptr;
-    std::string problem;
+    std::string problem = attributeBeyondFile(path, fileSize);
+    if (!problem.empty()) return problem;
     // The core library checks each header attribute's size against the file; InputFile does not
     // (a string attribute claiming 2 GB makes it allocate 2 GB), so a header the core library
     // refuses is not handed on.
