@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <new>
 #include <sys/stat.h>
@@ -63,6 +64,35 @@ void writeExr(const std::string& path, const Image& image) {
 
 namespace {
 
+// Whether an attribute's value, as InputFile reads it (by its type's content), takes exactly
+// the declared size. Types read by their size (strings, vectors, unknown types) always do.
+bool contentMatchesSize(const std::string& type, const std::string& value) {
+    static const std::pair<const char*, size_t> kFixed[] = {
+        {"box2i", 16}, {"box2f", 16}, {"compression", 1}, {"lineOrder", 1}, {"envmap", 1}, {"deepImageState", 1},
+        {"float", 4}, {"double", 8}, {"int", 4}, {"v2i", 8}, {"v2f", 8}, {"v2d", 16}, {"v3i", 12}, {"v3f", 12},
+        {"v3d", 24}, {"m33f", 36}, {"m33d", 72}, {"m44f", 64}, {"m44d", 128}, {"chromaticities", 32},
+        {"keycode", 28}, {"timecode", 8}, {"rational", 8}, {"tiledesc", 9}};
+    for (const auto& [name, size] : kFixed)
+        if (type == name) return value.size() == size;
+    if (type == "chlist") {  // entries of a name, its NUL and 16 bytes, up to an empty name
+        size_t at = 0;
+        while (at < value.size() && value[at] != '\0') {
+            const size_t nul = value.find('\0', at);
+            if (nul == std::string::npos) return false;
+            at = nul + 1 + 16;
+        }
+        return at + 1 == value.size();
+    }
+    if (type == "preview") {  // width, height, then 4 bytes a pixel
+        if (value.size() < 8) return false;
+        uint32_t w = 0, h = 0;
+        std::memcpy(&w, value.data(), 4);
+        std::memcpy(&h, value.data() + 4, 4);
+        return 8 + 4 * uint64_t(w) * uint64_t(h) == value.size();
+    }
+    return true;
+}
+
 // OpenEXR's InputFile allocates each header attribute's declared size before reading it (a
 // string or an attribute of unknown type claiming 1.7 GB in a file of 700 bytes): every declared
 // size must fit in what follows it in the file. Walks the header(s) (several in a multi-part
@@ -93,11 +123,18 @@ std::string attributeBeyondFile(const std::string& path, uint64_t fileSize) {
                 const int64_t bytes = int32_t(uint32_t(size[0]) | uint32_t(size[1]) << 8 | uint32_t(size[2]) << 16 |
                                               uint32_t(size[3]) << 24);
                 const int64_t at = std::ftell(f);
-                if (bytes < 0 || at < 0 || uint64_t(at) + uint64_t(bytes) > fileSize)
+                if (bytes < 0 || at < 0 || uint64_t(at) + uint64_t(bytes) > fileSize) {
                     problem = "the header's attribute \"" + printableWord(name) + "\" claims " + std::to_string(bytes) +
                               " bytes, more than the file holds";
-                else
-                    std::fseek(f, long(bytes), SEEK_CUR);
+                    break;
+                }
+                // InputFile reads known types by their content, not by the declared size: the
+                // two must agree, or its reading and this walk part ways.
+                std::string value(size_t(bytes), '\0');
+                if (std::fread(value.data(), 1, value.size(), f) != value.size()) return std::fclose(f), std::string();
+                if (!contentMatchesSize(type, value))
+                    problem = "the header's attribute \"" + printableWord(name) + "\" (" + printableWord(type) +
+                              ") is malformed: its content and its declared size of " + std::to_string(bytes) + " bytes differ";
             }
             // A multi-part file ends its list of headers with an empty one.
             more = multipart && problem.empty() && [&] {
