@@ -492,6 +492,15 @@ void TestHostileFiles::exrAttributeClaimingGigabytes() {
         VERIFY_REFUSED(QStringList({"compare", "attr.exr", "attr.exr"}), dir.path(),
                        "attr.exr: the header's attribute \"comments\" claims 2147483647 bytes");
     }
+    // A channel list whose declared size is not its content's: InputFile follows the content
+    // and reads what follows as other attributes (it found a 1.8 GB one that way).
+    QByteArray bytes = exrWithoutPixels(4, 4, 0);
+    const QByteArray declared = QByteArray("chlist") + '\0' + le32(55);
+    QVERIFY(bytes.contains(declared));
+    bytes.replace(declared, QByteArray("chlist") + '\0' + le32(37));
+    writeFile(dir.filePath("chlist.exr"), bytes);
+    VERIFY_REFUSED(QStringList({"compare", "chlist.exr", "chlist.exr"}), dir.path(),
+                   "the header's attribute \"channels\" (chlist) is malformed");
 }
 
 void TestHostileFiles::staleTemporariesAreRemoved() {
