@@ -136,7 +136,9 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
         rays.resetCounts();  // the passes' rays only, as the time is the passes' only
-        runProgressive(*backend, run.backend, settings, ctx, &latest, {.publishSeconds = 0});
+        PassLoopOptions everyPass;
+        everyPass.publishSeconds = 0;
+        runProgressive(*backend, run.backend, settings, ctx, &latest, everyPass);
     });
 
     std::vector<BenchSample> samples;

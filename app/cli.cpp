@@ -21,8 +21,10 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <new>
 #include <numbers>
 #include <optional>
+#include <unistd.h>
 
 namespace lucerna::cli {
 
@@ -76,8 +78,23 @@ Scene loadOrThrow(const std::string& path, LoadReport* report) {
     }
 }
 
+// A render its film cannot hold (two half-images of three doubles per pixel: 16384 x 16384 needs
+// 12.9 GB) is bad input, not an internal error. Beyond the machine's memory it is refused
+// before any work; within it, an allocation can still fail (a ulimit, other programs), and
+// that std::bad_alloc becomes this same line.
+std::string tooLargeForMemory(int width, int height) {
+    const double gb = 2.0 * 3.0 * sizeof(double) * double(width) * double(height) / 1e9;
+    char buf[160];
+    std::snprintf(buf, sizeof buf, "a %d x %d render needs more memory than is available (its film alone holds %.3g GB)",
+                  width, height, gb);
+    return buf;
+}
+
 int renderImpl(const std::vector<std::string>& args) {
+    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
+    exitOnInterrupt("render interrupted; no file written\n");
     RenderArgs r = parseRenderArgs(args);
+    checkOutputPath(r.output);
     LoadReport report;
     const SceneSnapshot scene = std::make_shared<const Scene>(loadOrThrow(r.scene, &report));
     for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
@@ -107,6 +124,11 @@ int renderImpl(const std::vector<std::string>& args) {
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
+    const int width = r.settings.width ? r.settings.width : scene->camera.width;
+    const int height = r.settings.height ? r.settings.height : scene->camera.height;
+    const double pages = double(::sysconf(_SC_PHYS_PAGES)), pageSize = double(::sysconf(_SC_PAGESIZE));
+    if (pages > 0 && pageSize > 0 && 2.0 * 3.0 * sizeof(double) * double(width) * double(height) > pages * pageSize)
+        throw UsageError(tooLargeForMemory(width, height));
     if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
     const std::optional<GridMethod> illuminanceMethod = gridMethodFromName(backendName);
     if ((r.layers & kIlluminanceLayer) && !illuminanceMethod)
@@ -131,14 +153,25 @@ int renderImpl(const std::vector<std::string>& args) {
         }
         result = std::move(frame);
     });
-    waitShowingProgress(*job, backendName);
+    try {
+        waitShowingProgress(*job, backendName);
+    } catch (const std::bad_alloc&) {
+        throw UsageError(tooLargeForMemory(width, height));
+    }
     if (interrupted() || !result) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
-    if (r.layers & kAllLayers) addSurfaceLayers(result->image, scene, r.layers);
-    if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
-    writeExr(r.output, result->image);
+    // From here on the image is complete: a Ctrl-C during the write is ignored (README).
+    try {
+        if (r.layers & kAllLayers) addSurfaceLayers(result->image, scene, r.layers);
+        if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
+        writeExr(r.output, result->image);
+    } catch (const std::bad_alloc&) {
+        throw UsageError(tooLargeForMemory(width, height));
+    } catch (const ImageError& e) {
+        throw UsageError(e.what());  // the output path was checked, but the disk may be full
+    }
     std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
                  result->estimatedRelmse);
@@ -272,6 +305,7 @@ int convertImpl(const std::vector<std::string>& args) {
     if (args.size() != 2 && !(args.size() == 4 && args[2] == "--exposure"))
         throw UsageError("usage: lucerna convert IN.exr OUT.png [--exposure STOPS]");
     const float exposure = args.size() == 4 ? parseNumber<float>("--exposure", args[3], -64.0f, 64.0f) : 0.0f;
+    checkOutputPath(args[1]);
     Image image;
     try {
         image = readExr(args[0]);

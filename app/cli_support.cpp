@@ -3,8 +3,11 @@
 #include "core/task_system.h"
 
 #include <chrono>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 #include <thread>
 #include <unistd.h>
@@ -15,7 +18,33 @@ namespace {
 // The one piece of global state: a signal handler can only reach a flag of this type.
 volatile std::sig_atomic_t gInterrupted = 0;
 extern "C" void onInterrupt(int) { gInterrupted = 1; }
+
+// Only async-signal-safe calls: write and _exit.
+const char* gExitMessage = "";
+extern "C" void onInterruptExit(int) {
+    const ssize_t written = ::write(STDERR_FILENO, gExitMessage, std::strlen(gExitMessage));
+    (void)written;
+    ::_exit(130);
+}
 }  // namespace
+
+void exitOnInterrupt(const char* message) {
+    gExitMessage = message;
+    std::signal(SIGINT, onInterruptExit);
+    std::signal(SIGTERM, onInterruptExit);
+}
+
+void checkOutputPath(const std::string& path) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::path folder = fs::path(path).parent_path();
+    if (folder.empty()) folder = ".";
+    if (fs::is_directory(path, ec)) throw UsageError(path + ": is a folder, not a file");
+    if (!fs::exists(folder, ec)) throw UsageError(path + ": the folder " + folder.string() + " does not exist");
+    if (!fs::is_directory(folder, ec)) throw UsageError(path + ": " + folder.string() + " is not a folder");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        throw UsageError(path + ": cannot write in the folder " + folder.string() + " (" + std::strerror(errno) + ")");
+}
 
 void catchInterrupts() {
     std::signal(SIGINT, onInterrupt);

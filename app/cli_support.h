@@ -36,6 +36,16 @@ void addBackendOption(const std::string& nameValue, std::map<std::string, std::s
 void catchInterrupts();
 bool interrupted();
 
+// Until a long command has work that polls the flag (while it loads its scene, say), SIGINT and
+// SIGTERM end it at once with `message` (a whole line, a string literal) on standard error and
+// exit status 130, as the flag would once the work runs: nothing has been written yet. A later
+// catchInterrupts() hands the signals to the flag.
+void exitOnInterrupt(const char* message);
+
+// Refuses (UsageError, exit 2) an output path that cannot be written, before any work is done:
+// its folder missing, not a folder or not writable, or the path itself a folder.
+void checkOutputPath(const std::string& path);
+
 // "12.3 s" or "4 min 05 s".
 std::string formatSeconds(double seconds);
 

@@ -93,7 +93,10 @@ void printTable(const GridLayout& layout, const std::vector<double>& lux) {
 }
 
 int gridImpl(const std::vector<std::string>& args) {
+    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
+    exitOnInterrupt("grid interrupted; no file written\n");
     GridArgs g = parseGridArgs(args);
+    if (!g.csv.empty()) checkOutputPath(g.csv);
     Scene loaded;
     try {
         loaded = loadScene(g.scene);

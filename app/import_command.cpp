@@ -40,15 +40,30 @@ Camera cameraFor(const Scene& scene) {
     return camera;
 }
 
+// What an import has written so far, taken back if it fails: no half-written import (a folder
+// of meshes without its scene) is left behind.
+struct Written {
+    std::filesystem::path createdFolder;  // empty if it was there before
+    std::vector<std::filesystem::path> files;
+
+    void undo() const {
+        std::error_code ec;
+        for (const auto& f : files) std::filesystem::remove(f, ec);
+        if (!createdFolder.empty()) std::filesystem::remove(createdFolder, ec);  // only if empty
+    }
+};
+
 // Each object's mesh to a PLY file of its own in `folder` (beside the scene, which refers to
 // it relatively): an architect's model of a million triangles reads and edits far better than
 // as inline JSON. File names are the object names made safe, unique within the folder.
-void moveMeshesToFiles(Scene& scene, const std::filesystem::path& sceneFile) {
+void moveMeshesToFiles(Scene& scene, const std::filesystem::path& sceneFile, Written& written) {
     const std::filesystem::path folderName = sceneFile.stem().string() + "-meshes";
     const std::filesystem::path folder = sceneFile.parent_path() / folderName;
     std::error_code ec;
+    const bool existed = std::filesystem::exists(folder, ec);
     std::filesystem::create_directories(folder, ec);
     if (ec) throw UsageError(folder.string() + ": cannot create the folder (" + ec.message() + ")");
+    if (!existed) written.createdFolder = folder;
     std::set<std::string> used;
     for (Object& o : scene.objects) {
         if (o.mesh.kind != MeshSource::Kind::Inline) continue;
@@ -61,6 +76,7 @@ void moveMeshesToFiles(Scene& scene, const std::filesystem::path& sceneFile) {
         used.insert(name);
         try {
             writePlyFile((folder / name).string(), o.mesh.inlineMesh);
+            written.files.push_back(folder / name);
         } catch (const std::runtime_error& e) {
             throw UsageError(e.what());
         }
@@ -91,6 +107,7 @@ int importImpl(const std::vector<std::string>& args) {
     if (model.empty() || output.empty())
         throw UsageError(
             "usage: lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]");
+    checkOutputPath(output);
 
     ModelImport imported;
     try {
@@ -105,10 +122,19 @@ int importImpl(const std::vector<std::string>& args) {
     scene.objects = std::move(imported.objects);
     scene.lights = std::move(imported.lights);
     scene.camera = cameraFor(scene);  // from the inline meshes, before they move to files
-    if (!inlineMeshes) moveMeshesToFiles(scene, std::filesystem::path(output));
+    // The scene's own loader judges it before anything is written: an import never leaves a
+    // scene behind that `lucerna info` would refuse.
     try {
+        parseScene(saveSceneToString(scene), output);
+    } catch (const SceneError& e) {
+        throw UsageError(model + ": the scene it makes would not load: " + e.what());
+    }
+    Written written;
+    try {
+        if (!inlineMeshes) moveMeshesToFiles(scene, std::filesystem::path(output), written);
         saveScene(scene, output);
-    } catch (const std::runtime_error& e) {
+    } catch (const std::exception& e) {
+        written.undo();
         throw UsageError(e.what());
     }
     for (const std::string& line : imported.report) std::cout << line << "\n";

@@ -1,6 +1,10 @@
 #include "core/eulumdat_file.h"
 
+#include "core/message_text.h"
+#include "core/number_format.h"
+
 #include <algorithm>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -8,12 +12,6 @@
 namespace lucerna {
 
 namespace {
-
-std::string formatNumber(double x) {
-    char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
-}
 
 std::string trim(const std::string& s) {
     const size_t a = s.find_first_not_of(" \t\r\n");
@@ -52,7 +50,7 @@ public:
         const char* end = word.data() + word.size();
         const auto r = std::from_chars(word.data(), end, x);
         if (word.empty() || r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(here, "expected a number for " + what + ", found \"" + word + "\"");
+            fail(here, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
         return x;
     }
     int integer(const std::string& what, int lo, int hi) {
@@ -60,7 +58,7 @@ public:
         const double x = number(what);
         if (x != std::floor(x) || x < lo || x > hi)
             fail(here, what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                           ", got " + formatNumber(x));
+                           ", got " + shortestNumber(x));
         return int(x);
     }
     std::vector<double> numbers(size_t count, const std::string& what) {
@@ -101,10 +99,11 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
         in.number(what);
     size_t here = in.line();
     const double lor = in.number("the light output ratio");
-    if (!(lor > 0 && lor <= 100)) in.fail(here, "the light output ratio must be in (0, 100] percent, got " + formatNumber(lor));
+    if (!(lor > 0 && lor <= 100)) in.fail(here, "the light output ratio must be in (0, 100] percent, got " + shortestNumber(lor));
     here = in.line();
     const double cfli = in.number("the conversion factor for luminous intensities");
-    if (!(cfli > 0)) in.fail(here, "the conversion factor must be positive, got " + formatNumber(cfli));
+    if (!(cfli > 0)) in.fail(here, "the conversion factor must be positive, got " + shortestNumber(cfli));
+    const size_t cfliLine = here;
     in.number("the measurement tilt");
     const int sets = in.integer("the number of standard sets of lamps", 1, 20);
     for (int i = 0; i < sets; ++i) in.number("the number of lamps");
@@ -113,8 +112,9 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     for (int i = 0; i < sets; ++i) {
         here = in.line();
         const double f = in.number("the total luminous flux of lamps");
-        if (!(f > 0)) in.fail(here, "the total luminous flux of lamps must be positive, got " + formatNumber(f));
+        if (!(f > 0)) in.fail(here, "the total luminous flux of lamps must be positive, got " + shortestNumber(f));
         lampFlux += f;
+        if (!(lampFlux <= FLT_MAX)) in.fail(here, "the lamps' total flux lies beyond single-precision range");
     }
     for (int i = 0; i < sets; ++i) in.text("the colour temperature");
     for (int i = 0; i < sets; ++i) in.text("the colour rendering index");
@@ -125,19 +125,19 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     const std::vector<double> cAngles = in.numbers(size_t(mc), "C angles");
     for (size_t i = 0; i < cAngles.size(); ++i) {
         if (!(cAngles[i] >= 0 && cAngles[i] < 360))
-            in.fail(here + i, "C angles must be in [0, 360), got " + formatNumber(cAngles[i]));
+            in.fail(here + i, "C angles must be in [0, 360), got " + shortestNumber(cAngles[i]));
         if (i > 0 && !(cAngles[i] > cAngles[i - 1]))
-            in.fail(here + i, "C angles must increase, but " + formatNumber(cAngles[i]) + " follows " +
-                                  formatNumber(cAngles[i - 1]));
+            in.fail(here + i, "C angles must increase, but " + shortestNumber(cAngles[i]) + " follows " +
+                                  shortestNumber(cAngles[i - 1]));
     }
     here = in.line();
     std::vector<double> gamma = in.numbers(size_t(ng), "gamma angles");
     for (size_t i = 0; i < gamma.size(); ++i) {
         if (!(gamma[i] >= 0 && gamma[i] <= 180))
-            in.fail(here + i, "gamma angles must be in [0, 180], got " + formatNumber(gamma[i]));
+            in.fail(here + i, "gamma angles must be in [0, 180], got " + shortestNumber(gamma[i]));
         if (i > 0 && !(gamma[i] > gamma[i - 1]))
-            in.fail(here + i, "gamma angles must increase, but " + formatNumber(gamma[i]) + " follows " +
-                                  formatNumber(gamma[i - 1]));
+            in.fail(here + i, "gamma angles must increase, but " + shortestNumber(gamma[i]) + " follows " +
+                                  shortestNumber(gamma[i - 1]));
     }
 
     // Which measured planes the file holds (indices into cAngles), by symmetry indicator.
@@ -155,15 +155,24 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     here = in.line();
     const std::vector<double> values = in.numbers(count * size_t(ng), "intensities (cd/klm)");
     for (size_t i = 0; i < values.size(); ++i)
-        if (values[i] < 0) in.fail(here + i, "intensities must be at least 0, got " + formatNumber(values[i]));
+        if (values[i] < 0) in.fail(here + i, "intensities must be at least 0, got " + shortestNumber(values[i]));
     if (in.remaining() > 0)
         in.fail(in.line(), "expected " + std::to_string(values.size()) + " intensities (cd/klm), found " +
                                std::to_string(values.size() + in.remaining()));
 
     const double scale = lampFlux / 1000.0 * cfli;
+    // The renderer works in single precision: a product beyond it (1e308 overflows to inf) would
+    // give infinite flux and a black image.
     std::vector<std::vector<double>> columns(count);
     for (size_t c = 0; c < count; ++c)
-        for (size_t g = 0; g < size_t(ng); ++g) columns[c].push_back(values[c * size_t(ng) + g] * scale);
+        for (size_t g = 0; g < size_t(ng); ++g) {
+            const double value = values[c * size_t(ng) + g];
+            if (!(value * scale <= FLT_MAX))
+                in.fail(cfliLine, "intensity " + shortestNumber(value) + " cd/klm times the lamps' " +
+                                      shortestNumber(lampFlux) + " lm and the conversion factor " + shortestNumber(cfli) +
+                                      " (this line) lies beyond single-precision range");
+            columns[c].push_back(value * scale);
+        }
 
     std::vector<CPlane> planes;
     for (size_t c = 0; c < count; ++c) {
@@ -184,6 +193,9 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     GoniometricDistribution d = assembleDistribution(std::move(planes), std::move(gamma), columns, label);
     d.name = name;
     d.statedFluxLm = lampFlux * lor / 100.0;
+    if (!(d.integratedFlux() <= FLT_MAX))
+        in.fail(cfliLine, "the intensities times the conversion factor " + shortestNumber(cfli) +
+                              " (this line) integrate to a flux beyond single-precision range");
     return d;
 }
 

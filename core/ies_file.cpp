@@ -1,6 +1,10 @@
 #include "core/ies_file.h"
 
+#include "core/message_text.h"
+#include "core/number_format.h"
+
 #include <algorithm>
+#include <cfloat>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -18,12 +22,6 @@ std::string trim(const std::string& s) {
 std::string upper(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
     return s;
-}
-
-std::string formatNumber(double x) {
-    char buf[40];
-    const auto r = std::to_chars(buf, buf + sizeof buf, x);
-    return std::string(buf, r.ptr);
 }
 
 // The numbers after the TILT line, separated by blanks or commas, each with its line number.
@@ -53,7 +51,7 @@ public:
         const char* end = word.data() + word.size();
         const auto r = std::from_chars(word.data(), end, x);
         if (r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(line, "expected a number for " + what + ", found \"" + word + "\"");
+            fail(line, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
         ++next_;
         return x;
     }
@@ -63,7 +61,7 @@ public:
         const double x = number(what);
         if (x != std::floor(x) || x < lo || x > hi)
             fail(line, what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                           ", got " + formatNumber(x));
+                           ", got " + shortestNumber(x));
         return int(x);
     }
 
@@ -91,7 +89,7 @@ private:
 void checkAscending(const Tokens& t, int line, const std::vector<double>& v, const std::string& what) {
     for (size_t i = 1; i < v.size(); ++i)
         if (!(v[i] > v[i - 1]))
-            t.fail(line, what + " must increase, but " + formatNumber(v[i]) + " follows " + formatNumber(v[i - 1]));
+            t.fail(line, what + " must increase, but " + shortestNumber(v[i]) + " follows " + shortestNumber(v[i - 1]));
 }
 
 }  // namespace
@@ -128,7 +126,7 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     const std::string tilt = eq == std::string::npos ? std::string() : upper(trim(tiltText.substr(eq + 1)));
     const int tiltLineNumber = int(tiltLine + 1);
     if (tilt != "NONE" && tilt != "INCLUDE")
-        throw LuminaireFileError(label + ": line " + std::to_string(tiltLineNumber) + ": " + tiltText +
+        throw LuminaireFileError(label + ": line " + std::to_string(tiltLineNumber) + ": " + printableWord(tiltText, 60) +
                                  ": a separate tilt file is not supported (use TILT=INCLUDE or TILT=NONE)");
 
     Tokens t(lines, tiltLine + 1, label);
@@ -143,16 +141,18 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
         line = t.line();
         d.tiltMultipliers = t.numbers(size_t(n), "tilt multipliers");
         for (double m : d.tiltMultipliers)
-            if (m < 0) t.fail(line, "tilt multipliers must be at least 0, got " + formatNumber(m));
+            if (m < 0) t.fail(line, "tilt multipliers must be at least 0, got " + shortestNumber(m));
     }
     const int lamps = t.integer("the number of lamps", 1, 1000000);
     int line = t.line();
     const double lumensPerLamp = t.number("lumens per lamp");
     if (!(lumensPerLamp > 0 || lumensPerLamp == -1))
-        t.fail(line, "lumens per lamp must be positive, or -1 for absolute photometry, got " + formatNumber(lumensPerLamp));
+        t.fail(line, "lumens per lamp must be positive, or -1 for absolute photometry, got " + shortestNumber(lumensPerLamp));
+    const int lumensLine = line;
     line = t.line();
     const double multiplier = t.number("the candela multiplier");
-    if (!(multiplier > 0)) t.fail(line, "the candela multiplier must be positive, got " + formatNumber(multiplier));
+    if (!(multiplier > 0)) t.fail(line, "the candela multiplier must be positive, got " + shortestNumber(multiplier));
+    const int multiplierLine = line;
     const int nV = t.integer("the number of vertical angles", 2, 100000);
     const int nH = t.integer("the number of horizontal angles", 1, 100000);
     line = t.line();
@@ -163,7 +163,8 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     for (const char* what : {"the luminaire width", "the luminaire length", "the luminaire height"}) t.number(what);
     line = t.line();
     const double ballast = t.number("the ballast factor");
-    if (!(ballast > 0)) t.fail(line, "the ballast factor must be positive, got " + formatNumber(ballast));
+    if (!(ballast > 0)) t.fail(line, "the ballast factor must be positive, got " + shortestNumber(ballast));
+    const int ballastLine = line;
     t.number("the ballast-lamp factor (future use, or file generation type)");
     t.number("the input watts");
 
@@ -172,27 +173,41 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     checkAscending(t, line, vertical, "vertical angles");
     if (!((vertical.front() == 0 || vertical.front() == 90) && (vertical.back() == 90 || vertical.back() == 180)))
         t.fail(line, "type C vertical angles must run from 0 or 90 to 90 or 180 degrees, got " +
-                         formatNumber(vertical.front()) + " to " + formatNumber(vertical.back()));
+                         shortestNumber(vertical.front()) + " to " + shortestNumber(vertical.back()));
     line = t.line();
     const std::vector<double> horizontal = t.numbers(size_t(nH), "horizontal angles");
     checkAscending(t, line, horizontal, "horizontal angles");
     const double last = horizontal.back();
     if (horizontal.front() != 0 || !(last == 0 || last == 90 || last == 180 || last == 360))
         t.fail(line, "type C horizontal angles must start at 0 and end at 0, 90, 180 or 360 degrees, got " +
-                         formatNumber(horizontal.front()) + " to " + formatNumber(last));
+                         shortestNumber(horizontal.front()) + " to " + shortestNumber(last));
 
     line = t.line();
     const size_t count = size_t(nV) * size_t(nH);
     const std::vector<double> values = t.numbers(count, "candela values");
     for (double v : values)
-        if (v < 0) t.fail(line, "candela values must be at least 0, got " + formatNumber(v));
+        if (v < 0) t.fail(line, "candela values must be at least 0, got " + shortestNumber(v));
     if (t.remaining() > 0)
         t.fail(t.line(), "expected " + std::to_string(count) + " candela values, found " +
                              std::to_string(count + t.remaining()));
 
+    // The renderer works in single precision: a product beyond it (1e308 overflows to inf) would
+    // give infinite flux and a black image.
     std::vector<std::vector<double>> columns(static_cast<size_t>(nH));
     for (size_t h = 0; h < size_t(nH); ++h)
-        for (size_t v = 0; v < size_t(nV); ++v) columns[h].push_back(values[h * size_t(nV) + v] * multiplier * ballast);
+        for (size_t v = 0; v < size_t(nV); ++v) {
+            const double value = values[h * size_t(nV) + v];
+            const double cd = value * multiplier * ballast;
+            if (!(cd <= FLT_MAX))
+                t.fail(multiplierLine, "candela value " + shortestNumber(value) + " times the candela multiplier " +
+                                           shortestNumber(multiplier) + " (this line) and the ballast factor " +
+                                           shortestNumber(ballast) + " (line " + std::to_string(ballastLine) +
+                                           ") lies beyond single-precision range");
+            columns[h].push_back(cd);
+        }
+    if (!(double(lamps) * lumensPerLamp * ballast <= FLT_MAX))
+        t.fail(lumensLine, "the lamps' flux, " + std::to_string(lamps) + " x " + shortestNumber(lumensPerLamp) +
+                               " lm times the ballast factor, lies beyond single-precision range");
     std::vector<CPlane> planes;
     for (size_t h = 0; h < horizontal.size(); ++h) planes.push_back({horizontal[h], h});
     if (last <= 90)  // quadrant (or rotational) symmetry: mirror about C90-C270 into 90..180
@@ -207,6 +222,9 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     full.tiltAngles = std::move(d.tiltAngles);
     full.tiltMultipliers = std::move(d.tiltMultipliers);
     full.statedFluxLm = lumensPerLamp > 0 ? lamps * lumensPerLamp * ballast : 0.0;
+    if (!(full.integratedFlux() <= FLT_MAX))
+        t.fail(multiplierLine, "the candela values times the candela multiplier " + shortestNumber(multiplier) +
+                                   " (this line) integrate to a flux beyond single-precision range");
     return full;
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/eulumdat_file.h"
 #include "core/ies_file.h"
+#include "core/regular_file.h"
 
 #include <fstream>
 #include <sstream>
@@ -15,6 +16,8 @@ GoniometricDistribution loadLuminaireFile(const std::string& path) {
         for (char c : path.substr(dot + 1)) ext += char(std::tolower(static_cast<unsigned char>(c)));
     if (ext != "ies" && ext != "ldt")
         throw LuminaireFileError(path + ": not a luminaire file (expected the extension .ies or .ldt)");
+    if (const std::string kind = nonRegularFileKind(path); !kind.empty())
+        throw LuminaireFileError(path + ": not a regular file (" + kind + ")");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw LuminaireFileError(path + ": cannot read the file");
     std::ostringstream text;

@@ -1,5 +1,6 @@
 #include "core/mesh_file.h"
 #include "core/atomic_file.h"
+#include "core/mesh_file_formats.h"
 
 // MeshIO.hh must come before the mesh kernel headers (OpenMesh registers its readers that way).
 #include <OpenMesh/Core/IO/MeshIO.hh>
@@ -207,6 +208,30 @@ TriangleMesh readMeshFile(const std::string& absolutePath) {
 
     if (const std::string problem = headerProblem(absolutePath, ext, info.size()); !problem.empty()) fail(problem);
 
+    TriangleMesh out;
+    if (ext == "ply" || ext == "off" || ext == "obj") {
+        // PLY and OFF are read here, OBJ checked here first (mesh_file_formats.h says why).
+        std::string problem;
+        try {
+            std::string bytes(size_t(info.size()), '\0');
+            std::ifstream in(absolutePath, std::ios::binary);
+            in.read(bytes.data(), std::streamsize(bytes.size()));
+            bytes.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+            if (ext == "ply") out = readPlyBytes(bytes);
+            else if (ext == "off") out = readOffBytes(bytes);
+            else problem = objProblem(bytes, info.absolutePath().toStdString());
+        } catch (const std::bad_alloc&) {
+            problem = "the file is too large to read into memory";
+        } catch (const std::runtime_error& e) {
+            problem = e.what();
+        }
+        if (!problem.empty()) fail(problem);
+        if (ext != "obj") {
+            if (out.triangles.empty()) fail("the file has no faces");
+            return out;
+        }
+    }
+
     PolyMesh mesh;
     RecordingImporter importer(mesh);
     bool read = false;
@@ -223,10 +248,11 @@ TriangleMesh readMeshFile(const std::string& absolutePath) {
     if (importer.badIndex) fail("a face refers to a vertex that does not exist");
     if (importer.polygons.empty()) fail("the file has no faces");
 
-    TriangleMesh out;
     out.vertices.reserve(importer.vertices.size());
     for (const OpenMesh::VertexHandle vh : importer.vertices) {
         const auto& p = mesh.point(vh);
+        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])))
+            fail("vertex " + std::to_string(out.vertices.size()) + " is not a finite point");
         out.vertices.emplace_back(p[0], p[1], p[2]);
     }
     for (const std::vector<int>& polygon : importer.polygons)

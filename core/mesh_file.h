@@ -1,6 +1,7 @@
 #pragma once
-// OBJ, PLY, OFF and STL files through OpenMesh: positions and faces only (SPEC.md ignores normals,
-// UVs, colours and materials); polygons fan-triangulated from their first vertex in file order.
+// OBJ, PLY, OFF and STL files: positions and faces only (SPEC.md ignores normals, UVs, colours
+// and materials); polygons fan-triangulated from their first vertex in file order. OBJ and STL
+// through OpenMesh, PLY and OFF by mesh_file_formats.h (OpenMesh's readers trust their counts).
 
 #include "core/scene.h"
 

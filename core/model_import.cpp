@@ -1,6 +1,8 @@
 #include "core/model_import.h"
 
 #include "core/gltf_material_extensions.h"
+#include "core/message_text.h"
+#include "core/regular_file.h"
 #include "core/texture_average.h"
 
 #include <assimp/GltfMaterial.h>
@@ -10,6 +12,7 @@
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -227,8 +230,23 @@ void Mapper::visit(const aiNode& node, const aiMatrix4x4& parent) {
         Object obj;
         TriangleMesh& tm = obj.mesh.inlineMesh;
         tm.vertices.reserve(mesh.mNumVertices);
-        for (unsigned v = 0; v < mesh.mNumVertices; ++v)
-            tm.vertices.push_back(transformPoint(world, mesh.mVertices[v]) * toSceneUnits);
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            // Assimp reads coordinates in single precision: "nan" stays NaN and 1e39 becomes inf.
+            // Neither may reach the scene (its loader refuses both), nor a point that the unit
+            // conversion takes beyond single precision.
+            const aiVector3D& a = mesh.mVertices[v];
+            const V3d p = transformPoint(world, a) * toSceneUnits;
+            if (!(std::abs(p.x) <= FLT_MAX && std::abs(p.y) <= FLT_MAX && std::abs(p.z) <= FLT_MAX)) {
+                char xyz[100];
+                std::snprintf(xyz, sizeof xyz, "(%g, %g, %g)", double(a.x), double(a.y), double(a.z));
+                const bool finite = std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
+                throw std::runtime_error("mesh '" + printableWord(mesh.mName.C_Str()) + "': vertex " + std::to_string(v) +
+                                         " is " + xyz +
+                                         (finite ? ", beyond single-precision range in the scene's unit"
+                                                 : ": not a finite point (a coordinate is NaN, or too large for single precision)"));
+            }
+            tm.vertices.push_back(p);
+        }
         size_t others = 0;
         for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
             const aiFace& face = mesh.mFaces[f];
@@ -352,6 +370,8 @@ void Mapper::mapLight(const aiLight& light) {
 }  // namespace
 
 ModelImport importModel(const std::string& path, const ImportOptions& options) {
+    if (const std::string kind = nonRegularFileKind(path); !kind.empty())
+        throw std::runtime_error(path + ": not a regular file (" + kind + ")");
     const std::string ext = lowerExtension(path);
     Assimp::Importer importer;
     // aiProcess_GlobalScale applies the file's own unit where the importer reports one (FBX's
@@ -401,7 +421,11 @@ ModelImport importModel(const std::string& path, const ImportOptions& options) {
     if (options.sceneMetersPerUnit != 1.0)
         out.report.push_back(format("coordinates converted to the scene's unit (%g m)", options.sceneMetersPerUnit));
 
-    mapper.visit(*ai->mRootNode, mapper.axes);
+    try {
+        mapper.visit(*ai->mRootNode, mapper.axes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(path + ": " + e.what());
+    }
     for (unsigned i = 0; i < ai->mNumLights; ++i) mapper.mapLight(*ai->mLights[i]);
     for (unsigned i = 0; i < ai->mNumCameras; ++i)
         out.report.push_back(std::string("camera '") + ai->mCameras[i]->mName.C_Str() + "' ignored");

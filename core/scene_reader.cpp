@@ -7,6 +7,7 @@
 #include "core/luminaire.h"
 #include "core/mesh_file.h"
 #include "core/number_format.h"
+#include "core/regular_file.h"
 #include "core/scene_io.h"
 
 #include <QDir>
@@ -598,6 +599,8 @@ Scene parseScene(const std::string& bytes, const std::string& path, LoadReport* 
 }
 
 Scene loadScene(const std::string& path, LoadReport* report) {
+    if (const std::string kind = nonRegularFileKind(path); !kind.empty())
+        throw SceneError(path + ": cannot read the file: not a regular file (" + kind + ")");
     QFile file(QString::fromStdString(path));
     if (!file.open(QIODevice::ReadOnly)) throw SceneError(path + ": cannot read the file: " + file.errorString().toStdString());
     const QByteArray bytes = file.readAll();

@@ -1,4 +1,5 @@
 #include "core/texture_average.h"
+#include "core/regular_file.h"
 
 #include <QImage>
 
@@ -30,7 +31,10 @@ std::optional<Rgbd> averageImageColour(const unsigned char* bytes, size_t size) 
     return average(QImage::fromData(bytes, int(size)));
 }
 
-std::optional<Rgbd> averageImageFileColour(const std::string& path) { return average(QImage(QString::fromStdString(path))); }
+std::optional<Rgbd> averageImageFileColour(const std::string& path) {
+    if (!nonRegularFileKind(path).empty()) return std::nullopt;  // a FIFO would block the reader forever
+    return average(QImage(QString::fromStdString(path)));
+}
 
 Rgbd averageTexelColour(const unsigned char* texels, size_t count, bool bgra) {
     Rgbd sum(0, 0, 0);

@@ -1,0 +1,594 @@
+// Hostile and faulty files (issue 26): each is refused by the built `lucerna` with exit status 2
+// and one line, in under a second of CPU time and under 100 MB of resident memory, whatever its
+// header claims; `import` refuses (leaving nothing behind) or writes a scene that loads; paths
+// that are not regular files are refused at once; a bad output path is refused before the
+// render; Ctrl-C before the scene has loaded gets its message; stale temporaries go.
+//
+// Every child runs through fork/exec and wait4 rather than QProcess, so that its own peak
+// resident set (ru_maxrss) and CPU time are measured; it runs under an address-space limit of
+// 4 GB (and 20 s of CPU) so that a regression fails here instead of eating the machine.
+
+#include <QDir>
+#include <QFile>
+#include <QTemporaryDir>
+#include <QtTest>
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <thread>
+#include <unistd.h>
+
+namespace {
+
+constexpr rlim_t kAddressSpace = rlim_t(4) << 30;
+
+struct Run {
+    int exitCode = -1;  // -1: killed by a signal (see `signal`)
+    int signal = 0;
+    QByteArray out, err;
+    double cpuSeconds = 0, wallSeconds = 0;
+    long maxRssMb = 0;
+};
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
+
+// Runs lucerna with `args` in `dir`. `whileRunning(pid)` is called once the child exists (for
+// signals); the child is killed after `wallLimitSeconds`.
+Run runLucerna(const QStringList& args, const QString& dir, const std::function<void(pid_t)>& whileRunning = {},
+               double wallLimitSeconds = 30, rlim_t addressSpace = kAddressSpace) {
+    static QTemporaryDir logs;
+    static int serial = 0;
+    const QString outPath = logs.filePath(QString("out-%1").arg(serial)), errPath = logs.filePath(QString("err-%1").arg(serial));
+    ++serial;
+    std::vector<std::string> argvText{LUCERNA_BINARY};
+    for (const QString& a : args) argvText.push_back(a.toStdString());
+    std::vector<char*> argv;
+    for (std::string& a : argvText) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string out = outPath.toStdString(), err = errPath.toStdString(), cwd = dir.toStdString();
+
+    const auto start = std::chrono::steady_clock::now();
+    const pid_t pid = ::fork();
+    if (pid == 0) {  // only async-signal-safe calls until exec
+        const int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        const int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        const int in = ::open("/dev/null", O_RDONLY);
+        if (o < 0 || e < 0 || in < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0 || ::dup2(in, 0) < 0) ::_exit(120);
+        const rlimit as{addressSpace, addressSpace}, cpu{20, 20};
+        ::setrlimit(RLIMIT_AS, &as);
+        ::setrlimit(RLIMIT_CPU, &cpu);
+        if (::chdir(cwd.c_str()) != 0) ::_exit(121);
+        ::execv(argv[0], argv.data());
+        ::_exit(122);
+    }
+    Run r;
+    if (pid < 0) return r;
+    if (whileRunning) whileRunning(pid);
+    int status = 0;
+    rusage usage{};
+    for (;;) {
+        const pid_t done = ::wait4(pid, &status, WNOHANG, &usage);
+        if (done == pid) break;
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > wallLimitSeconds) {
+            ::kill(pid, SIGKILL);
+            ::wait4(pid, &status, 0, &usage);
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    r.signal = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+    r.cpuSeconds = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                   1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+    r.maxRssMb = usage.ru_maxrss / 1024;
+    r.out = readAll(outPath);
+    r.err = readAll(errPath);
+    return r;
+}
+
+QString describe(const QStringList& args, const Run& r) {
+    return QString("lucerna %1: exit %2 (signal %3), %4 s CPU, %5 s wall, %6 MB, stderr: %7")
+        .arg(args.join(' '))
+        .arg(r.exitCode)
+        .arg(r.signal)
+        .arg(r.cpuSeconds)
+        .arg(r.wallSeconds)
+        .arg(r.maxRssMb)
+        .arg(QString::fromUtf8(r.err));
+}
+
+// One line of printable text: no NUL, no control character but the final newline.
+bool isOnePrintableLine(const QByteArray& s) {
+    if (s.isEmpty() || !s.endsWith('\n')) return false;
+    for (qsizetype i = 0; i + 1 < s.size(); ++i)
+        if (static_cast<unsigned char>(s[i]) < 0x20 || s[i] == 0x7f) return false;
+    return true;
+}
+
+// The refusal the issue asks for: exit 2, one line, under a second of CPU, under 100 MB.
+#define VERIFY_REFUSED(args, dir, expected)                                                                  \
+    do {                                                                                                     \
+        const QStringList a_ = (args);                                                                       \
+        const Run r_ = runLucerna(a_, (dir));                                                                \
+        QVERIFY2(r_.exitCode == 2, qPrintable(describe(a_, r_)));                                            \
+        QVERIFY2(isOnePrintableLine(r_.err), qPrintable(describe(a_, r_)));                                  \
+        QVERIFY2(r_.cpuSeconds < 1.0 && r_.wallSeconds < 10.0, qPrintable(describe(a_, r_)));                \
+        QVERIFY2(r_.maxRssMb < 100, qPrintable(describe(a_, r_)));                                           \
+        QVERIFY2(QString::fromUtf8(r_.err).contains(expected), qPrintable(describe(a_, r_) + " expected: " + \
+                                                                          QString(expected)));               \
+    } while (0)
+
+void writeFile(const QString& path, const QByteArray& bytes) {
+    QFile f(path);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(bytes);
+}
+
+const char* const kCamera =
+    R"("camera": {"position": [0, 1, -3], "target": [0, 0, 0], "fov_y": 40, "resolution": [8, 8]})";
+
+// A scene with one object whose mesh is `file`.
+QByteArray meshScene(const QString& file) {
+    return QString(R"({"lucerna": 1, %1, "materials": {"white": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+        "objects": [{"name": "m", "material": "white", "mesh": {"file": "%2"}}]})")
+        .arg(kCamera, file)
+        .toUtf8();
+}
+
+// A scene lit by a luminaire file over a floor.
+QByteArray luminaireScene(const QString& file) {
+    return QString(R"({"lucerna": 1, %1, "materials": {"white": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+        "objects": [{"name": "floor", "material": "white", "mesh": {"quad": [[-2,0,-2],[-2,0,2],[2,0,2],[2,0,-2]]}}],
+        "lights": [{"name": "l", "type": "luminaire", "file": "%2", "position": [0, 2, 0], "direction": [0, -1, 0]}]})")
+        .arg(kCamera, file)
+        .toUtf8();
+}
+
+QByteArray le32(qint32 v) { return QByteArray(reinterpret_cast<const char*>(&v), 4); }
+QByteArray lef(float v) { return QByteArray(reinterpret_cast<const char*>(&v), 4); }
+
+const QByteArray kPlyBinaryHeader = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\n"
+                                    "property float y\nproperty float z\nelement face 1\n"
+                                    "property list int int vertex_indices\nend_header\n";
+
+QByteArray plyBinaryTriangle(qint32 listCount) {
+    QByteArray b = kPlyBinaryHeader;
+    for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) b += lef(v);
+    b += le32(listCount);
+    for (qint32 i : {0, 1, 2}) b += le32(i);
+    return b;
+}
+
+// A scan-line EXR header claiming width x height float RGB, uncompressed, followed by an offset
+// table of one entry per line, each `offset`, and no pixel data.
+QByteArray exrWithoutPixels(int width, int height, quint64 offset, const QByteArray& extraAttribute = {}) {
+    QByteArray b("\x76\x2f\x31\x01\x02\x00\x00\x00", 8);
+    const auto attribute = [&](const char* name, const char* type, const QByteArray& value) {
+        b += QByteArray(name) + '\0' + QByteArray(type) + '\0' + le32(qint32(value.size())) + value;
+    };
+    QByteArray channels;
+    for (const char* c : {"B", "G", "R"}) channels += QByteArray(c) + '\0' + le32(2) + QByteArray(4, '\0') + le32(1) + le32(1);
+    channels += '\0';
+    const QByteArray box = le32(0) + le32(0) + le32(width - 1) + le32(height - 1);
+    attribute("channels", "chlist", channels);
+    attribute("compression", "compression", QByteArray(1, '\0'));
+    attribute("dataWindow", "box2i", box);
+    attribute("displayWindow", "box2i", box);
+    attribute("lineOrder", "lineOrder", QByteArray(1, '\0'));
+    attribute("pixelAspectRatio", "float", lef(1));
+    attribute("screenWindowCenter", "v2f", lef(0) + lef(0));
+    attribute("screenWindowWidth", "float", lef(1));
+    b += extraAttribute;
+    b += '\0';
+    for (int y = 0; y < height; ++y) b += QByteArray(reinterpret_cast<const char*>(&offset), 8);
+    return b;
+}
+
+QString iesWithMultiplier(const QString& multiplier) {
+    return "IESNA:LM-63-2002\n[TEST] hostile\n[LUMINAIRE] overflow\nTILT=NONE\n1 1000 " + multiplier +
+           " 2 1 1 2 0.1 0.1 0.05\n1.0 1.0 10\n0 90\n0\n100 100\n";
+}
+
+// EULUMDAT, one field a line: the conversion factor is line 24.
+QString ldtWithConversionFactor(const QString& factor) {
+    QString s = "hostile\n1\n1\n1\n0\n2\n90\nreport\nname\nnumber\nx.ldt\ndate\n";
+    for (int i = 0; i < 10; ++i) s += "100\n";
+    s += "100\n" + factor + "\n0\n1\n1\nLED\n1000\n3000\n90\n20\n";
+    for (int i = 0; i < 10; ++i) s += "0.5\n";
+    s += "0\n0\n90\n100\n100\n";
+    return s;
+}
+
+// The files left in `dir` besides `keep`.
+QStringList leftovers(const QString& dir, const QStringList& keep) {
+    QStringList left;
+    for (const QString& f : QDir(dir).entryList(QDir::AllEntries | QDir::Hidden | QDir::System | QDir::NoDotAndDotDot))
+        if (!keep.contains(f)) left << f;
+    return left;
+}
+
+}  // namespace
+
+class TestHostileFiles : public QObject {
+    Q_OBJECT
+private slots:
+    void meshCountsBeyondTheFile_data();
+    void meshCountsBeyondTheFile();
+    void objLinesGiveTheTrueReason_data();
+    void objLinesGiveTheTrueReason();
+    void importRefusesOrWritesALoadableScene_data();
+    void importRefusesOrWritesALoadableScene();
+    void importToAFolderLeavesNothing();
+    void overflowingPhotometryNamesFileAndLine_data();
+    void overflowingPhotometryNamesFileAndLine();
+    void binaryBytesStayOutOfMessages();
+    void nonRegularPathsAreRefusedAtOnce();
+    void exrHeaderWithoutPixels_data();
+    void exrHeaderWithoutPixels();
+    void exrAttributeClaimingGigabytes();
+    void staleTemporariesAreRemoved();
+    void badOutputPathIsRefusedBeforeRendering();
+    void interruptBeforeTheSceneHasLoaded();
+    void filmTooLargeForMemory();
+};
+
+void TestHostileFiles::meshCountsBeyondTheFile_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("expected");
+    // 45 bytes whose face line claims three billion vertices (took 86 s and 4.2 GB).
+    QTest::newRow("OFF face of 3000000000") << "big.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3000000000 0 1 2\n")
+                                            << "claims 3000000000 vertices";
+    // Truncated: a face line claiming a million vertices (was loaded with the rest read as 0).
+    QTest::newRow("OFF face cut short") << "short.off" << QByteArray("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n1000000 0 1 2\n")
+                                        << "claims 1000000 vertices";
+    QTest::newRow("OFF vertices cut short") << "few.off" << QByteArray("OFF\n20 1 0\n0 0 0\n1 0 0\n")
+                                            << "the file ends inside vertex 2";
+    QTest::newRow("binary OFF face of 2^31-1")
+        << "big-binary.off"
+        << QByteArray("OFF BINARY\n") + le32(3) + le32(1) + le32(0) + lef(0) + lef(0) + lef(0) + lef(1) + lef(0) + lef(0) +
+               lef(0) + lef(1) + lef(0) + le32(0x7fffffff) + le32(0) + le32(1) + le32(2)
+        << "more than the rest of the file holds";
+    // 219-byte binary PLY files whose list count is 2^31-1 or -1 (took 100 s and 4.2 GB).
+    QTest::newRow("binary PLY list of 2^31-1") << "big.ply" << plyBinaryTriangle(0x7fffffff)
+                                               << "claims 2147483647 entries";
+    QTest::newRow("binary PLY list of -1") << "negative.ply" << plyBinaryTriangle(-1) << "is -1, not a count";
+    // Truncated: an ASCII list of 255 entries with a few given.
+    QTest::newRow("ASCII PLY list cut short")
+        << "short.ply"
+        << QByteArray("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+                      "element face 2\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                      "255 0 1 2\n3 0 1 2\n")
+        << "claims 255 entries";
+    QTest::newRow("binary PLY vertices cut short")
+        << "few.ply" << QByteArray(kPlyBinaryHeader).replace("vertex 3", "vertex 9") + QByteArray(20, '\0')
+        << "the file ends inside vertex";
+    // Found by fuzz_mesh: a count the header check read as 1 and the reader as -1 (it looped).
+    QTest::newRow("PLY element count 1.0")
+        << "fraction.ply" << QByteArray(kPlyBinaryHeader).replace("element vertex 3", "element junk 1.0\nelement vertex 3")
+        << "is not a count the file can hold";
+}
+
+void TestHostileFiles::meshCountsBeyondTheFile() {
+    QFETCH(QString, name);
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    writeFile(dir.filePath(name), bytes);
+    writeFile(dir.filePath("scene.json"), meshScene(name));
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), expected);
+}
+
+void TestHostileFiles::objLinesGiveTheTrueReason_data() {
+    QTest::addColumn<QByteArray>("vertex");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("nan") << QByteArray("v nan 0 0") << "nan is not a finite number";
+    QTest::newRow("1e39") << QByteArray("v 1e39 0 0") << "1e39 lies beyond single-precision range";
+    QTest::newRow("letters") << QByteArray("v a b c") << "\"a\" is not a number";
+    QTest::newRow("two coordinates") << QByteArray("v 1 2") << "fewer than three coordinates";
+    // Found by fuzz_mesh: a corner without its vertex index aborts OpenMesh on an assertion.
+    QTest::newRow("corner without index") << QByteArray("f /1/1 2/2/1 3/3/1") << "face corner \"/1/1\" has no vertex index";
+}
+
+void TestHostileFiles::objLinesGiveTheTrueReason() {
+    QFETCH(QByteArray, vertex);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    writeFile(dir.filePath("m.obj"), "v 0 0 0\nv 1 0 0\n" + vertex + "\nf 1 2 3\n");
+    writeFile(dir.filePath("scene.json"), meshScene("m.obj"));
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), "m.obj: line 3: ");
+    const Run r = runLucerna({"info", "scene.json"}, dir.path());
+    QVERIFY2(r.err.contains(expected.toUtf8()) && !r.err.contains("does not exist"), r.err.constData());
+}
+
+void TestHostileFiles::importRefusesOrWritesALoadableScene_data() {
+    QTest::addColumn<QString>("model");
+    QTest::addColumn<QByteArray>("bytes");
+    QTest::addColumn<QString>("refusal");  // empty: the import must succeed
+    const QByteArray tail = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    QTest::newRow("OBJ vertex at 1e39") << "m.obj" << "v 1e39 0 0\n" + tail << "not a finite point";
+    QTest::newRow("OBJ vertex nan") << "m.obj" << "v nan 0 0\n" + tail << "not a finite point";
+    QTest::newRow("OBJ vertex 1e38") << "m.obj" << "v 1e38 0 0\n" + tail << "";
+    QTest::newRow("OBJ plain") << "m.obj" << "v 0 0 0\n" + tail << "";
+    // glTF: one triangle whose first vertex is NaN, in an embedded buffer.
+    QByteArray buffer;
+    for (float v : {std::numeric_limits<float>::quiet_NaN(), 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) buffer += lef(v);
+    for (quint16 i : {0, 1, 2}) buffer += QByteArray(reinterpret_cast<const char*>(&i), 2);
+    buffer += QByteArray(2, '\0');
+    const QByteArray gltf =
+        R"({"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "name": "n"}],
+        "meshes": [{"name": "tri", "primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": 44, "uri": "data:application/octet-stream;base64,)" +
+        buffer.toBase64() + R"("}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36}, {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]})";
+    QTest::newRow("glTF vertex nan") << "m.gltf" << gltf << "not a finite point";
+}
+
+void TestHostileFiles::importRefusesOrWritesALoadableScene() {
+    QFETCH(QString, model);
+    QFETCH(QByteArray, bytes);
+    QFETCH(QString, refusal);
+    QTemporaryDir dir;
+    writeFile(dir.filePath(model), bytes);
+    const QStringList args{"import", model, "-o", "out.json"};
+    if (!refusal.isEmpty()) {
+        VERIFY_REFUSED(args, dir.path(), refusal);
+        QCOMPARE(leftovers(dir.path(), {model}), QStringList());
+        return;
+    }
+    const Run r = runLucerna(args, dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(describe(args, r)));
+    const Run info = runLucerna({"info", "out.json"}, dir.path());
+    QVERIFY2(info.exitCode == 0, qPrintable(describe({"info", "out.json"}, info)));
+}
+
+void TestHostileFiles::importToAFolderLeavesNothing() {
+    QTemporaryDir dir;
+    writeFile(dir.filePath("cube.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    QVERIFY(QDir(dir.path()).mkdir("target.json"));
+    VERIFY_REFUSED(QStringList({"import", "cube.obj", "-o", "target.json"}), dir.path(), "target.json: is a folder");
+    QCOMPARE(leftovers(dir.path(), {"cube.obj", "target.json"}), QStringList());
+    QVERIFY(QDir(dir.filePath("target.json")).isEmpty());
+    VERIFY_REFUSED(QStringList({"import", "cube.obj", "-o", "missing/out.json"}), dir.path(), "does not exist");
+    QCOMPARE(leftovers(dir.path(), {"cube.obj", "target.json"}), QStringList());
+}
+
+void TestHostileFiles::overflowingPhotometryNamesFileAndLine_data() {
+    QTest::addColumn<QString>("name");
+    QTest::addColumn<QString>("text");
+    QTest::addColumn<QString>("expected");
+    QTest::newRow("IES candela multiplier 1e308") << "x.ies" << iesWithMultiplier("1e308") << "x.ies: line 5: ";
+    QTest::newRow("IES candela multiplier 1e37") << "x.ies" << iesWithMultiplier("1e37") << "x.ies: line 5: ";
+    QTest::newRow("LDT conversion factor 1e308") << "x.ldt" << ldtWithConversionFactor("1e308") << "x.ldt: line 24: ";
+}
+
+void TestHostileFiles::overflowingPhotometryNamesFileAndLine() {
+    QFETCH(QString, name);
+    QFETCH(QString, text);
+    QFETCH(QString, expected);
+    QTemporaryDir dir;
+    writeFile(dir.filePath(name), text.toUtf8());
+    writeFile(dir.filePath("scene.json"), luminaireScene(name));
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), expected);
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), "beyond single-precision range");
+    VERIFY_REFUSED(QStringList({"render", "scene.json", "-o", "out.exr", "--spp", "1"}), dir.path(), expected);
+    QCOMPARE(leftovers(dir.path(), {name, "scene.json"}), QStringList());
+    // The same files with a sane factor load.
+    writeFile(dir.filePath(name), text.replace("1e308", "1").replace("1e37", "1").toUtf8());
+    const Run r = runLucerna({"info", "scene.json"}, dir.path());
+    QVERIFY2(r.exitCode == 0, qPrintable(describe({"info", "scene.json"}, r)));
+}
+
+void TestHostileFiles::binaryBytesStayOutOfMessages() {
+    QTemporaryDir dir;
+    QByteArray junk("\x01\x02\x00\x1b[31m\xff\xfe\r\x7f", 12);
+    QString ies = iesWithMultiplier("1");
+    QByteArray bytes = ies.toUtf8();
+    bytes.replace("1.0 1.0 10", "1.0 " + junk + " 10");
+    writeFile(dir.filePath("x.ies"), bytes);
+    writeFile(dir.filePath("scene.json"), luminaireScene("x.ies"));
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), "x.ies: line 6: expected a number");
+    QByteArray ldt = ldtWithConversionFactor("1").toUtf8();
+    ldt.replace("\n20\n", "\n" + junk + QByteArray(200, 'x') + "\n");
+    writeFile(dir.filePath("x.ldt"), ldt);
+    writeFile(dir.filePath("scene.json"), luminaireScene("x.ldt"));
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), "\\x01\\x02\\x00\\x1b[31m\\xff\\xfe");
+    const Run r = runLucerna({"info", "scene.json"}, dir.path());
+    QVERIFY2(r.err.size() < 400, r.err.constData());  // a long word is cut
+}
+
+void TestHostileFiles::nonRegularPathsAreRefusedAtOnce() {
+    QTemporaryDir dir;
+    const auto fifo = [&](const QString& name) { QCOMPARE(::mkfifo(dir.filePath(name).toLocal8Bit().constData(), 0600), 0); };
+    const auto link = [&](const QString& target, const QString& name) {
+        QVERIFY(QFile::link(target, dir.filePath(name)));
+    };
+    fifo("fifo.ies");
+    link("/dev/zero", "zero.ies");
+    fifo("fifo.ldt");
+    fifo("fifo.ply");
+    link("/dev/zero", "zero.obj");
+    fifo("fifo.json");
+    link("/dev/zero", "zero.json");
+    fifo("fifo.exr");
+    link("/dev/zero", "zero.exr");
+    fifo("fifo.obj");
+    writeFile(dir.filePath("lum-fifo.json"), luminaireScene("fifo.ies"));
+    writeFile(dir.filePath("lum-zero.json"), luminaireScene("zero.ies"));
+    writeFile(dir.filePath("lum-fifo-ldt.json"), luminaireScene("fifo.ldt"));
+    writeFile(dir.filePath("mesh-fifo.json"), meshScene("fifo.ply"));
+    writeFile(dir.filePath("mesh-zero.json"), meshScene("zero.obj"));
+    writeFile(dir.filePath("lib.obj"), "mtllib fifo.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    fifo("fifo.mtl");
+    writeFile(dir.filePath("mesh-lib.json"), meshScene("lib.obj"));
+    const QString small = dir.filePath("small.exr");
+    {
+        // A real 2 x 2 EXR to compare the hostile ones with.
+        const Run r = runLucerna({"render", QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json", "-o", small,
+                                  "--backend", "path", "--spp", "1", "--width", "2", "--height", "2"},
+                                 dir.path());
+        QVERIFY2(r.exitCode == 0, qPrintable(describe({"render"}, r)));
+    }
+    VERIFY_REFUSED(QStringList({"info", "lum-fifo.json"}), dir.path(), "fifo.ies: not a regular file (a FIFO)");
+    VERIFY_REFUSED(QStringList({"info", "lum-zero.json"}), dir.path(), "zero.ies: not a regular file (a character device)");
+    VERIFY_REFUSED(QStringList({"info", "lum-fifo-ldt.json"}), dir.path(), "fifo.ldt: not a regular file");
+    VERIFY_REFUSED(QStringList({"render", "lum-fifo.json", "-o", "o.exr"}), dir.path(), "not a regular file");
+    VERIFY_REFUSED(QStringList({"info", "mesh-fifo.json"}), dir.path(), "fifo.ply: not a regular file");
+    VERIFY_REFUSED(QStringList({"info", "mesh-zero.json"}), dir.path(), "zero.obj: not a regular file");
+    VERIFY_REFUSED(QStringList({"info", "mesh-lib.json"}), dir.path(), "the material library fifo.mtl is a FIFO");
+    VERIFY_REFUSED(QStringList({"info", "fifo.json"}), dir.path(), "fifo.json: cannot read the file: not a regular file");
+    VERIFY_REFUSED(QStringList({"info", "zero.json"}), dir.path(), "zero.json: cannot read the file: not a regular file");
+    VERIFY_REFUSED(QStringList({"render", "fifo.json", "-o", "o.exr"}), dir.path(), "not a regular file");
+    VERIFY_REFUSED(QStringList({"compare", "fifo.exr", small}), dir.path(), "fifo.exr: cannot read: not a regular file");
+    VERIFY_REFUSED(QStringList({"compare", small, "zero.exr"}), dir.path(), "zero.exr: cannot read: not a regular file");
+    VERIFY_REFUSED(QStringList({"convert", "fifo.exr", "o.png"}), dir.path(), "not a regular file");
+    VERIFY_REFUSED(QStringList({"import", "fifo.obj", "-o", "o.json"}), dir.path(), "fifo.obj: not a regular file");
+    VERIFY_REFUSED(QStringList({"import", "zero.obj", "-o", "o.json"}), dir.path(), "zero.obj: not a regular file");
+    QVERIFY(!QFile::exists(dir.filePath("o.exr")) && !QFile::exists(dir.filePath("o.png")) &&
+            !QFile::exists(dir.filePath("o.json")) && !QFile::exists(dir.filePath("o-meshes")));
+}
+
+void TestHostileFiles::exrHeaderWithoutPixels_data() {
+    QTest::addColumn<quint64>("offset");
+    QTest::newRow("offset table of zeros") << quint64(0);
+    QTest::newRow("offsets beyond the file") << (quint64(1) << 28);
+    QTest::newRow("offsets at the end of the file") << quint64(0);  // set below, once the size is known
+}
+
+void TestHostileFiles::exrHeaderWithoutPixels() {
+    QFETCH(quint64, offset);
+    QTemporaryDir dir;
+    // 16384 x 16384 float RGB (3.2 GB of pixels) claimed by a 130 KB file.
+    QByteArray bytes = exrWithoutPixels(16384, 16384, offset);
+    if (QByteArray(QTest::currentDataTag()).contains("at the end")) bytes = exrWithoutPixels(16384, 16384, quint64(bytes.size()));
+    QVERIFY(bytes.size() < 200 * 1024);
+    writeFile(dir.filePath("huge.exr"), bytes);
+    writeFile(dir.filePath("also.exr"), bytes);
+    VERIFY_REFUSED(QStringList({"compare", "huge.exr", "also.exr"}), dir.path(), "huge.exr: ");
+    VERIFY_REFUSED(QStringList({"convert", "huge.exr", "out.png"}), dir.path(), "huge.exr: ");
+    QVERIFY(!QFile::exists(dir.filePath("out.png")));
+}
+
+// Found by fuzz_exr: OpenEXR's InputFile allocates an attribute's declared size before reading
+// it (1.9 GB and 6 s for a file of 700 bytes).
+void TestHostileFiles::exrAttributeClaimingGigabytes() {
+    QTemporaryDir dir;
+    for (const char* type : {"string", "mystery"}) {  // the second: an attribute of unknown type
+        const QByteArray attribute = QByteArray("comments") + '\0' + type + '\0' + le32(0x7fffffff) + "a few bytes";
+        writeFile(dir.filePath("attr.exr"), exrWithoutPixels(4, 4, 0, attribute));
+        VERIFY_REFUSED(QStringList({"compare", "attr.exr", "attr.exr"}), dir.path(),
+                       "attr.exr: the header's attribute \"comments\" claims 2147483647 bytes");
+    }
+    // A channel list whose declared size is not its content's: InputFile follows the content
+    // and reads what follows as other attributes (it found a 1.8 GB one that way).
+    QByteArray bytes = exrWithoutPixels(4, 4, 0);
+    const QByteArray declared = QByteArray("chlist") + '\0' + le32(55);
+    QVERIFY(bytes.contains(declared));
+    bytes.replace(declared, QByteArray("chlist") + '\0' + le32(37));
+    writeFile(dir.filePath("chlist.exr"), bytes);
+    VERIFY_REFUSED(QStringList({"compare", "chlist.exr", "chlist.exr"}), dir.path(),
+                   "the header's attribute \"channels\" (chlist) is malformed");
+}
+
+void TestHostileFiles::staleTemporariesAreRemoved() {
+    QTemporaryDir dir;
+    // What a SIGKILL during the write of out.exr leaves behind, and what another writer of the
+    // same target, still at work (holding its lock), has open.
+    const QString stale = dir.filePath(".out.exr.Ab12Cd.part"), busy = dir.filePath(".out.exr.Zz98Yy.part");
+    const QString other = dir.filePath(".other.exr.Ab12Cd.part");
+    writeFile(stale, "half an EXR");
+    writeFile(busy, "another writer's half");
+    writeFile(other, "not this target's");
+    const int fd = ::open(busy.toLocal8Bit().constData(), O_RDONLY);
+    QVERIFY(fd >= 0 && ::flock(fd, LOCK_EX | LOCK_NB) == 0);
+    const Run r = runLucerna({"render", QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json", "-o", "out.exr",
+                              "--backend", "path", "--spp", "1", "--width", "4", "--height", "4"},
+                             dir.path());
+    ::close(fd);
+    QVERIFY2(r.exitCode == 0, qPrintable(describe({"render"}, r)));
+    QVERIFY(QFile::exists(dir.filePath("out.exr")));
+    QVERIFY(!QFile::exists(stale));
+    QVERIFY(QFile::exists(busy));
+    QVERIFY(QFile::exists(other));
+}
+
+void TestHostileFiles::badOutputPathIsRefusedBeforeRendering() {
+    QTemporaryDir dir;
+    QVERIFY(QDir(dir.path()).mkdir("folder.exr"));
+    const QString cornell = QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json";
+    // 100000 spp would take minutes: a refusal under a second is one before the render.
+    VERIFY_REFUSED(QStringList({"render", cornell, "-o", "missing_dir/x.exr", "--spp", "100000"}), dir.path(),
+                   "missing_dir/x.exr: the folder missing_dir does not exist");
+    VERIFY_REFUSED(QStringList({"render", cornell, "-o", "folder.exr", "--spp", "100000"}), dir.path(),
+                   "folder.exr: is a folder");
+    writeFile(dir.filePath("file"), "x");
+    VERIFY_REFUSED(QStringList({"render", cornell, "-o", "file/x.exr", "--spp", "100000"}), dir.path(), "is not a folder");
+    VERIFY_REFUSED(QStringList({"convert", QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.ref.exr", "missing_dir/x.png"}),
+                   dir.path(), "does not exist");
+    VERIFY_REFUSED(QStringList({"grid", cornell, "--work-plane", "0.1", "--csv", "missing_dir/g.csv"}), dir.path(),
+                   "does not exist");
+    QCOMPARE(leftovers(dir.path(), {"folder.exr", "file"}), QStringList());
+}
+
+// SIGINT as soon as the process catches it (read from /proc), which is before it reads its
+// scene: a 300,000-triangle mesh file still to load.
+void TestHostileFiles::interruptBeforeTheSceneHasLoaded() {
+    QTemporaryDir dir;
+    QByteArray ply = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                     "property float z\nelement face 300000\nproperty list uchar int vertex_indices\nend_header\n";
+    for (float v : {0.f, 0.f, 0.f, 1.f, 0.f, 0.f, 0.f, 1.f, 0.f}) ply += lef(v);
+    const QByteArray face = QByteArray(1, '\3') + le32(0) + le32(1) + le32(2);
+    ply.reserve(ply.size() + 300000 * face.size());
+    for (int i = 0; i < 300000; ++i) ply += face;
+    writeFile(dir.filePath("big.ply"), ply);
+    writeFile(dir.filePath("scene.json"), meshScene("big.ply"));
+    bool sent = false;
+    const QString binary = QFileInfo(LUCERNA_BINARY).canonicalFilePath();
+    const Run r = runLucerna({"render", "scene.json", "-o", "out.exr", "--spp", "100000"}, dir.path(), [&](pid_t pid) {
+        const QString status = QString("/proc/%1/status").arg(pid), exe = QString("/proc/%1/exe").arg(pid);
+        for (int i = 0; i < 5000 && !sent; ++i) {
+            // Before exec the child is a copy of this test, with its handlers.
+            if (QFileInfo(exe).canonicalFilePath() == binary)
+                for (const QByteArray& line : readAll(status).split('\n'))
+                    if (line.startsWith("SigCgt:") &&
+                        (line.mid(7).trimmed().toULongLong(nullptr, 16) & (1ull << (SIGINT - 1)))) {
+                        ::kill(pid, SIGINT);
+                        sent = true;
+                    }
+            std::this_thread::sleep_for(std::chrono::microseconds(200));
+        }
+    });
+    QVERIFY(sent);
+    QVERIFY2(r.exitCode == 130, qPrintable(describe({"render"}, r)));
+    QCOMPARE(r.err, QByteArray("render interrupted; no file written\n"));
+    QCOMPARE(leftovers(dir.path(), {"big.ply", "scene.json"}), QStringList());
+}
+
+// 16384 x 16384 needs a 12.9 GB film: refused in one line (exit 2), not std::bad_alloc (exit 1),
+// whether the machine has that much memory or not (the address space here is 4 GB).
+void TestHostileFiles::filmTooLargeForMemory() {
+    QTemporaryDir dir;
+    const QStringList args{"render", QString(LUCERNA_SHARED_DIR) + "/scenes/cornell-box.json", "-o", "out.exr",
+                           "--backend", "path", "--spp", "1", "--width", "16384", "--height", "16384"};
+    const Run r = runLucerna(args, dir.path());
+    QVERIFY2(r.exitCode == 2 && isOnePrintableLine(r.err), qPrintable(describe(args, r)));
+    QVERIFY2(r.err.contains("a 16384 x 16384 render needs more memory than is available"), qPrintable(describe(args, r)));
+    QVERIFY2(r.cpuSeconds < 2.0 && r.maxRssMb < 200, qPrintable(describe(args, r)));
+    QCOMPARE(leftovers(dir.path(), {}), QStringList());
+}
+
+QTEST_GUILESS_MAIN(TestHostileFiles)
+#include "test_hostile_files.moc"
