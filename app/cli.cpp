@@ -7,6 +7,7 @@
 #include "core/number_format.h"
 #include "core/scene_io.h"
 #include "core/task_system.h"
+#include "render/backend/film.h"
 #include "render/backend/light_layers/layered_backend.h"
 #include "render/backend/pass_loop.h"
 #include "render/display/display.h"
@@ -83,7 +84,7 @@ Scene loadOrThrow(const std::string& path, LoadReport* report) {
 // before any work; within it, an allocation can still fail (a ulimit, other programs), and
 // that std::bad_alloc becomes this same line.
 std::string tooLargeForMemory(int width, int height) {
-    const double gb = 2.0 * 3.0 * sizeof(double) * double(width) * double(height) / 1e9;
+    const double gb = Film::bytes(width, height) / 1e9;
     char buf[160];
     std::snprintf(buf, sizeof buf, "a %d x %d render needs more memory than is available (its film alone holds %.3g GB)",
                   width, height, gb);
@@ -127,7 +128,7 @@ int renderImpl(const std::vector<std::string>& args) {
     const int width = r.settings.width ? r.settings.width : scene->camera.width;
     const int height = r.settings.height ? r.settings.height : scene->camera.height;
     const double pages = double(::sysconf(_SC_PHYS_PAGES)), pageSize = double(::sysconf(_SC_PAGESIZE));
-    if (pages > 0 && pageSize > 0 && 2.0 * 3.0 * sizeof(double) * double(width) * double(height) > pages * pageSize)
+    if (pages > 0 && pageSize > 0 && Film::bytes(width, height) > pages * pageSize)
         throw UsageError(tooLargeForMemory(width, height));
     if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
     const std::optional<GridMethod> illuminanceMethod = gridMethodFromName(backendName);

@@ -4,13 +4,6 @@ namespace lucerna {
 
 namespace {
 
-bool sameWorldMeshes(const Scene& a, const Scene& b) {
-    if (a.objects.size() != b.objects.size()) return false;
-    for (size_t i = 0; i < a.objects.size(); ++i)
-        if (a.objects[i].worldMesh != b.objects[i].worldMesh) return false;
-    return true;
-}
-
 bool sameMaterials(const Scene& a, const Scene& b) {
     if (a.materials != b.materials || a.metersPerUnit != b.metersPerUnit) return false;
     for (size_t i = 0; i < a.objects.size() && i < b.objects.size(); ++i)
@@ -19,7 +12,7 @@ bool sameMaterials(const Scene& a, const Scene& b) {
 }
 
 // `after` with `before`'s emission put back equals `before` (compared part by part, so that no
-// copy of the scene is made: the picker asks on every pointer move).
+// copy of the scene is made).
 bool differOnlyInEmission(const Scene& before, const Scene& after) {
     if (before.version != after.version || before.metersPerUnit != after.metersPerUnit ||
         !(before.camera == after.camera) || before.objects != after.objects ||
@@ -48,6 +41,13 @@ bool differOnlyInEmission(const Scene& before, const Scene& after) {
 }
 
 }  // namespace
+
+bool sameWorldMeshes(const Scene& a, const Scene& b) {
+    if (a.objects.size() != b.objects.size()) return false;
+    for (size_t i = 0; i < a.objects.size(); ++i)
+        if (a.objects[i].worldMesh != b.objects[i].worldMesh) return false;
+    return true;
+}
 
 SceneChange diff(const Scene& before, const Scene& after) {
     SceneChange c;

@@ -26,6 +26,10 @@ struct SceneChange {
     }
 };
 
+// True when the scenes have the same world meshes (the same shared mesh data, in the same
+// objects): what `geometry` of their diff denies, without the rest of the diff.
+bool sameWorldMeshes(const Scene& a, const Scene& b);
+
 // What changed from `before` to `after`. Meshes compare by their shared data (a mesh reloaded
 // from the same file is a change), everything else by value.
 SceneChange diff(const Scene& before, const Scene& after);

@@ -21,6 +21,11 @@ struct FilmSplat {
 class Film {
 public:
     Film(int width, int height);
+    // What a film of this size holds (its two half-buffers), in bytes: a render too large for
+    // memory is refused before it starts.
+    static double bytes(int width, int height) {
+        return 2.0 * sizeof(std::array<double, 3>) * double(width) * double(height);
+    }
 
     int width() const { return width_; }
     int height() const { return height_; }

@@ -42,7 +42,7 @@ SurfacePicker::SurfacePicker(const Scene& scene) : scene_(scene) {
 SurfacePicker::~SurfacePicker() = default;
 
 bool SurfacePicker::sameGeometry(const Scene& scene) const {
-    return !diff(scene_, scene).geometry;
+    return sameWorldMeshes(scene_, scene);
 }
 
 std::optional<SurfaceHit> SurfacePicker::intersect(const V3d& origin, const V3d& direction) const {
