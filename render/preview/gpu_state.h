@@ -215,6 +215,7 @@ struct Preview::State {
     std::map<std::string, gl::Program> programVariants;
     int uploadedVplCount = 0;
     PreviewTimings timings;
+    std::string degradation;  // Preview::degradation()
 
     int splitW() const { return subW * patternX; }
     int splitH() const { return subH * patternY; }

@@ -43,6 +43,7 @@ Preview::~Preview() {
 }
 
 const PreviewTimings& Preview::timings() const { return state_->timings; }
+const std::string& Preview::degradation() const { return state_->degradation; }
 int Preview::vplSetGenerations() const { return state_->generations; }
 
 void Preview::setSettings(const PreviewSettings& s) {

@@ -129,6 +129,10 @@ public:
     // the scene's own materials. For the illuminance layer (previewIlluminanceLayer).
     void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
     const PreviewTimings& timings() const;
+    // What the preview gave up on this scene to stay within the GPU's limits (fewer shadowed
+    // VPLs, smaller or shared shadow maps, pooled VPLs), in one line for a status bar or stderr;
+    // empty when nothing was given up. Known after render().
+    const std::string& degradation() const;
 
     // Tests: uploads `in` as a G-buffer attachment, splits it with the current settings (the
     // fused split as one pass: the same addressing) and gathers it back. `split` is the split
