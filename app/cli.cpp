@@ -176,6 +176,10 @@ int renderImpl(const std::vector<std::string>& args) {
     std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
                  result->estimatedRelmse);
+    // What a backend gave up to fit the machine (the preview's shadow maps), one line each.
+    for (const auto& [key, value] : result->image.attributes)
+        if (key.ends_with(":degradation") && !value.empty())
+            std::fprintf(stderr, "note: %s: %s\n", key.substr(8, key.size() - 8 - 12).c_str(), value.c_str());
     return 0;
 }
 

@@ -9,6 +9,8 @@
 // pass (one sample per pixel at 16 samples and 4x4); without, in the direct pass.
 //
 // usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
+//        bench_preview --scenes SCENE.json... [--frames N] [--shaded-lights N] [--proxy N]
+// --scenes: issue 20's table (realSceneRow), one row a scene.
 // --target: only the issue's llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
 //           with each split mode (fused, one pass, two passes) in turns.
 
@@ -17,6 +19,7 @@
 #include "core/scene_io.h"
 #include "render/preview/preview.h"
 
+#include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -86,18 +89,81 @@ Image average(Preview& preview, int frames) {
     return sum;
 }
 
+// Issue 20's table for one scene at 640x480: the least of `frames` camera-move frames (the camera
+// nudged, nothing regenerated) and of `frames` idle accumulation frames (fresh VPLs, area samples
+// and light deal, a jittered pixel position, as the application's idle refinement draws them),
+// per pass; then, when SCENE.ref.exr exists beside it, a single frame's and 16 frames' relmse and
+// mean against it at its resolution.
+void realSceneRow(const std::string& path, const PreviewSettings& settings, int frames) {
+    const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(path));
+    Preview preview;
+    preview.setSettings(settings);
+    const auto t0 = std::chrono::steady_clock::now();
+    preview.setScene(scene, 640, 480);
+    preview.render();
+    const double firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    Row move, idle;
+    Camera camera = scene->camera;
+    for (int f = 0; f < frames; ++f) {
+        camera.position = camera.position + V3d(0.001, 0, 0) * ((f % 2) ? -1.0 : 1.0);
+        preview.setCamera(camera);
+        preview.render();
+        keepLeast(move.best, preview.timings(), f == 0);
+    }
+    for (int f = 0; f < frames; ++f) {
+        preview.regenerate(uint64_t(500 + f));
+        preview.render((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f);
+        const PreviewTimings& t = preview.timings();
+        keepLeast(idle.best, t, f == 0);
+        idle.shadows = f == 0 ? t.shadows : std::min(idle.shadows, t.shadows);
+    }
+    const auto name = path.substr(path.find_last_of('/') + 1);
+    const PreviewTimings& m = move.best;
+    std::printf("| %s | %.0f | %.1f (G %.1f, shading %.1f, gather %.1f, direct %.1f, read %.1f) | %.1f (shadows %.1f) |",
+                name.c_str(), firstMs, m.total, m.gbuffer, m.shading, m.gather, m.direct, m.readback, idle.best.total + idle.shadows,
+                idle.shadows);
+    const std::string refPath = path.substr(0, path.size() - 5) + ".ref.exr";
+    Image ref;
+    try {
+        ref = readExr(refPath);
+    } catch (const std::exception&) {
+        std::printf(" | | | |\n");
+        return;
+    }
+    preview.setScene(scene, ref.width, ref.height);
+    const Image one = preview.render();
+    const Image sixteen = average(preview, 16);
+    std::printf(" %.4f | %.4f | %+.2f%% / %+.2f%% |", compareImages(one, ref).relmse, compareImages(sixteen, ref).relmse,
+                100.0 * (meanOf(one) / meanOf(ref) - 1.0), 100.0 * (meanOf(sixteen) / meanOf(ref) - 1.0));
+    std::printf(" %s |\n", preview.degradation().empty() ? "" : preview.degradation().c_str());
+    std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     std::string scenePath = std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json";
     bool quick = false, accuracyOnly = false, targetOnly = false;
     int frames = 5;
+    std::vector<std::string> realScenes;
+    PreviewSettings realSettings;
     for (int i = 1; i < argc; ++i) {
-        if (!std::strcmp(argv[i], "--quick")) quick = true;
+        if (!std::strcmp(argv[i], "--scenes")) {
+            while (i + 1 < argc && argv[i + 1][0] != '-') realScenes.push_back(argv[++i]);
+        } else if (!std::strcmp(argv[i], "--shaded-lights") && i + 1 < argc) realSettings.lightsShadedInFull = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--proxy") && i + 1 < argc) realSettings.shadowProxyTriangles = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--accuracy-only")) accuracyOnly = true;
         else if (!std::strcmp(argv[i], "--target")) targetOnly = true;
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);
         else scenePath = argv[i];
+    }
+    if (!realScenes.empty()) {
+        std::printf("## 640x480, defaults (least of %d frames; ms)\n\n", frames);
+        std::printf("| scene | first frame (setup) | camera-move frame | idle accumulation frame | relmse 1 frame | "
+                    "relmse 16 frames | mean error 1 / 16 | degradation |\n|---|---|---|---|---|---|---|---|\n");
+        for (const std::string& path : realScenes) realSceneRow(path, realSettings, frames);
+        return 0;
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(scenePath));
     Preview preview;

@@ -28,8 +28,9 @@ constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations
 constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
                                              "caustic_steps",   "bootstrap", "chains",       "mutations",     "large_step",
                                              "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
-constexpr std::string_view kPreviewOptions[] = {"vpls",    "clamp",      "area_samples", "unroll", "pattern",
-                                                "visibility", "blur",    "split",        "vpl_source"};
+constexpr std::string_view kPreviewOptions[] = {"vpls",       "clamp", "area_samples", "unroll",        "pattern",
+                                                "visibility", "blur",  "split",        "vpl_source",    "shaded_lights",
+                                                "proxy_triangles"};
 
 // The explicit factory table: one row per backend.
 const BackendInfo kBackends[] = {

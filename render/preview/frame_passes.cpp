@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numeric>
 #include <stdexcept>
 
 namespace lucerna {
@@ -52,88 +53,6 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     gl::checkErrors("preview targets");
 }
 
-// Draws the six cube faces of every centre whose cube does not hold it already (CubeShadows::
-// drawn), all in one instanced draw (the geometry shader picks layers): when one light of many
-// changes, only its maps are drawn again.
-void renderCubeShadows(Preview::State& st, CubeShadows& target, const std::vector<std::array<float, 4>>& centres,
-                       int faceSize) {
-    if (centres.empty()) return;
-    GLint maxLayers = 0;
-    glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-    if (int(centres.size()) * 6 > maxLayers)
-        throw std::runtime_error("preview: at most " + std::to_string(maxLayers / 6) +
-                                 " shadow-mapped lights or VPLs on this GPU");
-    target.ensure(faceSize, int(centres.size()));
-    std::vector<std::array<float, 4>> stale;
-    for (const auto& c : centres) {
-        const auto cube = size_t(c[3]);
-        if (cube >= target.drawn.size() || target.drawn[cube] != c) stale.push_back(c);
-    }
-    if (stale.empty()) return;
-    upload(st.shadowCentres, stale);
-    const float radius = st.scene->boundsRadius();
-    const auto faces = cubeFaceMatrices(radius * 1e-3f, radius * 4.0f);
-    glProgramUniformMatrix4fv(st.shadowProgram.id(), loc(st.shadowProgram, "faceProj"), 6, GL_FALSE,
-                              faces[0].m.data());
-    glBindFramebuffer(GL_FRAMEBUFFER, target.fbo.id());
-    glViewport(0, 0, faceSize, faceSize);
-    const float far = 1e30f, one = 1.0f;
-    for (const auto& c : stale) {  // the stale cubes' six faces only
-        const GLint firstLayer = GLint(c[3]) * 6;
-        glClearTexSubImage(target.distance.id(), 0, 0, 0, firstLayer, faceSize, faceSize, 6, GL_RED, GL_FLOAT, &far);
-        glClearTexSubImage(target.depth.id(), 0, 0, 0, firstLayer, faceSize, faceSize, 6, GL_DEPTH_COMPONENT, GL_FLOAT,
-                           &one);
-    }
-    glEnable(GL_DEPTH_TEST);
-    glUseProgram(st.shadowProgram.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.shadowCentres.id());
-    glBindVertexArray(st.sceneVao.id());
-    glDrawArraysInstanced(GL_TRIANGLES, 0, st.vertexCount, GLsizei(stale.size()));
-    glDisable(GL_DEPTH_TEST);
-    st.timings.shadowCubes += int(stale.size());
-    for (const auto& c : stale) {
-        const auto cube = size_t(c[3]);
-        if (target.drawn.size() <= cube) target.drawn.resize(cube + 1, {0, 0, 0, -1});
-        target.drawn[cube] = c;
-    }
-}
-
-// An orthographic view-projection along a directional light's travel direction, over the scene's
-// bounding sphere: clip x, y, z = the point's offsets along (side, up, direction) / radius.
-Mat4 directionalShadowMatrix(const V3f& direction, const V3f& centre, float radius) {
-    const V3f f = direction.normalized();
-    const V3f helper = std::abs(f.y) < 0.9f ? V3f(0, 1, 0) : V3f(1, 0, 0);
-    const V3f side = f.cross(helper).normalized(), up = side.cross(f);
-    Mat4 m;
-    const float k = 1.0f / (radius * 1.01f);
-    m.setRow(0, side * k, -side.dot(centre) * k);
-    m.setRow(1, up * k, -up.dot(centre) * k);
-    m.setRow(2, f * k, -f.dot(centre) * k);
-    m.setRow(3, V3f(0, 0, 0), 1.0f);
-    return m;
-}
-
-// One depth-only draw of the scene per directional light (at most kMaxLights have maps).
-void renderDirectionalShadows(Preview::State& st, int mapSize) {
-    DirectionalShadows& ds = st.dirShadows;
-    ds.ensure(mapSize, int(ds.matrices.size()));
-    if (ds.matrices.empty()) return;
-    glUseProgram(st.dirShadowProgram.id());
-    glBindVertexArray(st.sceneVao.id());
-    glEnable(GL_DEPTH_TEST);
-    glViewport(0, 0, ds.size, ds.size);
-    for (size_t i = 0; i < ds.matrices.size(); ++i) {
-        glNamedFramebufferTextureLayer(ds.fbo.id(), GL_DEPTH_ATTACHMENT, ds.depth.id(), 0, GLint(i));
-        glBindFramebuffer(GL_FRAMEBUFFER, ds.fbo.id());
-        const float one = 1.0f;
-        glClearNamedFramebufferfv(ds.fbo.id(), GL_DEPTH, 0, &one);
-        glProgramUniformMatrix4fv(st.dirShadowProgram.id(), loc(st.dirShadowProgram, "lightViewProj"), 1, GL_FALSE,
-                                  ds.matrices[i].m.data());
-        glDrawArrays(GL_TRIANGLES, 0, st.vertexCount);
-    }
-    glDisable(GL_DEPTH_TEST);
-}
-
 // Bytes from one per-sub-buffer uniform block to the next: blockBytes rounded up to the offset
 // alignment GL asks of glBindBufferRange.
 size_t uniformBlockStride(size_t blockBytes) {
@@ -166,7 +85,8 @@ void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int ma
 void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& lights) {
     constexpr int kMaxUnrolledArea = 16;
     const int subsets = st.patternX * st.patternY;
-    const int perTile = subsets > 1 ? st.areaLightCount / subsets : 0;
+    // Only when the dealt lights are area samples alone (areaSampleLight's cosine emitter).
+    const int perTile = subsets > 1 && !st.interleavedDeltas ? st.areaLightCount / subsets : 0;
     st.areaPerTile = perTile <= kMaxUnrolledArea ? perTile : 0;
     if (st.areaPerTile == 0) return;
     const size_t stride = uniformBlockStride(size_t(perTile) * sizeof(GpuLight));
@@ -181,26 +101,41 @@ void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& light
 
 // Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
 // power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
-// estimates all the indirect light.
+// estimates all the indirect light. Beyond the shadow cubes this GPU holds, each set keeps a
+// uniformly chosen share of its VPLs (the same scale keeps the estimate unbiased).
 void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     const int subsets = st.patternX * st.patternY;
     std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(static_cast<size_t>(subsets));
     Rng rng(st.seed, 0xde41ULL);
+    size_t total = 0;
+    for (const LightVpls& set : st.sets) total += set.vpls.size();
+    const size_t capacity = size_t(CubeShadowSet::capacity());
+    // Room for each set's rounding up to one VPL.
+    const double keep = settings.visibility && total > capacity
+                            ? double(capacity - std::min(capacity - 1, st.sets.size())) / double(total)
+                            : 1.0;
     int offset = 0;
+    size_t kept = 0;
     for (const LightVpls& set : st.sets) {
         std::vector<const Vpl*> order;
         for (const Vpl& v : set.vpls) order.push_back(&v);
         for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.nextUint() % i]);
+        const size_t setSize = order.size();
+        if (keep < 1.0 && setSize > 0) order.resize(std::max<size_t>(1, size_t(double(setSize) * keep)));
         std::vector<int> counts(size_t(subsets), 0);
         for (size_t j = 0; j < order.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
         for (size_t j = 0; j < order.size(); ++j) {
             const size_t k = (j + size_t(offset)) % size_t(subsets);
-            buckets[k].push_back({order[j], float(order.size()) / float(counts[k])});
+            buckets[k].push_back({order[j], float(setSize) / float(counts[k])});
         }
         offset += int(order.size());
+        kept += order.size();
     }
+    st.vplNote = kept < total ? "shadow maps for " + std::to_string(kept) + " of " + std::to_string(total) +
+                                    " VPLs (this GPU's limit; a random subset, scaled up)"
+                              : "";
     std::vector<GpuVpl> gpu;
-    std::vector<std::array<float, 4>> centres;
+    std::vector<V3f> centres;
     const float lift = st.scene->boundsRadius() * 1e-4f;
     st.tiles.clear();
     for (const auto& bucket : buckets) {
@@ -217,124 +152,193 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
             put(g.albedo, m.albedo, 0);
             put(g.specular, m.type == MaterialType::Glossy ? m.specular : Rgb(0, 0, 0), 0);
             // The shadow map's centre sits just off the surface so the surface does not shadow it.
-            const V3f c = v->position + v->normal * lift;
-            centres.push_back({c.x, c.y, c.z, float(gpu.size())});
+            centres.push_back(v->position + v->normal * lift);
             gpu.push_back(g);
         }
     }
     upload(st.vplBuffer, gpu);
     uploadTileBlocks(st, gpu, settings.maxUnrolledVpls);
     st.uploadedVplCount = int(gpu.size());
-    st.vplShadowChunks = 0;
-    if (settings.visibility && !centres.empty()) {
-        GLint maxLayers = 0;
-        glGetIntegerv(GL_MAX_ARRAY_TEXTURE_LAYERS, &maxLayers);
-        const int perChunk = std::max(1, int(maxLayers) / 6);
-        const int chunks = (int(centres.size()) + perChunk - 1) / perChunk;
-        if (chunks > Preview::State::kVplShadowChunks)
-            throw std::runtime_error("preview: VPL visibility supports at most " +
-                                     std::to_string(perChunk * Preview::State::kVplShadowChunks) + " VPLs on this GPU");
-        st.vplCubesPerChunk = perChunk;
-        st.vplShadowChunks = chunks;
-        for (int c = 0; c < chunks; ++c) {
-            const size_t first = size_t(c) * size_t(perChunk);
-            const size_t last = std::min(centres.size(), first + size_t(perChunk));
-            std::vector<std::array<float, 4>> part(centres.begin() + long(first), centres.begin() + long(last));
-            for (auto& centre : part) centre[3] -= float(first);  // the cube's index inside its array
-            renderCubeShadows(st, st.vplShadows[size_t(c)], part, settings.vplShadowSize);
-        }
+    st.vplVisibility = settings.visibility && !centres.empty();
+    if (st.vplVisibility) {
+        st.vplShadows.reserve(int(centres.size()), settings.vplShadowSize);
+        st.timings.shadowCubes += st.vplShadows.draw(st.shadowProgram, st.proxyCaster, centres, 0,
+                                                     st.scene->boundsRadius(), st.shadowCentres);
     }
     st.vplsDirty = false;
 }
 
-// Direct lights: the scene's delta lights, and point samples on the emissive triangles chosen in
-// proportion to area times luminance, stratified, each lighting as Le / (samples pdf_area).
+// A delta light for the light buffer (lights.glsl's layout), without its shadow layer; a
+// luminaire's table goes into `tables`.
+GpuLight gpuDeltaLight(const DeltaLight& d, float toScene, std::vector<const GoniometricDistribution*>& tables) {
+    static const GoniometricDistribution dark = [] {  // for a luminaire whose file is not loaded
+        GoniometricDistribution g;
+        g.cAngles = {0, 360};
+        g.gammaAngles = {0, 180};
+        g.candela = {0, 0, 0, 0};
+        return g;
+    }();
+    GpuLight g{};
+    const float kind = d.type == LightType::Point       ? 0.0f
+                       : d.type == LightType::Spot      ? 1.0f
+                       : d.type == LightType::Luminaire ? 4.0f
+                                                        : 2.0f;
+    put(g.positionKind, d.position, kind);
+    put(g.directionCosCone, d.direction, d.cosCone);
+    if (d.type == LightType::Luminaire) {  // its table's layer in place of the cone
+        put(g.directionCosCone, d.direction, float(tables.size()));
+        tables.push_back(d.goniometric ? &d.goniometric->distribution() : &dark);
+    }
+    put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
+        d.cosFalloffStart);
+    // A luminaire keeps its C0 direction where area samples keep their normal.
+    put(g.normalShadow, d.type == LightType::Luminaire ? d.c0 : V3f(0, 0, 0), -1.0f);
+    return g;
+}
+
+// Point samples on the emissive triangles chosen in proportion to area times luminance,
+// stratified, each lighting as Le / (samples pdf_area); interleaved, a multiple of the sub-buffer
+// count so that every sub-buffer gets as many, shuffled so that which part of the light a
+// sub-buffer sees changes with every seed (where the blur box is cut short by an edge, a fixed
+// assignment would be a bias that no number of frames averages away). Cost: a search in the
+// emitters' CDF per sample, whatever their number.
+std::vector<GpuLight> areaLightSamples(const RenderScene& scene, int count, uint64_t seed) {
+    std::vector<GpuLight> samples;
+    const auto& emitters = scene.lights().emitters();
+    if (emitters.empty() || count <= 0) return samples;
+    std::vector<double> cdf;
+    double total = 0;
+    for (const EmitterTriangle& e : emitters) cdf.push_back(total += e.area * std::max(1e-6f, luminance(e.radiance)));
+    Rng rng(seed, 0xa4ea11ULL);
+    for (int i = 0; i < count; ++i) {
+        const double u = (i + rng.nextDouble()) / count;
+        const size_t k = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), u * total) - cdf.begin()),
+                                  emitters.size() - 1);
+        const EmitterTriangle& e = emitters[k];
+        float b1 = rng.next1D(), b2 = rng.next1D();
+        if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
+        const V3f p = e.p0 * (1.0f - b1 - b2) + e.p1 * b1 + e.p2 * b2;
+        const double weight = e.area * std::max(1e-6f, luminance(e.radiance));
+        const float pdfArea = float(weight / total / e.area);
+        GpuLight g{};
+        put(g.positionKind, p, 3.0f);
+        put(g.intensityCosFalloff, e.radiance * (1.0f / (float(count) * pdfArea)), 0);
+        put(g.normalShadow, e.normal, -1.0f);
+        samples.push_back(g);
+    }
+    for (size_t i = samples.size(); i > 1; --i) std::swap(samples[i - 1], samples[rng.nextUint() % i]);
+    return samples;
+}
+
+// Bytes the delta lights' and area samples' cube maps may take (distance and depth, 8 bytes a
+// texel): beyond, the faces shrink. 150 lights get 128 x 128 faces, 1,000 lights 32 x 32.
+constexpr double kLightShadowBytes = 160.0 * 1024 * 1024;
+
+// Direct lights: the scene's delta lights and the area lights' samples, in the ranges gpu_state.h
+// describes, with their shadow maps: cube maps for point, spot and luminaire lights (the scene
+// drawn) and area samples (the proxy drawn), orthographic maps for directional lights (beyond
+// DirectionalShadows::kMaxLights, unshadowed). Past the cubes the GPU holds, the weakest delta
+// lights go unshadowed; past the memory budget, every face shrinks; both are said in lightNote.
 void uploadLights(Preview::State& st, const PreviewSettings& settings) {
-    std::vector<GpuLight> lights;
-    std::vector<std::array<float, 4>> centres;
-    st.dirShadows.matrices.clear();
-    st.firstAreaLight = st.areaLightCount = 0;
+    const int subsets = st.patternX * st.patternY;
+    const bool interleave = subsets > 1;
     const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
     std::vector<const GoniometricDistribution*> tables;
-    GoniometricDistribution dark;  // for a luminaire whose file is not loaded
-    dark.cAngles = {0, 360};
-    dark.gammaAngles = {0, 180};
-    dark.candela = {0, 0, 0, 0};
+    std::vector<GpuLight> directional, deltas;
+    std::vector<double> deltaPower;
+    st.dirShadows.matrices.clear();
     for (const DeltaLight& d : st.deltas) {
-        GpuLight g{};
-        const float kind = d.type == LightType::Point       ? 0.0f
-                           : d.type == LightType::Spot      ? 1.0f
-                           : d.type == LightType::Luminaire ? 4.0f
-                                                            : 2.0f;
-        put(g.positionKind, d.position, kind);
-        put(g.directionCosCone, d.direction, d.cosCone);
-        if (d.type == LightType::Luminaire) {  // its table's layer in place of the cone
-            put(g.directionCosCone, d.direction, float(tables.size()));
-            tables.push_back(d.goniometric ? &d.goniometric->distribution() : &dark);
-        }
-        put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
-            d.cosFalloffStart);
-        // Point and spot lights: a cube map; directional lights: an orthographic map (beyond
-        // kMaxLights of them, unshadowed).
-        float layer = -1.0f;
+        GpuLight g = gpuDeltaLight(d, toScene, tables);
         if (d.type != LightType::Directional) {
-            layer = float(centres.size());
-            centres.push_back({d.position.x, d.position.y, d.position.z, layer});
-        } else if (st.dirShadows.matrices.size() < size_t(DirectionalShadows::kMaxLights)) {
-            layer = float(st.dirShadows.matrices.size());
+            deltas.push_back(g);
+            // Intensity over the cone's solid angle share: which lights matter most.
+            deltaPower.push_back(double(luminance(d.intensity)) * (d.type == LightType::Spot ? 1.0 - d.cosCone : 2.0));
+            continue;
+        }
+        if (st.dirShadows.matrices.size() < size_t(DirectionalShadows::kMaxLights)) {
+            g.normalShadow[3] = float(st.dirShadows.matrices.size());
             st.dirShadows.matrices.push_back(
                 directionalShadowMatrix(d.direction, st.scene->boundsCenter(), st.scene->boundsRadius()));
         }
-        // A luminaire keeps its C0 direction where area samples keep their normal.
-        put(g.normalShadow, d.type == LightType::Luminaire ? d.c0 : V3f(0, 0, 0), layer);
-        lights.push_back(g);
+        directional.push_back(g);
     }
     st.luminaireTables = makeLuminaireTables(tables);
-    const auto& emitters = st.scene->lights().emitters();
-    if (!emitters.empty() && settings.areaLightSamples > 0) {
-        std::vector<double> cdf;
-        double total = 0;
-        for (const EmitterTriangle& e : emitters) cdf.push_back(total += e.area * std::max(1e-6f, luminance(e.radiance)));
-        Rng rng(st.seed, 0xa4ea11ULL);
-        // Interleaved: a multiple of the sub-buffer count, so every sub-buffer gets as many.
-        const int subsets = st.patternX * st.patternY;
-        const int n = subsets > 1 ? roundUp(settings.areaLightSamples, subsets) : settings.areaLightSamples;
-        st.firstAreaLight = int(lights.size());
-        st.areaLightCount = n;
-        const float lift = st.scene->boundsRadius() * 1e-4f;
-        for (int i = 0; i < n; ++i) {
-            const double u = (i + rng.nextDouble()) / n;  // stratified over the emitters' power
-            const size_t k = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), u * total) - cdf.begin()),
-                                      emitters.size() - 1);
-            const EmitterTriangle& e = emitters[k];
-            float b1 = rng.next1D(), b2 = rng.next1D();
-            if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
-            const V3f p = e.p0 * (1.0f - b1 - b2) + e.p1 * b1 + e.p2 * b2;
-            const double weight = e.area * std::max(1e-6f, luminance(e.radiance));
-            const float pdfArea = float(weight / total / e.area);
-            GpuLight g{};
-            put(g.positionKind, p, 3.0f);
-            put(g.intensityCosFalloff, e.radiance * (1.0f / (float(n) * pdfArea)), 0);
-            const float layer = float(centres.size());
-            const V3f c = p + e.normal * lift;
-            centres.push_back({c.x, c.y, c.z, layer});
-            put(g.normalShadow, e.normal, layer);
-            lights.push_back(g);
+    const int areaCount = interleave ? roundUp(settings.areaLightSamples, subsets) : settings.areaLightSamples;
+    std::vector<GpuLight> area = areaLightSamples(*st.scene, areaCount, st.seed);
+
+    // Shadow cubes: the delta lights in scene order (so that an edit redraws one), then the area
+    // samples; the strongest delta lights keep theirs when not all fit.
+    const int capacity = CubeShadowSet::capacity();
+    const int areaCubes = std::min(int(area.size()), capacity);
+    const int shadowedDeltas = std::min(int(deltas.size()), capacity - areaCubes);
+    std::vector<size_t> byPower(deltas.size());
+    std::iota(byPower.begin(), byPower.end(), size_t(0));
+    std::stable_sort(byPower.begin(), byPower.end(), [&](size_t a, size_t b) { return deltaPower[a] > deltaPower[b]; });
+    std::vector<bool> shadowed(deltas.size(), false);
+    for (int r = 0; r < shadowedDeltas; ++r) shadowed[byPower[size_t(r)]] = true;
+    std::vector<V3f> deltaCentres, areaCentres;
+    for (size_t i = 0; i < deltas.size(); ++i)
+        if (shadowed[i]) {
+            deltas[i].normalShadow[3] = float(deltaCentres.size());
+            deltaCentres.push_back(V3f(deltas[i].positionKind[0], deltas[i].positionKind[1], deltas[i].positionKind[2]));
         }
-        // Interleaved, sample i serves sub-buffer i mod (n m): shuffled, so that which part of the
-        // light a sub-buffer sees changes with every seed (where the blur box is cut short by an
-        // edge, a fixed assignment would be a bias that no number of frames averages away).
-        for (size_t i = size_t(n); i > 1; --i)
-            std::swap(lights[size_t(st.firstAreaLight) + i - 1], lights[size_t(st.firstAreaLight) + rng.nextUint() % i]);
+    const float lift = st.scene->boundsRadius() * 1e-4f;
+    for (int i = 0; i < areaCubes; ++i) {
+        GpuLight& g = area[size_t(i)];
+        g.normalShadow[3] = float(shadowedDeltas + i);
+        areaCentres.push_back(V3f(g.positionKind[0], g.positionKind[1], g.positionKind[2]) +
+                              V3f(g.normalShadow[0], g.normalShadow[1], g.normalShadow[2]) * lift);
     }
+    const int cubes = shadowedDeltas + areaCubes;
+    int face = settings.shadowSize;
+    while (face > 16 && double(cubes) * 6.0 * face * face * 8.0 > kLightShadowBytes) face /= 2;
+    st.lightNote.clear();
+    if (shadowedDeltas < int(deltas.size()))
+        st.lightNote = "shadows for the " + std::to_string(shadowedDeltas) + " strongest of " +
+                       std::to_string(deltas.size()) + " lights (this GPU's limit)";
+    if (face < settings.shadowSize)
+        st.lightNote += std::string(st.lightNote.empty() ? "" : ", ") + "light shadow maps at " + std::to_string(face) +
+                        " px a face for " + std::to_string(cubes) + " maps";
+
+    // The ranges: shaded in full, then dealt to the sub-buffers (many delta lights, padded with
+    // dark ones to a multiple of n m so that every sub-buffer gets as many; the area samples).
+    Rng rng(st.seed, 0xd1ea7ULL);
+    std::vector<GpuLight> lights = directional;
+    st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
+    if (!st.interleavedDeltas) lights.insert(lights.end(), deltas.begin(), deltas.end());
+    if (!interleave) lights.insert(lights.end(), area.begin(), area.end());
+    st.shadedHere = int(lights.size());
+    st.firstInterleaved = int(lights.size());
+    if (st.interleavedDeltas) {
+        GpuLight darkLight{};
+        darkLight.normalShadow[3] = -1.0f;
+        deltas.resize(size_t(roundUp(int(deltas.size()), subsets)), darkLight);
+        for (size_t i = deltas.size(); i > 1; --i) std::swap(deltas[i - 1], deltas[rng.nextUint() % i]);
+        lights.insert(lights.end(), deltas.begin(), deltas.end());
+    }
+    st.firstAreaLight = int(lights.size());
+    st.areaLightCount = interleave ? int(area.size()) : 0;
+    if (interleave) lights.insert(lights.end(), area.begin(), area.end());
+    st.interleavedCount = int(lights.size()) - st.firstInterleaved;
+
+    const auto kinds = [&](int first, int end) {
+        int bits = 0;
+        for (int i = first; i < end; ++i) bits |= 1 << int(lights[size_t(i)].positionKind[3]);
+        return bits;
+    };
+    st.shadedKinds = kinds(0, st.shadedHere);
+    st.interleavedKinds = kinds(st.firstInterleaved, int(lights.size()));
     upload(st.lightBuffer, lights);
     uploadTileAreaBlocks(st, lights);
-    st.lightKinds = 0;
-    for (const GpuLight& g : lights) st.lightKinds |= 1 << int(g.positionKind[3]);
     st.directLights = std::move(lights);
-    renderCubeShadows(st, st.directShadows, centres, settings.shadowSize);
-    renderDirectionalShadows(st, settings.shadowSize * 4);
-    st.directShadowCubes = int(centres.size());
+
+    st.lightShadows.reserve(cubes, face);
+    const float radius = st.scene->boundsRadius();
+    st.timings.shadowCubes += st.lightShadows.draw(st.shadowProgram, st.sceneCaster, deltaCentres, 0, radius, st.shadowCentres);
+    st.timings.shadowCubes +=
+        st.lightShadows.draw(st.shadowProgram, st.proxyCaster, areaCentres, shadowedDeltas, radius, st.shadowCentres);
+    st.dirShadows.draw(st.dirShadowProgram, st.sceneCaster, settings.shadowSize * 4);
+    st.lightShadowCubes = cubes;
     st.lightsDirty = false;
 }
 
@@ -368,11 +372,18 @@ const gl::Program& programVariant(Preview::State& st, const std::string& fragmen
 
 std::string define(const char* name, int value) { return std::string("#define ") + name + " " + std::to_string(value) + "\n"; }
 
+std::string lightKindDefines(int kinds) {
+    const auto has = [&](int kind) { return (kinds >> kind) & 1; };
+    return define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) + define("AREA", has(3)) + define("LUMINAIRE", has(4));
+}
+
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
-const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findEdges, bool fusedSplit) {
-    std::string defines = define("VPL_SHADOW_CHUNKS", st.vplShadowChunks) + define("GLOSSY", st.glossyScene ? 1 : 0) +
-                          define("AREA_SAMPLES", areaSamples ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
-                          define("FUSED_SPLIT", fusedSplit ? 1 : 0) + define("UNROLLED_AREA", areaSamples ? st.areaPerTile : 0) +
+const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool findEdges, bool fusedSplit) {
+    std::string defines = define("VPL_SHADOW_CHUNKS", st.vplVisibility ? 1 : 0) + define("GLOSSY", st.glossyScene ? 1 : 0) +
+                          define("INTERLEAVED_LIGHTS", interleavedLights ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
+                          define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
+                          define("UNROLLED_AREA", interleavedLights ? st.areaPerTile : 0) +
+                          lightKindDefines(interleavedLights ? st.interleavedKinds : 0) +
                           define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
     return programVariant(st, "shade_vpl.frag", defines);
@@ -380,10 +391,28 @@ const gl::Program& shadeProgram(Preview::State& st, bool areaSamples, bool findE
 
 // The direct pass's program for the lights it evaluates (direct.frag's switches).
 const gl::Program& directProgram(Preview::State& st, bool lightLoop) {
-    const auto has = [&](int kind) { return (st.lightKinds >> kind) & 1; };
     return programVariant(st, "direct.frag",
-                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) +
-                              define("AREA", has(3)) + define("LUMINAIRE", has(4)));
+                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + lightKindDefines(lightLoop ? st.shadedKinds : 0));
+}
+
+// The uniforms and textures of lights.glsl.
+void setLightUniforms(Preview::State& st, const gl::Program& p) {
+    setFloat(p, "lightShadowBias", 0.02f);
+    setFloat(p, "lightTexelAngle", 2.0f / float(std::max(st.lightShadows.faceSize(), 1)));
+    setFloat(p, "areaShadowSlack", st.proxyCaster.slack);
+    setInt(p, "lightCubesPerArray", st.lightShadows.perArray());
+    const DirectionalShadows& ds = st.dirShadows;
+    if (!ds.matrices.empty())
+        glProgramUniformMatrix4fv(p.id(), loc(p, "dirShadowMatrix"), GLsizei(ds.matrices.size()), GL_FALSE,
+                                  ds.matrices[0].m.data());
+    // Two texels of the map along the normal, half a texel of depth (the map spans 2 radii).
+    setFloat(p, "dirNormalOffset", 2.0f * 2.0f * st.scene->boundsRadius() / float(std::max(ds.size, 1)));
+    setFloat(p, "dirDepthBias", 0.5f / float(std::max(ds.size, 1)));
+    setIvec2(p, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
+    st.lightShadows.bind(8);
+    glBindTextureUnit(12, st.dirShadows.depth.id());
+    glBindTextureUnit(13, st.luminaireTables.id());
 }
 
 void bindTextures(std::initializer_list<GLuint> textures) {
@@ -464,6 +493,7 @@ Image Preview::render(float jitterX, float jitterY) {
     ensureTargets(st, w, h, s.patternX, s.patternY, s.split == SplitMode::TwoPass ? s.splitBlock : 1);
     if (st.vplsDirty) uploadVpls(st, s);
     if (st.lightsDirty) uploadLights(st, s);
+    st.degradation = st.vplNote + (st.vplNote.empty() || st.lightNote.empty() ? "" : "; ") + st.lightNote;
     lap(tm.shadows);
 
     // G-buffer.
@@ -495,15 +525,15 @@ Image Preview::render(float jitterX, float jitterY) {
     lap(tm.gbuffer);
 
     const bool indirect = s.indirect && st.uploadedVplCount > 0;
-    // Area lights, interleaved: their samples are shaded with the VPLs (shade_vpl.frag), so they
-    // are split, gathered and blurred with them.
-    const bool areaInterleaved = interleaved && s.direct && st.areaLightCount > 0;
-    if (indirect || areaInterleaved) {
+    // Lights dealt to the sub-buffers (area samples, many delta lights) are shaded with the VPLs
+    // (shade_vpl.frag), so they are split, gathered and blurred with them.
+    const bool interleavedLights = interleaved && s.direct && st.interleavedCount > 0;
+    if (indirect || interleavedLights) {
         const bool fused = interleaved && s.split == SplitMode::Fused;
         if (interleaved && !fused) runSplit(st, s.split == SplitMode::TwoPass, w, h, s.blur, eye);
         lap(tm.split);
 
-        const gl::Program& p = shadeProgram(st, areaInterleaved, interleaved && s.blur, fused);
+        const gl::Program& p = shadeProgram(st, interleavedLights, interleaved && s.blur, fused);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
         setIvec2(p, "subSize", st.subW, st.subH);
@@ -512,20 +542,17 @@ Image Preview::render(float jitterX, float jitterY) {
         setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
         setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
         setFloat(p, "shadowBias", 0.03f);
-        setInt(p, "firstArea", st.firstAreaLight);
-        setInt(p, "areaCount", st.areaLightCount);
-        setFloat(p, "areaShadowBias", 0.02f);
-        setInt(p, "cubesPerChunk", st.vplCubesPerChunk);
+        setFloat(p, "vplShadowSlack", st.proxyCaster.slack);
+        setInt(p, "cubesPerChunk", st.vplShadows.perArray());
+        setInt(p, "firstInterleaved", st.firstInterleaved);
+        setInt(p, "interleavedCount", st.interleavedCount);
+        setLightUniforms(st, p);
         const bool splitLayout = interleaved && !fused;
         glBindTextureUnit(0, splitLayout ? st.s[0].id() : st.g[0].id());
         glBindTextureUnit(1, splitLayout ? st.s[1].id() : st.g[1].id());
         glBindTextureUnit(2, st.s[2].id());
-        glBindTextureUnit(4, st.vplShadows[0].distance.id());
-        glBindTextureUnit(5, st.directShadows.distance.id());
-        for (int c = 1; c < Preview::State::kVplShadowChunks; ++c)
-            glBindTextureUnit(GLuint(5 + c), st.vplShadows[size_t(c)].distance.id());
+        st.vplShadows.bind(4);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
         glBindFramebuffer(GL_FRAMEBUFFER, interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
         const int tileW = interleaved ? st.subW : w, tileH = interleaved ? st.subH : h;
         for (int k = 0; k < subsets; ++k) {
@@ -535,7 +562,7 @@ Image Preview::render(float jitterX, float jitterY) {
             if (st.unrolledVpls > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
                                   GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
-            if (areaInterleaved && st.areaPerTile > 0)
+            if (interleavedLights && st.areaPerTile > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
                                   GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
             setIvec2(p, "tile", tx, ty);
@@ -551,39 +578,19 @@ Image Preview::render(float jitterX, float jitterY) {
         if (interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
         lap(tm.gather);
     }
-    const bool withIndirect = indirect || areaInterleaved;  // the shading pass's output holds light
+    const bool withIndirect = indirect || interleavedLights;  // the shading pass's output holds light
 
-    // Lights evaluated here: the delta lights, and the area samples unless the VPL pass had them.
-    const int directLightCount = !s.direct ? 0 : areaInterleaved ? st.firstAreaLight : int(st.directLights.size());
-    const gl::Program& d = directProgram(st, directLightCount > 0);
+    const int shadedHere = s.direct ? st.shadedHere : 0;
+    const gl::Program& d = directProgram(st, shadedHere > 0);
     glUseProgram(d.id());
-    setInt(d, "lightCount", int(st.directLights.size()));
+    setInt(d, "shadedHere", shadedHere);
     setVec3(d, "cameraPos", eye);
-    setFloat(d, "shadowBias", 0.02f);
-    setFloat(d, "texelAngle", 2.0f / float(std::max(s.shadowSize, 1)));
-    setInt(d, "addDirect", s.direct ? 1 : 0);
-    setInt(d, "firstArea", st.firstAreaLight);
-    {
-        const DirectionalShadows& ds = st.dirShadows;
-        if (!ds.matrices.empty())
-            glProgramUniformMatrix4fv(d.id(), loc(d, "dirShadowMatrix"), GLsizei(ds.matrices.size()), GL_FALSE,
-                                      ds.matrices[0].m.data());
-        // Two texels of the map along the normal, half a texel of depth (the map spans 2 radii).
-        setFloat(d, "dirNormalOffset", 2.0f * 2.0f * radius / float(std::max(ds.size, 1)));
-        setFloat(d, "dirDepthBias", 0.5f / float(std::max(ds.size, 1)));
-    }
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.lightBuffer.id());
-
-    setInt(d, "areaMode", areaInterleaved ? 1 : 0);
+    setLightUniforms(st, d);
     setInt(d, "addIndirect", withIndirect ? 1 : 0);
     setInt(d, "boxHeight", interleaved && s.blur ? st.patternY : 1);
     glBindTextureUnit(0, st.g[0].id());
     glBindTextureUnit(1, st.g[1].id());
-    glBindTextureUnit(4, interleaved ? st.blurTemp.id() : st.indirect.id());
-    glBindTextureUnit(5, st.directShadows.distance.id());
-    glBindTextureUnit(6, st.dirShadows.depth.id());
-    glBindTextureUnit(7, st.luminaireTables.id());
-    setIvec2(d, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
+    glBindTextureUnit(3, interleaved ? st.blurTemp.id() : st.indirect.id());
     drawFullscreen(st.finalFbo.id(), w, h);
     lap(tm.direct);
 

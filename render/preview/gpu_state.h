@@ -4,6 +4,7 @@
 
 #include "render/preview/gl_objects.h"
 #include "render/preview/per_light_vpls.h"
+#include "render/preview/shadow_maps.h"
 #include "render/preview/preview.h"
 #include "render/trace/render_scene.h"
 
@@ -18,36 +19,6 @@ namespace lucerna {
 namespace preview_detail {
 
 using Clock = std::chrono::steady_clock;
-
-// A 4x4 matrix for column vectors, stored column-major as GLSL expects.
-struct Mat4 {
-    std::array<float, 16> m{};
-    float& at(int row, int col) { return m[size_t(col * 4 + row)]; }
-    void setRow(int row, const V3f& v, float w) {
-        at(row, 0) = v.x;
-        at(row, 1) = v.y;
-        at(row, 2) = v.z;
-        at(row, 3) = w;
-    }
-};
-
-// The six cube faces' view-projections for a light at the origin, in GL's cube map order and
-// orientation, so that texture(samplerCubeArray, vec4(dir, i)) finds what was drawn along dir.
-inline std::array<Mat4, 6> cubeFaceMatrices(float nearZ, float farZ) {
-    const V3f fwd[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    const V3f up[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    std::array<Mat4, 6> out;
-    const float a = (farZ + nearZ) / (farZ - nearZ), b = -2.0f * farZ * nearZ / (farZ - nearZ);
-    for (int i = 0; i < 6; ++i) {
-        const V3f f = fwd[i], s = f.cross(up[i]).normalized(), u = s.cross(f);
-        // 90 degrees, aspect 1: x_c = s.p, y_c = u.p, w_c = f.p.
-        out[i].setRow(0, s, 0);
-        out[i].setRow(1, u, 0);
-        out[i].setRow(2, f * a, b);
-        out[i].setRow(3, f, 0);
-    }
-    return out;
-}
 
 // GPU layouts (std430), mirrored by the shaders.
 struct GpuMaterial { float albedoKind[4], specularAlpha[4], radiance[4]; };
@@ -69,63 +40,12 @@ inline float materialKind(MaterialType t) {
 inline int roundUp(int v, int multiple) { return (v + multiple - 1) / multiple * multiple; }
 
 // Per light, the VPLs it gave: lightIndex -1 is all emissive triangles together, -2 a set given
-// by setVpls, -3 the MIR set of all lights.
+// by setVpls, -3 the MIR set of all lights, kAllLights one instant radiosity set of all lights.
+constexpr int kAllLights = -4;
 struct LightVpls {
     int lightIndex = -1;
     int count = 0;
     VplSet vpls;
-};
-
-// A cube-map-array shadow target: distances in R32F, depth for the z-test, layered.
-struct CubeShadows {
-    gl::Texture distance, depth;
-    gl::Framebuffer fbo;
-    int size = 0, cubes = 0;
-    // The centre (xyz, cube index) each cube was last drawn from, by cube index: a cube whose
-    // centre has not moved is not drawn again. Valid while the geometry is the same: cleared by
-    // a new scene (and by a new texture).
-    std::vector<std::array<float, 4>> drawn;
-
-    void ensure(int faceSize, int cubeCount) {
-        if (faceSize == size && cubeCount <= cubes && distance) return;
-        drawn.clear();
-        size = faceSize;
-        cubes = std::max(cubeCount, 1);
-        distance = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
-        glTextureStorage3D(distance.id(), 1, GL_R32F, size, size, cubes * 6);
-        glTextureParameteri(distance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTextureParameteri(distance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        depth = gl::makeTexture(GL_TEXTURE_CUBE_MAP_ARRAY);
-        glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, cubes * 6);
-        fbo = gl::makeFramebuffer({distance.id()}, depth.id());
-    }
-};
-
-// Orthographic depth maps of the directional lights, one layer each, compared in the lookup.
-struct DirectionalShadows {
-    static constexpr int kMaxLights = 4;  // direct.frag's MAX_DIRECTIONAL_SHADOWS
-    gl::Texture depth;
-    gl::Framebuffer fbo;
-    int size = 0, layers = 0;
-    std::vector<Mat4> matrices;
-
-    void ensure(int mapSize, int layerCount) {
-        layerCount = std::max(layerCount, 1);  // always something bound to the sampler
-        if (mapSize == size && layerCount <= layers && depth) return;
-        size = mapSize;
-        layers = layerCount;
-        depth = gl::makeTexture(GL_TEXTURE_2D_ARRAY);
-        glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
-        glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // 2 x 2 PCF
-        glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-        glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-        fbo = gl::makeFramebuffer();
-        glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
-        glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
-    }
 };
 
 inline GLint loc(const gl::Program& p, const char* name) { return glGetUniformLocation(p.id(), name); }
@@ -181,17 +101,26 @@ struct Preview::State {
     std::array<gl::Texture, 3> s, t;
     gl::Texture depth, indirectSplit, indirect, blurTemp, final;
     gl::Framebuffer gFbo, sFbo, tFbo, indirectSplitFbo, indirectFbo, blurFbo, finalFbo;
-    preview_detail::CubeShadows directShadows;
-    // VPL visibility: cube map arrays hold at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes (341 on
-    // llvmpipe), so the VPLs' maps are spread over up to kVplShadowChunks arrays
-    // (shade_vpl.frag picks the array by VPL index / vplCubesPerChunk).
-    static constexpr int kVplShadowChunks = 4;
-    std::array<preview_detail::CubeShadows, kVplShadowChunks> vplShadows;
-    int vplCubesPerChunk = 1;
+    // Shadow maps. The VPLs' and the area samples' low-resolution maps are drawn again for every
+    // fresh set, from the proxy (shadow_proxy.h; the scene itself when it is small); the delta
+    // lights' from the scene.
+    gl::VertexArray proxyVao;
+    gl::Buffer proxyVertices;
+    preview_detail::ShadowCaster sceneCaster, proxyCaster;
+    preview_detail::CubeShadowSet lightShadows, vplShadows;
     preview_detail::DirectionalShadows dirShadows;
     gl::Texture luminaireTables;  // luminaire_textures.h: a layer per luminaire
-    int directShadowCubes = 0;
-    int firstAreaLight = 0, areaLightCount = 0;  // the area samples' range in directLights
+    int lightShadowCubes = 0;
+    // directLights: [0, shadedHere) shaded in full by the direct pass; [firstInterleaved,
+    // firstInterleaved + interleavedCount) dealt to the sub-buffers and shaded with the VPLs:
+    // the delta lights when there are many (padded with dark lights to a multiple of n m), then
+    // the area samples [firstAreaLight, firstAreaLight + areaLightCount).
+    int shadedHere = 0, firstInterleaved = 0, interleavedCount = 0;
+    int firstAreaLight = 0, areaLightCount = 0;
+    bool interleavedDeltas = false;
+    int shadedKinds = 0, interleavedKinds = 0;  // bit k: a light of GpuLight kind k in that range
+    // What was given up to stay within the GPU's limits (Preview::degradation), by cause.
+    std::string vplNote, lightNote;
     // The VPL shading pass draws each sub-buffer with its own VPLs: vplBuffer[first, first +
     // count), and with unrolledVpls > 0 the same VPLs as a uniform block at byte `blockOffset`
     // of tileVplBlocks (unrolledVpls of them, the last padded).
@@ -207,9 +136,8 @@ struct Preview::State {
     gl::Buffer tileAreaBlocks;
     int areaPerTile = 0;
     GLintptr areaBlockStride = 0;
-    int vplShadowChunks = 0;  // cube map arrays in use (0: VPL visibility off)
+    bool vplVisibility = false;  // the VPLs have shadow maps this frame
     bool glossyScene = false;  // any glossy material with a specular lobe
-    int lightKinds = 0;  // bit k: a light of GpuLight kind k is in the light buffer
     // The VPL shading and direct programs, compiled for their switches as needed, by file and
     // #defines (frame_passes.cpp, programVariant).
     std::map<std::string, gl::Program> programVariants;

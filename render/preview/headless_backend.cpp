@@ -15,6 +15,8 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     readOption(settings, "clamp", p.clampDistance, 0.0, std::numeric_limits<float>::max());
     readOption(settings, "area_samples", p.areaLightSamples, 0);
     readOption(settings, "unroll", p.maxUnrolledVpls, 0);
+    readOption(settings, "shaded_lights", p.lightsShadedInFull, 0);
+    readOption(settings, "proxy_triangles", p.shadowProxyTriangles, 0);
     for (const auto& [key, value] : settings.options) {
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
@@ -83,6 +85,7 @@ public:
     std::map<std::string, std::string> diagnostics() const override {
         auto d = lastTimings_;
         d["preview:renderer"] = preview_ ? preview_->context().renderer() : "";
+        d["preview:degradation"] = preview_ ? preview_->degradation() : "";
         d["preview:vpls"] = std::to_string(previewSettings_.vplCount);
         d["preview:vpl_source"] = previewSettings_.vplSource == VplSource::Metropolis ? "mir" : "ir";
         d["preview:pattern"] = std::to_string(previewSettings_.patternX) + "x" + std::to_string(previewSettings_.patternY);

@@ -18,10 +18,12 @@ namespace lucerna {
 // A light sampler over exactly one light: a delta light, or all emissive triangles together.
 LightSampler singleLightSampler(const RenderScene& scene, const DeltaLight* delta);
 
-// Traces light paths from `source` until `count` VPLs are stored (or a path budget of 64 count
-// runs out), keeps exactly `count` of them (a uniform choice, powers scaled to make up) and
-// divides by the number of paths traced, so the set's sum estimates the light's indirect
-// contribution. Deterministic in seed.
-VplSet traceVpls(const RenderScene& scene, const LightSampler& source, int count, uint64_t seed, int maxBounces = 8);
+// At most `count` VPLs whose sum is an unbiased estimate of the light's indirect contribution:
+// a pilot of independent paths measures the VPLs a path leaves, then a fixed number of paths
+// (16 count over that mean) is traced and divided by, and the VPLs are resampled to `count` in
+// proportion to their power. (Tracing until `count` VPLs are stored and dividing by the paths it
+// took is a ratio estimator biased by the spread of that path number: +3 to 5% in a closed room
+// of albedo 0.8, whose paths leave 0 to 20 VPLs.) Deterministic in seed.
+VplSet traceVpls(const RenderScene& scene, const LightSampler& source, int count, uint64_t seed, int maxBounces = 1024);
 
 }  // namespace lucerna

@@ -5,6 +5,7 @@
 #include "render/preview/gpu_state.h"
 #include "render/preview/mir_vpl_source.h"
 #include "render/preview/per_light_vpls.h"
+#include "render/preview/shadow_proxy.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"
 
@@ -50,18 +51,26 @@ void Preview::setSettings(const PreviewSettings& s) {
     const bool regenerateVpls =
         s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces ||
         s.vplSource != settings_.vplSource || s.indirect != settings_.indirect ||
+        // Whether one set serves all lights depends on the sub-buffer count.
+        s.patternX * s.patternY != settings_.patternX * settings_.patternY ||
         // MIR's chain targets the clamped contribution, so its VPLs depend on the clamp.
         (s.vplSource == VplSource::Metropolis && s.clampDistance != settings_.clampDistance);
     // The area-light samples are dealt to the sub-buffers like VPLs: a new pattern redeals them.
     const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize ||
-                         s.patternX != settings_.patternX || s.patternY != settings_.patternY;
+                         s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
+                         s.lightsShadedInFull != settings_.lightsShadedInFull;
     const bool repartition = s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
                              s.vplShadowSize != settings_.vplShadowSize || s.visibility != settings_.visibility ||
                              s.maxUnrolledVpls != settings_.maxUnrolledVpls;
     if (s.patternX < 1 || s.patternY < 1 || s.vplCount < 0 || s.splitBlock < 1)
         throw std::invalid_argument("preview: pattern, block and VPL count must be positive");
+    const bool newProxy = s.shadowProxyTriangles != settings_.shadowProxyTriangles;
     settings_ = s;
     State& st = *state_;
+    if (newProxy && current_) {
+        setScene(current_, st.width, st.height);
+        return;
+    }
     st.seed = s.seed;
     if (regenerateVpls && st.scene && !st.customVpls) regenerate(s.seed);
     if (relight) st.lightsDirty = true;
@@ -84,14 +93,38 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
     setScene(std::move(scene), width, height);
 }
 
+namespace {
+
+// The proxy the VPLs' and area samples' shadow maps draw (shadow_proxy.h): the scene's own
+// vertex array when it is small enough.
+void uploadShadowProxy(Preview::State& st, const std::vector<float>& positions, int maxTriangles) {
+    ShadowProxy proxy = clusterTriangles(positions, size_t(std::max(maxTriangles, 0)));
+    if (proxy.cellSize == 0) {
+        st.proxyVao = gl::VertexArray();
+        st.proxyVertices = gl::Buffer();
+        st.proxyCaster = st.sceneCaster;
+        return;
+    }
+    upload(st.proxyVertices, proxy.positions);
+    st.proxyVao = gl::makeVertexArray();
+    glVertexArrayVertexBuffer(st.proxyVao.id(), 0, st.proxyVertices.id(), 0, 3 * sizeof(float));
+    glEnableVertexArrayAttrib(st.proxyVao.id(), 0);
+    glVertexArrayAttribFormat(st.proxyVao.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(st.proxyVao.id(), 0, 0);
+    // A proxy surface lies within a cell of the true one, mostly much closer (the cell's mean).
+    st.proxyCaster = {st.proxyVao.id(), GLsizei(proxy.positions.size() / 3), proxy.cellSize};
+}
+
+}  // namespace
+
 void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     State& st = *state_;
     current_ = snapshot;
     st.snapshot = snapshot;
     st.scene = std::make_unique<RenderScene>(snapshot, width, height);
     // New geometry: every shadow map must be drawn again, wherever its light or VPL is.
-    st.directShadows.drawn.clear();
-    for (auto& chunk : st.vplShadows) chunk.drawn.clear();
+    st.lightShadows.forget();
+    st.vplShadows.forget();
     st.camera = snapshot->camera;
     st.width = st.scene->camera().width();
     st.height = st.scene->camera().height();
@@ -133,6 +166,8 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
         glEnableVertexArrayAttrib(st.sceneVao.id(), 0);
         glVertexArrayAttribFormat(st.sceneVao.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(st.sceneVao.id(), 0, 0);
+        st.sceneCaster = {st.sceneVao.id(), st.vertexCount, 0.0f};
+        uploadShadowProxy(st, positions, settings_.shadowProxyTriangles);
     }
     regenerate(settings_.seed);
 }
@@ -165,6 +200,12 @@ int vplShare(double power, double totalPower, int budget, int subsets) {
     return std::max(subsets, int(std::lround(budget * power / totalPower)));
 }
 
+// Every light of the scene, chosen by power.
+LightSampler allLightsSampler(const Preview::State& st) {
+    return LightSampler(st.scene->lights().emitters(), std::vector<DeltaLight>(st.deltas), st.scene->metersPerUnit(),
+                        st.scene->boundsCenter(), st.scene->boundsRadius(), st.scene->triangleCount());
+}
+
 }  // namespace
 
 void Preview::regenerate(uint64_t seed) {
@@ -180,6 +221,22 @@ void Preview::regenerate(uint64_t seed) {
         return;
     }
     const int subsets = settings_.patternX * settings_.patternY;
+    const int budget = settings_.indirect ? settings_.vplCount : 0;
+    const size_t sources = (st.scene->lights().emitters().empty() ? 0 : 1) + st.deltas.size();
+    st.sets.clear();
+    // The VPL budget is the scene's, not the light count's: when every light cannot have a set
+    // of at least one VPL per sub-buffer within it, one set serves all lights, its paths
+    // starting at lights chosen by power (an edit then regenerates the whole set).
+    if (sources * size_t(subsets) > size_t(budget)) {
+        LightVpls set;
+        set.lightIndex = kAllLights;
+        set.count = budget;
+        set.vpls = traceVpls(*st.scene, allLightsSampler(st), budget, hashSeed(seed, 0xa11ULL), settings_.maxBounces);
+        ++st.generations;
+        st.sets.push_back(std::move(set));
+        st.vplsDirty = st.lightsDirty = true;
+        return;
+    }
     std::vector<LightSampler> samplers;
     std::vector<int> indices;
     if (!st.scene->lights().emitters().empty()) {
@@ -192,11 +249,10 @@ void Preview::regenerate(uint64_t seed) {
     }
     double total = 0;
     for (const LightSampler& s : samplers) total += s.totalPower();
-    st.sets.clear();
     for (size_t i = 0; i < samplers.size(); ++i) {
         LightVpls set;
         set.lightIndex = indices[i];
-        set.count = vplShare(samplers[i].totalPower(), total, settings_.indirect ? settings_.vplCount : 0, subsets);
+        set.count = vplShare(samplers[i].totalPower(), total, budget, subsets);
         set.vpls = traceVpls(*st.scene, samplers[i], set.count, hashSeed(seed, uint64_t(set.lightIndex + 2)),
                              settings_.maxBounces);
         ++st.generations;
@@ -214,6 +270,10 @@ void Preview::setLight(size_t index, const Light& light) {
     if (st.customVpls) return;
     if (settings_.vplSource == VplSource::Metropolis) {
         regenerateMir();  // MIR's VPLs serve every light at once
+        return;
+    }
+    if (st.sets.size() == 1 && st.sets[0].lightIndex == kAllLights) {
+        regenerate(st.seed);  // one set serves every light
         return;
     }
     // Only its power changed (dimmed, recoloured): its VPLs' power is linear in the light's,
@@ -243,8 +303,7 @@ void Preview::setLight(size_t index, const Light& light) {
 
 void Preview::regenerateMir() {
     State& st = *state_;
-    LightSampler all(st.scene->lights().emitters(), std::vector<DeltaLight>(st.deltas), st.scene->metersPerUnit(),
-                     st.scene->boundsCenter(), st.scene->boundsRadius(), st.scene->triangleCount());
+    const LightSampler all = allLightsSampler(st);
     MirVplSettings mir;
     mir.pathVpls = settings_.indirect ? settings_.vplCount : 0;
     mir.clampFraction = settings_.clampDistance;

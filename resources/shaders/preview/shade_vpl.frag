@@ -11,11 +11,14 @@
 // and the scene, so that an unrolled body holds only the code the scene needs (llvmpipe runs a
 // SIMD vector of fragments through every branch any of them takes):
 //   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;
-//   VPL_SHADOW_CHUNKS  0: VPL visibility off; else the cube map arrays holding the VPLs' maps;
+//   VPL_SHADOW_CHUNKS  0: VPL visibility off; else 1 (the VPLs' maps, cube_shadows.glsl);
 //   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
-//   AREA_SAMPLES       1 when the area lights' samples are shaded here (interleaved);
-//   UNROLLED_AREA      with AREA_SAMPLES, the samples each sub-buffer gets, read at constant
-//                      indices from a uniform block (as the VPLs); 0: a loop over the buffer;
+//   INTERLEAVED_LIGHTS 1 when lights are dealt to the sub-buffers and shaded here: the area
+//                      lights' samples, and the delta lights when there are many;
+//   UNROLLED_AREA      with INTERLEAVED_LIGHTS, when they are area samples only, the samples each
+//                      sub-buffer gets, read at constant indices from a uniform block (as the
+//                      VPLs); 0: a loop over the buffer, any kind of light;
+//   SPOT, AREA, LUMINAIRE   lights.glsl's switches for the interleaved lights;
 //   FIND_EDGES         1 when the box blur follows (the discontinuity bits go out in alpha);
 //   FUSED_SPLIT        1: no split pass ran; each fragment of tile t at q reads its G-buffer texel
 //                      q n + t straight from the image-layout G-buffer (and finds its
@@ -29,6 +32,8 @@
 #include_brdf
 #include_gbuffer
 #include_discontinuity
+#include_cube_shadows
+#include_lights
 struct Vpl { vec4 positionIndex; vec4 normalAlpha; vec4 incident; vec4 power; vec4 albedo; vec4 specular; };
 #if UNROLLED_VPLS > 0
 layout(std140, binding = 0) uniform TileVpls { Vpl vpls[UNROLLED_VPLS]; };
@@ -45,46 +50,22 @@ uniform float shadowBias;       // relative
 uniform float texelAngle;       // of the VPL cube maps, at a face's centre (radians)
 layout(binding = 0) uniform sampler2D g0Tex;
 layout(binding = 1) uniform usampler2D g1Tex;
-// VPL i's cube map: cube i mod cubesPerChunk of array i / cubesPerChunk (a cube map array holds
-// at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6 cubes). Samplers cannot be indexed by a non-uniform
-// value, hence the branches, only as many as there are arrays.
+// VPL i's cube map (cube_shadows.glsl).
 uniform int cubesPerChunk;
-layout(binding = 4) uniform samplerCubeArray vplShadows0;
-layout(binding = 6) uniform samplerCubeArray vplShadows1;
-layout(binding = 7) uniform samplerCubeArray vplShadows2;
-layout(binding = 8) uniform samplerCubeArray vplShadows3;
-
-float vplShadowDistance(vec3 dir, int index) {
-#if VPL_SHADOW_CHUNKS <= 1
-    return texture(vplShadows0, vec4(dir, float(index))).r;
-#else
-    const int chunk = index / cubesPerChunk;
-    const vec4 c = vec4(dir, float(index - chunk * cubesPerChunk));
-    if (chunk == 0) return texture(vplShadows0, c).r;
-#if VPL_SHADOW_CHUNKS > 2
-    if (chunk == 2) return texture(vplShadows2, c).r;
-#endif
-#if VPL_SHADOW_CHUNKS > 3
-    if (chunk == 3) return texture(vplShadows3, c).r;
-#endif
-    return texture(vplShadows1, c).r;
-#endif
-}
+layout(binding = 4) uniform samplerCubeArray vplShadows[4];
+uniform float vplShadowSlack;   // scene units: the VPLs' maps may hold a proxy (shadow_proxy.h)
 layout(location = 0) out vec4 result;
 
-// Area lights "as VPLs of their own" (direct.frag's lights[]): with interleaving, sample i of
-// lights[firstArea .. firstArea + areaCount) lights sub-buffer i mod (n m) only, times n m, so
-// the box blur averages them back like the VPLs. Always shadowed (their cube maps), never clamped.
-struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
+// Lights "as VPLs of their own" (lights.glsl): with interleaving, light i of
+// lights[firstInterleaved .. firstInterleaved + interleavedCount) lights sub-buffer i mod (n m)
+// only, times n m, so that the box blur averages them back like the VPLs: the area lights'
+// samples always, and the delta lights when there are many (frame_passes.cpp, uploadLights).
+// Always shadowed (their cube maps), never clamped.
+uniform int firstInterleaved;
+uniform int interleavedCount;
 #if UNROLLED_AREA > 0
 layout(std140, binding = 1) uniform TileAreas { Light tileAreas[UNROLLED_AREA]; };  // this sub-buffer's
-#else
-layout(std430, binding = 2) readonly buffer Lights { Light lights[]; };
 #endif
-uniform int firstArea;
-uniform int areaCount;
-uniform float areaShadowBias;    // relative
-layout(binding = 5) uniform samplerCubeArray areaShadows;
 
 // An area sample's light at y: at `position`, facing normalShadow.xyz, its shadow cube
 // normalShadow.w, intensity as direct.frag's. Without GLOSSY the receiver's BSDF (albedo / pi) is
@@ -95,7 +76,9 @@ vec3 areaSampleLight(vec3 position, vec4 normalShadow, vec3 intensity, Surface s
     const vec3 wi = d * inversesqrt(d2);
     const float cosY = dot(sy.normal, wi), cosE = -dot(wi, normalShadow.xyz);
     float g = cosY > 0.0 && cosE > 0.0 ? cosY * cosE / d2 : 0.0;
-    if (g > 0.0 && sqrt(d2) * (1.0 - areaShadowBias) > texture(areaShadows, vec4(-wi, normalShadow.w)).r) g = 0.0;
+    if (g > 0.0 && sqrt(d2) * (1.0 - lightShadowBias) - areaShadowSlack >
+                       cubeShadowDistance(lightShadows, lightCubesPerArray, -wi, int(normalShadow.w)))
+        g = 0.0;
 #if GLOSSY
     return evalBsdf(sy.normal, wo, wi, sy.albedo, sy.specular, sy.alpha) * intensity * g;
 #else
@@ -123,7 +106,8 @@ vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
         // surface seen at a grazing angle; looking up from a point lifted off the surface by
         // a texel's footprint (distance times the texel angle, over cos) removes that acne.
         const vec3 e = y + n * (sqrt(d2) * texelAngle * min(2.0 / cosY, 8.0)) - pos.xyz;
-        if (length(e) * (1.0 - shadowBias) > vplShadowDistance(e, int(pos.w))) g = 0.0;
+        if (length(e) * (1.0 - shadowBias) - vplShadowSlack > cubeShadowDistance(vplShadows, cubesPerChunk, e, int(pos.w)))
+            g = 0.0;
     }
 #endif
     vec3 c = vpls[i].power.rgb * g;
@@ -174,18 +158,18 @@ void main() {
 #endif
     if (!glossyY) sum *= sy.albedo * (1.0 / PI);
     vec3 area = vec3(0.0);
-#if AREA_SAMPLES
+#if INTERLEAVED_LIGHTS
     const int subsets = pattern.x * pattern.y;
 #if UNROLLED_AREA > 0
     for (int j = 0; j < UNROLLED_AREA; ++j)
         area += areaSampleLight(tileAreas[j].positionKind.xyz, tileAreas[j].normalShadow, tileAreas[j].intensityCosFalloff.rgb, sy, wo);
-#else
-    // Field by field: three of the light's four vec4s, each gathered lane by lane on llvmpipe.
-    for (int i = firstArea + tile.y * pattern.x + tile.x; i < firstArea + areaCount; i += subsets)
-        area += areaSampleLight(lights[i].positionKind.xyz, lights[i].normalShadow, lights[i].intensityCosFalloff.rgb, sy, wo);
-#endif
 #if !GLOSSY
     area *= sy.albedo * (1.0 / PI);
+#endif
+#else
+    // Any kind of light (lights.glsl), its BSDF included.
+    for (int i = firstInterleaved + tile.y * pattern.x + tile.x; i < firstInterleaved + interleavedCount; i += subsets)
+        area += lightContribution(i, sy, wo);
 #endif
     area *= float(subsets);
 #endif

@@ -1,0 +1,41 @@
+// Writes the preview's scene families (tests/scene_families.h, tests/closed_form_scenes.h) at the
+// sizes the preview issue names, for bench_preview and the command line:
+//   bench_make_scenes DIR
+// office-135 (15 x 9 ceiling lights), office-100 (10 x 10), lights-1000 (40 x 25 in a 60 x 36 m
+// hall), closed-sphere-0.8 (a cap of ~6,000 emitter triangles), closed-room-{0.5,0.7,0.9} and
+// emitters-10k (a ceiling panel of 10,082 emitter triangles in the 0.7 room).
+
+#include "closed_form_scenes.h"
+#include "scene_families.h"
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+using namespace lucerna::test;
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: bench_make_scenes DIR\n");
+        return 2;
+    }
+    const std::string dir = argv[1];
+    const auto write = [&](const std::string& name, const std::string& json) {
+        std::ofstream(dir + "/" + name + ".json") << json;
+        std::printf("%s/%s.json\n", dir.c_str(), name.c_str());
+    };
+    write("office-135", officeJson(15, 9, 640, 480));
+    write("office-100", officeJson(10, 10, 640, 480));
+    write("lights-1000", officeJson(40, 25, 640, 480, 40.0, 60.0, 36.0));
+    SphereWithEmittingCap sphere;
+    sphere.rho = 0.8;
+    sphere.rings = 96;
+    sphere.segments = 192;
+    sphere.resolution = 96;
+    write("closed-sphere-0.8", sphere.json());
+    std::printf("closed-sphere-0.8 exact radiance %.6f\n", sphere.expectedRadiance());
+    for (const char* a : {"0.5", "0.7", "0.9"})
+        write(std::string("closed-room-") + a, closedRoomJson(std::stod(a), 4, 640, 480));
+    write("emitters-10k", closedRoomJson(0.7, 71, 640, 480));
+    return 0;
+}

@@ -1,0 +1,94 @@
+#pragma once
+// The preview's shadow maps: cube shadow maps of many centres (point, spot and luminaire lights,
+// area-light samples, VPLs) spread over several cube map arrays, orthographic maps of
+// directional lights, and the geometry drawn into them. Private to render/preview.
+
+#include "core/math.h"
+#include "render/preview/gl_objects.h"
+
+#include <array>
+#include <vector>
+
+namespace lucerna::preview_detail {
+
+// A 4x4 matrix for column vectors, stored column-major as GLSL expects.
+struct Mat4 {
+    std::array<float, 16> m{};
+    float& at(int row, int col) { return m[size_t(col * 4 + row)]; }
+    void setRow(int row, const V3f& v, float w) {
+        at(row, 0) = v.x;
+        at(row, 1) = v.y;
+        at(row, 2) = v.z;
+        at(row, 3) = w;
+    }
+};
+
+// The six cube faces' view-projections for a light at the origin, in GL's cube map order and
+// orientation, so that texture(samplerCubeArray, vec4(dir, i)) finds what was drawn along dir.
+std::array<Mat4, 6> cubeFaceMatrices(float nearZ, float farZ);
+
+// An orthographic view-projection along a directional light's travel direction over the scene's
+// bounding sphere: clip x, y, z = the point's offsets along (side, up, direction) / radius.
+Mat4 directionalShadowMatrix(const V3f& direction, const V3f& centre, float radius);
+
+// What a shadow map draw rasterizes: a vertex array of non-indexed triangles, and how far (scene
+// units) its surfaces may lie from the true ones (0 for the scene itself; a clustered proxy's
+// cell size, render/preview/shadow_proxy.h), which the lookups add to their bias.
+struct ShadowCaster {
+    GLuint vao = 0;
+    GLsizei vertexCount = 0;
+    float slack = 0;
+};
+
+// Cube shadow maps (distance in R32F, depth for the z-test) of up to capacity() centres, cube i
+// in array i / cubesPerArray(): one cube map array holds at most GL_MAX_ARRAY_TEXTURE_LAYERS / 6
+// cubes (341 on llvmpipe). The shaders index `kMaxArrays` samplers (cube_shadows.glsl).
+class CubeShadowSet {
+public:
+    static constexpr int kMaxArrays = 4;
+    static int cubesPerArray();
+    static int capacity() { return cubesPerArray() * kMaxArrays; }
+
+    // Room for `cubes` cubes (at most capacity()) of faceSize^2 texels a face. Keeps what is
+    // drawn when the size is unchanged and the arrays hold enough already.
+    void reserve(int cubes, int faceSize);
+    // Draws the six faces of cube firstIndex + i from centres[i] for each centre whose cube was
+    // not drawn from that point with that caster already (so that when one light of many moves,
+    // one cube is drawn), in one instanced draw per array (the geometry shader picks layers).
+    // Returns the cubes drawn.
+    int draw(const gl::Program& program, const ShadowCaster& caster, const std::vector<V3f>& centres, int firstIndex,
+             float sceneRadius, gl::Buffer& scratch);
+    // New geometry: every cube must be drawn again.
+    void forget() { drawn_.clear(); }
+    // The arrays on texture units firstUnit .. firstUnit + kMaxArrays - 1 (an unused unit repeats
+    // the first array, so that every sampler has a complete texture).
+    void bind(GLuint firstUnit) const;
+    int faceSize() const { return size_; }
+    int arraysInUse() const { return (cubes_ + perArray_ - 1) / std::max(perArray_, 1); }
+    int perArray() const { return perArray_; }
+
+private:
+    struct Array {
+        gl::Texture distance, depth;
+        gl::Framebuffer fbo;
+    };
+    std::array<Array, kMaxArrays> arrays_;
+    int size_ = 0, cubes_ = 0, allocated_ = 0, perArray_ = 1;
+    // By cube index, where and with which caster it was last drawn ({x, y, z, vao}).
+    std::vector<std::array<float, 4>> drawn_;
+};
+
+// Orthographic depth maps of the directional lights, one layer each, compared in the lookup.
+struct DirectionalShadows {
+    static constexpr int kMaxLights = 4;  // lights.glsl's MAX_DIRECTIONAL_SHADOWS
+    gl::Texture depth;
+    gl::Framebuffer fbo;
+    int size = 0, layers = 0;
+    std::vector<Mat4> matrices;
+
+    void ensure(int mapSize, int layerCount);
+    // One depth-only draw of the caster per light.
+    void draw(const gl::Program& program, const ShadowCaster& caster, int mapSize);
+};
+
+}  // namespace lucerna::preview_detail
