@@ -10,7 +10,8 @@
 //
 // usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
 //        bench_preview --scenes SCENE.json... [--frames N] [--shaded-lights N] [--proxy N]
-// --scenes: issue 20's table (realSceneRow), one row a scene.
+//        bench_preview --back-wall
+// --scenes: issue 20's table (realSceneRow), one row a scene; --back-wall: backWallBlotches.
 // --target: only the issue's llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
 //           with each split mode (fused, one pass, two passes) in turns.
 
@@ -139,6 +140,44 @@ void realSceneRow(const std::string& path, const PreviewSettings& settings, int 
     std::fflush(stdout);
 }
 
+// The interleaving pattern on a flat wall (issue 20): on the Cornell box's back wall (the part
+// right of the tall block, above the short one), the relmse of single frames against the mean of
+// 64 frames, interleaved 4 x 4 (with the blur) and not interleaved (1 x 1, every VPL at every
+// pixel), each the mean over 8 seeds; 640 x 640.
+void backWallBlotches() {
+    const SceneSnapshot scene =
+        std::make_shared<const Scene>(loadScene(std::string(LUCERNA_RESOURCE_DIR) + "/scenes/cornell-box.json"));
+    const auto wallRelmse = [](const Image& t, const Image& r) {
+        double sum = 0;
+        long n = 0;
+        for (int y = int(0.24 * t.height); y < int(0.60 * t.height); ++y)
+            for (int x = int(0.54 * t.width); x < int(0.76 * t.width); ++x)
+                for (int c = 0; c < 3; ++c) {
+                    const double d = t.at(x, y)[c] - r.at(x, y)[c], v = r.at(x, y)[c];
+                    sum += d * d / (v * v + 0.01);
+                    ++n;
+                }
+        return sum / double(n);
+    };
+    std::printf("| pattern | single frame relmse on the back wall (mean of 8) | ms a frame |\n|---|---|---|\n");
+    for (int n : {4, 1}) {
+        Preview preview;
+        PreviewSettings s;
+        s.patternX = s.patternY = n;
+        preview.setSettings(s);
+        preview.setScene(scene, 640, 640);
+        const Image converged = average(preview, 64);
+        double sum = 0, ms = 1e30;
+        for (int seed = 0; seed < 8; ++seed) {
+            preview.regenerate(uint64_t(9000 + seed));
+            sum += wallRelmse(preview.render(), converged);
+            ms = std::min(ms, preview.timings().total - preview.timings().shadows);
+        }
+        std::printf("| %dx%d | %.5f | %.1f |\n", n, n, sum / 8, ms);
+        std::fflush(stdout);
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -152,7 +191,10 @@ int main(int argc, char** argv) {
             while (i + 1 < argc && argv[i + 1][0] != '-') realScenes.push_back(argv[++i]);
         } else if (!std::strcmp(argv[i], "--shaded-lights") && i + 1 < argc) realSettings.lightsShadedInFull = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--proxy") && i + 1 < argc) realSettings.shadowProxyTriangles = std::atoi(argv[++i]);
-        else if (!std::strcmp(argv[i], "--quick")) quick = true;
+        else if (!std::strcmp(argv[i], "--back-wall")) {
+            backWallBlotches();
+            return 0;
+        } else if (!std::strcmp(argv[i], "--quick")) quick = true;
         else if (!std::strcmp(argv[i], "--accuracy-only")) accuracyOnly = true;
         else if (!std::strcmp(argv[i], "--target")) targetOnly = true;
         else if (!std::strcmp(argv[i], "--frames") && i + 1 < argc) frames = std::atoi(argv[++i]);

@@ -3,7 +3,8 @@
 //   bench_make_scenes DIR
 // office-135 (15 x 9 ceiling lights), office-100 (10 x 10), lights-1000 (40 x 25 in a 60 x 36 m
 // hall), closed-sphere-0.8 (a cap of ~6,000 emitter triangles), closed-room-{0.5,0.7,0.9} and
-// emitters-10k (a ceiling panel of 10,082 emitter triangles in the 0.7 room).
+// emitters-10k (a ceiling panel of 10,082 emitter triangles in the 0.7 room), closed-sphere-1m
+// (the sphere at 1,000,000 triangles: a large model).
 
 #include "closed_form_scenes.h"
 #include "scene_families.h"
@@ -34,6 +35,12 @@ int main(int argc, char** argv) {
     sphere.resolution = 96;
     write("closed-sphere-0.8", sphere.json());
     std::printf("closed-sphere-0.8 exact radiance %.6f\n", sphere.expectedRadiance());
+    SphereWithEmittingCap million;  // ~1,000,000 triangles, a sixth of them emitting
+    million.rho = 0.8;
+    million.rings = 500;
+    million.segments = 1000;
+    million.resolution = 96;
+    write("closed-sphere-1m", million.json());
     for (const char* a : {"0.5", "0.7", "0.9"})
         write(std::string("closed-room-") + a, closedRoomJson(std::stod(a), 4, 640, 480));
     write("emitters-10k", closedRoomJson(0.7, 71, 640, 480));
