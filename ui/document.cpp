@@ -25,6 +25,7 @@ void Document::reset(Scene scene) {
     undo_.clear();
     scene_ = std::make_shared<const Scene>(std::move(scene));
     undo_.setClean();
+    emit replaced();
     emit changed(++version_);
     emit structureChanged();
     emit cameraChanged();

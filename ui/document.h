@@ -58,6 +58,9 @@ public:
 
 signals:
     void changed(uint64_t version);
+    // The whole scene was replaced by reset() (a file opened, a recovery): emitted before
+    // changed(), so that views drop what they show of the old scene before the new one arrives.
+    void replaced();
     // Finer signals so that views redo only what changed (the preview re-lights one light).
     void lightChanged(int index);
     void cameraChanged();

@@ -8,6 +8,7 @@
 #include <QSaveFile>
 
 #include <stdexcept>
+#include <string>
 
 namespace lucerna {
 
@@ -21,10 +22,11 @@ Image previewExportImage(const LiveFrame& frame, const QString& engineDescriptio
     Image image = frame.image;
     const bool gl = engineDescription.startsWith("OpenGL");
     // The fallback path tracer draws two passes with seed 7 (ui/live_preview.cpp); the OpenGL
-    // preview draws one frame with its default settings (seed 1, render/preview/preview.h).
+    // preview's frame is the mean of `frames` frames, each one sample per pixel, the first with
+    // its default settings (seed 1, render/preview/preview.h) and idle ones with fresh VPLs.
     image.attributes["lucerna:backend"] = gl ? "preview" : "path";
-    image.attributes["lucerna:spp"] = gl ? "1" : "2";
-    image.attributes["lucerna:seconds"] = formatNumber(frame.milliseconds / 1000.0);
+    image.attributes["lucerna:spp"] = std::to_string(gl ? frame.frames : 2);
+    image.attributes["lucerna:seconds"] = formatNumber(frame.totalMilliseconds / 1000.0);
     image.attributes["lucerna:seed"] = gl ? "1" : "7";
     image.attributes["lucerna:preview_engine"] = engineDescription.toStdString();
     addSurfaceLayers(image, frame.scene);

@@ -22,6 +22,7 @@ public:
     QRectF imageRect() const;
     // Text shown while there is no picture yet.
     void setPlaceholder(const QString& text);
+    const QString& placeholder() const { return placeholder_; }
     // A false-colour legend drawn over the picture (when it is false colour).
     void setLegend(std::optional<Legend> legend);
 

@@ -43,7 +43,7 @@ namespace lucerna {
 MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     : QMainWindow(parent), doc_(std::make_unique<Document>(Scene{})),
       render_(std::make_unique<ConvergingRender>(tasks_, gate_)),
-      preview_(std::make_unique<LivePreview>(gate_)) {
+      preview_(std::make_unique<LivePreview>(gate_, LivePreview::engineFromEnvironment())) {
     setObjectName("MainWindow");
     viewport_ = new Viewport(doc_.get(), gate_, this);
     viewport_->setObjectName("viewport");
@@ -54,7 +54,8 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     statusBar()->addPermanentWidget(previewInfo_);
 
     // Every edit reaches both images: the preview draws the newest snapshot, the converging
-    // render restarts on it.
+    // render restarts on it. A new scene never shows the old one's frame meanwhile.
+    connect(doc_.get(), &Document::replaced, preview_.get(), &LivePreview::dropFrame);
     connect(doc_.get(), &Document::changed, this, [this] {
         preview_->setScene(doc_->snapshot());
         render_->setScene(doc_->snapshot());
@@ -454,10 +455,15 @@ void MainWindow::deleteSelection() {
 
 void MainWindow::showPreviewFrame() {
     const auto frame = preview_->frame();
-    if (!frame) return;
+    if (!frame) {
+        viewport_->showNoFrame(preview_->error());
+        compare_->setPreview({});
+        previewInfo_->setText(preview_->error().isEmpty() ? QString() : tr("Preview: failed"));
+        return;
+    }
     viewport_->setImage(toDisplayImage(frame->image, compare_->displaySettings()));
     compare_->setPreview(frame->image);
-    previewInfo_->setText(tr("Preview: %1, %2 ms").arg(preview_->engineDescription()).arg(frame->milliseconds, 0, 'f', 0));
+    previewInfo_->setText(previewStatusText(preview_->engineDescription(), *frame));
 }
 
 void MainWindow::updateTitle() {

@@ -38,7 +38,7 @@ int nextMergeKey() {
 
 Viewport::Viewport(Document* doc, const YieldGate& gate, QWidget* parent)
     : ImageView(parent), doc_(doc), gate_(gate) {
-    setPlaceholder(tr("Preparing the live preview..."));
+    showNoFrame();
     // Tracking shows which gizmo handle a drag would take, and where a tool would act.
     setMouseTracking(true);
     setFocusPolicy(Qt::ClickFocus);
@@ -69,6 +69,11 @@ Viewport::~Viewport() = default;
 QList<QAction*> Viewport::toolActions() const { return {placePoint_, placeSpot_, aim_, drawGrid_}; }
 
 ViewMapping Viewport::mapping() const { return ViewMapping(doc_->scene().camera, imageRect()); }
+
+void Viewport::showNoFrame(const QString& error) {
+    setPlaceholder(error.isEmpty() ? tr("Preparing the live preview...") : tr("Live preview failed: %1").arg(error));
+    setImage({});
+}
 
 void Viewport::setSelectedLight(int index) {
     selected_ = index;

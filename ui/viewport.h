@@ -59,6 +59,9 @@ public:
     std::optional<SurfaceHit> surfaceAt(const QPointF& widget) const;
     // Where the camera's image is in the widget.
     ViewMapping mapping() const;
+    // No preview frame to show: the picture goes, and the placeholder says why (the preview's
+    // error in one line) or, without an error, that a frame is on its way.
+    void showNoFrame(const QString& error = {});
 
 signals:
     void lightClicked(int index);
