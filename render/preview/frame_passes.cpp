@@ -305,7 +305,30 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     Rng rng(st.seed, 0xd1ea7ULL);
     std::vector<GpuLight> lights = directional;
     st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
-    if (!st.interleavedDeltas) lights.insert(lights.end(), deltas.begin(), deltas.end());
+    if (!st.interleavedDeltas) {
+        lights.insert(lights.end(), deltas.begin(), deltas.end());
+    } else {
+        // The lights that matter most to the picture stay shaded in full: those nearest the
+        // camera for their power, whose pools of light (and the hot spots where a lamp hangs
+        // close to the ceiling) cover the most pixels; the blur would smear their shape.
+        const V3f eye = toFloat(st.camera.position);
+        const float nearest = 0.05f * st.scene->boundsRadius();
+        std::vector<double> score(deltas.size());
+        for (size_t i = 0; i < deltas.size(); ++i) {
+            const V3f p(deltas[i].positionKind[0], deltas[i].positionKind[1], deltas[i].positionKind[2]);
+            score[i] = deltaPower[i] / std::max(double((p - eye).length2()), double(nearest) * nearest);
+        }
+        std::vector<size_t> order(deltas.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        const size_t full = size_t(std::max(settings.lightsShadedInFull, 0));
+        std::partial_sort(order.begin(), order.begin() + long(full), order.end(),
+                          [&](size_t a, size_t b) { return score[a] > score[b]; });
+        std::vector<GpuLight> rest;
+        std::vector<bool> inFull(deltas.size(), false);
+        for (size_t r = 0; r < full; ++r) inFull[order[r]] = true;
+        for (size_t i = 0; i < deltas.size(); ++i) (inFull[i] ? lights : rest).push_back(deltas[i]);
+        deltas = std::move(rest);
+    }
     if (!interleave) lights.insert(lights.end(), area.begin(), area.end());
     st.shadedHere = int(lights.size());
     st.firstInterleaved = int(lights.size());

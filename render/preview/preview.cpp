@@ -174,6 +174,9 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
 
 void Preview::setCamera(const Camera& camera) {
     state_->camera = camera;  // the resolution stays what setScene chose
+    // Which lights are shaded in full depends on the camera (uploadLights); their shadow maps
+    // stay (drawn from where the lights are), so this costs only the light buffer's upload.
+    if (state_->interleavedDeltas) state_->lightsDirty = true;
 }
 
 namespace {

@@ -63,13 +63,14 @@ struct PreviewSettings {
     // box blur over continuous regions averages them back.
     int areaLightSamples = 16;
     int shadowSize = 256;          // direct lights' cube shadow maps, per face (smaller for many lights)
-    // Point, spot and luminaire lights shaded at every pixel; with more, all of them are dealt to
-    // the interleaved sub-buffers like the area samples, so that a pixel evaluates n m times
-    // fewer and the blur restores the rest (BENCHMARKS.md, issue 20).
+    // Point, spot and luminaire lights shaded at every pixel; with more, these are the ones
+    // nearest the camera for their power, and the rest are dealt to the interleaved sub-buffers
+    // like the area samples, so that a pixel evaluates n m times fewer of them and the blur
+    // restores the rest (BENCHMARKS.md, issue 20).
     int lightsShadedInFull = 8;
     // The VPLs' and area samples' shadow maps, drawn again for every fresh set, draw a clustered
     // proxy of the scene of at most this many triangles (shadow_proxy.h); 0: the scene itself.
-    int shadowProxyTriangles = 8192;
+    int shadowProxyTriangles = 2048;
     // Surface interactions a VPL particle may have. Russian roulette ends particles long before
     // (as in the ir backend); a low cap would cut the long paths that closed bright rooms live
     // on (at albedo 0.8, 8 bounces lose 13% of the light).

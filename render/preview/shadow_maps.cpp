@@ -78,6 +78,7 @@ int CubeShadowSet::draw(const gl::Program& program, const ShadowCaster& caster, 
     const auto faces = cubeFaceMatrices(sceneRadius * 1e-3f, sceneRadius * 4.0f);
     glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "faceProj"), 6, GL_FALSE,
                               faces[0].m.data());
+    glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "nearSkip"), caster.slack);
     glUseProgram(program.id());
     glBindVertexArray(caster.vao);
     glEnable(GL_DEPTH_TEST);

@@ -33,7 +33,8 @@ Mat4 directionalShadowMatrix(const V3f& direction, const V3f& centre, float radi
 
 // What a shadow map draw rasterizes: a vertex array of non-indexed triangles, and how far (scene
 // units) its surfaces may lie from the true ones (0 for the scene itself; a clustered proxy's
-// cell size, render/preview/shadow_proxy.h), which the lookups add to their bias.
+// cell size, render/preview/shadow_proxy.h): the lookups add it to their bias, and the maps
+// leave out surfaces nearer their centre than that (shadow.frag).
 struct ShadowCaster {
     GLuint vao = 0;
     GLsizei vertexCount = 0;
