@@ -398,9 +398,7 @@ void TestPreview::manyLightsEmittersAndVpls() {
     const Image frame = preview.render();
     // 64 frames: with 1,000 lights, most of them dealt to 16 sub-buffers and a random quarter
     // of those shaded a frame, a lamp's hot spot on the ceiling (a few pixels, times 64 when
-    // drawn) makes the frame mean heavy-tailed (4-frame means +4 to +15%). In a 60 x 36 m hall of
-    // 1,000 lights the preview stays 6 to 9% above the path tracer at 96 x 64, cause not found
-    // (the issue note); this 30 x 18 m office is the case checked here.
+    // drawn) makes the frame mean heavy-tailed (4-frame means +4 to +15%).
     const double mean = channelMean(averagedFrames(preview, 64));
     qInfo("preview %.5f, path %.5f (%+.2f%%); %s", mean, converged, 100.0 * (mean / converged - 1.0),
           preview.degradation().c_str());

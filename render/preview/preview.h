@@ -70,7 +70,9 @@ struct PreviewSettings {
     int lightsShadedInFull = 8;
     // The VPLs' and area samples' shadow maps, drawn again for every fresh set, draw a clustered
     // proxy of the scene of at most this many triangles (shadow_proxy.h); 0: the scene itself.
-    int shadowProxyTriangles = 2048;
+    // 2048 made the closed sphere's sets 4 times cheaper but lost the desks and partitions of a
+    // 7,500-triangle hall (+6% of light leaked through them; BENCHMARKS.md, issue 20).
+    int shadowProxyTriangles = 8192;
     // Surface interactions a VPL particle may have. Russian roulette ends particles long before
     // (as in the ir backend); a low cap would cut the long paths that closed bright rooms live
     // on (at albedo 0.8, 8 bounces lose 13% of the light).
