@@ -106,7 +106,9 @@ void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& light
 void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     const int subsets = st.patternX * st.patternY;
     std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(static_cast<size_t>(subsets));
-    Rng rng(st.seed, 0xde41ULL);
+    // Which VPLs are kept follows the VPLs' seed; how they are dealt follows the deal's, so that
+    // a new deal (Preview::redeal) keeps every VPL and with it its shadow cube.
+    Rng keepRng(st.seed, 0xde41ULL), dealRng(st.dealSeed, 0xdea1ULL);
     size_t total = 0;
     for (const LightVpls& set : st.sets) total += set.vpls.size();
     const size_t capacity = size_t(CubeShadowSet::capacity());
@@ -116,12 +118,23 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
                             : 1.0;
     int offset = 0;
     size_t kept = 0;
+    std::vector<V3f> centres;  // by cube: the kept VPLs in set order
+    std::map<const Vpl*, int> cubeOf;
+    const float lift = st.scene->boundsRadius() * 1e-4f;
     for (const LightVpls& set : st.sets) {
         std::vector<const Vpl*> order;
         for (const Vpl& v : set.vpls) order.push_back(&v);
-        for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[rng.nextUint() % i]);
         const size_t setSize = order.size();
-        if (keep < 1.0 && setSize > 0) order.resize(std::max<size_t>(1, size_t(double(setSize) * keep)));
+        if (keep < 1.0 && setSize > 0) {
+            for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[keepRng.nextUint() % i]);
+            order.resize(std::max<size_t>(1, size_t(double(setSize) * keep)));
+            std::sort(order.begin(), order.end());  // set order again: the cubes' order
+        }
+        for (const Vpl* v : order) {
+            cubeOf[v] = int(centres.size());
+            centres.push_back(v->position + v->normal * lift);
+        }
+        for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[dealRng.nextUint() % i]);
         std::vector<int> counts(size_t(subsets), 0);
         for (size_t j = 0; j < order.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
         for (size_t j = 0; j < order.size(); ++j) {
@@ -135,15 +148,13 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
                                     " VPLs (this GPU's limit; a random subset, scaled up)"
                               : "";
     std::vector<GpuVpl> gpu;
-    std::vector<V3f> centres;
-    const float lift = st.scene->boundsRadius() * 1e-4f;
     st.tiles.clear();
     for (const auto& bucket : buckets) {
         st.tiles.push_back({int(gpu.size()), int(bucket.size()), 0});
         for (const auto& [v, scale] : bucket) {
             const ShadingMaterial& m = st.scene->material(v->material);
             GpuVpl g{};
-            put(g.positionIndex, v->position, float(gpu.size()));
+            put(g.positionIndex, v->position, float(cubeOf.at(v)));  // w: its shadow cube
             put(g.normalAlpha, v->normal, m.alpha);
             // A diffuse VPL's BSDF is albedo / pi whatever the direction: premultiplied here.
             const bool glossy = m.type == MaterialType::Glossy && !isBlack(m.specular);
@@ -151,8 +162,6 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
             put(g.power, glossy ? v->power * scale : v->power * m.albedo * (scale / kPi), 0);
             put(g.albedo, m.albedo, 0);
             put(g.specular, m.type == MaterialType::Glossy ? m.specular : Rgb(0, 0, 0), 0);
-            // The shadow map's centre sits just off the surface so the surface does not shadow it.
-            centres.push_back(v->position + v->normal * lift);
             gpu.push_back(g);
         }
     }
@@ -307,7 +316,9 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
 
     // The ranges: shaded in full, then dealt to the sub-buffers (many delta lights, padded with
     // dark ones to a multiple of n m so that every sub-buffer gets as many; the area samples).
-    Rng rng(st.seed, 0xd1ea7ULL);
+    Rng rng(st.dealSeed, 0xd1ea7ULL);
+    // The area samples' deal follows the deal's seed; each keeps its cube (assigned above).
+    for (size_t i = area.size(); i > 1; --i) std::swap(area[i - 1], area[rng.nextUint() % i]);
     std::vector<GpuLight> lights = directional;
     st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
     if (!st.interleavedDeltas) {

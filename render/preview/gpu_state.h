@@ -88,7 +88,8 @@ struct Preview::State {
     int generations = 0;
     std::vector<preview_detail::GpuLight> directLights;
     bool vplsDirty = true, lightsDirty = true;
-    uint64_t seed = 1;
+    uint64_t seed = 1;      // the VPLs' and area samples' (regenerate)
+    uint64_t dealSeed = 1;  // how VPLs and lights are dealt to the sub-buffers (redeal)
 
     // Frame targets.
     int targetW = 0, targetH = 0, patternX = 0, patternY = 0, block = 0;

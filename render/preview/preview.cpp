@@ -71,7 +71,7 @@ void Preview::setSettings(const PreviewSettings& s) {
         setScene(current_, st.width, st.height);
         return;
     }
-    st.seed = s.seed;
+    st.seed = st.dealSeed = s.seed;
     if (regenerateVpls && st.scene && !st.customVpls) regenerate(s.seed);
     if (relight) st.lightsDirty = true;
     if (repartition) st.vplsDirty = true;
@@ -211,9 +211,15 @@ LightSampler allLightsSampler(const Preview::State& st) {
 
 }  // namespace
 
+void Preview::redeal(uint64_t seed) {
+    State& st = *state_;
+    st.dealSeed = seed;
+    st.vplsDirty = st.lightsDirty = true;
+}
+
 void Preview::regenerate(uint64_t seed) {
     State& st = *state_;
-    st.seed = seed;
+    st.seed = st.dealSeed = seed;
     if (!st.scene) return;
     if (st.customVpls) {
         st.lightsDirty = true;

@@ -120,6 +120,10 @@ public:
     void setLight(size_t index, const Light& light);
     // New VPL sets and area-light samples for every light from this seed (progressive passes).
     void regenerate(uint64_t seed);
+    // The same VPLs and area samples dealt anew to the sub-buffers (and a new random subset of
+    // the far lights): a frame with a fresh interleaving pattern that draws no shadow map.
+    // Averaged, such frames converge to the non-interleaved image of the current VPL set.
+    void redeal(uint64_t seed);
     // Replaces the generated VPLs with exactly these (tests, and MIR's VPLs): one set, split
     // among the sub-buffers as the generated ones are.
     void setVpls(VplSet vpls);
