@@ -205,12 +205,15 @@ private:
 
     // One more idle frame, at the next point in the pixel: fresh VPLs and area-light samples, or
     // the same ones dealt anew to the sub-buffers (no shadow map drawn). A fresh set removes the
-    // VPLs' own error, a new deal only the interleaving pattern; where fresh sets cost many deals
-    // (their shadow maps: 1 s a set for a hall of 7,500 triangles on llvmpipe against 0.14 s a
-    // deal) most frames are deals, one fresh set every `cost ratio` frames, at most 8.
+    // VPLs' own error, a new deal only the interleaving pattern: every frame is fresh while a
+    // fresh frame costs under kFreshFrameMs; where it costs more (the shadow maps: 1 s a set for
+    // a hall of 7,500 triangles on llvmpipe against 0.14 s a deal) most frames are deals, one
+    // fresh set every `cost ratio` frames, at most 8.
     void accumulate(TaskContext& ctx) {
+        constexpr double kFreshFrameMs = 150;
         const auto t0 = Clock::now();
-        const bool fresh = framesSinceFresh_ + 1 >= std::clamp(int(std::lround(freshMs_ / std::max(dealMs_, 1.0))), 1, 8);
+        const bool fresh = freshMs_ < kFreshFrameMs ||
+                           framesSinceFresh_ + 1 >= std::clamp(int(std::lround(freshMs_ / std::max(dealMs_, 1.0))), 1, 8);
         Image image;
         try {
             const uint64_t seed = hashSeed(0x11fe9ULL, ++regenerations_);
@@ -306,7 +309,7 @@ private:
     // (the plain frame after a camera move keeps the last idle frame's).
     uint64_t regenerations_ = 0;
     // The last idle frame's cost with a fresh VPL set and with a new deal (ms; 0: not yet
-    // measured, so the first idle frame is fresh and the second a deal).
+    // measured, so the first idle frame is fresh).
     double freshMs_ = 0, dealMs_ = 0;
     int framesSinceFresh_ = 0;
 
