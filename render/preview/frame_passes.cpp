@@ -431,7 +431,7 @@ std::string lightKindDefines(int kinds) {
 
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
 const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool findEdges, bool fusedSplit) {
-    std::string defines = define("VPL_SHADOW_CHUNKS", st.vplVisibility ? 1 : 0) + define("GLOSSY", st.glossyScene ? 1 : 0) +
+    std::string defines = define("VPL_VISIBILITY", st.vplVisibility ? 1 : 0) + define("GLOSSY", st.glossyScene ? 1 : 0) +
                           define("INTERLEAVED_LIGHTS", interleavedLights ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
                           define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
                           define("UNROLLED_AREA", interleavedLights ? st.areaPerTile : 0) +

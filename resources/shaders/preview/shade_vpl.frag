@@ -11,7 +11,7 @@
 // and the scene, so that an unrolled body holds only the code the scene needs (llvmpipe runs a
 // SIMD vector of fragments through every branch any of them takes):
 //   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;
-//   VPL_SHADOW_CHUNKS  0: VPL visibility off; else 1 (the VPLs' maps, cube_shadows.glsl);
+//   VPL_VISIBILITY     1 when the VPLs have shadow maps (cube_shadows.glsl);
 //   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
 //   INTERLEAVED_LIGHTS 1 when lights are dealt to the sub-buffers and shaded here: the area
 //                      lights' samples, and the delta lights when there are many;
@@ -100,7 +100,7 @@ vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
     // One exit, no early returns: llvmpipe runs a SIMD vector of fragments through every branch
     // that any of them takes, and returns from an inlined function cost it extra masks.
     float g = cosY > 0.0 && cosX > 0.0 ? min(cosX * cosY / d2, maxG) : 0.0;
-#if VPL_SHADOW_CHUNKS > 0
+#if VPL_VISIBILITY > 0
     if (g > 0.0) {
         // Normal offset: the low-resolution map's texel spans a range of distances on a
         // surface seen at a grazing angle; looking up from a point lifted off the surface by
