@@ -390,7 +390,6 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     st.timings.shadowCubes +=
         st.lightShadows.draw(st.shadowProgram, st.proxyCaster, areaCentres, shadowedDeltas, radius, st.shadowCentres);
     st.dirShadows.draw(st.dirShadowProgram, st.sceneCaster, settings.shadowSize * 4);
-    st.lightShadowCubes = cubes;
     st.lightsDirty = false;
 }
 

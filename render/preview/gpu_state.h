@@ -111,7 +111,6 @@ struct Preview::State {
     preview_detail::CubeShadowSet lightShadows, vplShadows;
     preview_detail::DirectionalShadows dirShadows;
     gl::Texture luminaireTables;  // luminaire_textures.h: a layer per luminaire
-    int lightShadowCubes = 0;
     // directLights: [0, shadedHere) shaded in full by the direct pass; [firstInterleaved,
     // firstInterleaved + interleavedCount) dealt to the sub-buffers and shaded with the VPLs:
     // the delta lights when there are many (padded with dark lights to a multiple of n m), then
