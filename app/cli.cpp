@@ -177,9 +177,11 @@ int renderImpl(const std::vector<std::string>& args) {
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
                  result->estimatedRelmse);
     // What a backend gave up to fit the machine (the preview's shadow maps), one line each.
+    const std::string prefix = "lucerna:", suffix = ":degradation";  // lucerna:BACKEND:degradation
     for (const auto& [key, value] : result->image.attributes)
-        if (key.ends_with(":degradation") && !value.empty())
-            std::fprintf(stderr, "note: %s: %s\n", key.substr(8, key.size() - 8 - 12).c_str(), value.c_str());
+        if (key.starts_with(prefix) && key.ends_with(suffix) && !value.empty())
+            std::fprintf(stderr, "note: %s: %s\n", key.substr(prefix.size(), key.size() - prefix.size() - suffix.size()).c_str(),
+                         value.c_str());
     return 0;
 }
 

@@ -103,34 +103,43 @@ void realSceneRow(const std::string& path, const PreviewSettings& settings, int 
     preview.setScene(scene, 640, 480);
     preview.render();
     const double firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    Row move, idle;
+    // The least time of `frames` calls of step(f), in ms.
+    const auto leastMs = [&](const auto& step) {
+        double least = 1e30;
+        for (int f = 0; f < frames; ++f) {
+            const auto start = std::chrono::steady_clock::now();
+            step(f);
+            least = std::min(least, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+        return least;
+    };
+    const auto jitter = [](int f) { return std::pair((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f); };
+    Row move;
     Camera camera = scene->camera;
-    for (int f = 0; f < frames; ++f) {
+    leastMs([&](int f) {
         camera.position = camera.position + V3d(0.001, 0, 0) * ((f % 2) ? -1.0 : 1.0);
         preview.setCamera(camera);
         preview.render();
         keepLeast(move.best, preview.timings(), f == 0);
-    }
-    double idleMs = 1e30;  // regenerate (the VPLs traced on the CPU) and render
-    for (int f = 0; f < frames; ++f) {
-        const auto start = std::chrono::steady_clock::now();
+    });
+    double idleShadows = 1e30;
+    // Fresh VPLs (traced on the CPU) and the frame.
+    const double idleMs = leastMs([&](int f) {
         preview.regenerate(uint64_t(500 + f));
-        preview.render((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f);
-        idleMs = std::min(idleMs, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-        const PreviewTimings& t = preview.timings();
-        idle.shadows = f == 0 ? t.shadows : std::min(idle.shadows, t.shadows);
-    }
-    double dealMs = 1e30;  // the same VPLs dealt anew (Preview::redeal), as most idle frames are
-    for (int f = 0; f < frames; ++f) {
-        const auto start = std::chrono::steady_clock::now();
+        const auto [jx, jy] = jitter(f);
+        preview.render(jx, jy);
+        idleShadows = std::min(idleShadows, preview.timings().shadows);
+    });
+    // The same VPLs dealt anew (Preview::redeal), as most idle frames are on big scenes.
+    const double dealMs = leastMs([&](int f) {
         preview.redeal(uint64_t(700 + f));
-        preview.render((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f);
-        dealMs = std::min(dealMs, std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-    }
+        const auto [jx, jy] = jitter(f);
+        preview.render(jx, jy);
+    });
     const auto name = path.substr(path.find_last_of('/') + 1);
     const PreviewTimings& m = move.best;
     std::printf("| %s | %.0f | %.1f (G %.1f, shading %.1f, gather %.1f, direct %.1f, read %.1f) | %.1f (shadows %.1f) | %.1f |",
-                name.c_str(), firstMs, m.total, m.gbuffer, m.shading, m.gather, m.direct, m.readback, idleMs, idle.shadows,
+                name.c_str(), firstMs, m.total, m.gbuffer, m.shading, m.gather, m.direct, m.readback, idleMs, idleShadows,
                 dealMs);
     const std::string refPath = path.substr(0, path.size() - 5) + ".ref.exr";
     Image ref;

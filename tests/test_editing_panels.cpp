@@ -122,10 +122,7 @@ private:
 };
 
 void TestEditingPanels::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("LucernaTest");
-    QCoreApplication::setApplicationName("test_editing_panels");
-    QSettings().clear();
+    useTestSettings("test_editing_panels");
     QVERIFY(dir_.isValid());
 }
 

@@ -42,10 +42,7 @@ class TestGridPanel : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("LucernaTest");
-        QCoreApplication::setApplicationName("test_grid_panel");
-        QSettings().clear();
+        useTestSettings("test_grid_panel");
         QVERIFY(dir_.isValid());
     }
 

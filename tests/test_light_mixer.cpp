@@ -7,6 +7,7 @@
 #include "ui/commands/light_commands.h"
 #include "ui/converging_render.h"
 #include "ui/main_window.h"
+#include "window_test_helpers.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -35,10 +36,7 @@ class TestLightMixer : public QObject {
     Q_OBJECT
 private slots:
     void initTestCase() {
-        QStandardPaths::setTestModeEnabled(true);
-        QCoreApplication::setOrganizationName("LucernaTest");
-        QCoreApplication::setApplicationName("test_light_mixer");
-        QSettings().clear();
+        useTestSettings("test_light_mixer");
         QVERIFY(dir_.isValid());
     }
 

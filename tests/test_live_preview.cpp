@@ -102,10 +102,7 @@ private:
 };
 
 void TestLivePreview::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("LucernaTest");
-    QCoreApplication::setApplicationName("test_live_preview");
-    QSettings().clear();
+    useTestSettings("test_live_preview");
     QVERIFY(dir_.isValid());
 }
 

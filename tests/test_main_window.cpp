@@ -102,11 +102,7 @@ private:
 };
 
 void TestMainWindow::initTestCase() {
-    // QSettings and the like go to a test location, never to the user's.
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("LucernaTest");
-    QCoreApplication::setApplicationName("test_main_window");
-    QSettings().clear();  // every run starts from the first-start layout
+    useTestSettings("test_main_window");
     QVERIFY(dir_.isValid());
 }
 

@@ -277,10 +277,7 @@ Connections:  {
 
 
 void TestModelImport::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("LucernaTest");
-    QCoreApplication::setApplicationName("test_model_import");
-    QSettings().clear();
+    useTestSettings("test_model_import");
     QVERIFY(dir_.isValid());
 }
 

@@ -123,10 +123,7 @@ private:
 };
 
 void TestViewportEditing::initTestCase() {
-    QStandardPaths::setTestModeEnabled(true);
-    QCoreApplication::setOrganizationName("LucernaTest");
-    QCoreApplication::setApplicationName("test_viewport_editing");
-    QSettings().clear();
+    useTestSettings("test_viewport_editing");
     QVERIFY(dir_.isValid());
 }
 

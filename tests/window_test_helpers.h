@@ -8,10 +8,21 @@
 #include <QApplication>
 #include <QDoubleSpinBox>
 #include <QMouseEvent>
+#include <QSettings>
+#include <QStandardPaths>
 #include <QString>
 #include <QtTest>
 
 namespace lucerna::test {
+
+// QSettings, autosaves and the like go to a test location under this application name, never
+// to the user's, and every run starts from the first-start layout.
+inline void useTestSettings(const char* applicationName) {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("LucernaTest");
+    QCoreApplication::setApplicationName(applicationName);
+    QSettings().clear();
+}
 
 inline QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
 

@@ -105,7 +105,12 @@ void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& light
 // uniformly chosen share of its VPLs (the same scale keeps the estimate unbiased).
 void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     const int subsets = st.patternX * st.patternY;
-    std::vector<std::vector<std::pair<const Vpl*, float>>> buckets(static_cast<size_t>(subsets));
+    struct Dealt {
+        const Vpl* vpl;
+        float scale;
+        int cube;  // its shadow cube: its place among the kept VPLs in set order
+    };
+    std::vector<std::vector<Dealt>> buckets(static_cast<size_t>(subsets));
     // Which VPLs are kept follows the VPLs' seed; how they are dealt follows the deal's, so that
     // a new deal (Preview::redeal) keeps every VPL and with it its shadow cube.
     Rng keepRng(st.seed, 0xde41ULL), dealRng(st.dealSeed, 0xdea1ULL);
@@ -118,8 +123,7 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
                             : 1.0;
     int offset = 0;
     size_t kept = 0;
-    std::vector<V3f> centres;  // by cube: the kept VPLs in set order
-    std::map<const Vpl*, int> cubeOf;
+    std::vector<V3f> centres;  // by cube
     const float lift = st.scene->boundsRadius() * 1e-4f;
     for (const LightVpls& set : st.sets) {
         std::vector<const Vpl*> order;
@@ -130,16 +134,17 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
             order.resize(std::max<size_t>(1, size_t(double(setSize) * keep)));
             std::sort(order.begin(), order.end());  // set order again: the cubes' order
         }
+        std::vector<std::pair<const Vpl*, int>> cubes;  // in set order, then dealt
         for (const Vpl* v : order) {
-            cubeOf[v] = int(centres.size());
+            cubes.push_back({v, int(centres.size())});
             centres.push_back(v->position + v->normal * lift);
         }
-        for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[dealRng.nextUint() % i]);
+        for (size_t i = cubes.size(); i > 1; --i) std::swap(cubes[i - 1], cubes[dealRng.nextUint() % i]);
         std::vector<int> counts(size_t(subsets), 0);
-        for (size_t j = 0; j < order.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
-        for (size_t j = 0; j < order.size(); ++j) {
+        for (size_t j = 0; j < cubes.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
+        for (size_t j = 0; j < cubes.size(); ++j) {
             const size_t k = (j + size_t(offset)) % size_t(subsets);
-            buckets[k].push_back({order[j], float(setSize) / float(counts[k])});
+            buckets[k].push_back({cubes[j].first, float(setSize) / float(counts[k]), cubes[j].second});
         }
         offset += int(order.size());
         kept += order.size();
@@ -151,10 +156,10 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     st.tiles.clear();
     for (const auto& bucket : buckets) {
         st.tiles.push_back({int(gpu.size()), int(bucket.size()), 0});
-        for (const auto& [v, scale] : bucket) {
+        for (const auto& [v, scale, cube] : bucket) {
             const ShadingMaterial& m = st.scene->material(v->material);
             GpuVpl g{};
-            put(g.positionIndex, v->position, float(cubeOf.at(v)));  // w: its shadow cube
+            put(g.positionIndex, v->position, float(cube));  // w: its shadow cube
             put(g.normalAlpha, v->normal, m.alpha);
             // A diffuse VPL's BSDF is albedo / pi whatever the direction: premultiplied here.
             const bool glossy = m.type == MaterialType::Glossy && !isBlack(m.specular);
