@@ -206,13 +206,15 @@ private:
     // One more idle frame, at the next point in the pixel: fresh VPLs and area-light samples, or
     // the same ones dealt anew to the sub-buffers (no shadow map drawn). A fresh set removes the
     // VPLs' own error, a new deal only the interleaving pattern: every frame is fresh while a
-    // fresh frame costs under kFreshFrameMs; where it costs more (the shadow maps: 1 s a set for
-    // a hall of 7,500 triangles on llvmpipe against 0.14 s a deal) most frames are deals, one
-    // fresh set every `cost ratio` frames, at most 8.
+    // fresh set's shadow maps draw under kCheapShadowTriangles (the Cornell box: 50 thousand, a
+    // 135-light office: 2.5 million, 0.3 s a frame on llvmpipe; decided from the scene, not the
+    // clock, so that the result is the same on a loaded machine); past it (a hall of 7,500
+    // triangles: 12 million, 1 s against 0.14 s a deal) most frames are deals, one fresh set
+    // every `cost ratio` frames, at most 8.
     void accumulate(TaskContext& ctx) {
-        constexpr double kFreshFrameMs = 150;
+        constexpr double kCheapShadowTriangles = 3e6;
         const auto t0 = Clock::now();
-        const bool fresh = freshMs_ < kFreshFrameMs ||
+        const bool fresh = gl_->freshSetShadowTriangles() < kCheapShadowTriangles ||
                            framesSinceFresh_ + 1 >= std::clamp(int(std::lround(freshMs_ / std::max(dealMs_, 1.0))), 1, 8);
         Image image;
         try {

@@ -339,6 +339,12 @@ void Preview::setVpls(VplSet vpls) {
     st.vplsDirty = true;
 }
 
+double Preview::freshSetShadowTriangles() const {
+    const State& st = *state_;
+    const double cubes = double(st.uploadedVplCount) + double(st.areaLightCount);
+    return 6.0 * cubes * double(st.proxyCaster.vertexCount / 3);
+}
+
 VplSet Preview::vpls() const {
     VplSet all;
     for (const LightVpls& s : state_->sets) all.insert(all.end(), s.vpls.begin(), s.vpls.end());

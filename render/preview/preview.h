@@ -127,6 +127,11 @@ public:
     // Replaces the generated VPLs with exactly these (tests, and MIR's VPLs): one set, split
     // among the sub-buffers as the generated ones are.
     void setVpls(VplSet vpls);
+    // Triangles a fresh set's shadow maps draw (cube faces of the VPLs and area samples times
+    // the triangles of what they draw): what makes regenerate() cost more than redeal(), known
+    // from the scene and settings alone, so that callers can choose between them the same way
+    // on any machine.
+    double freshSetShadowTriangles() const;
     // Every VPL in use, all lights' sets together, with the power each set gave it.
     VplSet vpls() const;
     // How many per-light VPL sets have been generated so far (tests check what a change redoes).
