@@ -10,6 +10,8 @@
 #include "scene_families.h"
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -21,8 +23,14 @@ int main(int argc, char** argv) {
         return 2;
     }
     const std::string dir = argv[1];
+    std::filesystem::create_directories(dir);
     const auto write = [&](const std::string& name, const std::string& json) {
-        std::ofstream(dir + "/" + name + ".json") << json;
+        std::ofstream out(dir + "/" + name + ".json");
+        out << json;
+        if (!out) {
+            std::fprintf(stderr, "bench_make_scenes: cannot write %s/%s.json\n", dir.c_str(), name.c_str());
+            std::exit(1);
+        }
         std::printf("%s/%s.json\n", dir.c_str(), name.c_str());
     };
     write("office-135", officeJson(15, 9, 640, 480));

@@ -68,9 +68,11 @@ public:
     Image image() const;
     // One half's own estimate.
     Image halfImage(int half) const;
-    // relmse of the combined image estimated from the halves: per channel (a - b)^2 / 4 over
-    // (m^2 + 0.01), averaged (SPEC.md's relmse with the half difference standing in for the error).
-    // Meaningful once both halves have samples; NaN before.
+    // relmse of the combined image estimated from the halves: per pixel and channel (a - b)^2 / 4
+    // (for equal halves) over (r^2 + 0.01), averaged: SPEC.md's relmse with the half difference
+    // standing in for the error and the mean of the pixel's 8 neighbours for the reference r, so
+    // that fireflies count as what they are (film.cpp). Meaningful once both halves have
+    // samples; NaN before.
     double estimatedRelmse() const;
 
 private:

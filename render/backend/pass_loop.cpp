@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <thread>
 
@@ -23,6 +24,7 @@ RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view 
     f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
     f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
     f.image.attributes["lucerna:seed"] = std::to_string(settings.seed);
+    if (std::isfinite(f.estimatedRelmse)) f.image.attributes["lucerna:estimated_relmse"] = formatNumber(f.estimatedRelmse, 4);
     for (const auto& [k, v] : backend.diagnostics()) f.image.attributes["lucerna:" + k] = v;
     backend.addImageLayers(f.image);
     return f;
