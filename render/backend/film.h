@@ -70,7 +70,7 @@ public:
     Image halfImage(int half) const;
     // relmse of the combined image estimated from the halves: per pixel and channel (a - b)^2 / 4
     // (for equal halves) over (r^2 + 0.01), averaged: SPEC.md's relmse with the half difference
-    // standing in for the error and the mean of the pixel's 8 neighbours for the reference r, so
+    // standing in for the error and the mean of the 24 pixels around it (5 x 5) for the reference r, so
     // that fireflies count as what they are (film.cpp). Meaningful once both halves have
     // samples; NaN before.
     double estimatedRelmse() const;
