@@ -141,6 +141,7 @@ void TestLightPanel::pointLightInLumensAndKelvin() {
     QCOMPARE(undo->index(), beforeKelvin + 2);
     const Light blue = doc->scene().lights[0];
     QVERIFY(blue.intensity.z > 5 * blue.intensity.x);
+    screenshot(*w.propertiesPanel(), "light_panel_colour.png");
     QVERIFY(near(pointFlux(blue), 350, 1e-9));
     QVERIFY(saveSceneToString(doc->scene()).find(R"("lumens": 350, "color": [)") != std::string::npos);
     // The blue light bug: one undo gives back the whole previous light, not part of its colour.
@@ -166,6 +167,7 @@ void TestLightPanel::pointLightInLumensAndKelvin() {
     QVERIFY(props->advancedToggle()->isVisibleTo(props));
     props->advancedToggle()->setChecked(true);
     QVERIFY(props->powerFields()[0]->isVisibleTo(props));
+    screenshot(*w.propertiesPanel(), "light_panel_radiometric.png");
     const int beforePower = undo->index();
     typeInto(props->powerFields()[1], 0.5);
     QCOMPARE(undo->index(), beforePower + 1);
@@ -220,6 +222,7 @@ void TestLightPanel::sunInLux() {
     QVERIFY(!props->outputField()->isVisibleTo(props));
     QVERIFY(!props->colourField()->modeField()->isVisibleTo(props));  // no temperature key for a sun
     QVERIFY(near(props->illuminanceField()->value(), 2 * kLumensPerWatt, 1e-3));
+    screenshot(*w.propertiesPanel(), "light_panel_sun.png");
     const int steps = doc->undoStack()->index();
     typeInto(props->illuminanceField(), 20000);
     QCOMPARE(doc->undoStack()->index(), steps + 1);

@@ -7,6 +7,7 @@
 #include <QPainterPath>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -16,14 +17,14 @@ namespace lucerna {
 class PolarCanvas : public QWidget {
 public:
     PolarCanvas(LuminairePolarPlot* plot, QWidget* parent) : QWidget(parent), plot_(plot) {
-        setMinimumSize(180, 180);
+        setMinimumSize(240, 240);
         QSizePolicy p(QSizePolicy::Preferred, QSizePolicy::Preferred);
         p.setHeightForWidth(true);
         setSizePolicy(p);
     }
     bool hasHeightForWidth() const override { return true; }
-    int heightForWidth(int w) const override { return std::min(w, 320); }
-    QSize sizeHint() const override { return {260, 260}; }
+    int heightForWidth(int w) const override { return std::clamp(w, 240, 320); }
+    QSize sizeHint() const override { return {280, 280}; }
 
 protected:
     void paintEvent(QPaintEvent*) override { plot_->paintPlot(this); }
