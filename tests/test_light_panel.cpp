@@ -144,6 +144,13 @@ void TestLightPanel::pointLightInLumensAndKelvin() {
     screenshot(*w.propertiesPanel(), "light_panel_colour.png");
     QVERIFY(near(pointFlux(blue), 350, 1e-9));
     QVERIFY(saveSceneToString(doc->scene()).find(R"("lumens": 350, "color": [)") != std::string::npos);
+    {
+        // The file reads back as the same light.
+        const Scene reread = parseScene(saveSceneToString(doc->scene()), cornellPath().toStdString());
+        QCOMPARE(reread.lights.size(), size_t(1));
+        QCOMPARE(reread.lights[0].photometric, blue.photometric);
+        QVERIFY(near(reread.lights[0].intensity.z, blue.intensity.z, 1e-12));
+    }
     // The blue light bug: one undo gives back the whole previous light, not part of its colour.
     trigger(w, "actionUndo");
     QCOMPARE(doc->scene().lights[0], warmColour);
