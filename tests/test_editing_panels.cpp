@@ -224,6 +224,15 @@ void TestEditingPanels::materialPanelEditsTheMaterial() {
     QCOMPARE(doc->undoStack()->index(), beforeDrag + 1);
     QCOMPARE(doc->scene().materials[size_t(red)].roughness, 0.6);
     QCOMPARE(panel->roughnessField()->value(), 0.6);
+    // Clicks on the track or keys (no drag) are a step each, not merged into one another.
+    const int beforeClicks = doc->undoStack()->index();
+    slider->setValue(700);
+    slider->setValue(800);
+    QCOMPARE(doc->undoStack()->index(), beforeClicks + 2);
+    w.findChild<QAction*>("actionUndo")->trigger();
+    QCOMPARE(doc->scene().materials[size_t(red)].roughness, 0.7);
+    w.findChild<QAction*>("actionUndo")->trigger();
+    QCOMPARE(doc->scene().materials[size_t(red)].roughness, 0.6);
     screenshot(*w.propertiesPanel(), "editing_panels_glossy.png");
 
     // Emitter: radiance with its luminance in cd/m^2; the saved file holds what the document does.

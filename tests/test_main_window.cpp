@@ -6,6 +6,7 @@
 
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
+#include "core/light_output.h"
 #include "core/scene_io.h"
 #include "render/display/display.h"
 #include "ui/autosave.h"
@@ -39,6 +40,7 @@
 #include <QStandardPaths>
 #include <QStatusBar>
 #include <QTemporaryDir>
+#include <QToolButton>
 
 #include <cstdio>
 #include <malloc.h>
@@ -173,7 +175,8 @@ void TestMainWindow::editingSession() {
     QCOMPARE(w.selectedLight(), 0);
     QCOMPARE(w.lightProperties()->light(), 0);
     QCOMPARE(w.lightProperties()->nameField()->text(), QString::fromStdString(added.name));
-    // Units: lengths in the scene's unit (meters_per_unit 0.001), radiant intensity in W/sr.
+    // Units: lengths in the scene's unit (meters_per_unit 0.001), radiant intensity (the
+    // advanced view) in W/sr.
     QCOMPARE(w.lightProperties()->findChild<QLabel*>("positionLabel")->text(), QString("Position (mm)"));
     QCOMPARE(w.lightProperties()->findChild<QLabel*>("powerLabel")->text(), QString("Intensity (W/sr)"));
     QVERIFY(doc->isModified());
@@ -186,9 +189,10 @@ void TestMainWindow::editingSession() {
     QCOMPARE(doc->scene().lights[0].position.x, 450.0);
     typeInto(props->positionFields()[1], 300);
     QCOMPARE(doc->scene().lights[0].position.y, 300.0);
-    for (int c = 0; c < 3; ++c) typeInto(props->powerFields()[size_t(c)], 0.5);
-    QCOMPARE(doc->scene().lights[0].intensity, Rgbd(0.5, 0.5, 0.5));
-    QCOMPARE(doc->undoStack()->count(), 6);
+    // Brighter: one typed flux (about the 0.5 W/sr a white light of 341 cd has), one step.
+    typeInto(props->outputField(), 4300);
+    QVERIFY(std::abs(luminousFluxLm(doc->scene().lights[0]) - 4300) < 1e-9);
+    QCOMPARE(doc->undoStack()->count(), 4);
     const Light left = doc->scene().lights[0];
 
     // The preview of the light on the left; then move it to the right through the panel.
@@ -580,6 +584,7 @@ void TestMainWindow::lightPanelWritesBackOnlyTheEditedField() {
     typeInto(props->positionFields()[0], 200);
     const Light& after = doc->scene().lights[0];
     QCOMPARE(after.position, V3d(200, 234.567891, 345.678912));
+    props->advancedToggle()->setChecked(true);  // the radiometric view
     typeInto(props->powerFields()[1], 0.5);
     QCOMPARE(doc->scene().lights[0].intensity, Rgbd(0.1234567, 0.5, 0.3456789));
 }

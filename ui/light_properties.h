@@ -1,23 +1,31 @@
 #pragma once
-// The property panel of the selected light: name, position, direction, intensity or irradiance
-// and the spot's cone, as typed fields with units (lengths in the scene's unit from
-// meters_per_unit; W/sr, W/m^2, degrees); for a luminaire its file, rotation about the nadir and
-// total flux in lumens instead of the intensity. Every change is an EditLightCommand: the arrow steps
-// of one field merge into one undo step until the field's editing finishes.
+// The property panel of the selected light, in the units a designer works in: a point or spot
+// light's luminous flux (lm) or on-axis intensity (cd) and its colour temperature (K) or colour,
+// written into the light's photometric keys so that the file keeps what was typed; a spot's cone
+// and falloff half-angles; a directional light's illuminance (lx) on a surface facing it; a
+// luminaire's file, rotation, flux, colour and its distribution as a polar plot. The radiometric
+// values (W/sr, W/m²) are an advanced view behind a toggle. Lengths are in the scene's unit.
+// Every edit of a field is one EditLightCommand holding the whole light before and after; the
+// arrow steps of one field merge into it until the field's editing finishes.
 
 #include "ui/document.h"
+#include "ui/property_rows.h"
 
 #include <QWidget>
 
 #include <array>
-#include <initializer_list>
 
+class QComboBox;
 class QDoubleSpinBox;
-class QVBoxLayout;
 class QLabel;
 class QLineEdit;
+class QToolButton;
+class QVBoxLayout;
 
 namespace lucerna {
+
+class LightColourEdit;
+class LuminairePolarPlot;
 
 class LightProperties : public QWidget {
     Q_OBJECT
@@ -32,36 +40,43 @@ public:
     QLineEdit* nameField() const { return name_; }
     const std::array<QDoubleSpinBox*, 3>& positionFields() const { return position_; }
     const std::array<QDoubleSpinBox*, 3>& directionFields() const { return direction_; }
+    // Point and spot: the flux or candela value, its unit (0 lm, 1 cd).
+    QDoubleSpinBox* outputField() const { return output_; }
+    QComboBox* outputUnitField() const { return outputUnit_; }
+    QDoubleSpinBox* illuminanceField() const { return illuminance_; }
+    LightColourEdit* colourField() const { return colour_; }
+    // The advanced view: radiant intensity (W/sr) or irradiance (W/m²) per channel.
+    QToolButton* advancedToggle() const { return advanced_; }
     const std::array<QDoubleSpinBox*, 3>& powerFields() const { return power_; }
     QDoubleSpinBox* coneField() const { return cone_; }
     QDoubleSpinBox* falloffField() const { return falloff_; }
     QDoubleSpinBox* rotationField() const { return rotation_; }
     QDoubleSpinBox* lumensField() const { return lumens_; }
+    LuminairePolarPlot* polarPlot() const { return polar_; }
 
 private:
-    enum class Field { Position, Direction, Power, Cone, Falloff, Rotation, Lumens };
-    QWidget* addRow(const QString& label, std::initializer_list<QWidget*> fields);
-    std::array<QDoubleSpinBox*, 3> makeTriple(QWidget*& row, Field field, const QString& label);
-    QDoubleSpinBox* makeSpin(Field field);
+    enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens };
+    std::array<QDoubleSpinBox*, 3> makeTriple(Field field);
+    QDoubleSpinBox* makeSpin(Field field, double lo, double hi, int decimals);
     void refresh();
-    void apply(Field field, QObject* sender);
+    void apply(Field field, const void* sender);
     void renameLight();
 
     Document* doc_;
     int index_ = -1;
-    QLabel *empty_, *type_, *positionLabel_ = nullptr, *powerLabel_ = nullptr;
-    QWidget *fields_, *positionRow_ = nullptr, *directionRow_ = nullptr, *powerRow_ = nullptr;
-    QWidget *coneRow_ = nullptr, *falloffRow_ = nullptr;
-    QWidget *fileRow_ = nullptr, *rotationRow_ = nullptr, *lumensRow_ = nullptr;
-    QLabel* file_ = nullptr;
-    QLabel* directionLabel_ = nullptr;
-    QVBoxLayout* rows_ = nullptr;
+    QLabel *empty_, *type_, *outputOther_, *file_;
+    QWidget* fields_;
+    QVBoxLayout* rows_;
+    QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
+    QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_;
     QLineEdit* name_;
     std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
-    QDoubleSpinBox *cone_, *falloff_, *rotation_, *lumens_;
-    // Merging: edits of the same field with the same key fold into one command.
-    QObject* lastField_ = nullptr;
-    int mergeKey_ = 0;
+    QDoubleSpinBox *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
+    QComboBox* outputUnit_;
+    LightColourEdit* colour_;
+    QToolButton* advanced_;
+    LuminairePolarPlot* polar_;
+    MergeTracker merge_;
 };
 
 }  // namespace lucerna

@@ -89,8 +89,10 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
         const QSignalBlocker block(roughness_);
         roughness_->setValue(double(v) / kSliderSteps);
         applyFields(roughnessSlider_);
+        // A click on the track or a key is a step of its own; a drag merges until it is let go.
+        if (!roughnessSlider_->isSliderDown()) merge_.finish();
     });
-    // A drag is one step: it merges until the slider is let go.
+    connect(roughnessSlider_, &QSlider::sliderPressed, this, [this] { merge_.finish(); });
     connect(roughnessSlider_, &QSlider::sliderReleased, this, [this] { merge_.finish(); });
     connect(roughness_, &QDoubleSpinBox::valueChanged, this, [this](double v) {
         const QSignalBlocker block(roughnessSlider_);

@@ -1,5 +1,6 @@
 #include "ui/commands/light_commands.h"
 
+#include "core/light_output.h"
 #include "core/scene_geometry.h"
 
 namespace lucerna {
@@ -49,15 +50,18 @@ Light defaultLight(const Scene& scene, LightType type, const std::string& name) 
     // Above the middle of the scene, a fifth of its size below the top.
     l.position = V3d(b.center.x, b.hi.y - 0.2 * (b.hi.y - b.lo.y), b.center.z);
     l.direction = V3d(0, -1, 0);
-    // Intensity that gives a few W/m^2 at the scene's scale: I = E d^2 with d in metres.
-    const double d = std::max(b.radius * scene.metersPerUnit, 1e-6);
-    const double intensity = 2.0 * d * d;
+    // A plausible lamp: 1000 lm at 3000 K (a spot's flux spread over its cone), given in those
+    // keys so that the file says so.
+    PhotometricSpec lamp;
+    lamp.quantity = PhotometricSpec::Quantity::Lumens;
+    lamp.value = 1000;
+    lamp.temperatureK = 3000;
     switch (type) {
-    case LightType::Point: l.intensity = Rgbd(intensity, intensity, intensity); break;
+    case LightType::Point: l = withPhotometric(l, lamp); break;
     case LightType::Spot:
-        l.intensity = Rgbd(3 * intensity, 3 * intensity, 3 * intensity);
         l.coneAngleDeg = 30;
         l.falloffStartDeg = 25;
+        l = withPhotometric(l, lamp);
         break;
     case LightType::Directional:
         l.direction = V3d(-0.3, -1, 0.2);

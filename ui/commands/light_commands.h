@@ -50,7 +50,8 @@ private:
     int mergeKey_;
 };
 
-// A new light of a type with sensible defaults for the scene's size (SPEC.md types).
+// A new light of a type (SPEC.md types) above the middle of the scene: a point or spot light of
+// 1000 lm at 3000 K, a sun of 2 W/m² (about 1370 lx).
 Light defaultLight(const Scene& scene, LightType type, const std::string& name);
 QString lightTypeName(LightType type);
 
