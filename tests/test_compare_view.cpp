@@ -390,6 +390,7 @@ void TestCompareView::luxRangeFromTheImageAndAsTyped() {
     QCOMPARE(view->displaySettings().falseMax, 1000.0);
     QCOMPARE(minField->value(), 100.0);
     QCOMPARE(maxField->value(), 1000.0);
+    grabbed(view.get()).save("compare_lux_range_default.png");
 
     QSignalSpy messages(controls, &DisplayControls::message);
     const auto type = [](QDoubleSpinBox* field, const QString& text) {
@@ -418,12 +419,13 @@ void TestCompareView::luxRangeFromTheImageAndAsTyped() {
     QCOMPARE(view->displaySettings().falseMin, 50.0);
     QCOMPARE(minField->value(), 50.0);
 
+    grabbed(view.get()).save("compare_lux_range_typed.png");
+
     // A new image keeps the range the user set.
     for (float& v : lux) v *= 10;
     view->setConverged(image);
     QCOMPARE(view->displaySettings().falseMin, 50.0);
     QCOMPARE(view->displaySettings().falseMax, 300.0);
-    grabbed(view.get()).save("compare_lux_range_typed.png");
 }
 
 QTEST_MAIN(TestCompareView)

@@ -351,8 +351,10 @@ private slots:
         const double mantissa = fitted.falseMax / std::pow(10.0, std::floor(std::log10(fitted.falseMax)));
         QVERIFY2(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9,
                  qPrintable(QString::number(fitted.falseMax)));
-        // Typed values are taken as typed; a maximum below the minimum is refused in the status bar.
         w.findChild<QDockWidget*>("compareDock")->raise();
+        QTest::qWait(300);
+        w.grab().save("lux_view_default_range.png");
+        // Typed values are taken as typed; a maximum below the minimum is refused in the status bar.
         QSignalSpy refused(controls, &DisplayControls::message);
         typeInto(minField, 5);
         QCOMPARE(w.compareView()->displaySettings().falseMin, 5.0);

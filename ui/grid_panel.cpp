@@ -70,6 +70,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     figures_ = new QLabel(this);
     figures_->setObjectName("gridFigures");
     figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    figures_->setWordWrap(true);  // the glass warning is long: wrapped, not a wider dock
     status_ = new QLabel(this);
     status_->setObjectName("gridStatus");
     status_->setWordWrap(true);
