@@ -57,12 +57,13 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--method") {
             const std::string& m = value();
             const auto method = gridMethodFromName(m);
-            if (!method) {
+            if (!method && m != "auto") {
                 std::string names;
                 for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
-                throw UsageError("--method: expected one of " + names + ", got '" + m + "'");
+                throw UsageError("--method: expected one of " + names + ", auto, got '" + m + "'");
             }
-            g.settings.method = *method;
+            g.settings.autoMethod = !method;
+            if (method) g.settings.method = *method;
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
         else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);
         else if (a == "--seed") g.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
@@ -84,10 +85,14 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     return g;
 }
 
-void printTable(const GridLayout& layout, const std::vector<double>& lux) {
+void printTable(const GridLayout& layout, const GridResult& r) {
     if (layout.nu > 16) return;  // a wide grid reads better from the CSV
     for (int j = layout.nv - 1; j >= 0; --j) {
-        for (int i = 0; i < layout.nu; ++i) std::printf("%9.1f", lux[size_t(j) * layout.nu + i]);
+        for (int i = 0; i < layout.nu; ++i) {
+            const size_t k = size_t(j) * layout.nu + i;
+            if (r.insideGeometry[k]) std::printf("%9s", "inside");
+            else std::printf("%9.1f", r.lux[k]);
+        }
         std::printf("\n");
     }
 }
@@ -123,7 +128,10 @@ int gridImpl(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
 
-    if (g.settings.method != GridMethod::Path && g.settings.method != GridMethod::Vpl) {
+    if (g.settings.autoMethod) {
+        if (!g.settings.backendOptions.empty())
+            throw UsageError("--option: method auto takes no backend options (it chooses path or bdpt)");
+    } else if (g.settings.method != GridMethod::Path && g.settings.method != GridMethod::Vpl) {
         RenderSettings check;  // the backend's own parser judges the options before any work
         check.options = g.settings.backendOptions;
         try {
@@ -147,22 +155,35 @@ int gridImpl(const std::vector<std::string>& args) {
         GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);
     });
-    waitShowingProgress(*job, std::string("grid ") + gridMethodName(g.settings.method));
+    waitShowingProgress(*job, std::string("grid ") + (g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method)));
     if (interrupted() || !result) {
         std::cerr << "grid interrupted; no file written\n";
         return 130;
     }
 
-    const GridStatistics s = gridStatistics(result->lux);
-    std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s\n", g.grid.name.c_str(), layout.nu,
-                layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(g.settings.method));
-    std::printf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f\n", s.average, s.minimum, s.maximum, s.uniformity);
-    std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per point, %s%s\n",
-                100.0 * result->maxRelativeError, result->passes, result->samplesPerPoint,
-                formatSeconds(result->seconds).c_str(), result->converged ? "" : " (target not reached)");
-    printTable(layout, result->lux);
+    const GridResult& r = *result;
+    const GridStatistics s = gridStatistics(r.lux, r.insideGeometry);
+    std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(), layout.nu,
+                layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
+                g.settings.autoMethod ? " (auto)" : "");
+    if (s.excluded > 0)
+        std::printf("%d of %zu points inside geometry, excluded from Eavg, Emin, Emax and U0\n", s.excluded,
+                    layout.points.size());
+    if (s.counted == 0) std::printf("Eavg, Emin, Emax, U0: none (every point is inside geometry)\n");
+    else std::printf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f\n", s.average, s.minimum, s.maximum, s.uniformity);
+    if (r.errorBarUnknown) {
+        std::printf("%s cannot carry light through glass to %d of %d points: use bdpt (or --method auto)\n",
+                    gridMethodName(r.method), r.litThroughGlass, s.counted);
+        std::printf("error bar unknown (the light through glass is missing) after %d passes, %lld samples per point, %s\n",
+                    r.passes, r.samplesPerPoint, formatSeconds(r.seconds).c_str());
+    } else {
+        std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per point, %s%s\n",
+                    100.0 * r.maxRelativeError, r.passes, r.samplesPerPoint, formatSeconds(r.seconds).c_str(),
+                    r.converged ? "" : " (target not reached)");
+    }
+    printTable(layout, r);
     if (!g.csv.empty()) {
-        writeTextAtomically(g.csv, gridCsv(layout, result->lux, result->errorLux));
+        writeTextAtomically(g.csv, gridCsv(layout, r.lux, r.errorLux, r.insideGeometry, r.errorBarUnknown));
         std::fprintf(stderr, "wrote %s\n", g.csv.c_str());
     }
     return 0;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
@@ -85,27 +84,39 @@ GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int max
     return g;
 }
 
-GridStatistics gridStatistics(const std::vector<double>& lux) {
+GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded) {
     GridStatistics s;
-    if (lux.empty()) return s;
-    const auto [lo, hi] = std::minmax_element(lux.begin(), lux.end());
-    s.minimum = *lo;
-    s.maximum = *hi;
-    s.average = std::accumulate(lux.begin(), lux.end(), 0.0) / double(lux.size());
+    double sum = 0;
+    for (size_t i = 0; i < lux.size(); ++i) {
+        if (i < excluded.size() && excluded[i]) {
+            ++s.excluded;
+            continue;
+        }
+        s.minimum = s.counted == 0 ? lux[i] : std::min(s.minimum, lux[i]);
+        s.maximum = s.counted == 0 ? lux[i] : std::max(s.maximum, lux[i]);
+        sum += lux[i];
+        ++s.counted;
+    }
+    if (s.counted == 0) return s;
+    s.average = sum / double(s.counted);
     s.uniformity = s.average > 0 ? s.minimum / s.average : 0.0;
     return s;
 }
 
-std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux) {
+std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux,
+                    const std::vector<uint8_t>& insideGeometry, bool errorUnknown) {
     std::ostringstream out;
     out.precision(9);
-    out << "i,j,x,y,z,illuminance_lux,error_lux\n";
+    out << "i,j,x,y,z,illuminance_lux,error_lux,inside_geometry\n";
     for (int j = 0; j < layout.nv; ++j)
         for (int i = 0; i < layout.nu; ++i) {
             const size_t k = size_t(j) * size_t(layout.nu) + size_t(i);
             const V3d& p = layout.points[k];
             out << i << ',' << j << ',' << p.x << ',' << p.y << ',' << p.z << ',' << (k < lux.size() ? lux[k] : 0.0)
-                << ',' << (k < errorLux.size() ? errorLux[k] : 0.0) << '\n';
+                << ',';
+            if (errorUnknown) out << "unknown";
+            else out << (k < errorLux.size() ? errorLux[k] : 0.0);
+            out << ',' << (k < insideGeometry.size() && insideGeometry[k] ? 1 : 0) << '\n';
         }
     return out.str();
 }

@@ -11,6 +11,7 @@
 
 #include "core/math.h"
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -57,15 +58,21 @@ struct GridLayout {
 // that are not perpendicular, a non-positive spacing or more than maxPoints points.
 GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int maxPoints = 100000);
 
-// The figures of EN 12464-1 over the grid's point values (lux).
+// The figures of EN 12464-1 over the grid's point values (lux), leaving out the points marked in
+// `excluded` (non-zero: inside closed geometry, where no work is done and a 0 would only pull Emin
+// and U0 to 0; empty: none left out).
 struct GridStatistics {
     double average = 0, minimum = 0, maximum = 0;
     double uniformity = 0;  // U0 = Emin / Eavg (0 when Eavg is 0)
+    int counted = 0;        // points in the figures
+    int excluded = 0;       // points left out
 };
-GridStatistics gridStatistics(const std::vector<double>& lux);
+GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded = {});
 
 // The grid as CSV: a header line, then one row per point: i, j, x, y, z (scene units), the
-// illuminance in lux and its error bar in lux.
-std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux);
+// illuminance in lux, its error bar in lux ("unknown" where the method cannot back one) and
+// inside_geometry (1 for a point left out of the figures, else 0).
+std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux,
+                    const std::vector<uint8_t>& insideGeometry = {}, bool errorUnknown = false);
 
 }  // namespace lucerna

@@ -19,6 +19,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QMouseEvent>
+#include <QSignalSpy>
 #include <QWheelEvent>
 #include <QtTest>
 
@@ -95,6 +96,7 @@ private slots:
     void sideBySideSharesZoomAndPan();
     void falseColourPutsALuminanceOnTheLegendsColour();
     void falseColourLuxFromTheAlbedoLayer();
+    void luxRangeFromTheImageAndAsTyped();
     void exposureAndToneCurve();
     void probeReadsThePixelUnderTheCursor();
     void relmseIsCompareImages();
@@ -358,6 +360,72 @@ void TestCompareView::falseColourLuxFromTheAlbedoLayer() {
     // An illuminance layer is what the view shows where there is one.
     image.channels["illuminance.Y"].assign(image.pixelCount(), 1000.0f);
     QCOMPARE(*pixelIlluminance(image, 0), 1000.0);
+}
+
+// The lux view's range: from the image on entering it (2nd to 98th percentile, widened to round
+// numbers), then as typed: each field takes its value when the typing ends and leaves the other
+// alone; a maximum not above the minimum is refused with a message and the range kept; a later
+// image no longer moves a range the user set.
+void TestCompareView::luxRangeFromTheImageAndAsTyped() {
+    // Illuminance 130 .. 870 lx across the image (a ramp along x, 100 columns).
+    Image image = uniform(100, 10, Rgb(0.1f, 0.1f, 0.1f));
+    auto& lux = image.channels["illuminance.Y"];
+    lux.resize(image.pixelCount());
+    for (int y = 0; y < 10; ++y)
+        for (int x = 0; x < 100; ++x) lux[size_t(y) * 100 + x] = float(130 + 740 * x / 99.0);
+    const auto range = illuminanceRange(image);
+    QVERIFY(range);
+    QCOMPARE(range->lo, 100.0);  // the 2nd percentile, 144.8 lx, down to a round number
+    QCOMPARE(range->hi, 1000.0); // the 98th, 855.2 lx, up
+    QVERIFY(!illuminanceRange(uniform(4, 4, Rgb(1, 1, 1))));  // no lux at all
+
+    auto view = shownView();
+    view->setConverged(image);
+    auto* controls = view->displayControls();
+    auto* mode = controls->findChild<QComboBox*>("toneMapping");
+    auto* minField = controls->findChild<QDoubleSpinBox*>("falseMin");
+    auto* maxField = controls->findChild<QDoubleSpinBox*>("falseMax");
+    mode->setCurrentIndex(3);  // False colour lx
+    QCOMPARE(view->displaySettings().falseMin, 100.0);
+    QCOMPARE(view->displaySettings().falseMax, 1000.0);
+    QCOMPARE(minField->value(), 100.0);
+    QCOMPARE(maxField->value(), 1000.0);
+    grabbed(view.get()).save("compare_lux_range_default.png");
+
+    QSignalSpy messages(controls, &DisplayControls::message);
+    const auto type = [](QDoubleSpinBox* field, const QString& text) {
+        field->setFocus();
+        field->selectAll();
+        QTest::keyClicks(field, text);
+        // Nothing is taken while typing: the prefix "5" of "50" never reaches the range.
+        QTest::keyClick(field, Qt::Key_Return);
+    };
+    type(minField, "50");
+    QCOMPARE(view->displaySettings().falseMin, 50.0);
+    QCOMPARE(view->displaySettings().falseMax, 1000.0);  // not moved by the minimum
+    QCOMPARE(maxField->value(), 1000.0);
+    type(maxField, "300");
+    QCOMPARE(view->displaySettings().falseMax, 300.0);
+    QCOMPARE(view->displaySettings().falseMin, 50.0);
+    QCOMPARE(messages.count(), 0);
+    type(maxField, "20");  // below the minimum: refused, the range kept
+    QCOMPARE(messages.count(), 1);
+    QVERIFY2(messages.at(0).at(0).toString().contains("must be above the minimum"), qPrintable(messages.at(0).at(0).toString()));
+    QCOMPARE(view->displaySettings().falseMax, 300.0);
+    QCOMPARE(maxField->value(), 300.0);
+    QCOMPARE(minField->value(), 50.0);
+    type(minField, "300");  // equal to the maximum: refused too
+    QCOMPARE(messages.count(), 2);
+    QCOMPARE(view->displaySettings().falseMin, 50.0);
+    QCOMPARE(minField->value(), 50.0);
+
+    grabbed(view.get()).save("compare_lux_range_typed.png");
+
+    // A new image keeps the range the user set.
+    for (float& v : lux) v *= 10;
+    view->setConverged(image);
+    QCOMPARE(view->displaySettings().falseMin, 50.0);
+    QCOMPARE(view->displaySettings().falseMax, 300.0);
 }
 
 QTEST_MAIN(TestCompareView)

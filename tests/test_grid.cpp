@@ -378,7 +378,7 @@ private slots:
         QVERIFY2(out.contains("4 x 4 points") && out.contains("Eavg") && out.contains("U0"), qPrintable(out));
         const CsvTable table = CsvTable::read(csv);
         QCOMPARE(int(table.rows.size()), 16);
-        QCOMPARE(table.header.join(','), QString("i,j,x,y,z,illuminance_lux,error_lux"));
+        QCOMPARE(table.header.join(','), QString("i,j,x,y,z,illuminance_lux,error_lux,inside_geometry"));
         // The point nearest the middle sees the emitter nearly whole: compare with Lambert.
         const size_t row = 1 * 4 + 1;  // i = 1, j = 1
         QCOMPARE(table.text(row, "i") + table.text(row, "j"), QString("11"));

@@ -3,9 +3,11 @@
 // the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
 
 #include "closed_form_scenes.h"
+#include "grid_check_scenes.h"
 #include "core/calculation_grid.h"
 #include "csv_table.h"
 #include "render/display/display.h"
+#include "render/display/false_colour.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/commands/light_commands.h"
 #include "ui/compare_view.h"
@@ -23,6 +25,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
+#include <QStatusBar>
 #include <QStandardPaths>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -66,8 +69,9 @@ private slots:
         child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
         child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(5.0);
         auto* method = child<QComboBox>(*panel, "gridMethod");
-        QCOMPARE(method->count(), int(std::size(kGridMethods)));
-        for (int m = 0; m < method->count(); ++m) {
+        QCOMPARE(method->count(), int(std::size(kGridMethods)) + 1);  // and auto, last
+        QCOMPARE(method->itemText(method->count() - 1), QString("auto"));
+        for (int m = 0; m < int(std::size(kGridMethods)); ++m) {
             method->setCurrentIndex(m);
             const QString name = method->currentText();
             QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
@@ -245,6 +249,76 @@ private slots:
         QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("whole room"));
     }
 
+    // A work plane through a cabinet: its 4 points inside show hatched and grey with no number,
+    // the figures count them and leave them out (Emin is the lowest of the others, not 0); a lamp
+    // behind glass: path says it cannot carry that light and shows no error bar, auto picks bdpt.
+    void insidePointsAndGlassInTheDock() {
+        const QString cabinet = dir_.filePath("cabinet.json");
+        std::ofstream(cabinet.toStdString()) << cabinetSceneJson();
+        {
+            MainWindow w(cabinet);
+            w.resize(1400, 900);
+            w.show();
+            GridPanel* panel = w.gridPanel();
+            w.findChild<QDockWidget*>("gridDock")->raise();
+            child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.6);
+            child<QDoubleSpinBox>(*panel, "gridBorder")->setValue(1.0);  // the middle 4 m
+            child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+            QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+            QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+            const auto result = panel->result();
+            QVERIFY(result);
+            QCOMPARE(panel->layout().points.size(), size_t(64));
+            auto* table = child<QTableWidget>(*panel, "gridTable");
+            int hatched = 0;
+            for (int r = 0; r < table->rowCount(); ++r)
+                for (int c = 0; c < table->columnCount(); ++c) {
+                    const QTableWidgetItem* item = table->item(r, c);
+                    const bool inside = item->text() == "inside";
+                    QCOMPARE(item->background().style() == Qt::BDiagPattern, inside);
+                    hatched += inside;
+                }
+            QCOMPARE(hatched, 4);
+            const GridStatistics s = gridStatistics(result->lux, result->insideGeometry);
+            QVERIFY(s.minimum > 100);
+            const QString figures = child<QLabel>(*panel, "gridFigures")->text();
+            QVERIFY2(figures.contains("4 of 64 points inside geometry, excluded") &&
+                         figures.contains(QString("Emin %1 lx").arg(s.minimum, 0, 'f', 1)),
+                     qPrintable(figures));
+            QTest::qWait(200);
+            w.grab().save("grid_panel_inside.png");
+        }
+        const QString glass = dir_.filePath("glass.json");
+        std::ofstream(glass.toStdString()) << lampOverPaneJson(true);
+        MainWindow w(glass);
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        w.findChild<QDockWidget*>("gridDock")->raise();
+        // The rectangle the viewport's two clicks give (test_grid_panel's drawing test clicks them).
+        panel->setDrawnRectangle(V3d(-0.5, 0, -0.5), V3d(0, 1, 0), V3d(0.5, 0, 0.5));
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.0);
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+        auto* method = child<QComboBox>(*panel, "gridMethod");
+        method->setCurrentIndex(method->findText("path"));
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QString figures = child<QLabel>(*panel, "gridFigures")->text();
+        QVERIFY2(figures.contains("path cannot carry light through glass to 4 of 4 points: use bdpt") &&
+                     figures.contains("error bar unknown") && !figures.contains("0.00%"),
+                 qPrintable(figures));
+        QVERIFY(child<QTableWidget>(*panel, "gridTable")->item(0, 0)->toolTip().contains("unknown"));
+        QTest::qWait(200);
+        w.grab().save("grid_panel_glass_path.png");
+        method->setCurrentIndex(method->findText("auto"));
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QVERIFY(panel->result()->method == GridMethod::Bdpt);
+        figures = child<QLabel>(*panel, "gridFigures")->text();
+        QVERIFY2(figures.contains("bdpt") && !figures.contains("cannot carry"), qPrintable(figures));
+        QVERIFY(gridStatistics(panel->result()->lux).average > 600);  // 685 lx: the lamp through the pane
+    }
+
     // The lux view asks the live preview for its albedo layer (and only then): its frames then
     // give illuminance under the pixels that see the floor.
     void luxViewGetsThePreviewsAlbedo() {
@@ -262,6 +336,37 @@ private slots:
         for (size_t i = 0; i < image.pixelCount(); ++i)
             if (const auto lux = pixelIlluminance(image, i); lux && *lux > 0) ++lit;
         QVERIFY2(lit > image.pixelCount() / 2, qPrintable(QString("%1 of %2").arg(lit).arg(image.pixelCount())));
+
+        // The range comes from the image (not the 0.1 .. 1000 default that put the room in red):
+        // round numbers around its illuminance, which is what the fields show.
+        DisplayControls* controls = w.compareView()->displayControls();
+        auto* minField = child<QDoubleSpinBox>(*controls, "falseMin");
+        auto* maxField = child<QDoubleSpinBox>(*controls, "falseMax");
+        QTRY_VERIFY_WITH_TIMEOUT(w.compareView()->displaySettings().falseMin != 0.1, kTimeout);
+        const DisplaySettings fitted = w.compareView()->displaySettings();
+        QCOMPARE(minField->value(), fitted.falseMin);
+        QCOMPARE(maxField->value(), fitted.falseMax);
+        const auto range = illuminanceRange(w.livePreview()->frame()->image);
+        QVERIFY(range && fitted.falseMin <= range->hi && fitted.falseMax >= range->lo);
+        const double mantissa = fitted.falseMax / std::pow(10.0, std::floor(std::log10(fitted.falseMax)));
+        QVERIFY2(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9,
+                 qPrintable(QString::number(fitted.falseMax)));
+        w.findChild<QDockWidget*>("compareDock")->raise();
+        QTest::qWait(300);
+        w.grab().save("lux_view_default_range.png");
+        // Typed values are taken as typed; a maximum below the minimum is refused in the status bar.
+        QSignalSpy refused(controls, &DisplayControls::message);
+        typeInto(minField, 5);
+        QCOMPARE(w.compareView()->displaySettings().falseMin, 5.0);
+        QCOMPARE(w.compareView()->displaySettings().falseMax, fitted.falseMax);
+        typeInto(maxField, 2);
+        QCOMPARE(refused.count(), 1);
+        QVERIFY2(w.statusBar()->currentMessage().contains("must be above the minimum"),
+                 qPrintable(w.statusBar()->currentMessage()));
+        QCOMPARE(maxField->value(), fitted.falseMax);
+        QCOMPARE(w.compareView()->displaySettings().falseMax, fitted.falseMax);
+        QTest::qWait(300);
+        w.grab().save("lux_view_window.png");
     }
 
 private:

@@ -55,18 +55,39 @@ CompareView::CompareView(QWidget* parent) : QWidget(parent) {
     connect(modeBox_, &QComboBox::currentIndexChanged, this, [this](int i) { setMode(Mode(i)); });
     connect(fit, &QPushButton::clicked, transform_, &ViewTransform::reset);
     connect(controls_, &DisplayControls::settingsChanged, this, &CompareView::setDisplaySettings);
+    connect(controls_, &DisplayControls::rangeSetByUser, this, [this] {
+        if (display_.falseColour && display_.quantity == FalseColourQuantity::Illuminance) luxRangeByUser_ = true;
+    });
     connect(first_, &CompareCanvas::hovered, this, &CompareView::probe);
     connect(second_, &CompareCanvas::hovered, this, &CompareView::probe);
     refresh();
 }
 
+namespace {
+bool isLuxView(const DisplaySettings& s) { return s.falseColour && s.quantity == FalseColourQuantity::Illuminance; }
+}  // namespace
+
+bool CompareView::fitLuxRange(DisplaySettings& settings) {
+    if (!isLuxView(settings) || luxRangeByUser_ || luxRangeFitted_) return false;
+    // The converged image is the better estimate; the preview where it has no lux yet.
+    std::optional<FalseColourRange> range = illuminanceRange(converged_);
+    if (!range) range = illuminanceRange(preview_);
+    if (!range) return false;
+    settings.falseMin = range->lo;
+    settings.falseMax = range->hi;
+    luxRangeFitted_ = true;
+    return true;
+}
+
 void CompareView::setPreview(Image image) {
     preview_ = std::move(image);
+    if (DisplaySettings s = display_; fitLuxRange(s)) return setDisplaySettings(s);
     refresh();
 }
 
 void CompareView::setConverged(Image image) {
     converged_ = std::move(image);
+    if (DisplaySettings s = display_; fitLuxRange(s)) return setDisplaySettings(s);
     refresh();
 }
 
@@ -79,7 +100,10 @@ void CompareView::setMode(Mode mode) {
     refresh();
 }
 
-void CompareView::setDisplaySettings(const DisplaySettings& settings) {
+void CompareView::setDisplaySettings(const DisplaySettings& requested) {
+    DisplaySettings settings = requested;
+    if (!isLuxView(settings)) luxRangeFitted_ = false;  // entering the lux view again fits again
+    else if (!isLuxView(display_)) fitLuxRange(settings);
     if (settings == display_) return;
     display_ = settings;
     controls_->setSettings(settings);

@@ -4,6 +4,10 @@
 // with a legend; the relmse of the preview against the converged image (SPEC.md section 4) as a
 // number; display controls; and a probe of both images' radiance under the cursor.
 //
+// In false colour lx the range starts from the image (its 2nd to 98th percentile, rounded:
+// illuminanceRange) each time the view enters that mode, until the user sets one; with no image
+// that has lux yet, from the first that does.
+//
 // The preview is usually smaller than the converged image; the difference and the relmse take it
 // resampled (nearest) to the converged image's size, which is what the eye compares.
 
@@ -34,7 +38,7 @@ public:
     void setConverged(Image image);
     void setMode(Mode mode);
     Mode mode() const { return mode_; }
-    void setDisplaySettings(const DisplaySettings& settings);
+    void setDisplaySettings(const DisplaySettings& settings);  // may fit the lux range (above)
     DisplaySettings displaySettings() const { return display_; }
 
     // The relmse of the preview against the converged image; nothing until both exist.
@@ -56,6 +60,8 @@ protected:
 
 private:
     void refresh();  // the pictures, legends and relmse from the images, mode and settings
+    // The range from the images when the lux view still wants one (see above); true when set.
+    bool fitLuxRange(DisplaySettings& settings);
     void probe(QPointF imagePoint);
 
     Image preview_, converged_;
@@ -63,6 +69,8 @@ private:
     DisplaySettings display_;
     std::optional<double> relmse_;
     bool stale_ = true;  // images changed while hidden: redraw when shown, not on every frame
+    bool luxRangeByUser_ = false;  // the user set the lux range: the images no longer do
+    bool luxRangeFitted_ = false;  // the range has come from an image since the lux view was entered
 
     ViewTransform* transform_;
     CompareCanvas *first_, *second_;

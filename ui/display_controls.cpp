@@ -39,6 +39,8 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
         spin->setDecimals(4);
         spin->setValue(value);
         spin->setStepType(QAbstractSpinBox::AdaptiveDecimalStepType);
+        // A value as typed, not every prefix of it: "50" must not pass through 5 on its way.
+        spin->setKeyboardTracking(false);
         spin->setSuffix(tr(" cd/m\u00b2"));
         return spin;
     };
@@ -55,8 +57,24 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     setSettings(settings_);
 
     connect(exposure_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
-    connect(falseMin_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
-    connect(falseMax_, &QDoubleSpinBox::valueChanged, this, &DisplayControls::read);
+    // With keyboard tracking off, valueChanged comes when the typing ends or an arrow steps.
+    const auto rangeEdited = [this] {
+        if (!(falseMax_->value() > falseMin_->value())) {
+            const QString unit = settings_.quantity == FalseColourQuantity::Illuminance ? tr("lx") : tr("cd/m²");
+            emit message(tr("False-colour range refused: the maximum (%1 %3) must be above the minimum (%2 %3)")
+                             .arg(falseMax_->value())
+                             .arg(falseMin_->value())
+                             .arg(unit));
+            const QSignalBlocker b1(falseMin_), b2(falseMax_);
+            falseMin_->setValue(settings_.falseMin);
+            falseMax_->setValue(settings_.falseMax);
+            return;
+        }
+        read();
+        emit rangeSetByUser();
+    };
+    connect(falseMin_, &QDoubleSpinBox::valueChanged, this, rangeEdited);
+    connect(falseMax_, &QDoubleSpinBox::valueChanged, this, rangeEdited);
     connect(mode_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
 }
 
@@ -83,9 +101,14 @@ void DisplayControls::read() {
     const QString unit = s.quantity == FalseColourQuantity::Illuminance ? tr(" lx") : tr(" cd/m\u00b2");
     falseMin_->setSuffix(unit);
     falseMax_->setSuffix(unit);
-    // A range the wrong way round would divide by zero or flip the legend: keep a decade at least.
+    // The fields hold a valid range (the edits refuse one the wrong way round); setSettings with
+    // one would divide by zero or flip the legend, so a bad one keeps the previous.
     s.falseMin = falseMin_->value();
-    s.falseMax = std::max(falseMax_->value(), s.falseMin * 10);
+    s.falseMax = falseMax_->value();
+    if (!(s.falseMax > s.falseMin)) {
+        s.falseMin = settings_.falseMin;
+        s.falseMax = settings_.falseMax;
+    }
     // Exposure does not apply to absolute luminance, and the range only to false colour.
     exposure_->setEnabled(!s.falseColour);
     falseMin_->setVisible(s.falseColour);

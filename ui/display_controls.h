@@ -1,6 +1,9 @@
 #pragma once
 // The display settings a user changes: exposure in stops, and how radiance becomes a picture
-// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range).
+// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range). The range's
+// fields take what is typed when the typing ends (Enter or leaving the field), neither field
+// moving the other; a maximum not above the minimum is refused with a message and the previous
+// range kept.
 
 #include "render/display/display.h"
 
@@ -21,6 +24,10 @@ public:
 
 signals:
     void settingsChanged(const DisplaySettings& settings);
+    // A one-line message for the status bar (a range refused).
+    void message(const QString& text);
+    // The user set the false-colour range (typed or stepped), as opposed to setSettings.
+    void rangeSetByUser();
 
 private:
     void read();

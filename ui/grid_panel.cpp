@@ -22,6 +22,8 @@
 namespace lucerna {
 
 namespace {
+constexpr int kAutoMethod = -1;  // the estimator box's item for auto
+
 QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
     auto* box = new QDoubleSpinBox(parent);
     box->setObjectName(name);
@@ -43,6 +45,9 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     method_ = new QComboBox(this);
     method_->setObjectName("gridMethod");
     for (GridMethod m : kGridMethods) method_->addItem(QString::fromLatin1(gridMethodName(m)), int(m));
+    method_->addItem(tr("auto"), kAutoMethod);
+    method_->setItemData(method_->count() - 1, tr("bdpt where a lamp reaches points only through glass, else path"),
+                         Qt::ToolTipRole);
     compute_ = new QPushButton(tr("Compute"), this);
     compute_->setObjectName("gridCompute");
     cancel_ = new QPushButton(tr("Cancel"), this);
@@ -65,6 +70,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     figures_ = new QLabel(this);
     figures_->setObjectName("gridFigures");
     figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    figures_->setWordWrap(true);  // the glass warning is long: wrapped, not a wider dock
     status_ = new QLabel(this);
     status_->setObjectName("gridStatus");
     status_->setWordWrap(true);
@@ -148,7 +154,9 @@ void GridPanel::compute() {
         return;
     }
     GridSettings settings;
-    settings.method = GridMethod(method_->currentData().toInt());
+    const int method = method_->currentData().toInt();
+    settings.autoMethod = method == kAutoMethod;
+    if (!settings.autoMethod) settings.method = GridMethod(method);
     settings.targetRelativeError = target_->value() / 100.0;
     latest_ = std::make_shared<Latest<GridResult>>();
     shown_.reset();
@@ -215,13 +223,24 @@ void GridPanel::poll() {
 
 void GridPanel::showResult() {
     if (!shown_) return;
-    const GridStatistics s = gridStatistics(shown_->lux);
-    figures_->setText(tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4\nerror bar at most %5% (95%)")
-                          .arg(s.average, 0, 'f', 1)
-                          .arg(s.minimum, 0, 'f', 1)
-                          .arg(s.maximum, 0, 'f', 1)
-                          .arg(s.uniformity, 0, 'f', 2)
-                          .arg(100.0 * shown_->maxRelativeError, 0, 'f', 2));
+    const GridStatistics s = gridStatistics(shown_->lux, shown_->insideGeometry);
+    QStringList lines;
+    lines << tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4")
+                 .arg(s.average, 0, 'f', 1)
+                 .arg(s.minimum, 0, 'f', 1)
+                 .arg(s.maximum, 0, 'f', 1)
+                 .arg(s.uniformity, 0, 'f', 2);
+    if (s.excluded > 0)
+        lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());
+    const QString method = QString::fromLatin1(gridMethodName(shown_->method));
+    if (shown_->errorBarUnknown)
+        lines << tr("%1 cannot carry light through glass to %2 of %3 points: use bdpt (or auto); error bar unknown")
+                     .arg(method)
+                     .arg(shown_->litThroughGlass)
+                     .arg(s.counted);
+    else
+        lines << tr("error bar at most %1% (95%), %2").arg(100.0 * shown_->maxRelativeError, 0, 'f', 2).arg(method);
+    figures_->setText(lines.join('\n'));
     // Rows from the far side (largest j) down, as the plane is seen from above with u to the right.
     table_->setRowCount(layout_.nv);
     table_->setColumnCount(layout_.nu);
@@ -230,13 +249,25 @@ void GridPanel::showResult() {
         for (int i = 0; i < layout_.nu; ++i) {
             const size_t k = size_t(j) * size_t(layout_.nu) + size_t(i);
             const double e = shown_->lux[k];
+            if (shown_->insideGeometry[k]) {
+                // Not a reading: grey, hatched, no number that could be taken for one.
+                auto* item = new QTableWidgetItem(tr("inside"));
+                item->setTextAlignment(Qt::AlignCenter);
+                item->setBackground(QBrush(QColor(150, 150, 150), Qt::BDiagPattern));
+                item->setForeground(QColor(90, 90, 90));
+                item->setToolTip(tr("Inside geometry: excluded from Eavg, Emin, Emax and U0"));
+                table_->setItem(layout_.nv - 1 - j, i, item);
+                continue;
+            }
             auto* item = new QTableWidgetItem(QString::number(e, 'f', 0));
             item->setTextAlignment(Qt::AlignCenter);
             const double t = e > 0 ? std::log(e / lo) / std::log(hi / lo) : 0.0;
             const QColor c = falseColourRamp(std::clamp(t, 0.0, 1.0));
             item->setBackground(c);
             item->setForeground(c.lightnessF() > 0.55 ? Qt::black : Qt::white);
-            item->setToolTip(tr("%1 lx +- %2 lx").arg(e, 0, 'f', 1).arg(shown_->errorLux[k], 0, 'f', 1));
+            item->setToolTip(shown_->errorBarUnknown
+                                 ? tr("%1 lx, error bar unknown (light through glass missing)").arg(e, 0, 'f', 1)
+                                 : tr("%1 lx +- %2 lx").arg(e, 0, 'f', 1).arg(shown_->errorLux[k], 0, 'f', 1));
             table_->setItem(layout_.nv - 1 - j, i, item);
         }
     export_->setEnabled(true);
@@ -245,7 +276,8 @@ void GridPanel::showResult() {
 
 void GridPanel::exportCsv(const QString& path) const {
     if (!shown_) throw std::runtime_error("no grid result to export");
-    writeTextAtomically(path.toStdString(), gridCsv(layout_, shown_->lux, shown_->errorLux));
+    writeTextAtomically(path.toStdString(),
+                        gridCsv(layout_, shown_->lux, shown_->errorLux, shown_->insideGeometry, shown_->errorBarUnknown));
 }
 
 void GridPanel::exportClicked() {

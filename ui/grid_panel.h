@@ -3,7 +3,8 @@
 // unless set) or a rectangle drawn in the viewport on a floor, a table or a wall (two corner
 // clicks; core/calculation_grid.h, gridFromCorners), its illuminance computed in the background with a Monte Carlo error bar per point
 // (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
-// Emax and U0, and exported as CSV. A scene edit marks the result as out of date; Compute runs
+// Emax and U0 (points inside geometry grey, hatched and left out; a method that cannot carry
+// light through glass flagged: render/photometry/grid_diagnosis.h), and exported as CSV. A scene edit marks the result as out of date; Compute runs
 // again on the current scene. The calculation is a foreground request: it runs in a task arena of
 // its own (in the converging render's, whose job never ends, it could wait behind the render's
 // passes indefinitely) and holds the yield gate, so the render waits until it is done.

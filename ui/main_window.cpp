@@ -9,6 +9,7 @@
 #include "ui/commands/object_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
+#include "ui/display_controls.h"
 #include "ui/converging_render.h"
 #include "ui/grid_panel.h"
 #include "ui/image_export.h"
@@ -133,6 +134,8 @@ void MainWindow::createDocks() {
     connect(viewport_, &Viewport::lightPlaced, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
     connect(viewport_, &Viewport::objectClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Object, i); });
     connect(viewport_, &Viewport::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(compare_->displayControls(), &DisplayControls::message, this,
+            [this](const QString& text) { statusBar()->showMessage(text, 8000); });
     // Calculation grids drawn in the viewport.
     connect(gridPanel_, &GridPanel::drawRequested, this, [this] { viewport_->setTool(Viewport::Tool::GridRectangle); });
     connect(viewport_, &Viewport::gridRectangleDrawn, this, [this](const V3d& a, const V3d& n, const V3d& b) {

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace lucerna {
 
@@ -13,6 +14,40 @@ std::optional<Legend> luminanceLegend(const DisplaySettings& s) {
     if (!s.falseColour) return std::nullopt;
     return Legend{s.falseMin, s.falseMax, true,
                   s.quantity == FalseColourQuantity::Illuminance ? QStringLiteral("lx") : QStringLiteral("cd/m\u00b2")};
+}
+
+namespace {
+// The round number (1, 2 or 5 times a power of ten) at or below x (up = false) or at or above it.
+double roundNumber(double x, bool up) {
+    const double decade = std::pow(10.0, std::floor(std::log10(x)));
+    const double steps[] = {1, 2, 5, 10};
+    if (up) {
+        for (double m : steps)
+            if (m * decade >= x * (1 - 1e-12)) return m * decade;
+        return 10 * decade;
+    }
+    for (int k = 3; k >= 0; --k)
+        if (steps[k] * decade <= x * (1 + 1e-12)) return steps[k] * decade;
+    return decade;
+}
+}  // namespace
+
+std::optional<FalseColourRange> illuminanceRange(const Image& image) {
+    std::vector<double> values;
+    values.reserve(image.pixelCount());
+    for (size_t i = 0; i < image.pixelCount(); ++i)
+        if (const auto e = pixelIlluminance(image, i); e && *e > 0) values.push_back(*e);
+    if (values.empty()) return std::nullopt;
+    const auto at = [&](double q) {
+        const size_t k = std::min(values.size() - 1, size_t(q * double(values.size() - 1) + 0.5));
+        std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(k), values.end());
+        return values[k];
+    };
+    FalseColourRange r;
+    r.lo = roundNumber(at(0.02), false);
+    r.hi = roundNumber(at(0.98), true);
+    if (!(r.hi > r.lo)) r.hi = roundNumber(r.lo * 1.5, true);  // a uniform image: the next round number up
+    return r;
 }
 
 double legendPosition(const Legend& legend, double value) {

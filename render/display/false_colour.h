@@ -24,6 +24,14 @@ struct Legend {
 // The luminance legend of a display in false colour (log cd/m^2); nothing for a tone curve.
 std::optional<Legend> luminanceLegend(const DisplaySettings& settings);
 
+// The false-colour range an image's illuminance suggests (lx): its 2nd and 98th percentiles over
+// the pixels that have one (pixelIlluminance, above 0), widened to round numbers (1, 2 or 5 times
+// a power of ten) so that the legend's labels read plainly. Nothing when no pixel has a value.
+struct FalseColourRange {
+    double lo = 0, hi = 0;
+};
+std::optional<FalseColourRange> illuminanceRange(const Image& image);
+
 // The ramp position of `value` (0 at lo, 1 at hi, clamped).
 double legendPosition(const Legend& legend, double value);
 // The colour the legend shows for `value`.

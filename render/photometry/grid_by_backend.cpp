@@ -10,10 +10,10 @@ namespace lucerna {
 
 GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, TaskContext& ctx,
-                                const std::function<void(const GridResult&)>& onPass) {
+                                const std::function<void(const GridResult&)>& onPass, GridResult before) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
-    GridResult result = emptyGridResult(points.size());
+    GridResult result = std::move(before);
     if (points.empty()) return result;
 
     const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);

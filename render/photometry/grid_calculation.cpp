@@ -1,5 +1,6 @@
 #include "render/photometry/grid_calculation.h"
 
+#include "render/photometry/grid_diagnosis.h"
 #include "render/photometry/grid_statistics.h"
 #include "render/vpl/instant_radiosity.h"
 
@@ -29,12 +30,11 @@ const char* gridMethodName(GridMethod method) {
     return "?";
 }
 
-GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+namespace {
+// The path and ir methods: their irradiance estimators, pass by pass.
+GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                   const GridSettings& settings, TaskContext& ctx,
-                                  const std::function<void(const GridResult&)>& onPass) {
-    if (settings.method == GridMethod::Preview) return computeGridByPreview(scene, points, normal, settings, ctx, onPass);
-    if (settings.method != GridMethod::Path && settings.method != GridMethod::Vpl)
-        return computeGridByBackend(scene, points, normal, settings, ctx, onPass);
+                                  const std::function<void(const GridResult&)>& onPass, GridResult result) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     const IrradianceEstimator estimator(scene);
@@ -42,7 +42,6 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     const int count = int(points.size());
     std::vector<BatchMeans> batches(points.size());
     std::vector<double> passMean(points.size());
-    GridResult result = emptyGridResult(points.size());
     const int pointsPerTask = 16;
     const int samples =
         settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;
@@ -73,6 +72,24 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
         if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
     }
     return result;
+}
+}  // namespace
+
+GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                                  const GridSettings& requested, TaskContext& ctx,
+                                  const std::function<void(const GridResult&)>& onPass) {
+    GridResult start = emptyGridResult(points.size(), pointsInsideGeometry(scene, points, normal));
+    const std::vector<uint8_t> throughGlass = pointsLitThroughGlass(scene, points, normal);
+    for (size_t i = 0; i < points.size(); ++i) start.litThroughGlass += throughGlass[i] && !start.insideGeometry[i];
+    GridSettings settings = requested;
+    if (settings.autoMethod) settings.method = start.litThroughGlass > 0 ? GridMethod::Bdpt : GridMethod::Path;
+    start.method = settings.method;
+    start.errorBarUnknown = start.litThroughGlass > 0 && !carriesLightThroughGlass(settings.method);
+    if (settings.method == GridMethod::Preview)
+        return computeGridByPreview(scene, points, normal, settings, ctx, onPass, std::move(start));
+    if (settings.method != GridMethod::Path && settings.method != GridMethod::Vpl)
+        return computeGridByBackend(scene, points, normal, settings, ctx, onPass, std::move(start));
+    return computeGridByEstimator(scene, points, normal, settings, ctx, onPass, std::move(start));
 }
 
 }  // namespace lucerna

@@ -23,6 +23,7 @@
 
 #include <functional>
 #include <map>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ const char* gridMethodName(GridMethod method);
 
 struct GridSettings {
     GridMethod method = GridMethod::Path;
+    // Auto: the method chosen from the points (grid_diagnosis.h): bdpt when a delta light reaches
+    // some point only through glass, else path. `method` is then ignored.
+    bool autoMethod = false;
     // Estimates per point per pass; 0: the method's default, 16 for path and 1 for ir, whose
     // variance comes mostly from the VPL set, fresh each pass (measured on the interior scene:
     // 1 estimate on 16 light paths per pass reached 2% four times sooner than 4 on 64).
@@ -59,12 +63,21 @@ struct GridResult {
     int passes = 0;                  // path, ir: passes; the others: passes of each replica
     long long samplesPerPoint = 0;   // estimates (camera samples) per point, all replicas together
     double seconds = 0;
-    double maxRelativeError = 0;     // max over points of errorLux / max(lux, Eavg / 1000) (0 / 0: 0)
+    double maxRelativeError = 0;     // max over points of errorLux / max(lux, Eavg / 1000) (0 / 0: 0), points inside geometry left out
     bool converged = false;          // every point within the target
+    GridMethod method = GridMethod::Path;  // the method used (auto's choice)
+    // Per point, 1 when inside closed geometry (grid_diagnosis.h): left out of the figures and of
+    // the convergence test. Empty when nothing was checked.
+    std::vector<uint8_t> insideGeometry;
+    // Points a delta light reaches only through glass; when the method cannot carry that light
+    // (path, ir, preview), their values miss it and no error bar is backed: errorBarUnknown.
+    int litThroughGlass = 0;
+    bool errorBarUnknown = false;
 };
 
 // Computes the illuminance (lux, 683 Y(E)) on `points` (scene units), measured on the side the
-// unit `normal` faces. Progress in ctx is the fraction of the error target reached (or of the time
+// unit `normal` faces, after checking the points (grid_diagnosis.h): those inside geometry are
+// marked, and light through glass that the method cannot carry is flagged. Progress in ctx is the fraction of the error target reached (or of the time
 // limit); `onPass`, if given, sees the result after each pass (on the calling thread).
 GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                   const GridSettings& settings, TaskContext& ctx,

@@ -33,8 +33,10 @@ double relativeError(double mean, double halfWidth, double floor) {
 }
 }  // namespace
 
-GridResult emptyGridResult(size_t points) {
+GridResult emptyGridResult(size_t points, const std::vector<uint8_t>& insideGeometry) {
     GridResult r;
+    r.insideGeometry = insideGeometry;
+    r.insideGeometry.resize(points, 0);
     r.lux.assign(points, 0.0);
     r.errorLux.assign(points, std::numeric_limits<double>::infinity());
     return r;
@@ -53,14 +55,20 @@ bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const Grid
     result.lux.resize(points.size());
     result.errorLux.resize(points.size());
     result.maxRelativeError = 0;
-    double average = 0;
+    result.insideGeometry.resize(points.size(), 0);
+    double sum = 0;
+    int counted = 0;
     for (size_t i = 0; i < points.size(); ++i) {
         result.lux[i] = points[i].mean();
         result.errorLux[i] = points[i].halfWidth95();
-        average += std::max(0.0, result.lux[i]) / double(points.size());
+        if (result.insideGeometry[i]) continue;
+        sum += std::max(0.0, result.lux[i]);
+        ++counted;
     }
+    const double average = counted > 0 ? sum / counted : 0.0;
     for (size_t i = 0; i < points.size(); ++i)
-        result.maxRelativeError =
+        if (!result.insideGeometry[i])
+            result.maxRelativeError =
             std::max(result.maxRelativeError, relativeError(result.lux[i], result.errorLux[i], 1e-3 * average));
     result.converged = trusted && result.maxRelativeError <= settings.targetRelativeError;
     double progress = trusted && std::isfinite(result.maxRelativeError)

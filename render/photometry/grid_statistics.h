@@ -28,8 +28,9 @@ struct BatchMeans {
     double halfWidth95() const;
 };
 
-// A result for `points` points before any estimate: zero lux, infinite error bars.
-GridResult emptyGridResult(size_t points);
+// A result for `points` points before any estimate: zero lux, infinite error bars, the points
+// inside geometry marked (left out of finishRound's test).
+GridResult emptyGridResult(size_t points, const std::vector<uint8_t>& insideGeometry = {});
 
 // A sensor at each point (scene units, as float), all facing `normal` (normalised here).
 std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3d& normal);
@@ -42,14 +43,15 @@ std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass);
 
-// The bdpt, mir, mlt and cmlt methods (grid_calculation.h).
+// The bdpt, mir, mlt and cmlt methods (grid_calculation.h); `before` is the result before any
+// estimate (emptyGridResult, with the checks of the points).
 GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, TaskContext& ctx,
-                                const std::function<void(const GridResult&)>& onPass);
+                                const std::function<void(const GridResult&)>& onPass, GridResult before);
 
 // The preview method (grid_calculation.h).
 GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, TaskContext& ctx,
-                                const std::function<void(const GridResult&)>& onPass);
+                                const std::function<void(const GridResult&)>& onPass, GridResult before);
 
 }  // namespace lucerna

@@ -40,21 +40,50 @@ VplReceiver IrradianceEstimator::receiver(const IrradianceSensor& sensor) const 
     return r;
 }
 
-Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r) const {
+float thinPaneTransmittance(const RenderScene& scene, const Ray& shadowRay) {
+    const float length = shadowRay.direction.length();
+    if (!(length > 0)) return 1.0f;
+    const V3f d = shadowRay.direction / length;
+    Ray ray = shadowRay;
+    float transmittance = 1.0f;
+    for (int crossing = 0; crossing < 64; ++crossing) {
+        float t = 0;
+        const std::optional<SurfacePoint> hit = scene.intersect(ray, &t);
+        if (!hit || !(t < ray.tFar)) return transmittance;
+        const ShadingMaterial& m = scene.material(hit->material);
+        if (m.type != MaterialType::Dielectric) return 0.0f;
+        // cos < 0: the ray leaves the medium through this face (fresnelDielectric then uses 1 / eta).
+        transmittance *= 1.0f - fresnelDielectric(-d.dot(hit->ng), m.ior);
+        const V3f origin = hit->spawnOrigin(d);
+        // The rest of the segment, in multiples of the original direction.
+        const float travelled = (origin - ray.origin).dot(ray.direction) / ray.direction.dot(ray.direction);
+        ray = Ray{origin, ray.direction, 0.0f, ray.tFar - travelled};
+        if (!(ray.tFar > 0) || transmittance <= 0) return transmittance;
+    }
+    return 0.0f;  // a ray still in glass after 64 faces: call it blocked
+}
+
+Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r, bool throughPanes) const {
     const Frame frame(r.x.ng);
     Rgb Lo(0, 0, 0);
     for (size_t i = 0; i < scene_.lights().deltaLights().size(); ++i) {
         LightSample ls;
         if (!scene_.lights().sampleDeltaLight(i, r.x, ls)) continue;
         const float cosTheta = frame.toLocal(ls.wi).z;
-        if (cosTheta <= 0.0f || scene_.occluded(ls.shadowRay)) continue;
-        Lo += white_.albedo * ls.value * float(cosTheta / std::numbers::pi);
+        if (cosTheta <= 0.0f) continue;
+        float transmittance = 1.0f;
+        if (scene_.occluded(ls.shadowRay)) {
+            if (!throughPanes) continue;
+            transmittance = thinPaneTransmittance(scene_, ls.shadowRay);
+            if (transmittance <= 0.0f) continue;
+        }
+        Lo += white_.albedo * ls.value * float(transmittance * cosTheta / std::numbers::pi);
     }
     return Lo;
 }
 
-Rgb IrradianceEstimator::deltaLightsIrradiance(const IrradianceSensor& sensor) const {
-    return deltaLightsReflected(receiver(sensor)) * float(std::numbers::pi);
+Rgb IrradianceEstimator::deltaLightsIrradiance(const IrradianceSensor& sensor, bool throughPanes) const {
+    return deltaLightsReflected(receiver(sensor), throughPanes) * float(std::numbers::pi);
 }
 
 IrradianceSensor IrradianceEstimator::lifted(const IrradianceSensor& sensor) const {

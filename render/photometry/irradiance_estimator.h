@@ -25,6 +25,15 @@
 
 namespace lucerna {
 
+// The fraction of light a shadow ray carries through the glass on its way: 1 when nothing
+// blocks it, 0 when anything but a dielectric does, else the product over the dielectric
+// interfaces it crosses of 1 - F (exact Fresnel at each crossing's angle), the ray going on
+// straight. For a pane with parallel faces this is the light that arrives less its
+// inter-reflections (a further (1 + R^2) factor, 0.2% at normal incidence for n = 1.5) and the
+// pane's sideways shift of the ray (of the order of its thickness: negligible a lamp's distance
+// away); for curved glass (a lens, a bulb) it is not the light that arrives.
+float thinPaneTransmittance(const RenderScene& scene, const Ray& shadowRay);
+
 class IrradianceEstimator {
 public:
     explicit IrradianceEstimator(const RenderScene& scene, const GatherSettings& gather = {});
@@ -35,8 +44,10 @@ public:
     // indirect light from `vpls` (an unbiased VPL set, instant_radiosity.h).
     Rgb sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const;
     // E at the sensor from the delta lights alone, exactly (one shadow ray each): what a sensor
-    // rendered by a backend misses (sensor.h).
-    Rgb deltaLightsIrradiance(const IrradianceSensor& sensor) const;
+    // rendered by a backend misses (sensor.h). With throughPanes, a shadow ray that meets only
+    // glass passes, scaled by thinPaneTransmittance (the sensor methods' answer to a lamp behind
+    // a window, which no random path can reach: a delta light seen through a delta interface).
+    Rgb deltaLightsIrradiance(const IrradianceSensor& sensor, bool throughPanes = false) const;
     // The sensor moved off a surface it may lie on, along its normal, by more than the error
     // bound of a surface point there: a position a backend's rays can start from.
     IrradianceSensor lifted(const IrradianceSensor& sensor) const;
@@ -46,7 +57,7 @@ private:
     // Error bound of a point of this scene's surfaces near p (per axis).
     float errorBound(const V3f& p) const;
     // Radiance the white surface reflects toward its normal from all delta lights together.
-    Rgb deltaLightsReflected(const VplReceiver& r) const;
+    Rgb deltaLightsReflected(const VplReceiver& r, bool throughPanes = false) const;
 
     const RenderScene& scene_;
     ShadingMaterial white_;

@@ -7,13 +7,14 @@
 
 namespace lucerna {
 
-PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors) {
+PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors,
+                               bool throughPanes) {
     const IrradianceEstimator estimator(scene);
     PreparedSensors out;
     out.lifted.reserve(sensors.size());
     out.deltaLux.reserve(sensors.size());
     for (const IrradianceSensor& s : sensors) {
-        out.deltaLux.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s))));
+        out.deltaLux.push_back(kLumensPerWatt * double(luminance(estimator.deltaLightsIrradiance(s, throughPanes))));
         out.lifted.push_back(estimator.lifted(s));
     }
     return out;
@@ -24,7 +25,7 @@ SensorRender::SensorRender(const RenderScene& scene, const std::string& backend,
                            const std::map<std::string, std::string>& options) {
     const BackendInfo* info = findBackend(backend);
     if (!info) throw std::runtime_error("no backend " + backend);
-    PreparedSensors prepared = prepareSensors(scene, sensors);
+    PreparedSensors prepared = prepareSensors(scene, sensors, /*throughPanes=*/true);
     deltaLux_ = std::move(prepared.deltaLux);
     sensor_ = std::make_shared<const Sensor>(std::move(prepared.lifted), pixelsPerSide);
     RenderSettings rs;

@@ -15,12 +15,15 @@
 namespace lucerna {
 
 // What a backend or the preview needs of sensors: each moved off the surface it may lie on
-// (IrradianceEstimator::lifted), and the illuminance (lux) the delta lights give it exactly.
+// (IrradianceEstimator::lifted), and the illuminance (lux) the delta lights give it exactly
+// (through glass panes with throughPanes: the backends, which carry the rest of that light through
+// the glass on their light paths).
 struct PreparedSensors {
     std::vector<IrradianceSensor> lifted;
     std::vector<double> deltaLux;
 };
-PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors);
+PreparedSensors prepareSensors(const RenderScene& scene, const std::vector<IrradianceSensor>& sensors,
+                               bool throughPanes = false);
 
 class SensorRender {
 public:
