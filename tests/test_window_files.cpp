@@ -32,13 +32,14 @@ using namespace lucerna::test;
 namespace {
 constexpr int kTimeout = 30000;  // ms; generous for a loaded machine, never a timing assertion
 
-// A model of two quads (a table top and a lamp panel that glows) as OBJ with its MTL, in metres.
+// A table of two quads (its top, 0.75 m up, and a leg board) as OBJ with its MTL, in metres.
 void writeModel(const QString& folder) {
     QFile obj(QDir(folder).filePath("table.obj")), mtl(QDir(folder).filePath("table.mtl"));
     QVERIFY(obj.open(QIODevice::WriteOnly) && mtl.open(QIODevice::WriteOnly));
     obj.write("mtllib table.mtl\n"
               "v -0.6 0.75 -0.4\nv 0.6 0.75 -0.4\nv 0.6 0.75 0.4\nv -0.6 0.75 0.4\n"
-              "usemtl wood\nf 1 4 3 2\n");
+              "v -0.1 0 0\nv 0.1 0 0\nv 0.1 0.75 0\nv -0.1 0.75 0\n"
+              "usemtl wood\nf 1 4 3 2\nf 5 6 7 8\n");
     mtl.write("newmtl wood\nKd 0.5 0.3 0.1\n");
 }
 
@@ -155,8 +156,8 @@ void TestWindowFiles::newSceneAndImportIntoEither() {
     QCOMPARE(fresh.objects[0].name, std::string("floor"));
     QVERIFY(w.document()->path().empty());
     QVERIFY(w.document()->isModified());
-    QCOMPARE(fresh.objects[0].worldMesh->vertices[0].y, 0.75);  // the floor under the table top
-    QCOMPARE_LT((fresh.camera.target - V3d(0, 0.75, 0)).length(), 1e-9);
+    QCOMPARE(fresh.objects[0].worldMesh->vertices[0].y, 0.0);  // the floor under the table's leg
+    QCOMPARE_LT((fresh.camera.target - V3d(0, 0.375, 0)).length(), 1e-9);
     QCOMPARE(fresh.lights.size(), size_t(1));  // the model has none: the new scene's stays
     QCOMPARE_GT(fresh.lights[0].position.y, 0.75);
     QVERIFY(previewOf(w, w.document()->snapshot()));
@@ -175,6 +176,13 @@ void TestWindowFiles::newSceneAndImportIntoEither() {
     QVERIFY(!w.document()->isModified());
     QVERIFY(previewOf(w, w.document()->snapshot()));
     screenshot(w, "new_scene");
+    // A click that places nothing says why: the sky above the floor has no surface.
+    QVERIFY(w.viewport()->setTool(Viewport::Tool::PlacePoint));
+    const QRectF image = w.viewport()->imageRect();
+    click(w.viewport(), image.topLeft() + QPointF(image.width() / 2, 4));
+    QCOMPARE(w.document()->scene().lights.size(), size_t(1));
+    QVERIFY2(w.statusBar()->currentMessage().contains("No surface there"), qPrintable(w.statusBar()->currentMessage()));
+    w.viewport()->setTool(Viewport::Tool::Navigate);
     // Untitled: the next dialog opens where the last one ended (cancelled).
     dialogs.answer.clear();
     trigger(w, "actionOpen");
@@ -372,6 +380,8 @@ void TestWindowFiles::lightDragUpdatesThePreviewBeforeRelease() {
     trigger(w, "actionAddPointLight");
     Viewport* viewport = w.viewport();
     QVERIFY(previewOf(w, w.document()->snapshot()));
+    // With the light's fields in the properties dock, the docks still leave the viewport half.
+    QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
     QTRY_VERIFY_WITH_TIMEOUT(viewport->lightMarker(0).has_value(), kTimeout);
     const QPointF from = *viewport->lightMarker(0);
     const V3d start = w.document()->scene().lights[0].position;

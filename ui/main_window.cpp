@@ -36,7 +36,7 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QPushButton>
-#include <QSettings>
+#include <QScrollArea>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -91,10 +91,22 @@ void MainWindow::createDocks() {
     outliner_->setObjectName("outliner");
     properties_ = new LightProperties(doc_.get(), this);
     properties_->setObjectName("lightProperties");
-    const auto dock = [this](QWidget* w, const QString& title, const QString& name, Qt::DockWidgetArea area) {
+    const auto dock = [this](QWidget* w, const QString& title, const QString& name, Qt::DockWidgetArea area,
+                             bool scrolls = false) {
         auto* d = new QDockWidget(title, this);
         d->setObjectName(name);  // saveState() needs names
-        d->setWidget(w);
+        if (scrolls) {
+            // Panels with rows of fields would make their dock as wide as the widest row, and
+            // the viewport narrower each time one shows (a light's position fields): they
+            // scroll instead, and the docks keep the sizes the user gave them.
+            auto* scroll = new QScrollArea(d);
+            scroll->setWidget(w);
+            scroll->setWidgetResizable(true);
+            scroll->setFrameShape(QFrame::NoFrame);
+            d->setWidget(scroll);
+        } else {
+            d->setWidget(w);
+        }
         // A click anywhere in a dock takes the focus from the viewport, so that keys typed
         // afterwards do not fly the camera (Qt gives the focus to the nearest ancestor of the
         // clicked widget that takes it on a click).
@@ -102,10 +114,10 @@ void MainWindow::createDocks() {
         addDockWidget(area, d);
         return d;
     };
-    QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea);
+    QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea, true);
     QDockWidget* outlinerDock = dock(outliner_, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     propertiesPanel_ = new PropertiesPanel(doc_.get(), properties_, this);
-    dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea, true);
     // The comparison shares the render's side, a tab behind it.
     compare_ = new CompareView(this);
     compare_->setObjectName("compareView");
@@ -147,10 +159,8 @@ void MainWindow::createDocks() {
 
 void MainWindow::defaultDockSizes() {
     // The viewport keeps more than half the width (LayoutState); the converged image beside it.
-    // (The render panel's controls need about 480 px: below about 1450 px of window the
-    // viewport gets less than half.)
-    const int side = std::max(220, width() / 6);
-    const int render = std::max(240, int(width() * (1 - LayoutState::kMinViewportShare)) - side - 20);
+    const int side = std::max(200, width() / 6);
+    const int render = std::max(200, int(width() * (1 - LayoutState::kMinViewportShare)) - side - 20);
     resizeDocks({outlinerDock_, renderDock_}, {side, render}, Qt::Horizontal);
 }
 
