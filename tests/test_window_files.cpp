@@ -312,6 +312,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
     QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
     QVERIFY(!grid->isFloating());
     QVERIFY(w.findChild<QDockWidget*>("propertiesDock")->isVisible());
+    screenshot(w, "layout_reset");
 }
 
 void TestWindowFiles::shortcutsFromAnyDock() {

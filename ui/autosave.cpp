@@ -80,7 +80,7 @@ std::optional<Autosave::Recovery> Autosave::pending(const QString& directory, QS
     const QString documentPath = lines.value(1);
     const bool unclean = !runner.isEmpty() && QString::fromUtf8(readAll(runFile(directory))) == runner;
     const bool newer = documentPath.isEmpty() || !QFileInfo::exists(documentPath) ||
-                       QFileInfo(scene).lastModified() > QFileInfo(documentPath).lastModified();
+                       QFileInfo(scene).lastModified() >= QFileInfo(documentPath).lastModified();  // equal: coarse clocks
     if (!unclean || !newer) {
         scene.close();
         origin.close();
