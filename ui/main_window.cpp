@@ -1,7 +1,6 @@
 #include "ui/main_window.h"
 
 #include "core/exr_io.h"
-#include "core/scene_geometry.h"
 #include "core/scene_io.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
@@ -424,18 +423,8 @@ bool MainWindow::importModelFile(const QString& path, ImportTarget target) {
     QStringList report;
     try {
         if (target == ImportTarget::NewScene) {
-            // Prepared against an empty scene of the new one's unit, then the scene made at once:
-            // a new document, not an undo step of the old one.
-            Scene scene = newSceneWithFloor(QFileInfo(path).absolutePath().toStdString());
-            const Document fresh{Scene(scene)};
-            PreparedImport imported = prepareModelImport(fresh, path);
-            report = imported.report;
-            const size_t firstModelObject = scene.objects.size();
-            scene.objects.insert(scene.objects.end(), imported.objects.begin(), imported.objects.end());
-            scene.materials.insert(scene.materials.end(), imported.materials.begin(), imported.materials.end());
-            scene.lights.insert(scene.lights.end(), imported.lights.begin(), imported.lights.end());
-            arrangeAroundModel(scene, firstModelObject, imported.lights.size());
-            doc_->reset(std::move(scene));
+            // A new document, not an undo step of the old one.
+            doc_->reset(newSceneWithModel(path, &report));
             doc_->setPath({});
             doc_->undoStack()->resetClean();  // an untitled scene with content is unsaved work
             render_->start();

@@ -2,6 +2,9 @@
 
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
+#include "ui/model_import_action.h"
+
+#include <QFileInfo>
 
 #include <algorithm>
 #include <cmath>
@@ -61,6 +64,19 @@ void arrangeAroundModel(Scene& scene, size_t firstModelObject, size_t modelLight
     camera.target = centre;
     camera.up = V3d(0, 1, 0);
     camera.position = centre + V3d(0.45, 0.35, 1.0).normalized() * (1.1 * radius / std::sin(camera.fovYDeg * M_PI / 360.0));
+}
+
+Scene newSceneWithModel(const QString& path, QStringList* report) {
+    Scene scene = newSceneWithFloor(QFileInfo(path).absolutePath().toStdString());
+    // Prepared against the new scene (its unit, its names), then added to it.
+    PreparedImport imported = prepareModelImport(Document(Scene(scene)), path);
+    if (report) *report = imported.report;
+    const size_t firstModelObject = scene.objects.size();
+    scene.objects.insert(scene.objects.end(), imported.objects.begin(), imported.objects.end());
+    scene.materials.insert(scene.materials.end(), imported.materials.begin(), imported.materials.end());
+    scene.lights.insert(scene.lights.end(), imported.lights.begin(), imported.lights.end());
+    arrangeAroundModel(scene, firstModelObject, imported.lights.size());
+    return scene;
 }
 
 }  // namespace lucerna

@@ -3,6 +3,9 @@
 
 #include "core/scene.h"
 
+#include <QString>
+#include <QStringList>
+
 #include <string>
 
 namespace lucerna {
@@ -17,5 +20,9 @@ Scene newSceneWithFloor(const std::string& folder);
 // the model and grows to twice its size, the camera frames it from the front-right and above,
 // and the new scene's own light stays (moved above the model) only when the model brought none.
 void arrangeAroundModel(Scene& scene, size_t firstModelObject, size_t modelLights);
+
+// newSceneWithFloor's scene with the model at `path` (ui/model_import_action.h) arranged in it by
+// arrangeAroundModel; `report` gets the import's report. Throws std::runtime_error with one line.
+Scene newSceneWithModel(const QString& path, QStringList* report);
 
 }  // namespace lucerna
