@@ -162,8 +162,11 @@ int renderImpl(const std::vector<std::string>& args) {
     TaskSystem tasks(r.threads);
     std::optional<RenderFrame> result;
     std::vector<float> illuminance;
+    // Whether the pass loop ended on a Ctrl-C (a later one, during the layers or the write,
+    // leaves a complete render).
+    bool stoppedEarly = false;
     PassLoopOptions loop;
-    if (r.saveOnInterrupt) loop.finishEarly = [] { return interrupted(); };
+    if (r.saveOnInterrupt) loop.finishEarly = [&stoppedEarly] { return stoppedEarly = interrupted(); };
     auto job = tasks.submit([&](TaskContext& ctx) {
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
@@ -190,7 +193,7 @@ int renderImpl(const std::vector<std::string>& args) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
-    const bool savedEarly = interrupted();
+    const bool savedEarly = stoppedEarly;
     if (savedEarly)
         std::fprintf(stderr, "render interrupted after %d passes; saving what converged so far\n", result->passes);
     // From here on the image is complete: a Ctrl-C during the write is ignored (README).

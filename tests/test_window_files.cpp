@@ -123,6 +123,8 @@ void TestWindowFiles::newSceneAndImportIntoEither() {
     QCOMPARE(w.statusBar()->currentMessage(), QString("Opened room.json"));
     MainWindow bundled(cornellPath());
     QVERIFY2(!bundled.statusBar()->currentMessage().contains('/'), qPrintable(bundled.statusBar()->currentMessage()));
+    // Dialogs for a bundled scene open in the user's documents, not in the installation.
+    QCOMPARE(bundled.fileDialogs()->folder(), QStandardPaths::writableLocation(QStandardPaths::DocumentsLocation));
 
     // Every dialog opens in the scene's folder (Save As here, cancelled).
     trigger(w, "actionSaveAs");

@@ -17,7 +17,8 @@ public:
     // caption, the folder the dialog opens in, the name filter; returns the chosen path or "".
     using Ask = std::function<QString(Mode mode, const QString& caption, const QString& folder, const QString& filter)>;
 
-    // `sceneFolder` gives the open document's folder ("" for an untitled scene).
+    // `sceneFolder` gives the open document's folder ("" for an untitled scene, or one whose
+    // folder is not the user's: the bundled scenes').
     FileDialogs(QWidget* parent, std::function<QString()> sceneFolder);
 
     QString open(const QString& caption, const QString& filter);

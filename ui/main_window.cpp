@@ -1,6 +1,7 @@
 #include "ui/main_window.h"
 
 #include "core/exr_io.h"
+#include "core/resources.h"
 #include "core/scene_io.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
@@ -53,7 +54,11 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     viewport_->setObjectName("viewport");
     setCentralWidget(viewport_);
     dialogs_ = std::make_unique<FileDialogs>(this, [this] {
-        return doc_->path().empty() ? QString() : QFileInfo(QString::fromStdString(doc_->path())).absolutePath();
+        const QString folder =
+            doc_->path().empty() ? QString() : QFileInfo(QString::fromStdString(doc_->path())).absolutePath();
+        // The bundled scenes' folder belongs to the installation, not to the user's files.
+        const QString bundled = QDir(QString::fromStdString(resourceDirectory())).absolutePath();
+        return folder == bundled || folder.startsWith(bundled + '/') ? QString() : folder;
     });
     createDocks();
     createMenus();
