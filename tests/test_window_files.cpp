@@ -377,7 +377,6 @@ void TestWindowFiles::shortcutsFromAnyDock() {
 
 void TestWindowFiles::lightDragUpdatesThePreviewBeforeRelease() {
     MainWindow w(cornellPath());
-    w.resize(1200, 800);
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     trigger(w, "actionAddPointLight");
