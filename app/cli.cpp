@@ -37,7 +37,24 @@ struct RenderArgs {
     int threads = 0;
     unsigned layers = 0;  // --layers: extra EXR layers (README), none by default
     int illuminanceSpp = 16;  // estimates per pixel of the illuminance layer
+    bool png = false;             // -o NAME.png: a tone-mapped picture instead of the EXR
+    bool saveOnInterrupt = false; // Ctrl-C ends at a pass boundary and writes the passes done
 };
+
+bool endsWithNoCase(const std::string& s, const std::string& suffix) {
+    return s.size() >= suffix.size() &&
+           std::equal(suffix.begin(), suffix.end(), s.end() - std::ptrdiff_t(suffix.size()),
+                      [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
+}
+
+// The sRGB picture of an image (render/display/display.h's tone curve at `exposure` stops),
+// written whole or not at all, as `convert` writes it.
+void writePngPicture(const Image& image, const std::string& path, float exposure) {
+    const QImage png = toDisplayImage(image, exposure);
+    QSaveFile file(QString::fromStdString(path));
+    if (!file.open(QIODevice::WriteOnly) || !png.save(&file, "PNG") || !file.commit())
+        throw UsageError(path + ": cannot write");
+}
 
 RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     RenderArgs r;
@@ -62,12 +79,18 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
             if (!bits) throw UsageError("--layers: " + error);
             r.layers = *bits;
         } else if (a == "--option") addBackendOption(value(), r.settings.options);
+        else if (a == "--save-on-interrupt") r.saveOnInterrupt = true;
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (r.scene.empty()) r.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
     }
     if (r.scene.empty()) throw UsageError("render: no scene file given");
     if (r.output.empty()) throw UsageError("render: no output file given (-o OUT.exr)");
+    // The name says the format: never an EXR under another image type's name.
+    r.png = endsWithNoCase(r.output, ".png");
+    if (!r.png && !endsWithNoCase(r.output, ".exr"))
+        throw UsageError(r.output + ": unknown image type (-o NAME.exr for radiance, NAME.png for a tone-mapped picture)");
+    if (r.png && r.layers) throw UsageError("--layers needs an EXR output (-o NAME.exr), not " + r.output);
     return r;
 }
 
@@ -139,11 +162,16 @@ int renderImpl(const std::vector<std::string>& args) {
     TaskSystem tasks(r.threads);
     std::optional<RenderFrame> result;
     std::vector<float> illuminance;
+    // Whether the pass loop ended on a Ctrl-C (a later one, during the layers or the write,
+    // leaves a complete render).
+    bool stoppedEarly = false;
+    PassLoopOptions loop;
+    if (r.saveOnInterrupt) loop.finishEarly = [&stoppedEarly] { return stoppedEarly = interrupted(); };
     auto job = tasks.submit([&](TaskContext& ctx) {
         backend->prepare(ctx);
         if (ctx.isCancelled()) return;
-        RenderFrame frame = runProgressive(*backend, backendName, r.settings, ctx);
-        if (ctx.isCancelled()) return;
+        RenderFrame frame = runProgressive(*backend, backendName, r.settings, ctx, nullptr, loop);
+        if (ctx.isCancelled() || (frame.passes == 0 && interrupted())) return;  // nothing converged to save
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
             // By the render's own backend's machinery (illuminance_layer.h).
@@ -155,19 +183,25 @@ int renderImpl(const std::vector<std::string>& args) {
         result = std::move(frame);
     });
     try {
-        waitShowingProgress(*job, backendName);
+        // With --save-on-interrupt the first Ctrl-C is the pass loop's (it finishes), a second
+        // one cancels.
+        waitShowingProgress(*job, backendName, r.saveOnInterrupt ? 2 : 1);
     } catch (const std::bad_alloc&) {
         throw UsageError(tooLargeForMemory(width, height));
     }
-    if (interrupted() || !result) {
+    if ((interrupted() && !r.saveOnInterrupt) || !result) {
         std::cerr << "render interrupted; no file written\n";
         return 130;
     }
+    const bool savedEarly = stoppedEarly;
+    if (savedEarly)
+        std::fprintf(stderr, "render interrupted after %d passes; saving what converged so far\n", result->passes);
     // From here on the image is complete: a Ctrl-C during the write is ignored (README).
     try {
         if (r.layers & kAllLayers) addSurfaceLayers(result->image, scene, r.layers);
         if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
-        writeExr(r.output, result->image);
+        if (r.png) writePngPicture(result->image, r.output, 0.0f);
+        else writeExr(r.output, result->image);
     } catch (const std::bad_alloc&) {
         throw UsageError(tooLargeForMemory(width, height));
     } catch (const ImageError& e) {
@@ -182,7 +216,8 @@ int renderImpl(const std::vector<std::string>& args) {
         if (key.starts_with(prefix) && key.ends_with(suffix) && !value.empty())
             std::fprintf(stderr, "note: %s: %s\n", key.substr(prefix.size(), key.size() - prefix.size() - suffix.size()).c_str(),
                          value.c_str());
-    return 0;
+    // Saved, but not the render asked for: a script can tell (README, "Interrupting").
+    return savedEarly ? 130 : 0;
 }
 
 int compareImpl(const std::vector<std::string>& args) {
@@ -319,10 +354,7 @@ int convertImpl(const std::vector<std::string>& args) {
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    const QImage png = toDisplayImage(image, exposure);
-    QSaveFile file(QString::fromStdString(args[1]));
-    if (!file.open(QIODevice::WriteOnly) || !png.save(&file, "PNG") || !file.commit())
-        throw UsageError(args[1] + ": cannot write");
+    writePngPicture(image, args[1], exposure);
     return 0;
 }
 
@@ -336,8 +368,9 @@ int convert(const std::vector<std::string>& args) { return runCommand(convertImp
 void printUsage() {
     std::cout << "usage:\n"
                  "  lucerna [SCENE.json]                      open the application\n"
-                 "  lucerna render SCENE.json -o OUT.exr [--backend NAME] [--spp N | --time SECONDS]\n"
+                 "  lucerna render SCENE.json -o OUT.exr|OUT.png [--backend NAME] [--spp N | --time SECONDS]\n"
                  "                 [--seed N] [--threads N] [--width W --height H] [--option NAME=VALUE]\n"
+                 "                 [--save-on-interrupt]   Ctrl-C writes the passes done so far\n"
                  "                 [--layers albedo,normal,depth,illuminance,lights] [--illuminance-spp N]\n"
                  "                 extra EXR layers: the first visible surface, its illuminance in lux,\n"
                  "                 one layer per light\n"

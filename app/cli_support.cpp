@@ -16,8 +16,8 @@ namespace lucerna::cli {
 
 namespace {
 // The one piece of global state: a signal handler can only reach a flag of this type.
-volatile std::sig_atomic_t gInterrupted = 0;
-extern "C" void onInterrupt(int) { gInterrupted = 1; }
+volatile std::sig_atomic_t gInterrupted = 0;  // signals received
+extern "C" void onInterrupt(int) { gInterrupted = gInterrupted + 1; }
 
 // Only async-signal-safe calls: write and _exit.
 const char* gExitMessage = "";
@@ -52,6 +52,7 @@ void catchInterrupts() {
 }
 
 bool interrupted() { return gInterrupted != 0; }
+int interruptCount() { return int(gInterrupted); }
 
 std::string formatSeconds(double s) {
     char buf[32];
@@ -60,12 +61,12 @@ std::string formatSeconds(double s) {
     return buf;
 }
 
-void waitShowingProgress(TaskHandle& job, const std::string& label) {
+void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter) {
     const bool tty = isatty(STDERR_FILENO);
     const auto start = std::chrono::steady_clock::now();
     while (!job.isFinished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
-        if (interrupted()) job.cancel();
+        if (interruptCount() >= cancelAfter) job.cancel();
         if (tty) {
             const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
             const double p = job.progress();

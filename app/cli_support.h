@@ -32,9 +32,11 @@ void addBackendOption(const std::string& nameValue, std::map<std::string, std::s
                       const std::string& where = "--option");
 
 // Routes SIGINT and SIGTERM to a flag that long commands poll (they stop within a pass and
-// write nothing).
+// write nothing, or, for `render --save-on-interrupt`, at the next pass boundary and write what
+// converged so far). interruptCount() counts the signals since.
 void catchInterrupts();
 bool interrupted();
+int interruptCount();
 
 // Until a long command has work that polls the flag (while it loads its scene, say), SIGINT and
 // SIGTERM end it at once with `message` (a whole line, a string literal) on standard error and
@@ -57,9 +59,10 @@ class TaskHandle;
 
 namespace lucerna::cli {
 
-// Waits for a job, cancelling it on Ctrl-C, and shows "LABEL: 42.0%  1.2 s elapsed, 3.4 s left"
+// Waits for a job, cancelling it once `cancelAfter` interrupts have come (a first Ctrl-C may be
+// the job's own to answer), and shows "LABEL: 42.0%  1.2 s elapsed, 3.4 s left"
 // on standard error while it runs when that is a terminal. Rethrows what the job threw.
-void waitShowingProgress(TaskHandle& job, const std::string& label);
+void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter = 1);
 
 // Runs a command: UsageError gives "lucerna: MESSAGE" and 2, any other exception "lucerna:
 // internal error: ..." and 1.

@@ -8,6 +8,7 @@
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <QImage>
 #include <QProcess>
 #include <QTemporaryDir>
 #include <QtTest>
@@ -53,6 +54,8 @@ private slots:
     void infoPrintsStatistics();
     void interruptedRenderLeavesNoFile_data();
     void interruptedRenderLeavesNoFile();
+    void interruptedRenderSavesWhenAsked();
+    void renderWritesPngByName();
     void benchWritesCsvAndPlot();
     void benchBadUsage();
 };
@@ -88,6 +91,9 @@ void TestCli::renderBadUsage_data() {
     QTest::newRow("negative time") << QStringList{"render", kCornell, "-o", "x.exr", "--time", "-1"};
     QTest::newRow("huge width") << QStringList{"render", kCornell, "-o", "x.exr", "--width", "20000"};
     QTest::newRow("unknown option") << QStringList{"render", kCornell, "-o", "x.exr", "--fast"};
+    QTest::newRow("tiff output") << QStringList{"render", kCornell, "-o", "x.tiff"};
+    QTest::newRow("no extension") << QStringList{"render", kCornell, "-o", "x"};
+    QTest::newRow("layers in a png") << QStringList{"render", kCornell, "-o", "x.png", "--layers", "albedo"};
     QTest::newRow("missing value") << QStringList{"render", kCornell, "-o", "x.exr", "--seed"};
     QTest::newRow("missing scene") << QStringList{"render", "/nonexistent/scene.json", "-o", "x.exr"};
     QTest::newRow("bad path option") << QStringList{"render", kCornell, "-o", "x.exr", "--option", "max_depth=-3"};
@@ -210,6 +216,62 @@ void TestCli::interruptedRenderLeavesNoFile() {
     QVERIFY(p.waitForFinished(10000));  // stops promptly, not after the budget
     QCOMPARE(p.exitCode(), 130);
     QVERIFY(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden).isEmpty());
+}
+
+// --save-on-interrupt: the first Ctrl-C ends the pass loop at the next pass boundary and the
+// passes done are written (atomically, with their real spp); exit status 130 all the same.
+void TestCli::interruptedRenderSavesWhenAsked() {
+    QTemporaryDir dir;
+    const QString out = dir.filePath("long.exr");
+    QProcess p;
+    p.start(LUCERNA_BINARY, {"render", kCornell, "-o", out, "--backend", "path", "--time", "60", "--width", "48",
+                             "--height", "48", "--save-on-interrupt"});
+    QVERIFY(p.waitForStarted());
+    QTest::qWait(2000);  // loading done, passes under way
+    QCOMPARE(p.state(), QProcess::Running);
+    ::kill(pid_t(p.processId()), SIGINT);
+    QVERIFY(p.waitForFinished(10000));  // at the next pass boundary, not after the budget
+    const QString err = p.readAllStandardError();
+    QCOMPARE(p.exitStatus(), QProcess::NormalExit);
+    QCOMPARE(p.exitCode(), 130);
+    QVERIFY2(err.contains("saving what converged so far"), qPrintable(err));
+    // The file and nothing else: the temporary was renamed over it.
+    QCOMPARE(QDir(dir.path()).entryList(QDir::Files | QDir::Hidden), QStringList{"long.exr"});
+    const Image image = readExr(out.toStdString());
+    QCOMPARE(image.width, 48);
+    const double spp = std::stod(image.attributes.at("lucerna:spp"));
+    const double seconds = std::stod(image.attributes.at("lucerna:seconds"));
+    QVERIFY2(spp > 0, qPrintable(QString::number(spp)));
+    QVERIFY2(seconds > 0 && seconds < 30, qPrintable(QString::number(seconds)));  // far short of the 60 s asked
+    double sum = 0;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) sum += luminance(image.at(x, y));
+    QVERIFY(std::isfinite(sum) && sum > 0);
+}
+
+// -o NAME.png writes the tone-mapped picture (as `convert` does), never an EXR under that name.
+void TestCli::renderWritesPngByName() {
+    QTemporaryDir dir;
+    const QString png = dir.filePath("cb.PNG"), exr = dir.filePath("cb.exr"), converted = dir.filePath("conv.png");
+    const QStringList common{"--backend", "path", "--spp", "2", "--width", "40", "--height", "30", "--seed", "3",
+                             "--threads", "1"};
+    const Run r = runLucerna(QStringList{"render", kCornell, "-o", png} + common);
+    QCOMPARE(r.exitCode, 0);
+    QFile f(png);
+    QVERIFY(f.open(QIODevice::ReadOnly));
+    QCOMPARE(f.read(8), QByteArray("\x89PNG\r\n\x1a\n", 8));
+    f.close();
+    const QImage picture(png, "PNG");
+    QCOMPARE(picture.size(), QSize(40, 30));
+    // The same picture as rendering an EXR and converting it.
+    QCOMPARE(runLucerna(QStringList{"render", kCornell, "-o", exr} + common).exitCode, 0);
+    QCOMPARE(runLucerna({"convert", exr, converted}).exitCode, 0);
+    QCOMPARE(picture.convertToFormat(QImage::Format_RGB32), QImage(converted, "PNG").convertToFormat(QImage::Format_RGB32));
+    // Another image type is refused in one line, before any work, and nothing is written.
+    const Run tiff = runLucerna(QStringList{"render", kCornell, "-o", dir.filePath("cb.tiff")} + common);
+    QCOMPARE(tiff.exitCode, 2);
+    QVERIFY2(isOneLine(tiff.err) && tiff.err.contains("cb.tiff"), qPrintable(tiff.err));
+    QVERIFY(!QFile::exists(dir.filePath("cb.tiff")));
 }
 
 // A reference of our own at a small size (so the budget buys many passes), then two backends for

@@ -575,11 +575,11 @@ void TestEditingPanels::exportImagesWithLayers() {
              p.attributes.at("lucerna:backend"));
     QCOMPARE(readExr(dir_.filePath("both-converged.exr").toStdString()).channels.size(), size_t(7));
 
-    // The PNG of what the viewport shows: its picture, not the window; exposure applies.
+    // The PNG of the converged image at full resolution (the camera's), as the display shows it.
     const QString pngPath = dir_.filePath("screen.png");
     QVERIFY2(w.exportPng(pngPath), qPrintable(w.lastError()));
     const QImage png(pngPath);
-    QCOMPARE(png.size(), QSize(frame->image.width, frame->image.height));
+    QCOMPARE(png.size(), QSize(c.width, c.height));
     std::set<QRgb> colours;
     for (int y = 0; y < png.height(); y += 4)
         for (int x = 0; x < png.width(); x += 4) colours.insert(png.pixel(x, y));

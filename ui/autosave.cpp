@@ -4,8 +4,10 @@
 
 #include <QDir>
 #include <QFile>
+#include <QFileInfo>
 #include <QSaveFile>
 #include <QStandardPaths>
+#include <QUuid>
 
 namespace lucerna {
 
@@ -15,6 +17,13 @@ namespace {
 // an untitled scene) with the document's own path on the second line.
 QString sceneFile(const QString& dir) { return QDir(dir).filePath("autosave.json"); }
 QString originFile(const QString& dir) { return QDir(dir).filePath("autosave.origin"); }
+// The run marker: the id of the newest run that has not closed cleanly (or is still running).
+QString runFile(const QString& dir) { return QDir(dir).filePath("run.marker"); }
+
+QByteArray readAll(const QString& path) {
+    QFile f(path);
+    return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+}
 
 bool writeAtomically(const QString& path, const QByteArray& bytes) {
     QSaveFile f(path);
@@ -23,7 +32,11 @@ bool writeAtomically(const QString& path, const QByteArray& bytes) {
 }  // namespace
 
 Autosave::Autosave(Document& document, QString directory, int intervalMs, QObject* parent)
-    : QObject(parent), document_(document), directory_(std::move(directory)) {
+    : QObject(parent), document_(document), directory_(std::move(directory)),
+      runId_(QUuid::createUuid().toByteArray(QUuid::WithoutBraces)) {
+    // Without a marker, a crash of this run would never be offered back: worth a try now and at
+    // each autosave.
+    if (QDir().mkpath(directory_)) writeAtomically(runFile(directory_), runId_);
     connect(&timer_, &QTimer::timeout, this, [this] { writeNow(); });
     timer_.start(intervalMs);
 }
@@ -35,12 +48,21 @@ bool Autosave::writeNow() {
         document_.path().empty() ? QDir(QString::fromStdString(scene.baseDir)).filePath("untitled.json").toStdString()
                                  : document_.path();
     if (!QDir().mkpath(directory_)) return false;
+    if (readAll(runFile(directory_)) != runId_ && !writeAtomically(runFile(directory_), runId_)) return false;
     // The origin first: a scene file without its origin is never read back.
-    return writeAtomically(originFile(directory_), QByteArray::fromStdString(parseAs + "\n" + document_.path() + "\n")) &&
+    return writeAtomically(originFile(directory_),
+                           QByteArray::fromStdString(parseAs + "\n" + document_.path() + "\n") + runId_ + "\n") &&
            writeAtomically(sceneFile(directory_), QByteArray::fromStdString(saveSceneToString(scene)));
 }
 
 void Autosave::discard() { discard(directory_); }
+
+void Autosave::closedCleanly() {
+    timer_.stop();
+    discard();
+    // Another run may have started since and written its own marker: that one stays.
+    if (readAll(runFile(directory_)) == runId_) QFile::remove(runFile(directory_));
+}
 
 void Autosave::discard(const QString& directory) {
     QFile::remove(sceneFile(directory));
@@ -52,6 +74,19 @@ std::optional<Autosave::Recovery> Autosave::pending(const QString& directory, QS
     if (!scene.exists() || !origin.exists() || !scene.open(QIODevice::ReadOnly) || !origin.open(QIODevice::ReadOnly))
         return std::nullopt;
     const QStringList lines = QString::fromUtf8(origin.readAll()).split('\n');
+    // Left by a run that closed cleanly (a clean switch to another scene, a second window's
+    // leftovers), or older than the scene's file: stale, not offered.
+    const QString runner = lines.value(2);
+    const QString documentPath = lines.value(1);
+    const bool unclean = !runner.isEmpty() && QString::fromUtf8(readAll(runFile(directory))) == runner;
+    const bool newer = documentPath.isEmpty() || !QFileInfo::exists(documentPath) ||
+                       QFileInfo(scene).lastModified() >= QFileInfo(documentPath).lastModified();  // equal: coarse clocks
+    if (!unclean || !newer) {
+        scene.close();
+        origin.close();
+        discard(directory);
+        return std::nullopt;
+    }
     try {
         Recovery r;
         r.scene = parseScene(scene.readAll().toStdString(), lines.value(0).toStdString());

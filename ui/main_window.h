@@ -22,6 +22,8 @@ namespace lucerna {
 
 class Autosave;
 class CompareView;
+class FileDialogs;
+class LayoutState;
 class ConvergingRender;
 class GridPanel;
 class LightProperties;
@@ -51,13 +53,22 @@ public:
     // PATH-converged.exr. Every EXR export carries albedo, normal and depth layers (README).
     bool exportPreviewExr(const QString& path);
     bool exportBothExr(const QString& path);
-    // The viewport's picture as the screen shows it (exposure, tone curve or false colour).
+    // The converging render's newest frame at full resolution, as the display settings show it
+    // (exposure, tone curve or false colour).
     bool exportPng(const QString& path);
+    // File > New without its question: an untitled scene with a floor (ui/new_scene.h).
+    void newScene();
     // Adds the mesh file as a new object with a material of its own: one undo step.
     bool importMeshFile(const QString& path);
     // Adds a model (OBJ+MTL, glTF, FBX, COLLADA, ...: objects, materials, lights) in one undo
     // step and shows the import report (ui/model_import_action.h) in a non-modal window.
-    bool importModelFile(const QString& path);
+    // Into a new scene (untitled, the model on a floor, the camera framing it) or the open one.
+    enum class ImportTarget { OpenScene, NewScene, Cancel };
+    bool importModelFile(const QString& path, ImportTarget target = ImportTarget::OpenScene);
+    // Replaces the question File > Import Model asks (new scene or this one).
+    void setImportQuestion(std::function<ImportTarget()> ask) { askImport_ = std::move(ask); }
+    // The menus' file dialogs (they open in the scene's folder; tests replace the question).
+    FileDialogs* fileDialogs() const { return dialogs_.get(); }
     // Edit > Add Luminaire without its file dialog: adds the IES or EULUMDAT file's luminaire as
     // one undo step and selects it; false (and a status message) when the file cannot be read.
     bool addLuminaireFile(const QString& path);
@@ -98,6 +109,8 @@ protected:
 private:
     void createDocks();
     void createMenus();
+    void defaultDockSizes();
+    ImportTarget askImportTarget();
     void showPreviewFrame();
     void updateTitle();
     void fail(const QString& message);
@@ -119,6 +132,9 @@ private:
     QLabel* previewInfo_ = nullptr;
     QDockWidget *renderDock_ = nullptr, *outlinerDock_ = nullptr;
     std::function<QMessageBox::StandardButton()> ask_, askRecovery_;
+    std::function<ImportTarget()> askImport_;
+    std::unique_ptr<FileDialogs> dialogs_;
+    LayoutState* layout_ = nullptr;
     std::unique_ptr<Autosave> autosave_;
     QString lastError_;
 };

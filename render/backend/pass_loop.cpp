@@ -62,6 +62,7 @@ RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backend
             continue;
         }
         if (!options.openEnded) {
+            if (options.finishEarly && options.finishEarly()) break;
             if (targetPasses > 0 && passes >= targetPasses) break;
             if (targetPasses == 0 && elapsed() >= budget) break;
         }

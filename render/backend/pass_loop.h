@@ -36,6 +36,9 @@ struct PassLoopOptions {
     // While this returns true the loop holds between passes (a user's pause, the preview's claim
     // on the cores); held time is not render time.
     std::function<bool()> hold;
+    // When this returns true the loop ends at the next pass boundary as if its budget were spent,
+    // and makes its final frame of the passes done (the command line's --save-on-interrupt).
+    std::function<bool()> finishEarly;
     // When set, frames from the fifth pass on carry the albedo under each pixel (kAlbedoLayer of
     // render/trace/surface_layers.h), traced once from this scene at the film's size, so that the
     // lux view can divide by it (render/display/display.h, pixelIlluminance).
