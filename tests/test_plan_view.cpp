@@ -13,6 +13,7 @@
 #include "render/display/false_colour.h"
 #include "ui/camera_navigation.h"
 #include "ui/camera_panel.h"
+#include "ui/grid_panel.h"
 #include "ui/iso_lines.h"
 #include "ui/main_window.h"
 #include "ui/outliner.h"
@@ -24,6 +25,7 @@
 
 #include <QFile>
 #include <QLabel>
+#include <QPushButton>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -85,6 +87,7 @@ private slots:
     void planShowsAndMovesALight();
     void gridDrawnWithIsoLux();
     void isoLinesOfARamp();
+    void computedGridOnTheInterior();
     void cameraPanelViewAllAndReset();
     void importedRoomsGetACameraInTheLargerRoom();
 };
@@ -217,6 +220,45 @@ void TestPlanView::gridDrawnWithIsoLux() {
         QVERIFY2(nearestColour(image, at, PlanView::isoLineColour(), 1) < 150,
                  qPrintable(QString("level %1 at %2, %3: %4").arg(level).arg(at.x()).arg(at.y()).arg(image.pixelColor(at.toPoint()).name())));
     }
+}
+
+void TestPlanView::computedGridOnTheInterior() {
+    // The bundled interior, a work-plane grid computed through the dock (0.5 m spacing, a loose
+    // 20% target: the test is about the drawing, not the numbers), then the plan.
+    MainWindow w(QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/interior.json"));
+    w.resize(1400, 900);
+    w.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&w));
+    GridPanel* panel = w.gridPanel();
+    child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+    child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(20.0);
+    QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+    QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), 60000);
+    const auto result = panel->result();
+    QVERIFY(result && !result->lux.empty());
+    trigger(w, "actionViewPlan");
+    PlanView* plan = w.planView();
+    QCoreApplication::processEvents();
+    const auto legend = plan->gridLegend();
+    QVERIFY(legend);
+    QVERIFY(!plan->isoLevelsShown().empty());
+    const QImage image = plan->grab().toImage();
+    QVERIFY(image.save("plan_interior_grid.png"));
+    QVERIFY(w.grab().save("plan_interior_window.png"));
+    // Every cell centre no light symbol or label covers shows its point's lux in the legend's colour.
+    const GridLayout& layout = panel->layout();
+    int matching = 0, checked = 0;
+    for (size_t k = 0; k < layout.points.size(); ++k) {
+        const QPointF at = plan->widgetOf(layout.points[k]);
+        bool nearLight = false;
+        for (int i = 0; i < int(w.document()->scene().lights.size()); ++i)
+            if (const auto c = plan->lightSymbol(i)) nearLight |= QLineF(*c, at).length() < 30;  // the symbol and its name
+        if (nearLight) continue;
+        ++checked;
+        if (nearestColour(image, at, legendColour(*legend, result->lux[k]), 0) < 30) ++matching;
+    }
+    // Iso-lux lines and their labels cross some cells' centres.
+    QVERIFY2(checked >= 10 && matching >= checked * 8 / 10, qPrintable(QString("%1 of %2").arg(matching).arg(checked)));
 }
 
 void TestPlanView::isoLinesOfARamp() {

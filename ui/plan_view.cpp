@@ -98,9 +98,13 @@ PlanView::~PlanView() = default;
 void PlanView::setProjection(Projection projection) {
     projection_ = projection;
     fitted_ = false;
-    title_->setText(projection == Projection::Top     ? tr("Plan (from above)")
-                    : projection == Projection::Front ? tr("Front elevation (looking along -z)")
-                                                      : tr("Side elevation (looking along -x)"));
+    title_->setText(projection == Projection::Top     ? tr("Plan")
+                    : projection == Projection::Front ? tr("Front elevation")
+                                                      : tr("Side elevation"));
+    title_->setToolTip(projection == Projection::Top     ? tr("Seen from above: x to the right, z down")
+                       : projection == Projection::Front ? tr("Seen from +z, looking along -z: x to the right, y up")
+                                                         : tr("Seen from +x, looking along -x: z to the left, y up"));
+    title_->setMinimumWidth(title_->fontMetrics().horizontalAdvance(tr("Front elevation")) + 8);
     update();
 }
 
@@ -228,20 +232,25 @@ void PlanView::rebuildFaces() {
     std::stable_sort(faces_.begin(), faces_.end(), [](const Face& x, const Face& y) { return x.depth < y.depth; });
 }
 
-void PlanView::paintGeometry(QPainter& painter) {
+void PlanView::paintFaces(QPainter& painter) {
     rebuildFaces();
     const QRectF bounds = rect();
     painter.setPen(Qt::NoPen);
     for (const Face& f : faces_) {
         if (f.edgeOn) continue;
         const QPointF p[3] = {widgetOfPlan(f.a), widgetOfPlan(f.b), widgetOfPlan(f.c)};
-        const QRectF box = QRectF(p[0], p[1]).normalized().united(QRectF(p[2], p[2]));
-        if (!box.intersects(bounds)) continue;
+        // (Not QRectF::united: it drops empty rectangles, and a triangle's box may be a line.)
+        const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()}), x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+        const double y0 = std::min({p[0].y(), p[1].y(), p[2].y()}), y1 = std::max({p[0].y(), p[1].y(), p[2].y()});
+        if (x1 < bounds.left() || x0 > bounds.right() || y1 < bounds.top() || y0 > bounds.bottom()) continue;
         painter.setBrush(f.fill);
         // A hairline of the fill closes the seams between neighbouring triangles.
         painter.setPen(QPen(f.fill, 0));
         painter.drawConvexPolygon(p, 3);
     }
+}
+
+void PlanView::paintEdges(QPainter& painter) const {
     painter.setPen(QPen(kWallColour, 1.6));
     for (const Face& f : faces_) {
         if (!f.edgeOn) continue;
@@ -320,6 +329,7 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
 
 void PlanView::paintLights(QPainter& painter) const {
     const Scene& scene = doc_->scene();
+    std::vector<QRectF> labels;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& l = scene.lights[i];
         if (l.type == LightType::Directional) continue;
@@ -354,8 +364,18 @@ void PlanView::paintLights(QPainter& painter) const {
         painter.setPen(Qt::black);
         const QString name = nameOf(l);
         const QRectF box = painter.fontMetrics().boundingRect(name).adjusted(-2, 0, 2, 0);
-        const QRectF at(c + QPointF(r + 4, -r - 4 - box.height()), box.size());
-        painter.fillRect(at, QColor(255, 255, 255, 190));
+        QRectF at(c + QPointF(r + 4, -r - 4 - box.height()), box.size());
+        // Lights one above another in this view: their names stack instead of overwriting.
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (const QRectF& other : labels)
+                if (other.intersects(at)) {
+                    at.moveTop(other.bottom() + 1);
+                    moved = true;
+                }
+        }
+        labels.push_back(at);
+        painter.fillRect(at, QColor(255, 255, 255));
         painter.drawText(at, Qt::AlignCenter, name);
     }
 }
@@ -386,8 +406,9 @@ void PlanView::paintEvent(QPaintEvent*) {
     painter.fillRect(rect(), kBackground);
     painter.setRenderHint(QPainter::Antialiasing, true);
     paintSnapGrid(painter);
-    paintGeometry(painter);
+    paintFaces(painter);
     paintCalculationGrid(painter);
+    paintEdges(painter);  // walls and furniture sides stay visible over the grid
     paintLights(painter);
     paintScaleBar(painter);
 }

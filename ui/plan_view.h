@@ -88,7 +88,8 @@ private:
     QPointF widgetOfPlan(const QPointF& plan) const;
     QPointF planOfWidget(const QPointF& widget) const;
     void rebuildFaces();
-    void paintGeometry(QPainter& painter);
+    void paintFaces(QPainter& painter);
+    void paintEdges(QPainter& painter) const;
     void paintSnapGrid(QPainter& painter) const;
     void paintCalculationGrid(QPainter& painter) const;
     void paintLights(QPainter& painter) const;
