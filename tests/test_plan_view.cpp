@@ -7,6 +7,7 @@
 // Saves screenshots (plan_*.png) in the test's working directory.
 
 #include "core/calculation_grid.h"
+#include "core/image.h"
 #include "core/model_import.h"
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
@@ -14,6 +15,7 @@
 #include "ui/camera_navigation.h"
 #include "ui/camera_panel.h"
 #include "ui/grid_panel.h"
+#include "ui/live_preview.h"
 #include "ui/iso_lines.h"
 #include "ui/main_window.h"
 #include "ui/outliner.h"
@@ -367,6 +369,36 @@ void TestPlanView::importedRoomsGetACameraInTheLargerRoom() {
     QVERIFY(c.target.x > 0 && c.target.x < 6 && c.target.z > 0 && c.target.z < 4);
     QCOMPARE(c.target.y, c.position.y);
     QVERIFY(std::abs(c.up.y - 1) < 1e-12);
+    // The plan draws the camera in the larger room; a light over the middle of that room lights
+    // what the camera sees (the first image is not black).
+    trigger(w, "actionViewPlan");
+    QCoreApplication::processEvents();
+    QImage planImage = w.planView()->grab().toImage();
+    QVERIFY(planImage.save("plan_two_rooms.png"));
+    QVERIFY(nearestColour(planImage, w.planView()->widgetOf(c.position), PlanView::cameraColour()) < 40);
+    trigger(w, "actionViewPerspective");
+    trigger(w, "actionAddPointLight");
+    const int light = int(doc->scene().lights.size()) - 1;
+    doc->modify([&](Scene& s) {
+        s.lights[size_t(light)].position = V3d(3, 2.5, 2);
+        s.lights[size_t(light)].intensity = Rgbd(20, 20, 20);
+    });
+    const SceneBounds lit = sceneBounds(doc->scene());
+    QVERIFY(lit.hi.x <= 9 + 1e-9);
+    const SceneSnapshot want = doc->snapshot();
+    const bool framed = QTest::qWaitFor([&] { return w.livePreview()->frame() && w.livePreview()->frame()->scene == want; }, 30000);
+    QVERIFY(framed);
+    const auto shown = w.livePreview()->frame();
+    const Image& frame = shown->image;
+    double sum = 0;
+    for (int y = 0; y < frame.height; ++y)
+        for (int x = 0; x < frame.width; ++x) sum += frame.at(x, y).y;
+    QVERIFY2(sum / (frame.width * frame.height) > 1e-3, qPrintable(QString::number(sum)));
+    QCoreApplication::processEvents();
+    QVERIFY(w.viewport()->grab().save("plan_two_rooms_perspective.png"));
+    doc->undoStack()->undo();  // the light
+    QCOMPARE(doc->scene().camera, c);
+
     // Reset Camera returns to it after an orbit out of the room.
     doc->setCamera(dollyCamera(orbitCamera(c, 1.0, 0.5), 30.0));
     trigger(w, "actionResetCamera");

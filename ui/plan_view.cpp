@@ -134,6 +134,7 @@ void PlanView::setSnapMeters(double meters) {
 
 QColor PlanView::lightColour() { return QColor(230, 120, 0); }
 QColor PlanView::isoLineColour() { return QColor(0, 0, 0); }
+QColor PlanView::cameraColour() { return QColor(140, 40, 200); }
 
 // ---- projection ----
 
@@ -380,6 +381,27 @@ void PlanView::paintLights(QPainter& painter) const {
     }
 }
 
+void PlanView::paintCamera(QPainter& painter) const {
+    // The scene camera as a dot with its field of view opening toward the target, so that a
+    // camera outside the walls, or looking at one, is seen at once.
+    const Camera& c = doc_->scene().camera;
+    const QPointF at = widgetOf(c.position), toward = widgetOf(c.target) - at;
+    const double len = std::hypot(toward.x(), toward.y());
+    painter.setPen(QPen(cameraColour(), 2));
+    painter.setBrush(cameraColour());
+    painter.drawEllipse(at, 4, 4);
+    if (len < 2) return;  // looking straight along the view's axis
+    const double angle = std::atan2(toward.y(), toward.x()), half = c.fovYDeg * M_PI / 360;
+    const double reach = 40;
+    QPolygonF cone;
+    cone << at << at + reach * QPointF(std::cos(angle - half), std::sin(angle - half))
+         << at + reach * QPointF(std::cos(angle + half), std::sin(angle + half));
+    QColor fill = cameraColour();
+    fill.setAlpha(50);
+    painter.setBrush(fill);
+    painter.drawPolygon(cone);
+}
+
 void PlanView::paintScaleBar(QPainter& painter) const {
     // A bar of a round length in metres, at most a fifth of the width.
     const double mpu = doc_->scene().metersPerUnit;
@@ -409,6 +431,7 @@ void PlanView::paintEvent(QPaintEvent*) {
     paintFaces(painter);
     paintCalculationGrid(painter);
     paintEdges(painter);  // walls and furniture sides stay visible over the grid
+    paintCamera(painter);
     paintLights(painter);
     paintScaleBar(painter);
 }

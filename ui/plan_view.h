@@ -5,7 +5,8 @@
 // the elevations at the middle of the depth, a section) and drawn farthest first, faces filled in
 // a light shade of their material and walls seen edge-on as dark lines. Lights are symbols with
 // their names: a circle with a cross for a point light, a circle with a wedge along its axis for
-// a spot, a square with a cross for a luminaire (directional lights have no position).
+// a spot, a square with a cross for a luminaire (directional lights have no position); the scene
+// camera is a dot with its field of view.
 // The newest calculation grid facing the view is drawn on its plane in false colour, with
 // iso-lux lines at round levels and a legend.
 // - Left drag on a light moves it in the view's plane (the plan: x and z, y unchanged), its
@@ -64,6 +65,7 @@ public:
     // The colours the view draws lights and iso-lux lines in (for tests reading pixels back).
     static QColor lightColour();
     static QColor isoLineColour();
+    static QColor cameraColour();
 
 signals:
     void lightClicked(int index);
@@ -93,6 +95,7 @@ private:
     void paintSnapGrid(QPainter& painter) const;
     void paintCalculationGrid(QPainter& painter) const;
     void paintLights(QPainter& painter) const;
+    void paintCamera(QPainter& painter) const;
     void paintScaleBar(QPainter& painter) const;
     int lightAt(const QPointF& pos) const;
     void moveDraggedLight(const QPointF& pos);

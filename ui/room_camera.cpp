@@ -98,23 +98,31 @@ std::optional<Camera> cameraInLargestRoom(const Scene& scene, const Camera& base
     if (roomSize.empty()) return std::nullopt;
     const int largest = int(std::max_element(roomSize.begin(), roomSize.end()) - roomSize.begin());
 
-    // The longest view from a point clear of the walls (any point of the room if none is).
+    // As a photographer stands in a corner: the point farthest from the room's centre, clear of
+    // the walls, that sees the centre, looking across it (any point of the room if none is clear).
+    V3d centre(0, 0, 0);
+    for (const Probe& p : probes)
+        if (p.room == largest) centre += p.eye;
+    centre /= double(roomSize[size_t(largest)]);
     const Probe* best = nullptr;
-    int bestDirection = 0;
-    double bestScore = -1;
+    double bestDistance = -1;
     for (bool needClearance : {true, false}) {
         for (const Probe& p : probes) {
             if (p.room != largest) continue;
             if (needClearance && *std::min_element(p.free, p.free + 8) < clearance) continue;
-            for (int k = 0; k < 8; ++k)
-                if (p.free[k] > bestScore) best = &p, bestScore = p.free[k], bestDirection = k;
+            const V3d look = V3d(centre.x, p.eye.y, centre.z) - p.eye;
+            const double d = look.length();
+            if (d <= bestDistance) continue;
+            const auto blocked = picker->intersect(p.eye, look);
+            if (blocked && blocked->distance < d) continue;  // a pillar or a bend of the room in between
+            best = &p, bestDistance = d;
         }
         if (best) break;
     }
-    if (!best) return std::nullopt;
+    if (!best || bestDistance <= 0) return std::nullopt;
     Camera c = base;
     c.position = best->eye;
-    c.target = best->eye + horizontal(bestDirection) * (0.5 * bestScore);
+    c.target = V3d(centre.x, best->eye.y, centre.z);
     c.up = V3d(0, 1, 0);
     c.fovYDeg = 60;
     return c;
