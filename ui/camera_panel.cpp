@@ -100,6 +100,7 @@ void CameraPanel::apply(const void* field) {
 
 void CameraPanel::viewAll() {
     merge_.finish();
+    error_->clear();
     const SceneBounds b = sceneBounds(doc_->scene());
     const Camera c = framedCamera(doc_->scene().camera, b.lo, b.hi);
     if (c != doc_->scene().camera) doc_->undoStack()->push(new EditCameraCommand(doc_, c, 0, tr("View all")));
@@ -107,6 +108,7 @@ void CameraPanel::viewAll() {
 
 void CameraPanel::resetCamera() {
     merge_.finish();
+    error_->clear();
     if (home_ != doc_->scene().camera) doc_->undoStack()->push(new EditCameraCommand(doc_, home_, 0, tr("Reset camera")));
 }
 

@@ -199,10 +199,17 @@ void PlanView::fitToScene() {
 
 void PlanView::rebuildFaces() {
     const Scene& scene = doc_->scene();
+    // Built again only when the geometry, the materials' shades or the projection change (not
+    // when a light or the camera moves: a drag redraws at every step).
     std::vector<std::shared_ptr<const TriangleMesh>> meshes;
-    for (const Object& o : scene.objects) meshes.push_back(o.worldMesh);
-    if (meshes == facesOf_ && facesProjection_ == projection_ && !faces_.empty()) return;
+    std::vector<std::string> materialOf;
+    for (const Object& o : scene.objects) meshes.push_back(o.worldMesh), materialOf.push_back(o.material);
+    if (meshes == facesOf_ && materialOf == facesMaterialOf_ && scene.materials == facesMaterials_ &&
+        facesProjection_ == projection_ && !faces_.empty())
+        return;
     facesOf_ = meshes;
+    facesMaterialOf_ = materialOf;
+    facesMaterials_ = scene.materials;
     facesProjection_ = projection_;
     faces_.clear();
 
@@ -391,7 +398,8 @@ void PlanView::paintCamera(QPainter& painter) const {
     painter.setBrush(cameraColour());
     painter.drawEllipse(at, 4, 4);
     if (len < 2) return;  // looking straight along the view's axis
-    const double angle = std::atan2(toward.y(), toward.x()), half = c.fovYDeg * M_PI / 360;
+    const double angle = std::atan2(toward.y(), toward.x());
+    const double half = std::atan(std::tan(c.fovYDeg * M_PI / 360) * double(c.width) / std::max(c.height, 1));  // horizontal
     const double reach = 40;
     QPolygonF cone;
     cone << at << at + reach * QPointF(std::cos(angle - half), std::sin(angle - half))

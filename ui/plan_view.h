@@ -109,6 +109,8 @@ private:
 
     std::vector<Face> faces_;          // of the geometry below, for the projection
     std::vector<std::shared_ptr<const TriangleMesh>> facesOf_;  // the meshes faces_ were built from
+    std::vector<std::string> facesMaterialOf_;  // and each object's material
+    std::vector<Material> facesMaterials_;
     Projection facesProjection_ = Projection::Top;
     double scale_ = 100;               // pixels per scene unit
     QPointF offset_;                   // widget position of plan point (0, 0)
