@@ -261,6 +261,17 @@ void TestPlanView::computedGridOnTheInterior() {
     }
     // Iso-lux lines and their labels cross some cells' centres.
     QVERIFY2(checked >= 10 && matching >= checked * 8 / 10, qPrintable(QString("%1 of %2").arg(matching).arg(checked)));
+    // Moving a light in the plan leaves the grid out of date, and the plan says so; a camera move
+    // does not.
+    QVERIFY(!plan->gridOutOfDate());
+    Camera moved = w.document()->scene().camera;
+    moved.position.x += 0.5;
+    w.document()->setCamera(moved);
+    QVERIFY(!plan->gridOutOfDate());
+    const QPointF pendant = *plan->lightSymbol(6);
+    drag(plan, pendant, pendant + QPointF(40, 0));
+    QVERIFY(plan->gridOutOfDate());
+    QVERIFY(plan->grab().save("plan_interior_out_of_date.png"));
 }
 
 void TestPlanView::isoLinesOfARamp() {

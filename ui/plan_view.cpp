@@ -1,5 +1,6 @@
 #include "ui/plan_view.h"
 
+#include "core/scene_change.h"
 #include "core/scene_geometry.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
@@ -117,6 +118,7 @@ void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layo
     grid_ = grid;
     layout_ = layout;
     result_ = std::move(result);
+    resultScene_ = doc_->snapshot();
     levels_.clear();
     if (result_ && !result_->lux.empty()) {
         const GridStatistics s = gridStatistics(result_->lux);
@@ -175,6 +177,12 @@ std::optional<Legend> PlanView::gridLegend() const {
     const GridStatistics s = gridStatistics(result_->lux);
     const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
     return Legend{lo, hi, true, tr("lx")};
+}
+
+bool PlanView::gridOutOfDate() const {
+    if (!result_ || !resultScene_) return false;
+    const SceneChange change = diff(*resultScene_, doc_->scene());
+    return change.geometry || change.materials || change.lightSet || !change.lights.empty();
 }
 
 void PlanView::fitToScene() {
@@ -333,6 +341,13 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
     }
     painter.setFont(font());
     paintLegend(painter, rect(), *legend);
+    if (gridOutOfDate()) {
+        const QString text = tr("The grid is out of date: the lights or the geometry changed. Compute it again in the Calculation grid panel.");
+        const QRectF band(0, height() - 2.5 * painter.fontMetrics().height() - 30, width(), painter.fontMetrics().height() + 8);
+        painter.fillRect(band, QColor(255, 236, 170));
+        painter.setPen(Qt::black);
+        painter.drawText(band, Qt::AlignCenter, text);
+    }
 }
 
 void PlanView::paintLights(QPainter& painter) const {

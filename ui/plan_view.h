@@ -60,6 +60,9 @@ public:
     std::optional<QPointF> lightSymbol(int index) const;
     // The false-colour legend of the grid drawn now (nothing without a grid shown).
     std::optional<Legend> gridLegend() const;
+    // The scene changed since the grid's result was computed in a way that changes its values
+    // (lights, geometry, materials): the plan says so over the grid.
+    bool gridOutOfDate() const;
     // The iso-lux levels drawn now.
     const std::vector<double>& isoLevelsShown() const { return levels_; }
     // The colours the view draws lights and iso-lux lines in (for tests reading pixels back).
@@ -120,6 +123,7 @@ private:
     CalculationGrid grid_;
     GridLayout layout_;
     std::shared_ptr<const GridResult> result_;
+    SceneSnapshot resultScene_;  // the scene when the result arrived
     std::vector<double> levels_;
 
     Drag drag_ = Drag::None;
