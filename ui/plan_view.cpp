@@ -342,11 +342,12 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
     painter.setFont(font());
     paintLegend(painter, rect(), *legend);
     if (gridOutOfDate()) {
-        const QString text = tr("The grid is out of date: the lights or the geometry changed. Compute it again in the Calculation grid panel.");
-        const QRectF band(0, height() - 2.5 * painter.fontMetrics().height() - 30, width(), painter.fontMetrics().height() + 8);
+        const QString text = tr("Grid out of date (the scene changed): compute it again.");
+        const double lineHeight = painter.fontMetrics().height();
+        const QRectF band(0, height() - 3 * lineHeight - 34, width(), 2 * lineHeight + 8);
         painter.fillRect(band, QColor(255, 236, 170));
         painter.setPen(Qt::black);
-        painter.drawText(band, Qt::AlignCenter, text);
+        painter.drawText(band.adjusted(6, 0, -6, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
     }
 }
 
