@@ -1,6 +1,8 @@
 #include "ui/camera_navigation.h"
 
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace lucerna {
 
@@ -78,6 +80,21 @@ std::optional<V2f> projectToRaster(const Camera& camera, const V3d& point) {
     // Inverse of SPEC.md's f + (2x/W - 1)(W/H) t r + (1 - 2y/H) t u.
     const double sx = d.dot(b.r) / (z * t * aspect), sy = d.dot(b.u) / (z * t);
     return V2f(float((sx + 1) * 0.5 * camera.width), float((1 - sy) * 0.5 * camera.height));
+}
+
+Camera framedCamera(const Camera& camera, const V3d& lo, const V3d& hi) {
+    Camera c = camera;
+    const V3d centre = (lo + hi) * 0.5;
+    const double radius = std::max((hi - lo).length() * 0.5, 1e-9);
+    V3d forward = camera.target - camera.position;
+    if (forward.length() <= 0) forward = V3d(0, 0, -1);
+    forward.normalize();
+    const double halfY = camera.fovYDeg * std::numbers::pi / 360;
+    const double halfX = std::atan(std::tan(halfY) * double(camera.width) / std::max(camera.height, 1));
+    const double distance = radius / std::sin(std::min(halfX, halfY));
+    c.target = centre;
+    c.position = centre - forward * distance;
+    return c;
 }
 
 }  // namespace lucerna

@@ -22,6 +22,10 @@ Camera dollyCamera(const Camera& camera, double factor);
 // that a step is the same share of the view whatever the scene's scale.
 Camera flyCamera(const Camera& camera, double right, double up, double forward);
 
+// The camera looking along its present direction at the centre of the box [lo, hi], back far
+// enough that the box's bounding sphere fits the narrower of the two fields of view.
+Camera framedCamera(const Camera& camera, const V3d& lo, const V3d& hi);
+
 // Raster position (x right, y down, in [0, W] x [0, H] of the camera's resolution) of a world
 // point by SPEC.md's camera model; nothing when the point is behind the camera.
 std::optional<V2f> projectToRaster(const Camera& camera, const V3d& point);

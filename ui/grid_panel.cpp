@@ -149,6 +149,7 @@ void GridPanel::compute() {
         }
         if (spacing_->value() > 0) grid.spacingMeters = spacing_->value();
         layout_ = layoutGrid(grid, scene->metersPerUnit);
+        grid_ = grid;
     } catch (const std::invalid_argument& e) {
         status_->setText(QString::fromStdString(e.what()));
         return;

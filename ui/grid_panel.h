@@ -46,6 +46,8 @@ public:
     // The newest result and its layout (null before the first pass of a calculation).
     std::shared_ptr<const GridResult> result() const { return shown_; }
     const GridLayout& layout() const { return layout_; }
+    // The rectangle of the newest calculation (its normal says which views can show it).
+    const CalculationGrid& grid() const { return grid_; }
     // Writes the shown result as CSV (core/calculation_grid.h); throws std::runtime_error.
     void exportCsv(const QString& path) const;
 
@@ -74,6 +76,7 @@ private:
         V3d a, normal, b;
     };
     std::optional<Drawn> drawn_;  // nothing: the work plane over the whole room
+    CalculationGrid grid_;
     GridLayout layout_;
     std::shared_ptr<Latest<GridResult>> latest_;
     TaskSystem tasks_;  // before job_: the job ends before its arena goes

@@ -6,6 +6,7 @@
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "ui/autosave.h"
+#include "ui/camera_panel.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/object_commands.h"
 #include "ui/commands/scene_commands.h"
@@ -23,9 +24,11 @@
 #include "ui/model_import_action.h"
 #include "ui/new_scene.h"
 #include "ui/outliner.h"
+#include "ui/plan_view.h"
 #include "ui/properties_panel.h"
 #include "ui/recent_files.h"
 #include "ui/render_panel.h"
+#include "ui/view_area.h"
 #include "ui/viewport.h"
 
 #include <QApplication>
@@ -53,7 +56,6 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     setObjectName("MainWindow");
     viewport_ = new Viewport(doc_.get(), gate_, this);
     viewport_->setObjectName("viewport");
-    setCentralWidget(viewport_);
     dialogs_ = std::make_unique<FileDialogs>(this, [this] {
         const QString folder =
             doc_->path().empty() ? QString() : QFileInfo(QString::fromStdString(doc_->path())).absolutePath();
@@ -61,6 +63,11 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
         const QString bundled = QDir(QString::fromStdString(resourceDirectory())).absolutePath();
         return folder == bundled || folder.startsWith(bundled + '/') ? QString() : folder;
     });
+    plan_ = new PlanView(doc_.get(), gate_, this);
+    plan_->setObjectName("planView");
+    viewArea_ = new ViewArea(viewport_, plan_, this);
+    viewArea_->setObjectName("viewArea");
+    setCentralWidget(viewArea_);
     createDocks();
     createMenus();
     previewInfo_ = new QLabel(this);
@@ -123,7 +130,11 @@ void MainWindow::createDocks() {
     propertiesPanel_ = new PropertiesPanel(doc_.get(), properties_, this);
     // Not scrolled: in a scroll area the properties panel kept the idle preview from settling
     // (test_editing_panels' importMesh; cause not found yet).
-    dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    QDockWidget* propertiesDock = dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    cameraPanel_ = new CameraPanel(doc_.get(), this);
+    cameraPanel_->setObjectName("cameraPanel");
+    tabifyDockWidget(propertiesDock, dock(cameraPanel_, tr("Camera"), "cameraDock", Qt::LeftDockWidgetArea));
+    propertiesDock->raise();
     // The comparison shares the render's side, a tab behind it.
     compare_ = new CompareView(this);
     compare_->setObjectName("compareView");
@@ -140,6 +151,7 @@ void MainWindow::createDocks() {
         const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
         propertiesPanel_->showSelection(s);
         viewport_->setSelectedLight(light);
+        plan_->setSelectedLight(light);
         viewport_->setSelectedObject(s.kind == Outliner::Kind::Object ? s.index : -1);
     });
     connect(render_.get(), &ConvergingRender::frameReady, this, [this] {
@@ -157,6 +169,12 @@ void MainWindow::createDocks() {
     connect(viewport_, &Viewport::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(compare_->displayControls(), &DisplayControls::message, this,
             [this](const QString& text) { statusBar()->showMessage(text, 8000); });
+    connect(plan_, &PlanView::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
+    connect(plan_, &PlanView::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(cameraPanel_, &CameraPanel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    // The plan shows the newest calculation grid on its plane.
+    connect(gridPanel_, &GridPanel::resultChanged, this,
+            [this] { plan_->setGridResult(gridPanel_->grid(), gridPanel_->layout(), gridPanel_->result()); });
     // Calculation grids drawn in the viewport.
     connect(gridPanel_, &GridPanel::drawRequested, this, [this] { viewport_->setTool(Viewport::Tool::GridRectangle); });
     connect(viewport_, &Viewport::gridRectangleDrawn, this, [this](const V3d& a, const V3d& n, const V3d& b) {
@@ -278,6 +296,15 @@ void MainWindow::createMenus() {
     tools->addActions(viewport_->toolActions());
 
     QMenu* view = menuBar()->addMenu(tr("&View"));
+    view->addActions(viewArea_->modeActions());
+    view->addSeparator();
+    add(view, tr("View &All"), "actionViewAll", QKeySequence(Qt::Key_Home), [this] {
+        cameraPanel_->viewAll();
+        plan_->fitToScene();
+    });
+    add(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(Qt::SHIFT | Qt::Key_Home),
+        [this] { cameraPanel_->resetCamera(); });
+    view->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
     view->addSeparator();
     add(view, tr("&Reset Layout"), "actionResetLayout", {}, [this] { layout_->reset(); });
@@ -432,6 +459,7 @@ bool MainWindow::importModelFile(const QString& path, ImportTarget target) {
     if (target == ImportTarget::Cancel) return false;
     QStringList report;
     try {
+        const Camera before = doc_->scene().camera;
         if (target == ImportTarget::NewScene) {
             // A new document, not an undo step of the old one.
             doc_->reset(newSceneWithModel(path, &report));
@@ -442,6 +470,8 @@ bool MainWindow::importModelFile(const QString& path, ImportTarget target) {
         } else {
             report = importModelInto(doc_.get(), path);
         }
+        // A camera the import placed (in the largest room) is the one Reset Camera returns to.
+        if (doc_->scene().camera != before) cameraPanel_->setHomeCamera(doc_->scene().camera);
     } catch (const std::exception& e) {
         fail(tr("Could not import %1: %2").arg(path, QString::fromStdString(e.what())));
         return false;

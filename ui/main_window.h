@@ -21,6 +21,7 @@ class QLabel;
 namespace lucerna {
 
 class Autosave;
+class CameraPanel;
 class CompareView;
 class FileDialogs;
 class LayoutState;
@@ -29,9 +30,11 @@ class GridPanel;
 class LightProperties;
 class LivePreview;
 class Outliner;
+class PlanView;
 class PropertiesPanel;
 class RecentFilesMenu;
 class RenderPanel;
+class ViewArea;
 class Viewport;
 
 class MainWindow : public QMainWindow {
@@ -102,6 +105,9 @@ public:
     CompareView* compareView() const { return compare_; }
     GridPanel* gridPanel() const { return gridPanel_; }
     RecentFilesMenu* recentFiles() const { return recent_; }
+    PlanView* planView() const { return plan_; }
+    ViewArea* viewArea() const { return viewArea_; }
+    CameraPanel* cameraPanel() const { return cameraPanel_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -122,6 +128,9 @@ private:
     std::unique_ptr<ConvergingRender> render_;
     std::unique_ptr<LivePreview> preview_;
     Viewport* viewport_ = nullptr;
+    PlanView* plan_ = nullptr;
+    ViewArea* viewArea_ = nullptr;  // the viewport or the plan view
+    CameraPanel* cameraPanel_ = nullptr;
     RenderPanel* renderPanel_ = nullptr;
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;

@@ -3,6 +3,9 @@
 #include "core/model_import.h"
 #include "core/scene_geometry.h"
 #include "ui/commands/import_commands.h"
+#include "ui/commands/scene_commands.h"
+#include "ui/camera_navigation.h"
+#include "ui/room_camera.h"
 
 #include <QDialogButtonBox>
 #include <QFileInfo>
@@ -33,8 +36,28 @@ PreparedImport prepareModelImport(const Document& doc, const QString& path) {
 QStringList importModelInto(Document* doc, const QString& path) {
     PreparedImport prepared = prepareModelImport(*doc, path);
     const QString text = QObject::tr("Import %1").arg(QFileInfo(path).fileName());
-    doc->undoStack()->push(new ImportModelCommand(doc, std::move(prepared.materials), std::move(prepared.objects),
-                                                  std::move(prepared.lights), text));
+    bool hadGeometry = false;
+    for (const Object& o : doc->scene().objects) hadGeometry |= o.worldMesh && !o.worldMesh->triangles.empty();
+    QUndoStack* undo = doc->undoStack();
+    undo->beginMacro(text);
+    undo->push(new ImportModelCommand(doc, std::move(prepared.materials), std::move(prepared.objects),
+                                      std::move(prepared.lights), text));
+    if (!hadGeometry) {
+        // A camera outside the walls would see a black first image.
+        if (const auto camera = cameraInLargestRoom(doc->scene(), doc->scene().camera)) {
+            undo->push(new EditCameraCommand(doc, *camera, 0, QObject::tr("Camera in the largest room")));
+            prepared.report << QObject::tr("camera placed in the largest room at eye height, at (%1, %2, %3)")
+                                   .arg(camera->position.x, 0, 'g', 5)
+                                   .arg(camera->position.y, 0, 'g', 5)
+                                   .arg(camera->position.z, 0, 'g', 5);
+        } else {
+            const SceneBounds b = sceneBounds(doc->scene());
+            undo->push(new EditCameraCommand(doc, framedCamera(doc->scene().camera, b.lo, b.hi), 0,
+                                             QObject::tr("Camera on the whole model")));
+            prepared.report << QObject::tr("no enclosed room found: the camera frames the whole model");
+        }
+    }
+    undo->endMacro();
     return prepared.report;
 }
 

@@ -23,7 +23,9 @@ struct PreparedImport {
 // world meshes resolved. Throws std::runtime_error with one line when the file cannot be used.
 PreparedImport prepareModelImport(const Document& doc, const QString& path);
 
-// Reads the model and adds it to the document as one undo step; returns the report. Throws
+// Reads the model and adds it to the document as one undo step; returns the report. Into a scene
+// without geometry (a new document) the same step also places the camera in the model's largest
+// room at eye height (ui/room_camera.h), when it has one, and the report says so. Throws
 // std::runtime_error with one line (the document unchanged) when the file cannot be used.
 QStringList importModelInto(Document* doc, const QString& path);
 

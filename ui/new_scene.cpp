@@ -1,10 +1,13 @@
 #include "ui/new_scene.h"
 
 #include "core/scene_geometry.h"
+#include "core/light_output.h"
 #include "core/scene_io.h"
 #include "ui/model_import_action.h"
+#include "ui/room_camera.h"
 
 #include <QFileInfo>
+#include <QObject>
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +27,7 @@ Scene newSceneWithFloor(const std::string& folder) {
     {"name": "floor", "material": "floor", "mesh": {"quad": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5], [5, 0, -5]]}}
   ],
   "lights": [
-    {"name": "point", "type": "point", "position": [0, 2.5, 0], "intensity": [20, 20, 20]}
+    {"name": "point", "type": "point", "position": [0, 2.5, 0], "lumens": 1000, "temperature": 3000}
   ]
 })";
     return parseScene(kJson, (std::filesystem::path(folder) / "untitled.json").string());
@@ -58,7 +61,9 @@ void arrangeAroundModel(Scene& scene, size_t firstModelObject, size_t modelLight
         light.position = V3d(centre.x, hi.y + radius, centre.z);
         // As bright on the model's top as the new scene's light is on its floor.
         const double ratio = (light.position.y - lo.y) / std::max(before.y, 1e-9) * scene.metersPerUnit;
-        light.intensity *= ratio * ratio;
+        PhotometricSpec output = photometricOf(light);
+        output.value *= ratio * ratio;
+        light = withPhotometric(light, output);
     }
     Camera& camera = scene.camera;
     camera.target = centre;
@@ -76,6 +81,15 @@ Scene newSceneWithModel(const QString& path, QStringList* report) {
     scene.materials.insert(scene.materials.end(), imported.materials.begin(), imported.materials.end());
     scene.lights.insert(scene.lights.end(), imported.lights.begin(), imported.lights.end());
     arrangeAroundModel(scene, firstModelObject, imported.lights.size());
+    // A building is seen from inside its largest room; anything else stays framed from outside.
+    if (const auto camera = cameraInLargestRoom(scene, scene.camera)) {
+        scene.camera = *camera;
+        if (report)
+            *report << QObject::tr("camera placed in the largest room at eye height, at (%1, %2, %3)")
+                           .arg(camera->position.x, 0, 'g', 5)
+                           .arg(camera->position.y, 0, 'g', 5)
+                           .arg(camera->position.z, 0, 'g', 5);
+    }
     return scene;
 }
 
