@@ -27,7 +27,7 @@ Scene newSceneWithFloor(const std::string& folder) {
     {"name": "floor", "material": "floor", "mesh": {"quad": [[-5, 0, -5], [-5, 0, 5], [5, 0, 5], [5, 0, -5]]}}
   ],
   "lights": [
-    {"name": "point", "type": "point", "position": [0, 2.5, 0], "lumens": 1000, "temperature": 3000}
+    {"name": "point", "type": "point", "position": [0, 2.5, 0], "lumens": 3000, "temperature": 3000}
   ]
 })";
     return parseScene(kJson, (std::filesystem::path(folder) / "untitled.json").string());
