@@ -41,6 +41,7 @@
 #include <QMenuBar>
 #include <QPushButton>
 #include <QScrollArea>
+#include <QScreen>
 #include <QStatusBar>
 #include <QTimer>
 #include <QToolBar>
@@ -84,7 +85,11 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     connect(doc_.get(), &Document::pathChanged, this, &MainWindow::updateTitle);
     connect(preview_.get(), &LivePreview::frameReady, this, &MainWindow::showPreviewFrame);
 
-    resize(1500, 900);
+    // 1500 x 900, or the screen's free area where that is smaller (a 1400 px screen cut off the
+    // render dock's controls).
+    QSize size(1500, 900);
+    if (const QScreen* s = screen()) size = size.boundedTo(s->availableGeometry().size());
+    resize(size);
     layout_ = new LayoutState(this, viewport_, [this] { defaultDockSizes(); });
     layout_->restore();
     updateTitle();
@@ -128,21 +133,19 @@ void MainWindow::createDocks() {
     QDockWidget* renderDock = dock(renderPanel_, tr("Converging render"), "renderDock", Qt::RightDockWidgetArea, true);
     QDockWidget* outlinerDock = dock(outliner_, tr("Outliner"), "outlinerDock", Qt::LeftDockWidgetArea);
     propertiesPanel_ = new PropertiesPanel(doc_.get(), properties_, this);
-    // Not scrolled: in a scroll area the properties panel kept the idle preview from settling
-    // (test_editing_panels' importMesh; cause not found yet).
-    QDockWidget* propertiesDock = dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea);
+    QDockWidget* propertiesDock = dock(propertiesPanel_, tr("Properties"), "propertiesDock", Qt::LeftDockWidgetArea, true);
     cameraPanel_ = new CameraPanel(doc_.get(), this);
     cameraPanel_->setObjectName("cameraPanel");
-    tabifyDockWidget(propertiesDock, dock(cameraPanel_, tr("Camera"), "cameraDock", Qt::LeftDockWidgetArea));
+    tabifyDockWidget(propertiesDock, dock(cameraPanel_, tr("Camera"), "cameraDock", Qt::LeftDockWidgetArea, true));
     propertiesDock->raise();
     // The comparison shares the render's side, a tab behind it.
     compare_ = new CompareView(this);
     compare_->setObjectName("compareView");
-    QDockWidget* compareDock = dock(compare_, tr("Comparison"), "compareDock", Qt::RightDockWidgetArea);
+    QDockWidget* compareDock = dock(compare_, tr("Comparison"), "compareDock", Qt::RightDockWidgetArea, true);
     tabifyDockWidget(renderDock, compareDock);
     gridPanel_ = new GridPanel(doc_.get(), gate_, this);
     gridPanel_->setObjectName("gridPanel");
-    tabifyDockWidget(renderDock, dock(gridPanel_, tr("Calculation grid"), "gridDock", Qt::RightDockWidgetArea));
+    tabifyDockWidget(renderDock, dock(gridPanel_, tr("Calculation grid"), "gridDock", Qt::RightDockWidgetArea, true));
     renderDock->raise();
     renderDock_ = renderDock;
     outlinerDock_ = outlinerDock;
@@ -185,9 +188,9 @@ void MainWindow::createDocks() {
 
 void MainWindow::defaultDockSizes() {
     // The viewport keeps more than half the width (LayoutState); the converged image beside it.
-    // The left column widens to about 360 px when a light's fields show: room for that too.
-    const int side = std::max(200, width() / 6);
-    const int render = std::max(200, int(width() * (1 - LayoutState::kMinViewportShare)) - std::max(side, 360) - 20);
+    // Every dock with rows of fields scrolls, so none widens past what is given here.
+    const int side = std::max(150, width() / 6);
+    const int render = std::max(150, int(width() * (1 - LayoutState::kMinViewportShare)) - side - 20);
     resizeDocks({outlinerDock_, renderDock_}, {side, render}, Qt::Horizontal);
 }
 

@@ -49,11 +49,15 @@ RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(pa
     buttons->addWidget(start_);
     buttons->addWidget(pause_);
     buttons->addWidget(restart_);
-    buttons->addWidget(backend_, 1);
-    buttons->addWidget(lightLayers_);
+    // The backend on a row of its own, so that the dock stays narrow enough for the viewport to
+    // keep half the window.
+    auto* method = new QHBoxLayout;
+    method->addWidget(backend_, 1);
+    method->addWidget(lightLayers_);
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(view_, 1);
     layout->addLayout(buttons);
+    layout->addLayout(method);
     layout->addWidget(reason_);
     layout->addWidget(figures_);
     layout->addWidget(plot_);
