@@ -1,0 +1,207 @@
+#include "render/trace/light_tree.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace lucerna {
+
+namespace {
+
+float angleBetween(const V3f& a, const V3f& b) { return std::acos(std::clamp(a.dot(b), -1.0f, 1.0f)); }
+
+// v rotated by angle about the unit axis k (Rodrigues).
+V3f rotate(const V3f& v, const V3f& k, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return v * c + k.cross(v) * s + k * (k.dot(v) * (1 - c));
+}
+
+// A tolerance on angles, so that a point on a spot's cone edge is not ruled out by rounding.
+constexpr float kAngleTolerance = 1e-4f;
+
+}  // namespace
+
+LightBounds LightBounds::point(const V3f& p, float intensity) {
+    LightBounds b;
+    b.lo = b.hi = p;
+    b.intensity = intensity;
+    b.thetaO = kPi;
+    b.thetaE = 0;
+    return b;
+}
+
+LightBounds LightBounds::spot(const V3f& p, const V3f& axis, float coneRad, float intensity) {
+    LightBounds b = point(p, intensity);
+    b.axis = axis.normalized();
+    b.thetaO = std::clamp(coneRad, 0.0f, kPi);
+    return b;
+}
+
+LightBounds LightBounds::triangle(const V3f& p0, const V3f& p1, const V3f& p2, const V3f& normal, float radianceY) {
+    LightBounds b;
+    for (int i = 0; i < 3; ++i) {
+        b.lo[i] = std::min({p0[i], p1[i], p2[i]});
+        b.hi[i] = std::max({p0[i], p1[i], p2[i]});
+    }
+    b.intensity = radianceY * 0.5f * (p1 - p0).cross(p2 - p0).length();
+    b.axis = normal.normalized();
+    b.thetaO = 0;
+    b.thetaE = kPi / 2;  // the cosine lobe of a one-sided emitter
+    return b;
+}
+
+LightBounds unite(const LightBounds& a, const LightBounds& b) {
+    if (a.intensity <= 0) return b;
+    if (b.intensity <= 0) return a;
+    LightBounds u;
+    for (int i = 0; i < 3; ++i) {
+        u.lo[i] = std::min(a.lo[i], b.lo[i]);
+        u.hi[i] = std::max(a.hi[i], b.hi[i]);
+    }
+    // Irradiance adds: the node's bound is the sum of its lights'.
+    u.intensity = a.intensity + b.intensity;
+    u.thetaE = std::max(a.thetaE, b.thetaE);
+    // The smallest cone about both cones (pbrt-v4, DirectionCone Union).
+    const float thetaD = angleBetween(a.axis, b.axis);
+    if (std::min(thetaD + b.thetaO, kPi) <= a.thetaO) {
+        u.axis = a.axis;
+        u.thetaO = a.thetaO;
+    } else if (std::min(thetaD + a.thetaO, kPi) <= b.thetaO) {
+        u.axis = b.axis;
+        u.thetaO = b.thetaO;
+    } else {
+        const float thetaO = 0.5f * (a.thetaO + thetaD + b.thetaO);
+        const V3f k = a.axis.cross(b.axis);
+        if (thetaO >= kPi || k.length2() < 1e-12f) {
+            u.axis = a.axis;
+            u.thetaO = kPi;
+        } else {
+            u.axis = rotate(a.axis, k.normalized(), thetaO - a.thetaO).normalized();
+            u.thetaO = thetaO;
+        }
+    }
+    return u;
+}
+
+float importance(const LightBounds& b, const V3f& p) {
+    if (b.intensity <= 0) return 0;
+    const V3f centre = (b.lo + b.hi) * 0.5f;
+    const float halfDiagonal = 0.5f * (b.hi - b.lo).length();
+    const float dist2 = (p - centre).length2();
+    // Closer than the box's half diagonal the distance bound would be no bound: clamp it there.
+    const float d2 = std::max(dist2, halfDiagonal * halfDiagonal);
+    if (d2 <= 0) return 0;
+    float thetaP = 0;  // the smallest angle by which p lies outside the emission cone
+    if (b.thetaO < kPi && dist2 > halfDiagonal * halfDiagonal) {
+        const float dist = std::sqrt(dist2);
+        const float thetaW = angleBetween(b.axis, (p - centre) / dist);
+        const float thetaB = std::asin(std::min(1.0f, halfDiagonal / dist));  // the box seen from p
+        thetaP = std::max(0.0f, thetaW - b.thetaO - thetaB);
+    }
+    if (thetaP > b.thetaE + kAngleTolerance) return 0;
+    return b.intensity * std::cos(std::min(thetaP, b.thetaE)) / d2;
+}
+
+LightTree::LightTree(const std::vector<LightBounds>& lights) {
+    leafOf_.assign(lights.size(), -1);
+    std::vector<uint32_t> order;
+    for (uint32_t i = 0; i < lights.size(); ++i)
+        if (lights[i].intensity > 0 && std::isfinite(lights[i].intensity)) order.push_back(i);
+    if (order.empty()) return;
+    nodes_.reserve(2 * order.size());
+    build(order, 0, order.size(), lights, -1);
+}
+
+int32_t LightTree::build(std::vector<uint32_t>& order, size_t begin, size_t end, const std::vector<LightBounds>& lights,
+                         int32_t parent) {
+    const int32_t index = int32_t(nodes_.size());
+    nodes_.push_back({});
+    nodes_[index].parent = parent;
+    if (end - begin == 1) {
+        nodes_[index].bounds = lights[order[begin]];
+        nodes_[index].light = order[begin];
+        leafOf_[order[begin]] = index;
+        return index;
+    }
+    // Split at the median of the lights' centres along the longest extent of those centres.
+    V3f lo(std::numeric_limits<float>::max()), hi(-std::numeric_limits<float>::max());
+    const auto centre = [&](uint32_t i) { return (lights[i].lo + lights[i].hi) * 0.5f; };
+    for (size_t i = begin; i < end; ++i) {
+        const V3f c = centre(order[i]);
+        for (int k = 0; k < 3; ++k) {
+            lo[k] = std::min(lo[k], c[k]);
+            hi[k] = std::max(hi[k], c[k]);
+        }
+    }
+    const V3f extent = hi - lo;
+    const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const size_t mid = begin + (end - begin) / 2;
+    std::nth_element(order.begin() + long(begin), order.begin() + long(mid), order.begin() + long(end),
+                     [&](uint32_t a, uint32_t b) { return centre(a)[axis] < centre(b)[axis]; });
+    const int32_t left = build(order, begin, mid, lights, index);
+    const int32_t right = build(order, mid, end, lights, index);
+    nodes_[index].left = left;
+    nodes_[index].right = right;
+    nodes_[index].bounds = unite(nodes_[left].bounds, nodes_[right].bounds);
+    return index;
+}
+
+float LightTree::weight(int32_t node, const V3f& p) const {
+    const Node& n = nodes_[node];
+    const float w = importance(n.bounds, p);
+    if (w <= 0 || n.left < 0) return w;
+    // A node whose children both read zero would end the descent with no light: its looser
+    // union bound counts for nothing.
+    return importance(nodes_[n.left].bounds, p) + importance(nodes_[n.right].bounds, p) > 0 ? w : 0;
+}
+
+float LightTree::childProbability(const Node& n, int which, const V3f& p) const {
+    float l = weight(n.left, p), r = weight(n.right, p);
+    if (!(l + r > 0)) {
+        // Reached through a parent's looser bound, with both children ruled out: chosen by
+        // intensity and distance alone, so that every descent ends at a light and the
+        // probabilities sum to one (the light chosen then gives nothing, as a failed descent
+        // would).
+        LightBounds left = nodes_[n.left].bounds, right = nodes_[n.right].bounds;
+        left.thetaO = right.thetaO = kPi;
+        l = importance(left, p);
+        r = importance(right, p);
+        if (!(l + r > 0)) l = r = 1;
+    }
+    return (which ? r : l) / (l + r);
+}
+
+std::optional<LightTree::Choice> LightTree::sample(const V3f& p, float u) const {
+    // No light reaches p when the root's children all read zero (or a lone light does).
+    if (nodes_.empty() || !(weight(0, p) > 0)) return std::nullopt;
+    int32_t n = 0;
+    float pmf = 1;
+    while (nodes_[n].left >= 0) {
+        const float pLeft = childProbability(nodes_[n], 0, p);
+        // One random number for the whole descent: rescaled into the chosen child's share.
+        if (u < pLeft) {
+            u = std::min(u / pLeft, 0x1.fffffep-1f);
+            pmf *= pLeft;
+            n = nodes_[n].left;
+        } else {
+            u = std::min((u - pLeft) / (1 - pLeft), 0x1.fffffep-1f);
+            pmf *= 1 - pLeft;
+            n = nodes_[n].right;
+        }
+    }
+    if (!(pmf > 0)) return std::nullopt;
+    return Choice{nodes_[n].light, pmf};
+}
+
+float LightTree::pmf(const V3f& p, uint32_t light) const {
+    if (light >= leafOf_.size() || leafOf_[light] < 0 || !(weight(0, p) > 0)) return 0;
+    float pmf = 1;
+    for (int32_t n = leafOf_[light]; nodes_[n].parent >= 0; n = nodes_[n].parent) {
+        const Node& parent = nodes_[nodes_[n].parent];
+        const float pLeft = childProbability(parent, 0, p);
+        pmf *= parent.left == n ? pLeft : 1 - pLeft;
+    }
+    return pmf;
+}
+
+}  // namespace lucerna
