@@ -4,6 +4,7 @@
 // is std::invalid_argument with a one-line message (the command line's exit status 2).
 
 #include "render/backend/backend.h"
+#include "render/trace/light_sampler.h"
 
 #include <limits>
 
@@ -14,5 +15,8 @@ void readOption(const RenderSettings& settings, const char* key, int& value, int
                 int hi = std::numeric_limits<int>::max());
 // options[key] as a number in [lo, hi] into value, when present.
 void readOption(const RenderSettings& settings, const char* key, float& value, double lo, double hi);
+
+// options["light_sampler"]: power (the default) or tree.
+LightSelection lightSelectionOption(const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -22,13 +22,16 @@ protected:
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get());
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get(),
+                                               lightSelection_);
         scene_->setRayRecorder(settings_.rayRecorder);
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
 
     SceneSnapshot snapshot_;
     RenderSettings settings_;
+    // How next-event estimation chooses lights; backends that read `light_sampler` set it.
+    LightSelection lightSelection_ = LightSelection::Power;
     std::unique_ptr<RenderScene> scene_;
     std::unique_ptr<Film> film_;
 };

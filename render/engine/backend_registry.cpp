@@ -18,7 +18,7 @@ namespace {
 // The option keys each backend's settings read (fromOptions): a test checks that every key listed
 // here is read, and the command line refuses a key not listed, so a new option goes in both
 // places. mlt reads bdpt's, cmlt mlt's, mir ir's gathering options.
-constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth"};
+constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth", "light_sampler"};
 constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies"};
 constexpr std::string_view kIrOptions[] = {"vpl_paths", "max_bounces", "clamp", "compensate"};
 constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples",

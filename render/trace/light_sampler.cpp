@@ -1,5 +1,8 @@
 #include "render/trace/light_sampler.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "core/luminaire.h"
 #include "render/trace/warp.h"
 
@@ -77,7 +80,8 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
 }  // namespace
 
 LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
-                           const V3f& sceneCenter, float sceneRadius, size_t triangleCount)
+                           const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
+                           LightSelection selection)
     : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit),
       sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
     std::vector<double> weights;
@@ -89,13 +93,73 @@ LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<De
     if (!select_.empty())
         for (size_t i = 0; i < emitters_.size(); ++i)
             areaPdf_[emitters_[i].triangle] = float(select_.pdf(i) / double(emitters_[i].area));
+    if (selection == LightSelection::Tree && select_.size() > 1) buildTree(triangleCount);
+}
+
+void LightSampler::buildTree(size_t triangleCount) {
+    std::vector<LightBounds> bounds;
+    treeLightOfTriangle_.assign(triangleCount, -1);
+    for (size_t i = 0; i < emitters_.size(); ++i) {
+        const EmitterTriangle& e = emitters_[i];
+        treeLightOfTriangle_[e.triangle] = int32_t(bounds.size());
+        treeLights_.push_back(uint32_t(i));
+        bounds.push_back(LightBounds::triangle(e.p0, e.p1, e.p2, e.normal, luminance(e.radiance)));
+    }
+    for (size_t i = 0; i < deltas_.size(); ++i) {
+        const DeltaLight& l = deltas_[i];
+        const uint32_t index = uint32_t(emitters_.size() + i);
+        const float intensity = luminance(l.intensity) / (metersPerUnit_ * metersPerUnit_);
+        switch (l.type) {
+        case LightType::Directional: directional_.push_back(index); continue;
+        case LightType::Spot:
+            bounds.push_back(LightBounds::spot(l.position, l.direction, std::acos(std::clamp(l.cosCone, -1.0f, 1.0f)),
+                                               intensity));
+            break;
+        case LightType::Luminaire: {
+            // Its table may send light anywhere (an uplight's upper hemisphere too): a point
+            // light as strong as the table's peak, found over a fine grid of directions.
+            float peak = 0;
+            for (int a = 0; a <= 90; ++a)
+                for (int b = 0; b < 180; ++b) {
+                    const float theta = kPi * float(a) / 90, phi = 2 * kPi * float(b) / 180;
+                    peak = std::max(peak, l.factor(V3f(std::sin(theta) * std::cos(phi), std::cos(theta),
+                                                        std::sin(theta) * std::sin(phi))));
+                }
+            bounds.push_back(LightBounds::point(l.position, intensity * peak));
+            break;
+        }
+        default: bounds.push_back(LightBounds::point(l.position, intensity)); break;
+        }
+        treeLights_.push_back(index);
+    }
+    tree_ = LightTree(bounds);
+}
+
+bool LightSampler::selectByTree(const V3f& p, float u, size_t& index, float& pdf) const {
+    // The tree and the directional lights share the choice evenly, as in pbrt-v4.
+    const size_t choices = directional_.size() + (tree_.empty() ? 0 : 1);
+    if (choices == 0) return false;
+    const size_t k = std::min(size_t(u * float(choices)), choices - 1);
+    const float share = 1.0f / float(choices);
+    if (k < directional_.size()) {
+        index = directional_[k];
+        pdf = share;
+        return true;
+    }
+    const auto choice = tree_.sample(p, std::min(u * float(choices) - float(k), 0x1.fffffep-1f));
+    if (!choice) return false;
+    index = treeLights_[choice->light];
+    pdf = share * choice->pmf;
+    return true;
 }
 
 bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const {
     if (select_.empty()) return false;
     size_t index = 0;
     float selectPdf = 1.0f;
-    if (select_.size() > 1) {
+    if (!treeLights_.empty() || !directional_.empty()) {
+        if (!selectByTree(ref.p, uSelect, index, selectPdf)) return false;
+    } else if (select_.size() > 1) {
         index = select_.sample(uSelect);
         selectPdf = float(select_.pdf(index));
     }
@@ -175,7 +239,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
     if (select_.empty()) return false;
     size_t index = 0;
     float selectPdf = 1.0f;
-    if (select_.size() > 1) {
+    if (select_.size() > 1) {  // particles leave in proportion to power, tree or not
         index = select_.sample(uSelect);
         selectPdf = float(select_.pdf(index));
     }
@@ -251,8 +315,14 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
 }
 
 float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq) const {
-    const float areaPdf = triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f;
+    float areaPdf = triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f;
     if (areaPdf <= 0.0f) return 0.0f;
+    if (!treeLights_.empty()) {
+        const int32_t k = treeLightOfTriangle_[triangle];
+        const float share = 1.0f / float(directional_.size() + 1);
+        areaPdf = k < 0 ? 0.0f : share * tree_.pmf(p, uint32_t(k)) / emitters_[treeLights_[k]].area;
+        if (areaPdf <= 0.0f) return 0.0f;
+    }
     const V3f d = q - p;
     const float dist2 = d.length2();
     const float cosLight = std::abs(nq.dot(d)) / std::sqrt(dist2);

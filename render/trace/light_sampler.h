@@ -7,6 +7,7 @@
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/goniometric_sampler.h"
+#include "render/trace/light_tree.h"
 #include "render/trace/surface_point.h"
 
 #include <vector>
@@ -76,20 +77,26 @@ struct EmissionSample {
     uint32_t light = 0;               // which light, numbered as LightSample::light
 };
 
+// How next-event estimation chooses a light: in proportion to power everywhere, or by a light
+// tree by each light's importance at the shading point (`--option light_sampler=power|tree`).
+enum class LightSelection { Power, Tree };
+
 class LightSampler {
 public:
     LightSampler() = default;
     // sceneRadius bounds the geometry (a directional light's power is its irradiance over the
     // scene's cross-section); triangleCount sizes the per-triangle pdf table for MIS.
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
-                 const V3f& sceneCenter, float sceneRadius, size_t triangleCount);
+                 const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
+                 LightSelection selection = LightSelection::Power);
 
     bool empty() const { return emitters_.empty() && deltas_.empty(); }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
     const std::vector<DeltaLight>& deltaLights() const { return deltas_; }
 
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
-    // (back of an emitter, outside a spot's cone, zero power).
+    // (back of an emitter, outside a spot's cone, zero power). With the tree, directional lights
+    // are chosen beside it, each as often as the whole tree.
     bool sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const;
     // The sample of delta light deltaLights()[index] for `ref`, as sample() gives it but with
     // selection probability 1: estimators that sum every delta light exactly (calculation grids)
@@ -106,18 +113,28 @@ public:
     double totalPower() const { return select_.total(); }
 
     // Solid-angle pdf with which sample() yields the point q (unit normal nq) of emissive
-    // triangle `triangle`, seen from p. 0 for a triangle that does not emit.
+    // triangle `triangle`, seen from p (sample()'s ref.p). 0 for a triangle that does not emit.
     float pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq) const;
 
 private:
     bool sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
                        LightSample& out) const;
     bool sampleDelta(const DeltaLight& l, float selectPdf, const SurfacePoint& ref, LightSample& out) const;
+    void buildTree(size_t triangleCount);
+    // Tree selection: the light (emitters_ then deltas_ numbering) and its probability at p.
+    bool selectByTree(const V3f& p, float u, size_t& index, float& pdf) const;
 
     std::vector<EmitterTriangle> emitters_;
     std::vector<DeltaLight> deltas_;
     DiscreteDistribution select_;       // over emitters_ then deltas_; unused with one entry
     std::vector<float> areaPdf_;        // by render-scene triangle: selection pdf / area (0: not an emitter)
+    // Tree selection only: the tree over emitters and point, spot and luminaire lights (its
+    // light k is treeLights_[k] in emitters_ then deltas_ numbering), the directional lights
+    // beside it, and each emitter's tree light by render-scene triangle (-1: none).
+    LightTree tree_;
+    std::vector<uint32_t> treeLights_;
+    std::vector<uint32_t> directional_;
+    std::vector<int32_t> treeLightOfTriangle_;
     float metersPerUnit_ = 1.0f;
     V3f sceneCenter_{0, 0, 0};
     float sceneRadius_ = 1.0f;

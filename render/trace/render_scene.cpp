@@ -4,7 +4,8 @@
 
 namespace lucerna {
 
-RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Sensor* sensor)
+RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Sensor* sensor,
+                         LightSelection lightSelection)
     : scene_(std::move(scene)), features_(analyseFeatures(*scene_)) {
     const Scene& s = *scene_;
     camera_ = sensor ? *sensor
@@ -53,7 +54,7 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         if (!isBlack(d.intensity)) deltas.push_back(d);
     }
     lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
-                           triangles_.size());
+                           triangles_.size(), lightSelection);
     accel_ = std::make_unique<EmbreeScene>(positions_, triangles_);
 }
 

@@ -46,7 +46,9 @@ namespace {
 class PathBackend final : public TracingBackend {
 public:
     PathBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : TracingBackend(std::move(scene), settings), pathSettings_(pathSettingsFromOptions(settings)) {}
+        : TracingBackend(std::move(scene), settings), pathSettings_(pathSettingsFromOptions(settings)) {
+        lightSelection_ = lightSelectionOption(settings);
+    }
 
     void prepare(TaskContext&) override {
         prepareSceneAndFilm();
