@@ -2,7 +2,7 @@
 // sizes the preview issue names, for bench_preview and the command line:
 //   bench_make_scenes DIR
 // office-135 (15 x 9 ceiling lights), office-100 (10 x 10), lights-1000 (40 x 25 in a 60 x 36 m
-// hall), closed-sphere-0.8 (a cap of ~6,000 emitter triangles), closed-room-{0.5,0.7,0.9} and
+// hall), lights-10000 (125 x 80 in a 250 x 160 m floor: the application's many-light case), closed-sphere-0.8 (a cap of ~6,000 emitter triangles), closed-room-{0.5,0.7,0.9} and
 // emitters-10k (a ceiling panel of 10,082 emitter triangles in the 0.7 room), closed-sphere-1m
 // (the sphere at 1,000,000 triangles: a large model).
 
@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
     write("office-135", officeJson(15, 9, 640, 480));
     write("office-100", officeJson(10, 10, 640, 480));
     write("lights-1000", officeJson(40, 25, 640, 480, 40.0, 60.0, 36.0));
+    write("lights-10000", officeJson(125, 80, 640, 480, 40.0, 250.0, 160.0));
     SphereWithEmittingCap sphere;
     sphere.rho = 0.8;
     sphere.rings = 96;

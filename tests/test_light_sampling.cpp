@@ -11,18 +11,23 @@ using namespace lucerna;
 using namespace lucerna::test;
 
 namespace {
-constexpr int kStatisticalTests = 2;
+constexpr int kStatisticalTests = 4;
 constexpr double kSignificance = 0.01 / kStatisticalTests;
 
 // Three emissive triangles of different sizes and radiances around the origin, one facing away
-// (it must never be sampled from the origin), plus a point light (delta: not part of the density).
+// (it must never be sampled from the origin), a square panel of two triangles and a fan of four
+// (each one cluster of the light tree, its triangles chosen by area within), plus a point light
+// (delta: not part of the density).
 const char* kEmitters = R"({"lucerna": 1,
   "camera": {"position": [0,0,-5], "target": [0,0,0], "fov_y": 40, "resolution": [8,8]},
   "materials": {"a": {"type": "emitter", "radiance": [1,1,1]}, "b": {"type": "emitter", "radiance": [4,2,1]}},
   "objects": [
     {"name": "up", "material": "a", "mesh": {"vertices": [[-1,2,-1],[1,2,-1],[0,2,1]], "triangles": [[0,1,2]]}},
     {"name": "side", "material": "b", "mesh": {"vertices": [[3,-0.5,-0.5],[3,-0.5,0.5],[3,0.5,0]], "triangles": [[0,1,2]]}},
-    {"name": "away", "material": "b", "mesh": {"vertices": [[-2,0,-1],[-2,1,1],[-2,-1,1]], "triangles": [[0,1,2]]}}
+    {"name": "away", "material": "b", "mesh": {"vertices": [[-2,0,-1],[-2,1,1],[-2,-1,1]], "triangles": [[0,1,2]]}},
+    {"name": "panel", "material": "a", "mesh": {"quad": [[-2,3,1],[-1,3,1],[-1,3,2],[-2,3,2]]}},
+    {"name": "fan", "material": "b", "mesh": {"vertices": [[1.5,1.5,0],[1,1.5,0],[1.35,1.5,0.35],[1.5,1.5,0.5],[1.85,1.5,0.35],[2,1.5,0]],
+                                              "triangles": [[0,1,2],[0,2,3],[0,3,4],[0,4,5]]}}
   ],
   "lights": [{"name": "bulb", "type": "point", "position": [0,-3,0], "intensity": [1,1,1]}]})";
 
@@ -46,6 +51,7 @@ bool hitTriangle(const V3f& o, const V3f& d, const std::array<V3f, 3>& v, V3f& q
 class TestLightSampling : public QObject {
     Q_OBJECT
 private slots:
+    void nextEventDirections_data();
     void nextEventDirections();
     void emittedPowerMatchesClosedForm_data();
     void emittedPowerMatchesClosedForm();
@@ -55,9 +61,20 @@ private:
     int statisticalTests_ = 0;
 };
 
+void TestLightSampling::nextEventDirections_data() {
+    QTest::addColumn<int>("selection");
+    QTest::addColumn<bool>("receiving");  // the tree told the side that receives (+y)
+    QTest::newRow("power") << int(LightSelection::Power) << false;
+    QTest::newRow("tree") << int(LightSelection::Tree) << false;
+    QTest::newRow("tree, receiving +y") << int(LightSelection::Tree) << true;
+}
+
 void TestLightSampling::nextEventDirections() {
+    QFETCH(int, selection);
+    QFETCH(bool, receiving);
     ++statisticalTests_;
-    const RenderScene scene(sceneFromJson(kEmitters));
+    const RenderScene scene(sceneFromJson(kEmitters), 0, 0, nullptr, LightSelection(selection));
+    const V3f side = receiving ? V3f(0, 1, 0) : V3f(0, 0, 0);
     SurfacePoint ref;
     ref.p = V3f(0, 0, 0);
     ref.pError = V3f(0, 0, 0);
@@ -66,7 +83,7 @@ void TestLightSampling::nextEventDirections() {
     const auto sample = [&](Rng& rng, V3f& w) {
         LightSample ls;
         const V2f u = rng.next2D();
-        if (!lights.sample(ref, u, rng.next1D(), ls) || ls.isDelta) return false;
+        if (!lights.sample(ref, u, rng.next1D(), ls, side) || ls.isDelta) return false;
         w = ls.wi;
         return true;
     };
@@ -76,14 +93,17 @@ void TestLightSampling::nextEventDirections() {
             V3f q;
             const V3f n = scene.normalOfTriangle(t);
             if (hitTriangle(ref.p, w, scene.verticesOfTriangle(t), q) && n.dot(w) < 0)
-                sum += lights.pdfEmitter(t, ref.p, q, n);
+                sum += lights.pdfEmitter(t, ref.p, q, n, side);
         }
         return sum;
     };
     const ChiSquareResult r = chiSquareSphere(sample, pdf, 40, 80, 1'000'000, 11, kSignificance);
     QVERIFY2(r.passed, r.message.c_str());
-    // The delta light and the back-facing triangle take the rest of the probability.
-    QVERIFY(r.pdfIntegral < 0.99 && r.pdfIntegral > 0.05);
+    // The delta light and the back-facing triangle take the rest of the probability; told the
+    // receiving side, the tree never chooses the point light below, nor the triangle facing away.
+    qInfo("integral of the pdf over the sphere: %.4f", r.pdfIntegral);
+    if (receiving) QVERIFY(r.pdfIntegral > 0.98 && r.pdfIntegral < 1.01);
+    else QVERIFY(r.pdfIntegral < 0.99 && r.pdfIntegral > 0.05);
 }
 
 void TestLightSampling::emittedPowerMatchesClosedForm_data() {

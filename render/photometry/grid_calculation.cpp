@@ -45,19 +45,27 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
     const int pointsPerTask = 16;
     const int samples =
         settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;
+    const int tasks = (count + pointsPerTask - 1) / pointsPerTask;
+    // The delta lights' direct part is exact and the same every sample: once per point.
+    std::vector<Rgb> deltaE(points.size());
+    ctx.parallelFor(0, tasks, [&](int task) {
+        for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i)
+            deltaE[size_t(i)] = estimator.deltaLightsIrradiance(sensors[size_t(i)]);
+    });
 
     for (int pass = 0; !ctx.isCancelled(); ++pass) {
         VplSet vpls;
         if (settings.method == GridMethod::Vpl)
             vpls = generateVpls(scene, settings.vplPathsPerPass, hashSeed(settings.seed, uint64_t(pass), 0x9d1));
-        ctx.parallelFor(0, (count + pointsPerTask - 1) / pointsPerTask, [&](int task) {
+        ctx.parallelFor(0, tasks, [&](int task) {
             for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
                 const IrradianceSensor& sensor = sensors[size_t(i)];
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
                 double sum = 0;
                 for (int s = 0; s < samples; ++s) {
-                    const Rgb E = settings.method == GridMethod::Path ? estimator.samplePath(sensor, rng)
-                                                                      : estimator.sampleVpl(sensor, rng, vpls);
+                    const Rgb* exact = &deltaE[size_t(i)];
+                    const Rgb E = settings.method == GridMethod::Path ? estimator.samplePath(sensor, rng, exact)
+                                                                      : estimator.sampleVpl(sensor, rng, vpls, exact);
                     if (isFinite(E)) sum += kLumensPerWatt * double(luminance(E));
                 }
                 passMean[size_t(i)] = sum / samples;

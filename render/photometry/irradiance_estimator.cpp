@@ -92,11 +92,11 @@ IrradianceSensor IrradianceEstimator::lifted(const IrradianceSensor& sensor) con
     return IrradianceSensor{sensor.position + n * (4.0f * errorBound(sensor.position)), n};
 }
 
-Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) const {
+Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng, const Rgb* deltaE) const {
     const VplReceiver r = receiver(sensor);
     const Frame frame(sensor.normal);
     const V3f woLocal(0, 0, 1);
-    Rgb Lo = deltaLightsReflected(r);
+    Rgb Lo = deltaE ? *deltaE / float(std::numbers::pi) : deltaLightsReflected(r);
 
     // Area lights by next-event estimation; a delta light chosen here is already in Lo, so that
     // sample counts for nothing (the area lights' own terms keep their weights: unbiased).
@@ -121,9 +121,10 @@ Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) co
     return Lo * float(std::numbers::pi);
 }
 
-Rgb IrradianceEstimator::sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const {
+Rgb IrradianceEstimator::sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls,
+                                   const Rgb* deltaE) const {
     const VplReceiver r = receiver(sensor);
-    const Rgb Lo = deltaLightsReflected(r) + gatherer_.reflected(r, rng, vpls, {}, /*withoutDeltaLights=*/true);
+    const Rgb Lo = (deltaE ? *deltaE / float(std::numbers::pi) : deltaLightsReflected(r)) + gatherer_.reflected(r, rng, vpls, {}, /*withoutDeltaLights=*/true);
     return Lo * float(std::numbers::pi);
 }
 

@@ -38,11 +38,15 @@ class IrradianceEstimator {
 public:
     explicit IrradianceEstimator(const RenderScene& scene, const GatherSettings& gather = {});
 
-    // One sample of E at the sensor by path tracing.
-    Rgb samplePath(const IrradianceSensor& sensor, Rng& rng) const;
+    // One sample of E at the sensor by path tracing. The delta lights' part, exact and the same
+    // in every sample, is `deltaE` when given (deltaLightsIrradiance() at this sensor, computed
+    // once: a floor of 10,000 lamps costs 10,000 shadow rays a point, not a sample), else
+    // computed here.
+    Rgb samplePath(const IrradianceSensor& sensor, Rng& rng, const Rgb* deltaE = nullptr) const;
     // One sample of E at the sensor: direct light and the clamp residual by path tracing, the
-    // indirect light from `vpls` (an unbiased VPL set, instant_radiosity.h).
-    Rgb sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls) const;
+    // indirect light from `vpls` (an unbiased VPL set, instant_radiosity.h); `deltaE` as above.
+    Rgb sampleVpl(const IrradianceSensor& sensor, Rng& rng, std::span<const Vpl> vpls,
+                  const Rgb* deltaE = nullptr) const;
     // E at the sensor from the delta lights alone, exactly (one shadow ray each): what a sensor
     // rendered by a backend misses (sensor.h). With throughPanes, a shadow ray that meets only
     // glass passes, scaled by thinPaneTransmittance (the sensor methods' answer to a lamp behind

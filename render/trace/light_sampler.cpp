@@ -102,14 +102,52 @@ LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<De
     if (selection == LightSelection::Tree && select_.size() > 1) buildTree(triangleCount);
 }
 
+namespace {
+
+// Emissive triangles share a tree leaf while they are neighbours in the mesh's order with one
+// radiance, face within about 25 degrees of the first one and stay within a box four times the
+// first one's: a quad lamp is one leaf, a tessellated panel a leaf per patch of up to 16
+// triangles. Within a leaf a triangle is chosen by power (its area): they are close enough
+// that the tree could not tell them apart, and the descent is shorter.
+constexpr size_t kClusterSize = 16;
+
+bool joins(const EmitterTriangle& first, const LightBounds& cluster, const EmitterTriangle& e, float firstDiagonal) {
+    if (e.radiance != first.radiance || e.normal.dot(first.normal) < 0.9f) return false;
+    LightBounds grown = cluster;
+    for (const V3f& p : {e.p0, e.p1, e.p2})
+        for (int k = 0; k < 3; ++k) {
+            grown.lo[k] = std::min(grown.lo[k], p[k]);
+            grown.hi[k] = std::max(grown.hi[k], p[k]);
+        }
+    return (grown.hi - grown.lo).length() <= 4 * firstDiagonal;
+}
+
+}  // namespace
+
 void LightSampler::buildTree(size_t triangleCount) {
     std::vector<LightBounds> bounds;
-    treeLightOfTriangle_.assign(triangleCount, -1);
-    for (size_t i = 0; i < emitters_.size(); ++i) {
-        const EmitterTriangle& e = emitters_[i];
-        treeLightOfTriangle_[e.triangle] = int32_t(bounds.size());
-        treeLights_.push_back(uint32_t(i));
-        bounds.push_back(LightBounds::triangle(e.p0, e.p1, e.p2, e.normal, luminance(e.radiance)));
+    leafOfTriangle_.assign(triangleCount, -1);
+    shareInLeaf_.assign(emitters_.size(), 0.0f);
+    for (size_t i = 0; i < emitters_.size();) {
+        const EmitterTriangle& first = emitters_[i];
+        const float radianceY = luminance(first.radiance);
+        LightBounds cluster = LightBounds::triangle(first.p0, first.p1, first.p2, first.normal, radianceY);
+        const float firstDiagonal = (cluster.hi - cluster.lo).length();
+        size_t end = i + 1;
+        while (end < emitters_.size() && end - i < kClusterSize && joins(first, cluster, emitters_[end], firstDiagonal)) {
+            const EmitterTriangle& e = emitters_[end];
+            cluster = unite(cluster, LightBounds::triangle(e.p0, e.p1, e.p2, e.normal, radianceY));
+            ++end;
+        }
+        double area = 0;
+        for (size_t k = i; k < end; ++k) area += emitters_[k].area;
+        for (size_t k = i; k < end; ++k) {
+            shareInLeaf_[k] = float(emitters_[k].area / area);
+            leafOfTriangle_[emitters_[k].triangle] = int32_t(bounds.size());
+        }
+        leaves_.push_back({uint32_t(i), uint32_t(end), float(area)});
+        bounds.push_back(cluster);
+        i = end;
     }
     for (size_t i = 0; i < deltas_.size(); ++i) {
         const DeltaLight& l = deltas_[i];
@@ -130,7 +168,7 @@ void LightSampler::buildTree(size_t triangleCount) {
             break;
         default: bounds.push_back(LightBounds::point(l.position, intensity)); break;
         }
-        treeLights_.push_back(index);
+        leaves_.push_back({index, index + 1, 0.0f});
     }
     tree_ = LightTree(bounds);
 }
@@ -148,9 +186,12 @@ bool LightSampler::selectByTree(const V3f& p, const V3f& n, float u, size_t& ind
     }
     const auto choice = tree_.sample(p, n, std::min(u * float(choices) - float(k), 0x1.fffffep-1f));
     if (!choice) return false;
-    index = treeLights_[choice->light];
-    pdf = share * choice->pmf;
-    return true;
+    const TreeLeaf& leaf = leaves_[choice->light];
+    index = leaf.begin;
+    // Within a cluster by area, with what is left of u after the descent.
+    for (float rest = choice->u; index + 1 < leaf.end && rest >= shareInLeaf_[index]; ++index) rest -= shareInLeaf_[index];
+    pdf = share * choice->pmf * (index < emitters_.size() ? shareInLeaf_[index] : 1.0f);
+    return pdf > 0;
 }
 
 bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out,
@@ -158,7 +199,7 @@ bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, 
     if (select_.empty()) return false;
     size_t index = 0;
     float selectPdf = 1.0f;
-    if (!treeLights_.empty() || !directional_.empty()) {
+    if (!leaves_.empty() || !directional_.empty()) {
         if (!selectByTree(ref.p, receiving, uSelect, index, selectPdf)) return false;
     } else if (select_.size() > 1) {
         index = select_.sample(uSelect);
@@ -319,10 +360,12 @@ float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, co
                                const V3f& receiving) const {
     float areaPdf = triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f;
     if (areaPdf <= 0.0f) return 0.0f;
-    if (!treeLights_.empty()) {
-        const int32_t k = treeLightOfTriangle_[triangle];
+    if (!leaves_.empty()) {
+        const int32_t leaf = leafOfTriangle_[triangle];
+        if (leaf < 0) return 0.0f;
+        // The triangle's share of its leaf over its area: 1 / the leaf's area.
         const float share = 1.0f / float(directional_.size() + 1);
-        areaPdf = k < 0 ? 0.0f : share * tree_.pmf(p, receiving, uint32_t(k)) / emitters_[treeLights_[k]].area;
+        areaPdf = share * tree_.pmf(p, receiving, uint32_t(leaf)) / leaves_[size_t(leaf)].area;
         if (areaPdf <= 0.0f) return 0.0f;
     }
     const V3f d = q - p;

@@ -148,13 +148,18 @@ private:
     std::vector<DeltaLight> deltas_;
     DiscreteDistribution select_;       // over emitters_ then deltas_; unused with one entry
     std::vector<float> areaPdf_;        // by render-scene triangle: selection pdf / area (0: not an emitter)
-    // Tree selection only: the tree over emitters and point, spot and luminaire lights (its
-    // light k is treeLights_[k] in emitters_ then deltas_ numbering), the directional lights
-    // beside it, and each emitter's tree light by render-scene triangle (-1: none).
+    // Tree selection only: the tree, whose light k is leaves_[k]: a cluster of emissive
+    // triangles or one point, spot or luminaire light; the directional lights beside it; each
+    // emitter's share of its cluster (by area); each emissive triangle's leaf (-1: none).
+    struct TreeLeaf {
+        uint32_t begin = 0, end = 0;  // lights [begin, end) in emitters_ then deltas_ numbering
+        float area = 0;               // a cluster's area, scene units^2
+    };
     LightTree tree_;
-    std::vector<uint32_t> treeLights_;
+    std::vector<TreeLeaf> leaves_;
     std::vector<uint32_t> directional_;
-    std::vector<int32_t> treeLightOfTriangle_;
+    std::vector<float> shareInLeaf_;
+    std::vector<int32_t> leafOfTriangle_;
     float metersPerUnit_ = 1.0f;
     V3f sceneCenter_{0, 0, 0};
     float sceneRadius_ = 1.0f;

@@ -216,7 +216,7 @@ std::optional<LightTree::Choice> LightTree::sample(const V3f& p, const V3f& n, f
         }
     }
     if (!(pmf > 0)) return std::nullopt;
-    return Choice{nodes_[node].light, pmf};
+    return Choice{nodes_[node].light, pmf, u};
 }
 
 float LightTree::pmf(const V3f& p, const V3f& n, uint32_t light) const {

@@ -71,6 +71,7 @@ public:
     struct Choice {
         uint32_t light = 0;
         float pmf = 0;
+        float u = 0;  // what is left of u after the descent: uniform in [0, 1) again
     };
     // A light for the point p (receiving on the side of the unit normal n, or any side for n
     // zero; importance()) by the random number u in [0, 1); nothing where the bounds say that no
