@@ -13,6 +13,7 @@
 #include <condition_variable>
 #include <cstdlib>
 #include <mutex>
+#include <limits>
 #include <optional>
 
 namespace lucerna {
@@ -120,8 +121,8 @@ struct LivePreview::Shared {
     Latest<Outcome> out;
 };
 
-// The background job: answers each new snapshot with one plain frame while holding the gate,
-// then, idle, refines the OpenGL preview's frame with accumulated ones.
+// The background job: answers each new snapshot with one plain frame while holding the gate
+// (when the last answer took under a second), then, idle, refines the OpenGL preview's frame with accumulated ones.
 //
 // Why accumulation frames leave the yield gate alone: the gate exists so that an edit is
 // answered before anything else runs. Once answered, the converging render is what the user is
@@ -160,6 +161,9 @@ private:
         uint64_t serial = 0;
     };
 
+    static constexpr double kGateBudgetMs = 1000;
+    double lastAnswerMs_ = std::numeric_limits<double>::infinity();
+
     bool accumulating() const { return accumulating_ && sum_.count() < kMaxFrames; }
     bool idleFrameDue() const { return accumulating() && Clock::now() >= settledAt_ && gate_->load() == 0; }
 
@@ -184,7 +188,12 @@ private:
     void answer(const Request& request, TaskContext& ctx) {
         accumulating_ = false;
         if (!request.scene) return;
-        YieldGate::Scope hold(gate_);
+        // The gate only for a preview that answers within a second: one that takes longer (a
+        // floor of 10,000 lights on a software rasteriser: minutes) would stop the converging
+        // render that long after every edit, so it shares the cores instead. Unknown before the
+        // first answer, which comes at load, not after an edit.
+        std::optional<YieldGate::Scope> hold;
+        if (lastAnswerMs_ < kGateBudgetMs) hold.emplace(gate_);
         const auto t0 = Clock::now();
         Image image;
         try {
@@ -193,6 +202,7 @@ private:
             return fail(e.what(), request.serial);
         }
         const double ms = millisecondsSince(t0);
+        lastAnswerMs_ = ms;
         current_ = request;
         sum_.restart(image);
         totalMilliseconds_ = ms;

@@ -4,7 +4,8 @@
 // OpenGL VPL preview (render/preview, through EGL, offscreen into an image) when a context can
 // be made, and otherwise with a few passes of the path tracer at reduced resolution, so the
 // viewport works on any machine. While it draws the frame that answers an edit it holds the
-// yield gate: the converging render waits, the preview comes first on the cores.
+// yield gate: the converging render waits, the preview comes first on the cores; a preview
+// whose last answer took over a second does not (it would stall the converging render).
 //
 // Idle, the OpenGL preview converges: with nothing new to draw it keeps drawing frames with
 // fresh VPLs and the pixel sample jittered, and shows their running mean, so the interleaving's

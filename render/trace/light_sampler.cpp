@@ -170,6 +170,14 @@ void LightSampler::buildTree(size_t triangleCount) {
         }
         leaves_.push_back({index, index + 1, 0.0f});
     }
+    if (leaves_.size() == 1 && directional_.empty()) {
+        // One cluster (a quad lamp) or one light: the tree would choose it with probability 1
+        // and its triangles by area, as power selection does, only slower.
+        leaves_.clear();
+        shareInLeaf_.clear();
+        leafOfTriangle_.clear();
+        return;
+    }
     tree_ = LightTree(bounds);
 }
 
