@@ -140,7 +140,7 @@ void TestBdpt::cameraPowerOfClosedSphere() {
     // Inside a closed sphere every pixel sees the same radiance, so Pc is that radiance.
     SphereWithEmittingCap sphere;
     const auto snapshot = sceneFromJson(sphere.json());
-    const RenderScene scene(snapshot, 16, 16);
+    const RenderScene scene(snapshot, 16, 16, nullptr, LightSelection::Power);  // as bdpt's backends
     TaskSystem tasks(0);
     CameraPower pc;
     auto job = tasks.submit([&](TaskContext& ctx) { pc = estimateCameraPower(scene, BdptSettings{}, 3, 64, ctx); });
@@ -207,7 +207,7 @@ void TestBdpt::deltaBouncesAreNotRouletted() {
       "camera": {"position": [0, 0, -1], "target": [0, 0, 1], "fov_y": 30, "resolution": [16, 16]},
       "materials": {"glass": {"type": "dielectric", "ior": 1.5}, "lamp": {"type": "emitter", "radiance": [10, 10, 10]}},
       "objects": [)" + panes + R"({"name": "lamp", "material": "lamp", "mesh": {"quad": [[-3,-3,2],[-3,3,2],[3,3,2],[3,-3,2]]}}]})");
-    const RenderScene scene(snapshot, 0, 0);
+    const RenderScene scene(snapshot, 0, 0, nullptr, LightSelection::Power);  // as bdpt's backends
     BdptTracer tracer(scene, BdptSettings{});
     SampledPaths paths;
     tracer.recordPaths(&paths);

@@ -156,9 +156,10 @@ void TestClosedForm::manyPointLightsOverPlane_data() {
     QTest::addColumn<QString>("backend");
     QTest::addColumn<int>("spp");
     QTest::newRow("path") << "path" << 64;
-    // bdpt's light-tracing splats and ir's VPL passes add noise of their own: more passes.
-    QTest::newRow("bdpt") << "bdpt" << 512;
+    // ir's and mir's VPL passes add noise of their own: more passes. (bdpt, mlt and cmlt choose
+    // lights by power: README.)
     QTest::newRow("ir") << "ir" << 256;
+    QTest::newRow("mir") << "mir" << 256;
 }
 
 void TestClosedForm::manyPointLightsOverPlane() {

@@ -46,7 +46,9 @@ public:
     MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make,
                       VariantDiagnostics variantDiagnostics)
         : TracingBackend(std::move(scene), settings), mlt_(mlt), makeChain_(std::move(make)),
-          variantDiagnostics_(std::move(variantDiagnostics)) {}
+          variantDiagnostics_(std::move(variantDiagnostics)) {
+        lightSelection_ = LightSelection::Power;  // the bdpt sampler's: see BdptBackend
+    }
 
     void prepare(TaskContext& ctx) override {
         prepareSceneAndFilm();
