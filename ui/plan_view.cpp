@@ -29,6 +29,8 @@ constexpr double kClickSlop = 3.0;  // widget pixels: a press that moves less is
 constexpr double kSymbolRadius = 7.0;
 const QColor kBackground(246, 246, 242);
 const QColor kWallColour(60, 60, 64);
+const QColor kSelectionColour(30, 110, 230);
+constexpr int kMaxRings = 50;  // selections larger than this show as blue symbols
 
 // Display sRGB of a linear value in [0, 1].
 double srgb(double linear) {
@@ -105,6 +107,7 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
         levels_.clear();
         selected_ = -1;
         selectedSet_.clear();
+        selectedCount_ = 0;
     });
 }
 
@@ -128,8 +131,9 @@ void PlanView::setProjection(Projection projection) {
 
 void PlanView::setSelectedLights(const std::vector<int>& lights) {
     selectedSet_.assign(doc_->scene().lights.size(), 0);
+    selectedCount_ = 0;
     for (int i : lights)
-        if (i >= 0 && size_t(i) < selectedSet_.size()) selectedSet_[size_t(i)] = 1;
+        if (i >= 0 && size_t(i) < selectedSet_.size()) selectedSet_[size_t(i)] = 1, ++selectedCount_;
     update();
 }
 
@@ -385,12 +389,17 @@ void PlanView::paintLights(QPainter& painter) const {
         if (l.type == LightType::Directional) continue;
         const QPointF c = widgetOf(l.position);
         const double r = kSymbolRadius;
-        if (int(i) == selected_ || (i < selectedSet_.size() && selectedSet_[i])) {
-            painter.setPen(QPen(QColor(30, 110, 230), 2.5));
+        // Selected: a ring; in a large selection (a dense field) the symbol itself turns blue,
+        // where rings would cover the field.
+        const bool inSet = i < selectedSet_.size() && selectedSet_[i];
+        if (int(i) == selected_ || (inSet && selectedCount_ <= kMaxRings)) {
+            painter.setPen(QPen(kSelectionColour, 2.5));
             painter.setBrush(Qt::NoBrush);
             painter.drawEllipse(c, r + 5, r + 5);
         }
-        painter.setPen(QPen(lightColour(), 2));
+        // A light switched off is drawn grey.
+        const QColor symbol = !l.on ? QColor(150, 150, 150) : inSet && selectedCount_ > kMaxRings ? kSelectionColour : lightColour();
+        painter.setPen(QPen(symbol, 2));
         painter.setBrush(QColor(255, 255, 255, 200));
         if (l.type == LightType::Luminaire) painter.drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
         else painter.drawEllipse(c, r, r);
@@ -464,7 +473,7 @@ void PlanView::paintGroups(QPainter& painter) const {
 void PlanView::paintField(QPainter& painter) const {
     if (drag_ != Drag::Field) return;
     const QRectF r = QRectF(widgetOfPlan(fieldStart_), widgetOfPlan(fieldEnd_)).normalized();
-    painter.setPen(QPen(QColor(30, 110, 230), 1.5, Qt::DashLine));
+    painter.setPen(QPen(kSelectionColour, 1.5, Qt::DashLine));
     QColor fill(30, 110, 230, 30);
     painter.setBrush(fill);
     painter.drawRect(r);

@@ -138,6 +138,7 @@ private:
     bool fitted_ = false;
     int selected_ = -1;
     std::vector<char> selectedSet_;  // by light index
+    int selectedCount_ = 0;
 
     CalculationGrid grid_;
     GridLayout layout_;
