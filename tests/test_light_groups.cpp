@@ -15,7 +15,9 @@
 #include "render_helpers.h"
 #include "ui/arrangement_dialog.h"
 #include "ui/commands/light_group_commands.h"
+#include "ui/converging_render.h"
 #include "ui/light_arrangement.h"
+#include "ui/light_properties.h"
 #include "ui/light_set_properties.h"
 #include "ui/luminaire_import.h"
 #include "ui/main_window.h"
@@ -469,6 +471,46 @@ private slots:
         }
         for (Light& l : many.lights) l.group = "all";
         QCOMPARE(int(lightGroups(many).size()), 2);  // the group and the emitter
+    }
+
+    // A single light's panel moves it into a group and out again, one step each.
+    void singleLightJoinsAGroup() {
+        Document doc(room());
+        LightProperties panel(&doc);
+        panel.setLight(1);
+        QVERIFY(panel.groupField()->text().isEmpty());
+        panel.groupField()->setText("spots");
+        QMetaObject::invokeMethod(panel.groupField(), "editingFinished");
+        QCOMPARE(doc.scene().lights[1].group, std::string("spots"));
+        QCOMPARE(doc.undoStack()->count(), 1);
+        panel.groupField()->setText("");
+        QMetaObject::invokeMethod(panel.groupField(), "editingFinished");
+        QVERIFY(doc.scene().lights[1].group.empty());
+        doc.undoStack()->undo();
+        QCOMPARE(panel.groupField()->text(), QString("spots"));
+    }
+
+    // The window's converging render with per-light layers on a scene of 65 lone lights: refused
+    // with the one-line reason, shown as the render's error.
+    void windowRefusesTooManyLayers() {
+        Scene many = room();
+        many.lights.clear();
+        for (int i = 0; i < 65; ++i) {
+            Light l = pointPrototype();
+            l.name = "l" + std::to_string(i);
+            l.position = V3d(0.1 + 0.05 * i, 2, 1.5);
+            many.lights.push_back(l);
+        }
+        TaskSystem tasks(1);
+        YieldGate gate;
+        ConvergingRender render(tasks, gate);
+        render.setBackend("path");
+        render.setLightLayers(true);
+        render.setScene(std::make_shared<const Scene>(many));
+        render.start();
+        QTRY_VERIFY_WITH_TIMEOUT(!render.error().isEmpty(), 30000);
+        QVERIFY(render.error().contains("more than 64"));
+        QVERIFY(!render.error().contains('\n'));
     }
 
     // The plan view: Draw Field, a drag in the plan, gives the rectangle (snapped) to the window.
