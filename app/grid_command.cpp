@@ -5,6 +5,7 @@
 #include "core/calculation_grid.h"
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
+#include "render/backend/backend_options.h"
 #include "render/engine/backend_table.h"
 #include "render/photometry/grid_calculation.h"
 
@@ -128,9 +129,20 @@ int gridImpl(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
 
+    // light_sampler is every tracing method's, the estimators of path and ir included.
+    try {
+        RenderSettings check;
+        check.options = g.settings.backendOptions;
+        g.settings.lightSelection = lightSelectionOption(check);
+    } catch (const std::invalid_argument& e) {
+        throw UsageError(e.what());
+    }
+    const bool onlyLightSampler =
+        g.settings.backendOptions.empty() ||
+        (g.settings.backendOptions.size() == 1 && g.settings.backendOptions.contains("light_sampler"));
     if (g.settings.autoMethod) {
-        if (!g.settings.backendOptions.empty())
-            throw UsageError("--option: method auto takes no backend options (it chooses path or bdpt)");
+        if (!onlyLightSampler)
+            throw UsageError("--option: method auto takes no backend options but light_sampler (it chooses path or bdpt)");
     } else if (g.settings.method != GridMethod::Path && g.settings.method != GridMethod::Vpl) {
         RenderSettings check;  // the backend's own parser judges the options before any work
         check.options = g.settings.backendOptions;
@@ -141,16 +153,17 @@ int gridImpl(const std::vector<std::string>& args) {
         } catch (const std::invalid_argument& e) {
             throw UsageError(e.what());
         }
-    } else if (!g.settings.backendOptions.empty()) {
+    } else if (!onlyLightSampler) {
         throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
-                         " takes no backend options (path and ir are set with --samples and --vpl-paths)");
+                         " takes no backend options but light_sampler (path and ir are set with --samples and --vpl-paths)");
     }
 
     catchInterrupts();
     TaskSystem tasks(g.threads);
     std::optional<GridResult> result;
     auto job = tasks.submit([&](TaskContext& ctx) {
-        const RenderScene renderScene(withoutLightsSwitchedOff(scene), 16, 16);  // no image: the camera is unused
+        const RenderScene renderScene(withoutLightsSwitchedOff(scene), 16, 16, nullptr,
+                                      g.settings.lightSelection);  // the camera is unused
         if (ctx.isCancelled()) return;
         GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);

@@ -153,6 +153,73 @@ struct DeltaLightOverPlane {
     }
 };
 
+// Many point lights over a diffuse floor: a field of 40 x 25 lamps, 1 m apart, at heights from
+// 2 to 3 m and of intensities from 0.5 to 2 W/sr (a fixed pseudo-random pattern), over a floor
+// of albedo rho; the camera at 1 m looks straight down at the middle. The floor's radiance is
+// rho / pi * sum_i I_i cos_i / r_i^2 (nothing else in the scene casts a shadow).
+struct ManyPointLightsOverPlane {
+    double rho = 0.8;
+    int columns = 40, rows = 25;
+    int resolution = 32;
+
+    struct Lamp {
+        V3d position;
+        double intensity;
+    };
+    std::vector<Lamp> lamps() const {
+        std::vector<Lamp> out;
+        uint32_t state = 12345;
+        const auto next = [&state] {  // a small LCG: the pattern is part of the scene, not a sample
+            state = state * 1664525u + 1013904223u;
+            return double(state >> 8) / double(1u << 24);
+        };
+        for (int r = 0; r < rows; ++r)
+            for (int c = 0; c < columns; ++c) {
+                const double x = c - 0.5 * (columns - 1) + 0.3 * (next() - 0.5);
+                const double z = r - 0.5 * (rows - 1) + 0.3 * (next() - 0.5);
+                out.push_back({V3d(x, 2.0 + next(), z), 0.5 + 1.5 * next()});
+            }
+        return out;
+    }
+    Camera camera() const {
+        Camera c;
+        c.position = V3d(0.17, 1, 0.23);
+        c.target = V3d(0.17, 0, 0.23);
+        c.up = V3d(0, 0, 1);
+        c.fovYDeg = 90;
+        c.width = c.height = resolution;
+        return c;
+    }
+    std::string json() const {
+        std::ostringstream s;
+        s.precision(17);
+        s << R"({"lucerna": 1, "camera": {"position": )" << jsonVec(camera().position) << R"(, "target": )"
+          << jsonVec(camera().target) << R"(, "up": [0,0,1], "fov_y": 90, "resolution": [)" << resolution << ","
+          << resolution << R"(]}, "materials": {"floor": {"type": "diffuse", "albedo": [)" << rho << "," << rho << ","
+          << rho << R"(]}}, "objects": [{"name": "floor", "material": "floor", "mesh": {"quad": [[-200,0,-200],[-200,0,200],[200,0,200],[200,0,-200]]}}],)"
+          << R"("lights": [)";
+        const auto all = lamps();
+        for (size_t i = 0; i < all.size(); ++i)
+            s << (i ? "," : "") << R"({"name": "lamp)" << i << R"(", "type": "point", "position": )"
+              << jsonVec(all[i].position) << R"(, "intensity": [)" << all[i].intensity << "," << all[i].intensity << ","
+              << all[i].intensity << "]}";
+        s << "]}";
+        return s.str();
+    }
+    std::vector<double> expected() const {
+        const auto all = lamps();
+        return expectedFloorImage(camera(), [&](const V3d& p) {
+            double e = 0;
+            for (const Lamp& l : all) {
+                const V3d d = l.position - p;
+                const double dist2 = d.length2();
+                e += l.intensity * (d.y / std::sqrt(dist2)) / dist2;
+            }
+            return rho / std::numbers::pi * e;
+        }, 4);
+    }
+};
+
 // A closed sphere whose inner cap (polar angle < capAngle around +y) emits radiance Le inward and
 // whose remaining shell is diffuse with albedo rho. Inside a sphere every point sees every area
 // element with form factor dA/A, so the shell's radiance is uniform:

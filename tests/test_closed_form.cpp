@@ -1,7 +1,8 @@
 // Closed-form checks of every physically based backend, each within 1% (SPEC.md conventions):
 // a diffuse plane under a rectangular emitter (Lambert's polygon formula), a point light over a
-// plane in a millimetre scene (E = I cos / r^2, r in metres), and a closed sphere with an
-// emitting cap (uniform radiance inside a sphere).
+// plane in a millimetre scene (E = I cos / r^2, r in metres), a closed sphere with an emitting
+// cap (uniform radiance inside a sphere), and 1,000 point lights over a plane (the sum of
+// I cos / r^2), where the light tree must also beat choosing lights by power.
 
 #include "closed_form_scenes.h"
 #include "render_helpers.h"
@@ -67,6 +68,8 @@ private slots:
     void deltaLightOverPlane();
     void sphereWithEmittingCap_data() { backends(); }
     void sphereWithEmittingCap();
+    void manyPointLightsOverPlane_data();
+    void manyPointLightsOverPlane();
 
 private:
     // Every physically based backend, with the work it gets (samples per pixel).
@@ -146,6 +149,45 @@ void TestClosedForm::sphereWithEmittingCap() {
         qInfo("rho %.1f: mean %.6f, closed form %.6f, error %.3f%%", rho, mean, expected, 100 * (mean / expected - 1));
         QVERIFY(std::abs(mean / expected - 1.0) < 0.01);
     }
+}
+
+
+void TestClosedForm::manyPointLightsOverPlane_data() {
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<int>("spp");
+    QTest::newRow("path") << "path" << 64;
+    // bdpt's light-tracing splats and ir's VPL passes add noise of their own: more passes.
+    QTest::newRow("bdpt") << "bdpt" << 512;
+    QTest::newRow("ir") << "ir" << 256;
+}
+
+void TestClosedForm::manyPointLightsOverPlane() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    const ManyPointLightsOverPlane s;
+    const SceneSnapshot scene = sceneFromJson(s.json());
+    const std::vector<double> expected = s.expected();
+    const auto renderWith = [&](const char* sampler) {
+        RenderSettings settings;
+        settings.spp = spp;
+        settings.options["light_sampler"] = sampler;
+        return renderFrame(backend.toStdString(), scene, settings).image;
+    };
+    // Per-pixel relative squared error against the closed form: the noise of the light choice.
+    const auto relativeError = [&](const Image& img) {
+        double sum = 0;
+        for (size_t i = 0; i < expected.size(); ++i) sum += std::pow(img.pixels[i].y / expected[i] - 1.0, 2);
+        return sum / double(expected.size());
+    };
+    const Image tree = renderWith("tree");
+    const FloorComparison c = compareFloor(tree, expected);
+    const Image power = renderWith("power");
+    const double treeError = relativeError(tree), powerError = relativeError(power);
+    qInfo("tree: mean error %.4f%%, worst 8x8 block %.4f%%; per-pixel relative mse: tree %.3g, power %.3g",
+          100 * c.meanRelError, 100 * c.worstBlockRelError, treeError, powerError);
+    QVERIFY(c.meanRelError < 0.005);
+    QVERIFY(c.worstBlockRelError < 0.015);
+    QVERIFY(treeError * 10 < powerError);
 }
 
 QTEST_GUILESS_MAIN(TestClosedForm)

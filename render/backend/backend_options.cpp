@@ -43,7 +43,8 @@ void readOption(const RenderSettings& settings, const char* key, float& value, d
 
 LightSelection lightSelectionOption(const RenderSettings& settings) {
     const auto it = settings.options.find("light_sampler");
-    if (it == settings.options.end() || it->second == "power") return LightSelection::Power;
+    if (it == settings.options.end()) return kDefaultLightSelection;
+    if (it->second == "power") return LightSelection::Power;
     if (it->second == "tree") return LightSelection::Tree;
     throw std::invalid_argument("option light_sampler must be power or tree, got '" + it->second + "'");
 }

@@ -16,7 +16,7 @@ void readOption(const RenderSettings& settings, const char* key, int& value, int
 // options[key] as a number in [lo, hi] into value, when present.
 void readOption(const RenderSettings& settings, const char* key, float& value, double lo, double hi);
 
-// options["light_sampler"]: power (the default) or tree.
+// options["light_sampler"]: power or tree; kDefaultLightSelection when absent.
 LightSelection lightSelectionOption(const RenderSettings& settings);
 
 }  // namespace lucerna

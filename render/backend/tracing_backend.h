@@ -5,6 +5,7 @@
 // requested sensors, counting rays into the settings' recorder, and a film of its size.
 
 #include "render/backend/backend.h"
+#include "render/backend/backend_options.h"
 #include "render/backend/film.h"
 #include "render/trace/render_scene.h"
 
@@ -19,7 +20,8 @@ public:
 protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.
     TracingBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(withoutLightsSwitchedOff(std::move(scene))), settings_(settings) {}
+        : snapshot_(withoutLightsSwitchedOff(std::move(scene))), settings_(settings),
+          lightSelection_(lightSelectionOption(settings)) {}
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {
@@ -31,8 +33,8 @@ protected:
 
     SceneSnapshot snapshot_;
     RenderSettings settings_;
-    // How next-event estimation chooses lights; backends that read `light_sampler` set it.
-    LightSelection lightSelection_ = LightSelection::Power;
+    // How next-event estimation chooses lights (option light_sampler).
+    LightSelection lightSelection_;
     std::unique_ptr<RenderScene> scene_;
     std::unique_ptr<Film> film_;
 };

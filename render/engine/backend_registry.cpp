@@ -17,17 +17,20 @@ namespace lucerna {
 namespace {
 // The option keys each backend's settings read (fromOptions): a test checks that every key listed
 // here is read, and the command line refuses a key not listed, so a new option goes in both
-// places. mlt reads bdpt's, cmlt mlt's, mir ir's gathering options.
+// places. mlt reads bdpt's, cmlt mlt's, mir ir's gathering options;
+// every tracing backend reads light_sampler (TracingBackend).
 constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth", "light_sampler"};
-constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies"};
-constexpr std::string_view kIrOptions[] = {"vpl_paths", "max_bounces", "clamp", "compensate"};
+constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies", "light_sampler"};
+constexpr std::string_view kIrOptions[] = {"vpl_paths", "max_bounces", "clamp", "compensate", "light_sampler"};
 constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples",
-                                            "norm_stride", "max_bounces", "clamp",   "compensate"};
+                                            "norm_stride", "max_bounces", "clamp",   "compensate",
+                                            "light_sampler"};
 constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations", "large_step", "sigma",
-                                            "caustic",   "max_depth", "rr_depth",  "strategies"};
+                                            "caustic",   "max_depth", "rr_depth",  "strategies", "light_sampler"};
 constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
                                              "caustic_steps",   "bootstrap", "chains",       "mutations",     "large_step",
-                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
+                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies",
+                                             "light_sampler"};
 constexpr std::string_view kPreviewOptions[] = {"vpls",       "clamp", "area_samples", "unroll",        "pattern",
                                                 "visibility", "blur",  "split",        "vpl_source",    "shaded_lights",
                                                 "proxy_triangles"};

@@ -53,6 +53,9 @@ struct GridSettings {
     int replicas = 8;              // bdpt, mir, mlt, cmlt: independent renders of the sensors
     int sensorPixelsPerSide = 2;   // bdpt, mir, mlt, cmlt: each point's block of pixels (sensor.h)
     std::map<std::string, std::string> backendOptions;  // all but path, ir: as render's --option
+    // How next-event estimation chooses lights, for path and ir (the other methods' backends
+    // read light_sampler from backendOptions); build the RenderScene with it.
+    LightSelection lightSelection = kDefaultLightSelection;
     double timeLimitSeconds = 0;   // 0: no limit
     uint64_t seed = 1;
 };

@@ -103,7 +103,7 @@ Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) co
     LightSample ls;
     const V2f uLight = rng.next2D();
     const float uSelect = rng.next1D();
-    if (scene_.lights().sample(r.x, uLight, uSelect, ls) && !ls.isDelta) {
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls, frame.n) && !ls.isDelta) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(white_, woLocal, wiLocal);
         if (!isBlack(f) && !scene_.occluded(ls.shadowRay))
@@ -115,7 +115,7 @@ Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng) co
     const float uLobe = rng.next1D();
     if (bsdfSample(white_, woLocal, u, uLobe, bs)) {
         const V3f wi = frame.toWorld(bs.wi);
-        const PathTracer::ScatteredFrom from{r.x.p, bs.pdf};
+        const PathTracer::ScatteredFrom from{r.x.p, bs.pdf, frame.n};
         Lo += bs.weight * pathTracer_.radiance(Ray{r.x.spawnOrigin(wi), wi}, rng, &from);
     }
     return Lo * float(std::numbers::pi);

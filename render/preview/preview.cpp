@@ -132,7 +132,8 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     st.width = st.scene->camera().width();
     st.height = st.scene->camera().height();
     st.deltas.clear();
-    for (const Light& l : snapshot->lights) st.deltas.push_back(compileDeltaLight(l));
+    GoniometricSamplers samplers;
+    for (const Light& l : snapshot->lights) st.deltas.push_back(compileDeltaLight(l, &samplers));
     st.customVpls = false;
 
     // Geometry: non-indexed world-space triangles, per-triangle normal and material.

@@ -26,6 +26,10 @@ public:
     // Total flux of the table (cd sr = lm).
     double flux() const { return cells_.total(); }
     const GoniometricDistribution& distribution() const { return *d_; }
+    // Upper bounds for light trees: no direction's intensity exceeds peakIntensity() (cd), and
+    // every direction farther than emissionConeRad() from the nadir has none.
+    float peakIntensity() const { return peak_; }
+    float emissionConeRad() const { return coneRad_; }
 
 private:
     // The (C, gamma) cell of a direction and its index; false outside the tabulated gamma range.
@@ -35,6 +39,7 @@ private:
     std::shared_ptr<const GoniometricDistribution> d_;
     DiscreteDistribution cells_;  // over c * (gammas - 1) + g
     size_t gammaCells_ = 0;
+    float peak_ = 0, coneRad_ = 0;
 };
 
 // Local (C0, C90, nadir) coordinates of a luminaire's direction in degrees.

@@ -8,7 +8,7 @@
 
 namespace lucerna {
 
-DeltaLight compileDeltaLight(const Light& l) {
+DeltaLight compileDeltaLight(const Light& l, GoniometricSamplers* samplers) {
     DeltaLight d;
     d.type = l.type;
     d.position = toFloat(l.position);
@@ -24,9 +24,15 @@ DeltaLight compileDeltaLight(const Light& l) {
         d.direction = toFloat(f.nadir);
         d.c0 = toFloat(f.c0);
         d.c90 = toFloat(f.c90);
-        if (l.luminaire && l.luminaire->distribution)
-            d.goniometric = std::make_shared<const GoniometricSampler>(l.luminaire->distribution);
-        else
+        if (l.luminaire && l.luminaire->distribution) {
+            const auto& distribution = l.luminaire->distribution;
+            if (!samplers) d.goniometric = std::make_shared<const GoniometricSampler>(distribution);
+            else {
+                auto& shared = (*samplers)[distribution.get()];
+                if (!shared) shared = std::make_shared<const GoniometricSampler>(distribution);
+                d.goniometric = shared;
+            }
+        } else
             d.intensity = Rgb(0, 0, 0);
     }
     return d;
@@ -115,19 +121,13 @@ void LightSampler::buildTree(size_t triangleCount) {
             bounds.push_back(LightBounds::spot(l.position, l.direction, std::acos(std::clamp(l.cosCone, -1.0f, 1.0f)),
                                                intensity));
             break;
-        case LightType::Luminaire: {
-            // Its table may send light anywhere (an uplight's upper hemisphere too): a point
-            // light as strong as the table's peak, found over a fine grid of directions.
-            float peak = 0;
-            for (int a = 0; a <= 90; ++a)
-                for (int b = 0; b < 180; ++b) {
-                    const float theta = kPi * float(a) / 90, phi = 2 * kPi * float(b) / 180;
-                    peak = std::max(peak, l.factor(V3f(std::sin(theta) * std::cos(phi), std::cos(theta),
-                                                        std::sin(theta) * std::sin(phi))));
-                }
-            bounds.push_back(LightBounds::point(l.position, intensity * peak));
+        case LightType::Luminaire:
+            // A spot about the nadir as wide as the table's last lit gamma (an uplight's upper
+            // hemisphere included), as strong as the table's peak.
+            if (!l.goniometric) continue;
+            bounds.push_back(LightBounds::spot(l.position, l.direction, l.goniometric->emissionConeRad(),
+                                               intensity * l.goniometric->peakIntensity()));
             break;
-        }
         default: bounds.push_back(LightBounds::point(l.position, intensity)); break;
         }
         treeLights_.push_back(index);
@@ -135,7 +135,7 @@ void LightSampler::buildTree(size_t triangleCount) {
     tree_ = LightTree(bounds);
 }
 
-bool LightSampler::selectByTree(const V3f& p, float u, size_t& index, float& pdf) const {
+bool LightSampler::selectByTree(const V3f& p, const V3f& n, float u, size_t& index, float& pdf) const {
     // The tree and the directional lights share the choice evenly, as in pbrt-v4.
     const size_t choices = directional_.size() + (tree_.empty() ? 0 : 1);
     if (choices == 0) return false;
@@ -146,19 +146,20 @@ bool LightSampler::selectByTree(const V3f& p, float u, size_t& index, float& pdf
         pdf = share;
         return true;
     }
-    const auto choice = tree_.sample(p, std::min(u * float(choices) - float(k), 0x1.fffffep-1f));
+    const auto choice = tree_.sample(p, n, std::min(u * float(choices) - float(k), 0x1.fffffep-1f));
     if (!choice) return false;
     index = treeLights_[choice->light];
     pdf = share * choice->pmf;
     return true;
 }
 
-bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const {
+bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out,
+                          const V3f& receiving) const {
     if (select_.empty()) return false;
     size_t index = 0;
     float selectPdf = 1.0f;
     if (!treeLights_.empty() || !directional_.empty()) {
-        if (!selectByTree(ref.p, uSelect, index, selectPdf)) return false;
+        if (!selectByTree(ref.p, receiving, uSelect, index, selectPdf)) return false;
     } else if (select_.size() > 1) {
         index = select_.sample(uSelect);
         selectPdf = float(select_.pdf(index));
@@ -314,13 +315,14 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
     return true;
 }
 
-float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq) const {
+float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq,
+                               const V3f& receiving) const {
     float areaPdf = triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f;
     if (areaPdf <= 0.0f) return 0.0f;
     if (!treeLights_.empty()) {
         const int32_t k = treeLightOfTriangle_[triangle];
         const float share = 1.0f / float(directional_.size() + 1);
-        areaPdf = k < 0 ? 0.0f : share * tree_.pmf(p, uint32_t(k)) / emitters_[treeLights_[k]].area;
+        areaPdf = k < 0 ? 0.0f : share * tree_.pmf(p, receiving, uint32_t(k)) / emitters_[treeLights_[k]].area;
         if (areaPdf <= 0.0f) return 0.0f;
     }
     const V3f d = q - p;

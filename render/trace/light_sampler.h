@@ -10,6 +10,8 @@
 #include "render/trace/light_tree.h"
 #include "render/trace/surface_point.h"
 
+#include <map>
+#include <memory>
 #include <vector>
 
 namespace lucerna {
@@ -34,8 +36,13 @@ struct DeltaLight {
     V3f toLuminaire(const V3f& w) const { return V3f(w.dot(c0), w.dot(c90), w.dot(direction)); }
 };
 
-// The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2).
-DeltaLight compileDeltaLight(const Light& light);
+// Luminaire samplers by distribution, so that lights sharing a file share one (a floor of
+// identical luminaires builds the table's sampling distribution once).
+using GoniometricSamplers = std::map<const GoniometricDistribution*, std::shared_ptr<const GoniometricSampler>>;
+
+// The float form of a scene light (SPEC.md units: intensity in W/sr, not yet divided by mpu^2);
+// with `samplers`, a luminaire's sampler is taken from or added to it.
+DeltaLight compileDeltaLight(const Light& light, GoniometricSamplers* samplers = nullptr);
 
 struct EmitterTriangle {
     uint32_t triangle = 0;   // index into the render scene's triangles
@@ -80,6 +87,8 @@ struct EmissionSample {
 // How next-event estimation chooses a light: in proportion to power everywhere, or by a light
 // tree by each light's importance at the shading point (`--option light_sampler=power|tree`).
 enum class LightSelection { Power, Tree };
+// The choice where none is asked for: the tree (BENCHMARKS.md, "Many lights").
+constexpr LightSelection kDefaultLightSelection = LightSelection::Tree;
 
 class LightSampler {
 public:
@@ -88,7 +97,7 @@ public:
     // scene's cross-section); triangleCount sizes the per-triangle pdf table for MIS.
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                  const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
-                 LightSelection selection = LightSelection::Power);
+                 LightSelection selection = kDefaultLightSelection);
 
     bool empty() const { return emitters_.empty() && deltas_.empty(); }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
@@ -97,7 +106,11 @@ public:
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
     // (back of an emitter, outside a spot's cone, zero power). With the tree, directional lights
     // are chosen beside it, each as often as the whole tree.
-    bool sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out) const;
+    // `receiving`: the unit normal of the side of ref that takes light (an opaque surface's side
+    // facing the viewer), which lets the tree skip lights behind it; zero for any side. The power
+    // selection ignores it.
+    bool sample(const SurfacePoint& ref, const V2f& u, float uSelect, LightSample& out,
+                const V3f& receiving = V3f(0, 0, 0)) const;
     // The sample of delta light deltaLights()[index] for `ref`, as sample() gives it but with
     // selection probability 1: estimators that sum every delta light exactly (calculation grids)
     // instead of choosing one. False when the light cannot reach ref.
@@ -113,8 +126,15 @@ public:
     double totalPower() const { return select_.total(); }
 
     // Solid-angle pdf with which sample() yields the point q (unit normal nq) of emissive
-    // triangle `triangle`, seen from p (sample()'s ref.p). 0 for a triangle that does not emit.
-    float pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq) const;
+    // triangle `triangle`, seen from p (sample()'s ref.p, with its `receiving`). 0 for a
+    // triangle that does not emit.
+    float pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq,
+                     const V3f& receiving = V3f(0, 0, 0)) const;
+    // The area density with which sample() and sampleEmission() would choose a point of the
+    // emissive triangle were the light chosen by power: the one density BDPT's MIS weights use
+    // for a light-path origin, whatever chose the light (they only need to agree across
+    // strategies, pbrt-v4's PdfLightOrigin does the same).
+    float areaPdfByPower(uint32_t triangle) const { return triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f; }
 
 private:
     bool sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
@@ -122,7 +142,7 @@ private:
     bool sampleDelta(const DeltaLight& l, float selectPdf, const SurfacePoint& ref, LightSample& out) const;
     void buildTree(size_t triangleCount);
     // Tree selection: the light (emitters_ then deltas_ numbering) and its probability at p.
-    bool selectByTree(const V3f& p, float u, size_t& index, float& pdf) const;
+    bool selectByTree(const V3f& p, const V3f& n, float u, size_t& index, float& pdf) const;
 
     std::vector<EmitterTriangle> emitters_;
     std::vector<DeltaLight> deltas_;

@@ -83,24 +83,53 @@ LightBounds unite(const LightBounds& a, const LightBounds& b) {
     return u;
 }
 
-float importance(const LightBounds& b, const V3f& p) {
-    if (b.intensity <= 0) return 0;
-    const V3f centre = (b.lo + b.hi) * 0.5f;
-    const float halfDiagonal = 0.5f * (b.hi - b.lo).length();
-    const float dist2 = (p - centre).length2();
-    // Closer than the box's half diagonal the distance bound would be no bound: clamp it there.
-    const float d2 = std::max(dist2, halfDiagonal * halfDiagonal);
-    if (d2 <= 0) return 0;
-    float thetaP = 0;  // the smallest angle by which p lies outside the emission cone
-    if (b.thetaO < kPi && dist2 > halfDiagonal * halfDiagonal) {
-        const float dist = std::sqrt(dist2);
-        const float thetaW = angleBetween(b.axis, (p - centre) / dist);
-        const float thetaB = std::asin(std::min(1.0f, halfDiagonal / dist));  // the box seen from p
-        thetaP = std::max(0.0f, thetaW - b.thetaO - thetaB);
-    }
-    if (thetaP > b.thetaE + kAngleTolerance) return 0;
-    return b.intensity * std::cos(std::min(thetaP, b.thetaE)) / d2;
+namespace {
+
+// cos(max(0, a - b)) and sin(max(0, a - b)) from the sines and cosines of angles a, b in [0, pi]
+// (pbrt-v4's cosSubClamped, sinSubClamped): no inverse trigonometry on the hot path.
+float cosSubClamped(float sinA, float cosA, float sinB, float cosB) {
+    return cosA > cosB ? 1.0f : cosA * cosB + sinA * sinB;
 }
+float sinSubClamped(float sinA, float cosA, float sinB, float cosB) {
+    return cosA > cosB ? 0.0f : sinA * cosB - cosA * sinB;
+}
+float sinFromCos(float c) { return std::sqrt(std::max(0.0f, 1 - c * c)); }
+
+}  // namespace
+
+ImportanceBounds::ImportanceBounds(const LightBounds& b)
+    : centre((b.lo + b.hi) * 0.5f), radius2(0.25f * (b.hi - b.lo).length2()), intensity(b.intensity), axis(b.axis),
+      cosO(std::cos(b.thetaO)), sinO(std::sin(b.thetaO)), cosE(std::cos(std::min(b.thetaE + kAngleTolerance, kPi))) {}
+
+float importance(const ImportanceBounds& b, const V3f& p, const V3f& n) {
+    if (b.intensity <= 0) return 0;
+    const V3f toP = p - b.centre;
+    const float dist2 = toP.length2();
+    // Inside the bounding sphere every direction is possible and the distance no bound: clamp it.
+    if (dist2 <= b.radius2) return b.radius2 > 0 ? b.intensity / b.radius2 : 0;
+    const float invDist = 1 / std::sqrt(dist2);
+    // theta_b: the half-angle of the sphere seen from p.
+    const float sinB = std::min(1.0f, std::sqrt(b.radius2) * invDist), cosB = sinFromCos(sinB);
+    // theta' = max(0, theta_w - theta_o - theta_b): the smallest angle by which p can lie outside
+    // the emission cone; zero importance beyond theta_e.
+    float cosP = 1;
+    if (b.cosO > -1) {
+        const float cosW = b.axis.dot(toP) * invDist, sinW = sinFromCos(cosW);
+        const float cosX = cosSubClamped(sinW, cosW, b.sinO, b.cosO), sinX = sinSubClamped(sinW, cosW, b.sinO, b.cosO);
+        cosP = cosSubClamped(sinX, cosX, sinB, cosB);
+        if (cosP < b.cosE) return 0;
+    }
+    // The receiving side: a light wholly behind the surface gives nothing (theta_i - theta_b >= 90).
+    float cosI = 1;
+    if (n.x != 0 || n.y != 0 || n.z != 0) {
+        const float cosN = -n.dot(toP) * invDist, sinN = sinFromCos(cosN);
+        cosI = cosSubClamped(sinN, cosN, sinB, cosB);
+        if (cosI <= 0) return 0;
+    }
+    return b.intensity * std::max(cosP, 1e-6f) * cosI / dist2;
+}
+
+float importance(const LightBounds& b, const V3f& p, const V3f& n) { return importance(ImportanceBounds(b), p, n); }
 
 LightTree::LightTree(const std::vector<LightBounds>& lights) {
     leafOf_.assign(lights.size(), -1);
@@ -119,6 +148,7 @@ int32_t LightTree::build(std::vector<uint32_t>& order, size_t begin, size_t end,
     nodes_[index].parent = parent;
     if (end - begin == 1) {
         nodes_[index].bounds = lights[order[begin]];
+        nodes_[index].compact = ImportanceBounds(lights[order[begin]]);
         nodes_[index].light = order[begin];
         leafOf_[order[begin]] = index;
         return index;
@@ -143,63 +173,59 @@ int32_t LightTree::build(std::vector<uint32_t>& order, size_t begin, size_t end,
     nodes_[index].left = left;
     nodes_[index].right = right;
     nodes_[index].bounds = unite(nodes_[left].bounds, nodes_[right].bounds);
+    nodes_[index].compact = ImportanceBounds(nodes_[index].bounds);
     return index;
 }
 
-float LightTree::weight(int32_t node, const V3f& p) const {
-    const Node& n = nodes_[node];
-    const float w = importance(n.bounds, p);
-    if (w <= 0 || n.left < 0) return w;
-    // A node whose children both read zero would end the descent with no light: its looser
-    // union bound counts for nothing.
-    return importance(nodes_[n.left].bounds, p) + importance(nodes_[n.right].bounds, p) > 0 ? w : 0;
+float LightTree::weight(int32_t node, const V3f& p, const V3f& n) const {
+    return importance(nodes_[node].compact, p, n);
 }
 
-float LightTree::childProbability(const Node& n, int which, const V3f& p) const {
-    float l = weight(n.left, p), r = weight(n.right, p);
+float LightTree::leftProbability(const Node& node, const V3f& p, const V3f& n) const {
+    float l = weight(node.left, p, n), r = weight(node.right, p, n);
     if (!(l + r > 0)) {
         // Reached through a parent's looser bound, with both children ruled out: chosen by
         // intensity and distance alone, so that every descent ends at a light and the
         // probabilities sum to one (the light chosen then gives nothing, as a failed descent
         // would).
-        LightBounds left = nodes_[n.left].bounds, right = nodes_[n.right].bounds;
+        LightBounds left = nodes_[node.left].bounds, right = nodes_[node.right].bounds;
         left.thetaO = right.thetaO = kPi;
         l = importance(left, p);
         r = importance(right, p);
         if (!(l + r > 0)) l = r = 1;
     }
-    return (which ? r : l) / (l + r);
+    return l / (l + r);
 }
 
-std::optional<LightTree::Choice> LightTree::sample(const V3f& p, float u) const {
+std::optional<LightTree::Choice> LightTree::sample(const V3f& p, const V3f& n, float u) const {
     // No light reaches p when the root's children all read zero (or a lone light does).
-    if (nodes_.empty() || !(weight(0, p) > 0)) return std::nullopt;
-    int32_t n = 0;
+    if (nodes_.empty() || !(weight(0, p, n) > 0)) return std::nullopt;
+    int32_t node = 0;
     float pmf = 1;
-    while (nodes_[n].left >= 0) {
-        const float pLeft = childProbability(nodes_[n], 0, p);
+    while (nodes_[node].left >= 0) {
+        const float pLeft = leftProbability(nodes_[node], p, n);
         // One random number for the whole descent: rescaled into the chosen child's share.
         if (u < pLeft) {
             u = std::min(u / pLeft, 0x1.fffffep-1f);
             pmf *= pLeft;
-            n = nodes_[n].left;
+            node = nodes_[node].left;
         } else {
             u = std::min((u - pLeft) / (1 - pLeft), 0x1.fffffep-1f);
             pmf *= 1 - pLeft;
-            n = nodes_[n].right;
+            node = nodes_[node].right;
         }
     }
     if (!(pmf > 0)) return std::nullopt;
-    return Choice{nodes_[n].light, pmf};
+    return Choice{nodes_[node].light, pmf};
 }
 
-float LightTree::pmf(const V3f& p, uint32_t light) const {
-    if (light >= leafOf_.size() || leafOf_[light] < 0 || !(weight(0, p) > 0)) return 0;
+float LightTree::pmf(const V3f& p, const V3f& n, uint32_t light) const {
+    if (light >= leafOf_.size() || leafOf_[light] < 0 || !(weight(0, p, n) > 0)) return 0;
     float pmf = 1;
-    for (int32_t n = leafOf_[light]; nodes_[n].parent >= 0; n = nodes_[n].parent) {
-        const Node& parent = nodes_[nodes_[n].parent];
-        const float pLeft = childProbability(parent, 0, p);
-        pmf *= parent.left == n ? pLeft : 1 - pLeft;
+    for (int32_t node = leafOf_[light]; nodes_[node].parent >= 0; node = nodes_[node].parent) {
+        const Node& parent = nodes_[nodes_[node].parent];
+        const float pLeft = leftProbability(parent, p, n);
+        pmf *= parent.left == node ? pLeft : 1 - pLeft;
     }
     return pmf;
 }

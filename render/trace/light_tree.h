@@ -7,8 +7,8 @@
 // any light at any point is computable (pmf), because MIS needs it.
 //
 // The bounds are conservative: a node's importance at a point is zero only where none of its
-// lights can send light, so the tree never turns light into bias. Not yet used by the
-// backends' next-event estimation (issue 19): LightSampler still chooses by power.
+// lights can send light, so the tree never turns light into bias. LightSampler uses it for
+// next-event estimation with LightSelection::Tree.
 
 #include "core/math.h"
 
@@ -37,10 +37,27 @@ struct LightBounds {
 // The bounds of two lights together.
 LightBounds unite(const LightBounds& a, const LightBounds& b);
 
-// An upper bound of the irradiance the lights can give at p, up to a common factor (intensity x
-// cos of the smallest angle by which p can lie outside the emission cone / squared distance, the
-// distance no smaller than half the box's diagonal); 0 only where none can reach p.
-float importance(const LightBounds& b, const V3f& p);
+// What importance() reads of a LightBounds, precomputed for each node of a tree: the box's
+// bounding sphere, and the cosines of the cone angles (thetaE with a small tolerance, so that a
+// point on a spot's cone edge is not ruled out by rounding).
+struct ImportanceBounds {
+    ImportanceBounds() = default;
+    explicit ImportanceBounds(const LightBounds& b);
+    V3f centre{0, 0, 0};
+    float radius2 = 0;  // squared radius of the box's bounding sphere
+    float intensity = 0;
+    V3f axis{0, 0, 1};
+    float cosO = -1, sinO = 0, cosE = 1;
+};
+
+// An upper bound of the irradiance the lights can give at p, up to a common factor: intensity x
+// cos of the smallest angle by which p can lie outside the emission cone x cos of the smallest
+// angle between n and a direction to the lights / squared distance, the distance no smaller than
+// the radius of the box's bounding sphere. n is the unit normal of the side p receives light on
+// (an opaque surface's side facing the viewer), or zero where light from any side counts.
+// 0 only where none of the lights can reach that side of p.
+float importance(const LightBounds& b, const V3f& p, const V3f& n = V3f(0, 0, 0));
+float importance(const ImportanceBounds& b, const V3f& p, const V3f& n);
 
 class LightTree {
 public:
@@ -55,26 +72,29 @@ public:
         uint32_t light = 0;
         float pmf = 0;
     };
-    // A light for the point p by the random number u in [0, 1); nothing where the bounds say
-    // that no light can reach p. Otherwise the probabilities of all lights sum to one; a light
-    // that cannot reach p may still be chosen where the bounds are loose, never the other way.
-    std::optional<Choice> sample(const V3f& p, float u) const;
-    // The probability that sample(p, u) chooses `light` for a uniform u.
-    float pmf(const V3f& p, uint32_t light) const;
+    // A light for the point p (receiving on the side of the unit normal n, or any side for n
+    // zero; importance()) by the random number u in [0, 1); nothing where the bounds say that no
+    // light can reach p. Otherwise the probabilities of all lights sum to one; a light that
+    // cannot reach p may still be chosen where the bounds are loose, never the other way.
+    std::optional<Choice> sample(const V3f& p, const V3f& n, float u) const;
+    std::optional<Choice> sample(const V3f& p, float u) const { return sample(p, V3f(0, 0, 0), u); }
+    // The probability that sample(p, n, u) chooses `light` for a uniform u.
+    float pmf(const V3f& p, const V3f& n, uint32_t light) const;
+    float pmf(const V3f& p, uint32_t light) const { return pmf(p, V3f(0, 0, 0), light); }
 
 private:
     struct Node {
         LightBounds bounds;
+        ImportanceBounds compact;
         int32_t left = -1, right = -1;  // children; -1 for a leaf
         int32_t parent = -1;
         uint32_t light = 0;  // leaf: which light
     };
     int32_t build(std::vector<uint32_t>& order, size_t begin, size_t end, const std::vector<LightBounds>& lights,
                   int32_t parent);
-    // A node's importance at p, zero when both its children's are (one level of look-ahead).
-    float weight(int32_t node, const V3f& p) const;
-    // The probability of choosing child `which` (0 left, 1 right) of node n at p.
-    float childProbability(const Node& n, int which, const V3f& p) const;
+    float weight(int32_t node, const V3f& p, const V3f& n) const;
+    // The probability of choosing the left child of `node` at p.
+    float leftProbability(const Node& node, const V3f& p, const V3f& n) const;
 
     std::vector<Node> nodes_;     // nodes_[0] is the root
     std::vector<int32_t> leafOf_; // by light: its leaf node, -1 when left out

@@ -16,7 +16,7 @@ Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial
     LightSample ls;
     const V2f u = rng.next2D();
     const float uSelect = rng.next1D();
-    if (!scene_.lights().sample(hit, u, uSelect, ls)) return Rgb(0, 0, 0);
+    if (!scene_.lights().sample(hit, u, uSelect, ls, frame.n)) return Rgb(0, 0, 0);
     const V3f wiLocal = frame.toLocal(ls.wi);
     const Rgb f = bsdfEval(mat, woLocal, wiLocal);
     if (isBlack(f) || scene_.occluded(ls.shadowRay)) return Rgb(0, 0, 0);
@@ -31,6 +31,7 @@ Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* fro
     bool specularBounce = from == nullptr;
     float bsdfPdfPrev = from ? from->pdf : 0.0f;
     V3f pPrev = from ? from->origin : ray.origin;
+    V3f nPrev = from ? from->receiving : V3f(0, 0, 0);
 
     for (int depth = 0;; ++depth) {
         const auto hit = scene_.intersect(ray);
@@ -42,7 +43,7 @@ Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* fro
             if (hit->ng.dot(wo) > 0.0f) {  // one-sided: only the front emits
                 float weight = 1.0f;
                 if (!specularBounce)
-                    weight = powerHeuristic(bsdfPdfPrev, scene_.lights().pdfEmitter(hit->triangle, pPrev, hit->p, hit->ng));
+                    weight = powerHeuristic(bsdfPdfPrev, scene_.lights().pdfEmitter(hit->triangle, pPrev, hit->p, hit->ng, nPrev));
                 L += throughput * mat.radiance * weight;
             }
             break;  // emitters reflect nothing
@@ -62,6 +63,7 @@ Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* fro
         specularBounce = bs.isDelta;
         bsdfPdfPrev = bs.pdf;
         pPrev = hit->p;
+        nPrev = frame.n;
 
         if (depth + 1 >= settings_.rouletteStartDepth) {
             const float survive = std::min(0.95f, maxComponent(throughput));

@@ -19,6 +19,7 @@ public:
     struct ScatteredFrom {
         V3f origin;
         float pdf = 0;
+        V3f receiving{0, 0, 0};  // the `receiving` normal next-event estimation used at origin
     };
 
     // Radiance arriving at the camera along `ray` (W sr^-1 m^-2 per channel); with `from`, the

@@ -49,8 +49,9 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
     }
 
     std::vector<DeltaLight> deltas;
+    GoniometricSamplers samplers;
     for (const Light& l : s.lights) {
-        DeltaLight d = compileDeltaLight(l);
+        DeltaLight d = compileDeltaLight(l, &samplers);
         if (!isBlack(d.intensity)) deltas.push_back(d);
     }
     lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,

@@ -22,7 +22,7 @@ public:
     // width/height: the film resolution (the camera's own when <= 0). With `sensor`, the film
     // measures that sensor instead of the scene's camera (irradiance sensors; sensor.h).
     RenderScene(SceneSnapshot scene, int width = 0, int height = 0, const Sensor* sensor = nullptr,
-                LightSelection lightSelection = LightSelection::Power);
+                LightSelection lightSelection = kDefaultLightSelection);
 
     const Scene& scene() const { return *scene_; }
     const SceneSnapshot& snapshot() const { return scene_; }

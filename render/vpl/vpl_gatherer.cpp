@@ -56,7 +56,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     LightSample ls;
     const V2f uLight = rng.next2D();
     const float uSelect = rng.next1D();
-    if (scene_.lights().sample(r.x, uLight, uSelect, ls) && !(withoutDeltaLights && ls.isDelta)) {
+    if (scene_.lights().sample(r.x, uLight, uSelect, ls, frame.n) && !(withoutDeltaLights && ls.isDelta)) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(mat, woLocal, wiLocal);
         if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
@@ -78,7 +78,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     const ShadingMaterial& m2 = scene_.material(hit->material);
     if (m2.isEmitter()) {
         if (hit->ng.dot(-wi) > 0.0f) {
-            const float w = powerHeuristic(bs.pdf, scene_.lights().pdfEmitter(hit->triangle, r.x.p, hit->p, hit->ng));
+            const float w = powerHeuristic(bs.pdf, scene_.lights().pdfEmitter(hit->triangle, r.x.p, hit->p, hit->ng, frame.n));
             L += bs.weight * m2.radiance * w;
         }
         return L;

@@ -75,9 +75,9 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
 
 float VertexDensities::pdfLightOrigin(const PathVertex& v) const {
     if (v.kind != VertexKind::AreaLight && v.kind != VertexKind::Surface) return 0.0f;
-    // pdfEmitter is selection / area * d^2 / cos; seen from one unit along the normal it is the
-    // area density itself, the same one sample() and sampleEmission() draw positions with.
-    return scene_.lights().pdfEmitter(v.sp.triangle, v.p() + v.sp.ng, v.p(), v.sp.ng);
+    // By power even where next-event estimation chooses lights by the tree: the weights of all
+    // strategies then use one density for the origin and still sum to one (light_sampler.h).
+    return scene_.lights().areaPdfByPower(v.sp.triangle);
 }
 
 Rgb VertexDensities::emitted(const PathVertex& v, const V3f& w) const {

@@ -46,9 +46,7 @@ namespace {
 class PathBackend final : public TracingBackend {
 public:
     PathBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : TracingBackend(std::move(scene), settings), pathSettings_(pathSettingsFromOptions(settings)) {
-        lightSelection_ = lightSelectionOption(settings);
-    }
+        : TracingBackend(std::move(scene), settings), pathSettings_(pathSettingsFromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
         prepareSceneAndFilm();
