@@ -18,6 +18,7 @@
 #include <cmath>
 #include <map>
 #include <optional>
+#include <tuple>
 #include <unordered_map>
 
 namespace lucerna {
@@ -93,16 +94,11 @@ Light withTemperature(Light l, double kelvin) {
     return withPhotometric(l, spec);
 }
 
-// The one value all give, or nothing when they differ (within rounding).
-template <class T>
-std::optional<T> shared(const std::vector<T>& values, bool* mixed) {
-    *mixed = false;
+// The one value all give, or nothing when they differ (within rounding) or there are none.
+std::optional<double> shared(const std::vector<double>& values) {
     if (values.empty()) return std::nullopt;
-    for (const T& v : values)
-        if (!(std::abs(v - values.front()) <= 1e-9 * std::max(std::abs(v), std::abs(values.front())))) {
-            *mixed = true;
-            return std::nullopt;
-        }
+    for (double v : values)
+        if (!(std::abs(v - values.front()) <= 1e-9 * std::max(std::abs(v), std::abs(values.front())))) return std::nullopt;
     return values.front();
 }
 
@@ -200,8 +196,9 @@ void LightSetProperties::refresh() {
     for (QObject* o : std::initializer_list<QObject*>{group_, on_, flux_, temperature_}) blocks.emplace_back(o);
 
     const int n = int(lights_.size());
-    title_->setText(!groupName_.empty() ? tr("Group %1: %2").arg(QString::fromStdString(groupName_), counted(n, tr("light"), tr("lights")))
-                                        : tr("%1 selected").arg(counted(n, tr("light"), tr("lights"))));
+    const QString count = counted(n, tr("light"), tr("lights"));
+    title_->setText(groupName_.empty() ? tr("%1 selected").arg(count)
+                                       : tr("Group %1: %2").arg(QString::fromStdString(groupName_), count));
     std::map<LightType, int> types;
     int on = 0;
     std::vector<std::string> groups, files;
@@ -227,33 +224,36 @@ void LightSetProperties::refresh() {
         }
     }
     QStringList parts;
-    const std::pair<LightType, QString> names[] = {{LightType::Point, counted(types[LightType::Point], tr("point light"), tr("point lights"))},
-                                                   {LightType::Spot, counted(types[LightType::Spot], tr("spot"), tr("spots"))},
-                                                   {LightType::Luminaire, counted(types[LightType::Luminaire], tr("luminaire"), tr("luminaires"))},
-                                                   {LightType::Directional, counted(types[LightType::Directional], tr("directional light"), tr("directional lights"))}};
-    for (const auto& [type, text] : names)
-        if (types[type] > 0) parts << text;
+    const std::tuple<LightType, QString, QString> names[] = {
+        {LightType::Point, tr("point light"), tr("point lights")},
+        {LightType::Spot, tr("spot"), tr("spots")},
+        {LightType::Luminaire, tr("luminaire"), tr("luminaires")},
+        {LightType::Directional, tr("directional light"), tr("directional lights")}};
+    for (const auto& [type, one, many] : names)
+        if (types[type] > 0) parts << counted(types[type], one, many);
     if (on < n) parts << tr("%1 switched off").arg(n - on);
     summary_->setText(parts.join(", "));
 
-    const bool oneGroup = std::all_of(groups.begin(), groups.end(), [&](const std::string& g) { return g == groups.front(); });
-    if (!group_->hasFocus()) group_->setText(oneGroup && !groups.empty() ? QString::fromStdString(groups.front()) : QString());
+    const bool oneGroup =
+        std::all_of(groups.begin(), groups.end(), [&](const std::string& g) { return g == groups.front(); });
+    if (!group_->hasFocus())
+        group_->setText(oneGroup && !groups.empty() ? QString::fromStdString(groups.front()) : QString());
     group_->setPlaceholderText(oneGroup ? tr("none") : tr("mixed"));
     on_->setCheckState(on == n ? Qt::Checked : on == 0 ? Qt::Unchecked : Qt::PartiallyChecked);
 
-    bool mixed = false;
     fluxRow_->setVisible(!fluxes.empty());
-    showValue(flux_, shared(fluxes, &mixed));
+    showValue(flux_, shared(fluxes));
     temperatureRow_->setVisible(anyPositioned);
     // One temperature for all, or what they have instead: a colour each, white (neither), or a mix.
-    const std::optional<double> kelvin = colourGiven || white ? std::nullopt : shared(temperatures, &mixed);
-    showValue(temperature_, kelvin);
-    const bool onlyColours = colourGiven && !white && temperatures.empty(), onlyWhite = white && !colourGiven && temperatures.empty();
+    showValue(temperature_, colourGiven || white ? std::nullopt : shared(temperatures));
+    const bool onlyColours = colourGiven && !white && temperatures.empty();
+    const bool onlyWhite = white && !colourGiven && temperatures.empty();
     temperature_->setSpecialValueText(onlyColours ? tr("colours given") : onlyWhite ? tr("white (none given)") : tr("mixed"));
 
     if (luminaires == 0) file_->setText(tr("none"));
     else if (files.size() == 1 && luminaires == n) file_->setText(QString::fromStdString(files.front()));
-    else if (files.size() == 1) file_->setText(tr("%1 (%2)").arg(QString::fromStdString(files.front()), counted(luminaires, tr("luminaire"), tr("luminaires"))));
+    else if (files.size() == 1)
+        file_->setText(tr("%1 (%2)").arg(QString::fromStdString(files.front()), counted(luminaires, tr("luminaire"), tr("luminaires"))));
     else file_->setText(tr("mixed (%1 files)").arg(files.size()));
     replace_->setEnabled(anyPositioned);
 }
