@@ -175,7 +175,7 @@ int renderImpl(const std::vector<std::string>& args) {
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
             // By the render's own backend's machinery (illuminance_layer.h).
-            const RenderScene compiled(scene, frame.image.width, frame.image.height);
+            const RenderScene compiled(withoutLightsSwitchedOff(scene), frame.image.width, frame.image.height);
             illuminance = traceIlluminanceLayer(compiled, *illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx,
                                                 r.settings.options);
             if (ctx.isCancelled()) return;
@@ -282,7 +282,7 @@ void printLuminaire(const Light& l) {
 void printPhotometry(const Scene& scene) {
     const auto lumens = [](double watts) { return formatLumens(watts * kLumensPerWatt); };
     for (const Light& l : scene.lights) {
-        std::cout << "  " << l.name << ": ";
+        std::cout << "  " << l.name << (l.on ? "" : " (switched off)") << ": ";
         switch (l.type) {
         case LightType::Point:
             std::cout << "point, " << lumens(luminance(l.intensity) * pointSolidAngle()) << " lm\n";
@@ -329,7 +329,10 @@ int infoImpl(const std::vector<std::string>& args) {
     for (const Material& m : scene.materials) std::cout << "  " << m.name << ": " << materialTypeName(m.type) << "\n";
     std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
               << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
-              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires << ")\n";
+              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires;
+    if (const auto off = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return !l.on; }))
+        std::cout << "; " << off << " switched off";
+    std::cout << ")\n";
     printPhotometry(scene);
     std::string needs;
     if (f.hasDiffuse) needs += " diffuse";

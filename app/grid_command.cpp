@@ -162,7 +162,8 @@ int gridImpl(const std::vector<std::string>& args) {
     TaskSystem tasks(g.threads);
     std::optional<GridResult> result;
     auto job = tasks.submit([&](TaskContext& ctx) {
-        const RenderScene renderScene(scene, 16, 16, nullptr, g.settings.lightSelection);  // the camera is unused
+        const RenderScene renderScene(withoutLightsSwitchedOff(scene), 16, 16, nullptr,
+                                      g.settings.lightSelection);  // the camera is unused
         if (ctx.isCancelled()) return;
         GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);

@@ -1,5 +1,6 @@
 #include "core/scene.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lucerna {
@@ -62,6 +63,13 @@ int Scene::materialIndex(const std::string& name) const {
     return -1;
 }
 
+SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene) {
+    if (!scene || std::all_of(scene->lights.begin(), scene->lights.end(), [](const Light& l) { return l.on; })) return scene;
+    auto lit = std::make_shared<Scene>(*scene);
+    std::erase_if(lit->lights, [](const Light& l) { return !l.on; });
+    return lit;
+}
+
 SceneFeatures analyseFeatures(const Scene& scene) {
     SceneFeatures f;
     for (const Object& o : scene.objects) {
@@ -87,6 +95,7 @@ SceneFeatures analyseFeatures(const Scene& scene) {
         }
     }
     for (const Light& l : scene.lights) {
+        if (!l.on) continue;  // a light switched off calls for nothing
         switch (l.type) {
         case LightType::Point: ++f.pointLights; break;
         case LightType::Spot: ++f.spotLights; break;

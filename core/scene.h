@@ -127,6 +127,11 @@ struct Light {
     std::optional<PhotometricSpec> photometric;
     // Luminaire only (type Luminaire; position, and direction = the nadir, as for a spot).
     std::optional<LuminaireSpec> luminaire;
+    // Additions to the format (README, "Light groups"): the group the light belongs to (empty:
+    // none), and whether it is switched on. A light switched off is kept in the scene and the
+    // file but renders as if it were not there (withoutLightsSwitchedOff).
+    std::string group;
+    bool on = true;
 
     bool operator==(const Light&) const = default;
 };
@@ -153,7 +158,13 @@ struct Scene {
 // Immutable snapshots are what backends receive (DESIGN.md, "The flow of data").
 using SceneSnapshot = std::shared_ptr<const Scene>;
 
+// The scene as the renderers see it: the lights switched off ("on": false) left out, the others
+// in their order. The same snapshot when every light is on (no copy). Every place that builds
+// what renders from a scene (the tracing backends, the preview, the grids) goes through it.
+SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene);
+
 // What a scene calls for, so that backends model only what it needs (and `lucerna info` says so).
+// Lights switched off are not counted.
 struct SceneFeatures {
     bool hasDiffuse = false, hasGlossy = false, hasMirror = false, hasDielectric = false;
     int emitterTriangles = 0;

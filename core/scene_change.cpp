@@ -24,6 +24,10 @@ bool differOnlyInEmission(const Scene& before, const Scene& after) {
         l.intensity = r.intensity;
         l.irradiance = r.irradiance;
         l.photometric = r.photometric;
+        // Switching a light is a change of its emission (to or from none); its group changes
+        // nothing that renders.
+        l.on = r.on;
+        l.group = r.group;
         if (l.luminaire && r.luminaire) {
             l.luminaire->lumens = r.luminaire->lumens;
             l.luminaire->colour = r.luminaire->colour;

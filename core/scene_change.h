@@ -17,8 +17,8 @@ struct SceneChange {
     bool lightSet = false;    // lights added or removed (then `lights` is empty)
     std::vector<size_t> lights;  // the indices of the lights that differ (same count)
     // The scenes differ at most in the emission of their lights (intensity, irradiance,
-    // photometric values, a luminaire's lumens and colour) and of their emitters' radiance;
-    // true when they are equal.
+    // photometric values, a luminaire's lumens and colour, switched on or off), in their lights'
+    // groups, and in their emitters' radiance; true when they are equal.
     bool emissionOnly = false;
 
     bool none() const {

@@ -360,22 +360,23 @@ private:
         const std::string what = "a " + type + " light";
         if (type == "point") {
             l.type = LightType::Point;
-            checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature"}, what);
+            checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature", "group", "on"}, what);
         } else if (type == "spot") {
             l.type = LightType::Spot;
             checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start",
-                                 "lumens", "candela", "color", "temperature"}, what);
+                                 "lumens", "candela", "color", "temperature", "group", "on"}, what);
         } else if (type == "directional") {
             l.type = LightType::Directional;
-            checkKeys(v, place, {"name", "type", "direction", "irradiance"}, what);
+            checkKeys(v, place, {"name", "type", "direction", "irradiance", "group", "on"}, what);
         } else if (type == "luminaire") {
             l.type = LightType::Luminaire;
             checkKeys(v, place, {"name", "type", "file", "position", "direction", "rotation", "lumens", "color",
-                                 "temperature"}, what);
+                                 "temperature", "group", "on"}, what);
             l.name = parseName(v, place);
             l.position = vec3(required(v, place, "position"), member(place, "position"));
             l.direction = direction(required(v, place, "direction"), member(place, "direction"));
             l.luminaire = parseLuminaire(v, place);
+            parseGroupAndSwitch(v, place, l);
             return l;
         } else {
             fail(member(place, "type"), "unknown light type " + quote(type) +
@@ -396,11 +397,27 @@ private:
                 l.falloffStartDeg = numberIn(*f, member(place, "falloff_start"), 0, true, l.coneAngleDeg, false,
                                              " degrees (at most cone_angle)");
         }
+        parseGroupAndSwitch(v, place, l);
         if (l.photometric)
             l.intensity = photometricIntensity(*l.photometric, l.type == LightType::Spot
                                                                    ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg)
                                                                    : pointSolidAngle());
         return l;
+    }
+
+    // The additions every light type takes (README, "Light groups"): "group", a non-empty name
+    // (groups are their own namespace: a group may share a light's name), and "on", a boolean.
+    void parseGroupAndSwitch(const Value& v, const std::string& place, Light& l) const {
+        if (const Value* g = v.find("group")) {
+            const std::string here = member(place, "group");
+            l.group = text(*g, here);
+            if (l.group.empty()) fail(here, "group name is empty");
+            if (l.group.find('\0') != std::string::npos) fail(here, "group name contains a NUL character");
+        }
+        if (const Value* on = v.find("on")) {
+            expectType(*on, Type::Boolean, member(place, "on"));
+            l.on = on->boolean;
+        }
     }
 
     // A luminaire's keys (README): its file, rotation about the nadir, and optional lumens and

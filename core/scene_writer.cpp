@@ -152,6 +152,8 @@ std::string light(const Light& l) {
         break;
     }
     }
+    if (!l.group.empty()) out += ", \"group\": " + str(l.group);
+    if (!l.on) out += ", \"on\": false";
     return out + "}";
 }
 

@@ -100,6 +100,7 @@ private slots:
     void roundTrips_data();
     void roundTrips();
     void roundTripsAwkwardNumbers();
+    void roundTripsGroupsAndSwitches();
     void savesAtomically();
     void appliesTransforms();
     void readsMeshFiles_data();
@@ -241,6 +242,12 @@ void TestSceneIo::rejects_data() {
     row("directional zero direction", with([](Parts& p) { p.lights = light(R"({"name": "d", "type": "directional", "direction": [0, 0, 0], "irradiance": [1, 1, 1]})"); }), "lights[0].direction", "direction must be non-zero");
     row("directional irradiance negative", with([](Parts& p) { p.lights = light(R"({"name": "d", "type": "directional", "direction": [0, -1, 0], "irradiance": [1, -3, 1]})"); }), "lights[0].irradiance[1]", "must be at least 0, got -3");
     row("directional with intensity", with([](Parts& p) { p.lights = light(R"({"name": "d", "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "intensity": [1, 1, 1]})"); }), "lights[0].intensity", "unknown key for a directional light");
+    // Groups and switches (README, "Light groups").
+    row("group a number", with([](Parts& p) { p.lights = light(R"({"name": "l", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "group": 3})"); }), "lights[0].group", "expected a string, got a number");
+    row("group empty", with([](Parts& p) { p.lights = light(R"({"name": "l", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "group": ""})"); }), "lights[0].group", "group name is empty");
+    row("group with NUL", with([](Parts& p) { p.lights = light(R"({"name": "d", "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "group": "a\u0000b"})"); }), "lights[0].group", "contains a NUL character");
+    row("on a string", with([](Parts& p) { p.lights = light(R"({"name": "s", "type": "spot", "position": [0, 2, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1], "cone_angle": 30, "on": "no"})"); }), "lights[0].on", "expected a boolean, got a string");
+    row("on a number", with([](Parts& p) { p.lights = light(R"({"name": "l", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "on": 0})"); }), "lights[0].on", "expected a boolean, got a number");
 }
 
 void TestSceneIo::rejects() {
@@ -419,6 +426,40 @@ void TestSceneIo::roundTripsAwkwardNumbers() {
     QVERIFY(back == s);
     QCOMPARE(back.objects[0].name.size(), s.objects[0].name.size());
     QVERIFY(std::signbit(back.objects[0].mesh.inlineMesh.vertices[4].x));
+}
+
+// "group" and "on" on every light type: read, written back only where they say something (a
+// light on and in no group is written as before), and read back equal.
+void TestSceneIo::roundTripsGroupsAndSwitches() {
+    Parts p;
+    p.lights = light(R"({"name": "a", "type": "point", "position": [0, 2, 0], "lumens": 800, "group": "hall"}, )"
+                     R"({"name": "b", "type": "spot", "position": [1, 2, 0], "direction": [0, -1, 0], "intensity": [1, 1, 1], "cone_angle": 30, "group": "hall", "on": false}, )"
+                     R"({"name": "c", "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1], "on": true}, )"
+                     R"({"name": "d", "type": "luminaire", "file": "../../resources/scenes/luminaires/downlight.ies", "position": [0, 2, 1], "direction": [0, -1, 0], "group": "north hall, row 2", "on": false}, )"
+                     R"({"name": "e", "type": "point", "position": [0, 1, 0], "intensity": [1, 1, 1]})");
+    const Scene s = parseScene(p.text(), kCase);
+    QCOMPARE(s.lights[0].group, std::string("hall"));
+    QVERIFY(s.lights[0].on);
+    QCOMPARE(s.lights[1].group, std::string("hall"));
+    QVERIFY(!s.lights[1].on);
+    QVERIFY(s.lights[2].group.empty() && s.lights[2].on);
+    QCOMPARE(s.lights[3].group, std::string("north hall, row 2"));
+    QVERIFY(!s.lights[3].on);
+    QVERIFY(s.lights[4].group.empty() && s.lights[4].on);
+    const std::string text = saveSceneToString(s);
+    QVERIFY(text.find(R"("lumens": 800, "group": "hall"})") != std::string::npos);
+    QVERIFY(text.find(R"("cone_angle": 30, "group": "hall", "on": false})") != std::string::npos);
+    QVERIFY(text.find(R"("name": "c", "type": "directional", "direction": [0, -1, 0], "irradiance": [1, 1, 1]})") != std::string::npos);
+    QVERIFY(text.find(R"("group": "north hall, row 2", "on": false})") != std::string::npos);
+    const std::string last = "\"position\": [0, 1, 0], \"intensity\": [1, 1, 1]}\n  ]";
+    QVERIFY(text.find(last) != std::string::npos);  // e: no group, on: nothing added
+    const Scene back = parseScene(text, kCase);
+    QVERIFY(back == s);
+    QCOMPARE(saveSceneToString(back), text);
+    // Groups are their own namespace: a group may be named as a light is.
+    Parts same;
+    same.lights = light(R"({"name": "bulb", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1], "group": "bulb"})");
+    QCOMPARE(parseScene(same.text(), kCase).lights[0].group, std::string("bulb"));
 }
 
 void TestSceneIo::savesAtomically() {

@@ -32,12 +32,33 @@ void Document::reset(Scene scene) {
 }
 
 void Document::setLight(int index, Light light) {
-    const bool renamed = scene_->lights.at(size_t(index)).name != light.name;
+    const Light& old = scene_->lights.at(size_t(index));
+    const bool renamed = old.name != light.name || old.group != light.group;
     auto copy = std::make_shared<Scene>(*scene_);
     copy->lights[size_t(index)] = std::move(light);
     publish(std::move(copy));
     emit lightChanged(index);
     if (renamed) emit structureChanged();
+}
+
+void Document::setLights(const std::vector<int>& indices, const std::vector<Light>& lights) {
+    bool renamed = false;
+    auto copy = std::make_shared<Scene>(*scene_);
+    for (size_t k = 0; k < indices.size() && k < lights.size(); ++k) {
+        Light& l = copy->lights.at(size_t(indices[k]));
+        renamed = renamed || l.name != lights[k].name || l.group != lights[k].group;
+        l = lights[k];
+    }
+    publish(std::move(copy));
+    for (int i : indices) emit lightChanged(i);
+    if (renamed) emit structureChanged();
+}
+
+void Document::replaceLights(std::vector<Light> lights) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->lights = std::move(lights);
+    publish(std::move(copy));
+    emit structureChanged();
 }
 
 void Document::insertLight(int index, Light light) {

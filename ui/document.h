@@ -42,6 +42,11 @@ public:
     void setLight(int index, Light light);
     void insertLight(int index, Light light);
     void removeLight(int index);
+    // Several lights at once, in one published copy (a group edit, a multi-selection): one undo
+    // step of any size costs one copy of the scene. Indices distinct and valid, one light each.
+    void setLights(const std::vector<int>& indices, const std::vector<Light>& lights);
+    // The whole list of lights (a field of luminaires added, a group deleted).
+    void replaceLights(std::vector<Light> lights);
     void setMaterial(int index, Material material);
     void insertMaterial(int index, Material material);
     void removeMaterial(int index);
@@ -64,7 +69,8 @@ signals:
     // Finer signals so that views redo only what changed (the preview re-lights one light).
     void lightChanged(int index);
     void cameraChanged();
-    // Objects, lights or materials were added or removed, or renamed: lists must be rebuilt.
+    // Objects, lights or materials were added or removed, renamed, or lights regrouped: lists
+    // must be rebuilt.
     void structureChanged();
     void pathChanged();
 

@@ -166,7 +166,7 @@ void GridPanel::compute() {
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
                           latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
-        const RenderScene renderScene(scene, 8, 8);  // the camera is unused
+        const RenderScene renderScene(withoutLightsSwitchedOff(scene), 8, 8);  // the camera is unused
         computeGridIlluminance(renderScene, points, normal, settings, ctx, [&](const GridResult& r) {
             latest->publish(std::make_shared<const GridResult>(r));
         });

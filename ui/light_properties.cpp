@@ -52,6 +52,11 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     type_ = new QLabel(fields_);
     addPropertyRow(rows_, tr("Name"), {name_});
     addPropertyRow(rows_, tr("Type"), {type_});
+    group_ = new QLineEdit(fields_);
+    group_->setObjectName("lightGroup");
+    group_->setPlaceholderText(tr("none"));
+    group_->setToolTip(tr("The light's group (the outliner shows it under the group's node); empty: none"));
+    addPropertyRow(rows_, tr("Group"), {group_});
     position_ = makeTriple(Field::Position);
     positionRow_ = addPropertyRow(rows_, tr("Position"), {position_[0], position_[1], position_[2]});
     rowLabel(positionRow_)->setObjectName("positionLabel");
@@ -147,6 +152,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     layout->addStretch(1);
 
     connect(name_, &QLineEdit::editingFinished, this, &LightProperties::renameLight);
+    connect(group_, &QLineEdit::editingFinished, this, &LightProperties::regroupLight);
     connect(doc_, &Document::lightChanged, this, [this](int i) {
         if (i == index_) refresh();
     });
@@ -187,6 +193,7 @@ void LightProperties::refresh() {
 
     if (!name_->hasFocus() || name_->text().isEmpty()) name_->setText(QString::fromStdString(l.name));
     type_->setText(lightTypeName(l.type));
+    if (!group_->hasFocus()) group_->setText(QString::fromStdString(l.group));
     const bool directional = l.type == LightType::Directional;
     const bool spot = l.type == LightType::Spot;
     const bool luminaire = l.type == LightType::Luminaire;
@@ -385,6 +392,18 @@ void LightProperties::renameLight() {
     }
     const QString text = tr("Rename %1 to %2").arg(QString::fromStdString(l.name), QString::fromStdString(name));
     l.name = name;
+    doc_->undoStack()->push(new EditLightCommand(doc_, index_, l, 0, text));
+}
+
+void LightProperties::regroupLight() {
+    const Scene& scene = doc_->scene();
+    if (index_ < 0 || index_ >= int(scene.lights.size())) return;
+    Light l = scene.lights[size_t(index_)];
+    const std::string group = group_->text().trimmed().toStdString();
+    if (group == l.group) return;
+    const QString name = QString::fromStdString(l.name);
+    const QString text = group.empty() ? tr("Ungroup %1").arg(name) : tr("Group %1 in %2").arg(name, QString::fromStdString(group));
+    l.group = group;
     doc_->undoStack()->push(new EditLightCommand(doc_, index_, l, 0, text));
 }
 

@@ -38,6 +38,8 @@ public:
 
     // The fields, for tests and for focus.
     QLineEdit* nameField() const { return name_; }
+    // The group the light belongs to (empty: none); typing a name moves it there.
+    QLineEdit* groupField() const { return group_; }
     const std::array<QDoubleSpinBox*, 3>& positionFields() const { return position_; }
     const std::array<QDoubleSpinBox*, 3>& directionFields() const { return direction_; }
     // Point and spot: the flux or candela value, its unit (0 lm, 1 cd).
@@ -61,6 +63,7 @@ private:
     void refresh();
     void apply(Field field, const void* sender);
     void renameLight();
+    void regroupLight();
 
     Document* doc_;
     int index_ = -1;
@@ -70,6 +73,7 @@ private:
     QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
     QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_;
     QLineEdit* name_;
+    QLineEdit* group_;
     std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
     QDoubleSpinBox *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
     QComboBox* outputUnit_;

@@ -5,9 +5,11 @@
 #include "core/scene_io.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
+#include "ui/arrangement_dialog.h"
 #include "ui/autosave.h"
 #include "ui/camera_panel.h"
 #include "ui/commands/light_commands.h"
+#include "ui/commands/light_group_commands.h"
 #include "ui/commands/object_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
@@ -18,6 +20,7 @@
 #include "ui/image_export.h"
 #include "ui/layout_state.h"
 #include "ui/light_properties.h"
+#include "ui/light_set_properties.h"
 #include "ui/live_preview.h"
 #include "ui/luminaire_import.h"
 #include "ui/mesh_import.h"
@@ -35,6 +38,7 @@
 #include <QCloseEvent>
 #include <QDir>
 #include <QDockWidget>
+#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
@@ -155,6 +159,7 @@ void MainWindow::createDocks() {
         propertiesPanel_->showSelection(s);
         viewport_->setSelectedLight(light);
         plan_->setSelectedLight(light);
+        plan_->setSelectedLights(s.lights);
         viewport_->setSelectedObject(s.kind == Outliner::Kind::Object ? s.index : -1);
     });
     connect(render_.get(), &ConvergingRender::frameReady, this, [this] {
@@ -174,6 +179,13 @@ void MainWindow::createDocks() {
             [this](const QString& text) { statusBar()->showMessage(text, 8000); });
     connect(plan_, &PlanView::lightClicked, this, [this](int i) { outliner_->select(Outliner::Kind::Light, i); });
     connect(plan_, &PlanView::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(plan_, &PlanView::fieldDrawn, this,
+            [this](double x0, double z0, double x1, double z1) { arrangeLights(std::array<double, 4>{x0, z0, x1, z1}); });
+    LightSetProperties* sets = propertiesPanel_->lightSetProperties();
+    sets->setFileQuestion([this] {
+        return dialogs_->open(tr("Luminaire file for the lights"), tr("Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)"));
+    });
+    connect(sets, &LightSetProperties::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
     connect(cameraPanel_, &CameraPanel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     // The plan shows the newest calculation grid on its plane.
     connect(gridPanel_, &GridPanel::resultChanged, this,
@@ -289,6 +301,7 @@ void MainWindow::createMenus() {
         const QString path = dialogs_->open(tr("Add a luminaire"), tr("Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)"));
         if (!path.isEmpty() && !addLuminaireFile(path)) QMessageBox::warning(this, tr("Add luminaire"), lastError_);
     });
+    add(edit, tr("Arrange Li&ghts..."), "actionArrangeLights", QKeySequence(tr("Ctrl+Alt+F")), [this] { arrangeLights(); });
     add(edit, tr("D&uplicate"), "actionDuplicate", QKeySequence(tr("Ctrl+D")), [this] { duplicateSelection(); });
     add(edit, tr("&Delete"), "actionDelete", QKeySequence::Delete, [this] { deleteSelection(); });
     // Placing and aiming by clicking a surface: the viewport's tools, also on a tool bar.
@@ -561,9 +574,47 @@ void MainWindow::duplicateSelection() {
     outliner_->select(Outliner::Kind::Light, index + 1);
 }
 
+void MainWindow::arrangeLights(const std::optional<std::array<double, 4>>& rectangle) {
+    ArrangementDialog dialog(*doc_, selectedLight(), this);
+    dialog.setFileQuestion([this] {
+        return dialogs_->open(tr("Luminaire of the field"), tr("Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)"));
+    });
+    if (rectangle) dialog.setRectangle((*rectangle)[0], (*rectangle)[1], (*rectangle)[2], (*rectangle)[3]);
+    if (dialog.exec() != QDialog::Accepted) return;
+    try {
+        arrangeField(dialog.arrangement(), dialog.prototype(), QString::fromStdString(dialog.group()));
+    } catch (const std::exception& e) {
+        fail(QString::fromStdString(e.what()));  // the dialog checked the file a moment ago
+    }
+}
+
+bool MainWindow::arrangeField(const FieldArrangement& field, const Light& prototype, const QString& group) {
+    QElapsedTimer clock;
+    clock.start();
+    int count = 0;
+    try {
+        count = lucerna::arrangeField(*doc_, field, prototype, group.toStdString());
+    } catch (const std::exception& e) {
+        fail(tr("No field arranged: %1").arg(QString::fromStdString(e.what())));
+        return false;
+    }
+    outliner_->selectGroup(group.toStdString());
+    statusBar()->showMessage(tr("Arranged %1 lights in group %2 (%3 ms)").arg(count).arg(group).arg(clock.elapsed()), 8000);
+    return true;
+}
+
 void MainWindow::deleteSelection() {
     const Outliner::Selection s = outliner_->selection();
-    if (s.kind == Outliner::Kind::Light)
+    if (s.kind == Outliner::Kind::Group || s.kind == Outliner::Kind::Lights) {
+        std::vector<char> gone(doc_->scene().lights.size(), 0);
+        for (int i : s.lights) gone[size_t(i)] = 1;
+        std::vector<Light> kept;
+        for (size_t i = 0; i < gone.size(); ++i)
+            if (!gone[i]) kept.push_back(doc_->scene().lights[i]);
+        const QString text = s.kind == Outliner::Kind::Group ? tr("Delete group %1").arg(QString::fromStdString(s.group))
+                                                             : tr("Delete %1 lights").arg(s.lights.size());
+        doc_->undoStack()->push(new ReplaceLightsCommand(doc_.get(), std::move(kept), text));
+    } else if (s.kind == Outliner::Kind::Light)
         doc_->undoStack()->push(new DeleteLightCommand(doc_.get(), s.index));
     else if (s.kind == Outliner::Kind::Object)
         doc_->undoStack()->push(new DeleteObjectCommand(doc_.get(), s.index));

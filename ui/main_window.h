@@ -7,13 +7,16 @@
 // oneTBB before any Qt header: Qt's `emit` macro breaks TBB's headers.
 #include "core/task_system.h"
 #include "ui/document.h"
+#include "ui/light_arrangement.h"
 #include "ui/yield_gate.h"
 
 #include <QMainWindow>
 #include <QMessageBox>
 
+#include <array>
 #include <functional>
 #include <memory>
+#include <optional>
 
 class QDockWidget;
 class QLabel;
@@ -87,6 +90,13 @@ public:
     bool startAutosave(const QString& directory, int intervalMs = 60000);
     void setRecoveryQuestion(std::function<QMessageBox::StandardButton()> ask) { askRecovery_ = std::move(ask); }
     Autosave* autosave() const { return autosave_.get(); }
+
+    // Edit > Arrange Lights: the dialog (ui/arrangement_dialog.h), over the rectangle drawn in the
+    // plan when given (x0, z0, x1, z1), else the scene's plan.
+    void arrangeLights(const std::optional<std::array<double, 4>>& rectangle = std::nullopt);
+    // The field added as one undo step and its group selected; false with a one-line reason in
+    // the status bar (and lastError()) when it makes no field.
+    bool arrangeField(const FieldArrangement& field, const Light& prototype, const QString& group);
 
     // Edit menu operations on the selection.
     void addLight(LightType type);

@@ -12,12 +12,15 @@
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QKeyEvent>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolButton>
 #include <QWheelEvent>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 namespace lucerna {
 
@@ -26,6 +29,8 @@ constexpr double kClickSlop = 3.0;  // widget pixels: a press that moves less is
 constexpr double kSymbolRadius = 7.0;
 const QColor kBackground(246, 246, 242);
 const QColor kWallColour(60, 60, 64);
+const QColor kSelectionColour(30, 110, 230);
+constexpr int kMaxRings = 50;  // selections larger than this show as blue symbols
 
 // Display sRGB of a linear value in [0, 1].
 double srgb(double linear) {
@@ -59,7 +64,7 @@ struct PlanView::Face {
 
 PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     : QWidget(parent), doc_(doc), gate_(gate), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
-      snapStep_(new QDoubleSpinBox(this)) {
+      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)) {
     setMouseTracking(false);
     setFocusPolicy(Qt::ClickFocus);
     setAutoFillBackground(false);
@@ -77,12 +82,22 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     bar->addSpacing(16);
     bar->addWidget(snap_);
     bar->addWidget(snapStep_);
+    bar->addSpacing(16);
+    drawField_->setObjectName("planDrawField");
+    drawField_->setText(tr("Draw Field"));
+    drawField_->setCheckable(true);
+    drawField_->setToolTip(tr("Drag a rectangle in the plan for a field of luminaires (Edit > Arrange Lights)"));
+    bar->addWidget(drawField_);
     bar->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(8, 6, 8, 6);
     layout->addLayout(bar);
     layout->addStretch(1);
     setProjection(Projection::Top);
+    connect(drawField_, &QToolButton::toggled, this, [this](bool on) {
+        if (on) emit message(tr("Drag the field's rectangle in the plan (Esc cancels)"));
+        update();
+    });
     connect(snap_, &QCheckBox::toggled, this, [this] { update(); });
     connect(snapStep_, &QDoubleSpinBox::valueChanged, this, [this] { update(); });
     connect(doc_, &Document::changed, this, [this] { update(); });
@@ -91,6 +106,8 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
         result_.reset();
         levels_.clear();
         selected_ = -1;
+        selectedSet_.clear();
+        selectedCount_ = 0;
     });
 }
 
@@ -106,8 +123,21 @@ void PlanView::setProjection(Projection projection) {
                        : projection == Projection::Front ? tr("Seen from +z, looking along -z: x to the right, y up")
                                                          : tr("Seen from +x, looking along -x: z to the left, y up"));
     title_->setMinimumWidth(title_->fontMetrics().horizontalAdvance(tr("Front elevation")) + 8);
+    // A field lies on the ceiling: it is drawn in the plan only.
+    drawField_->setEnabled(projection == Projection::Top);
+    if (projection != Projection::Top) drawField_->setChecked(false);
     update();
 }
+
+void PlanView::setSelectedLights(const std::vector<int>& lights) {
+    selectedSet_.assign(doc_->scene().lights.size(), 0);
+    selectedCount_ = 0;
+    for (int i : lights)
+        if (i >= 0 && size_t(i) < selectedSet_.size()) selectedSet_[size_t(i)] = 1, ++selectedCount_;
+    update();
+}
+
+void PlanView::setDrawingField(bool on) { drawField_->setChecked(on && projection_ == Projection::Top); }
 
 void PlanView::setSelectedLight(int index) {
     selected_ = index;
@@ -359,12 +389,17 @@ void PlanView::paintLights(QPainter& painter) const {
         if (l.type == LightType::Directional) continue;
         const QPointF c = widgetOf(l.position);
         const double r = kSymbolRadius;
-        if (int(i) == selected_) {
-            painter.setPen(QPen(QColor(30, 110, 230), 2.5));
+        // Selected: a ring; in a large selection (a dense field) the symbol itself turns blue,
+        // where rings would cover the field.
+        const bool inSet = i < selectedSet_.size() && selectedSet_[i];
+        if (int(i) == selected_ || (inSet && selectedCount_ <= kMaxRings)) {
+            painter.setPen(QPen(kSelectionColour, 2.5));
             painter.setBrush(Qt::NoBrush);
             painter.drawEllipse(c, r + 5, r + 5);
         }
-        painter.setPen(QPen(lightColour(), 2));
+        // A light switched off is drawn grey.
+        const QColor symbol = !l.on ? QColor(150, 150, 150) : inSet && selectedCount_ > kMaxRings ? kSelectionColour : lightColour();
+        painter.setPen(QPen(symbol, 2));
         painter.setBrush(QColor(255, 255, 255, 200));
         if (l.type == LightType::Luminaire) painter.drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
         else painter.drawEllipse(c, r, r);
@@ -385,6 +420,7 @@ void PlanView::paintLights(QPainter& painter) const {
                 painter.drawPolygon(wedge);
             }
         }
+        if (!l.group.empty()) continue;  // named once for its group (paintGroups)
         painter.setPen(Qt::black);
         const QString name = nameOf(l);
         const QRectF box = painter.fontMetrics().boundingRect(name).adjusted(-2, 0, 2, 0);
@@ -402,6 +438,58 @@ void PlanView::paintLights(QPainter& painter) const {
         painter.fillRect(at, QColor(255, 255, 255));
         painter.drawText(at, Qt::AlignCenter, name);
     }
+}
+
+void PlanView::paintGroups(QPainter& painter) const {
+    // Each group's box around its lights, dashed, with its name and count once above it.
+    struct Box {
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        int count = 0;
+    };
+    std::map<std::string, Box> boxes;
+    for (const Light& l : doc_->scene().lights) {
+        if (l.group.empty() || l.type == LightType::Directional) continue;
+        const QPointF c = widgetOf(l.position);
+        Box& b = boxes[l.group];
+        b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x());
+        b.y0 = std::min(b.y0, c.y()), b.y1 = std::max(b.y1, c.y());
+        ++b.count;
+    }
+    const double pad = kSymbolRadius + 5;
+    for (const auto& [name, b] : boxes) {
+        const QRectF r = QRectF(QPointF(b.x0, b.y0), QPointF(b.x1, b.y1)).adjusted(-pad, -pad, pad, pad);
+        painter.setPen(QPen(lightColour().darker(130), 1, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(r);
+        const QString text = tr("%1 (%2)").arg(QString::fromStdString(name)).arg(b.count);
+        const QRectF box = painter.fontMetrics().boundingRect(text).adjusted(-3, 0, 3, 0);
+        const QRectF at(r.topLeft() - QPointF(0, box.height() + 1), box.size());
+        painter.fillRect(at, QColor(255, 255, 255));
+        painter.setPen(Qt::black);
+        painter.drawText(at, Qt::AlignCenter, text);
+    }
+}
+
+void PlanView::paintField(QPainter& painter) const {
+    if (drag_ != Drag::Field) return;
+    const QRectF r = QRectF(widgetOfPlan(fieldStart_), widgetOfPlan(fieldEnd_)).normalized();
+    painter.setPen(QPen(kSelectionColour, 1.5, Qt::DashLine));
+    QColor fill(30, 110, 230, 30);
+    painter.setBrush(fill);
+    painter.drawRect(r);
+    const double mpu = doc_->scene().metersPerUnit;
+    const QString size = tr("%1 x %2 m")
+                             .arg(std::abs(fieldEnd_.x() - fieldStart_.x()) * mpu, 0, 'g', 4)
+                             .arg(std::abs(fieldEnd_.y() - fieldStart_.y()) * mpu, 0, 'g', 4);
+    painter.setPen(Qt::black);
+    painter.drawText(r.bottomRight() + QPointF(6, 14), size);
+}
+
+QPointF PlanView::snappedPlan(const QPointF& widget) const {
+    QPointF p = planOfWidget(widget);
+    const double step = snapMeters() / doc_->scene().metersPerUnit;
+    if (step > 0) p = QPointF(std::round(p.x() / step) * step, std::round(p.y() / step) * step);
+    return p;
 }
 
 void PlanView::paintCamera(QPainter& painter) const {
@@ -457,6 +545,8 @@ void PlanView::paintEvent(QPaintEvent*) {
     paintEdges(painter);  // walls and furniture sides stay visible over the grid
     paintCamera(painter);
     paintLights(painter);
+    paintGroups(painter);
+    paintField(painter);
     paintScaleBar(painter);
 }
 
@@ -483,6 +573,13 @@ void PlanView::mousePressEvent(QMouseEvent* event) {
     pressed_ = last_ = event->position();
     moved_ = false;
     fitted_ = true;  // the user frames the view from now on
+    if (event->button() == Qt::LeftButton && drawField_->isChecked() && projection_ == Projection::Top) {
+        drag_ = Drag::Field;
+        fieldStart_ = fieldEnd_ = snappedPlan(pressed_);
+        hold_ = std::make_unique<YieldGate::Scope>(gate_.counter());
+        update();
+        return;
+    }
     const int light = event->button() == Qt::LeftButton ? lightAt(pressed_) : -1;
     if (light >= 0) {
         drag_ = Drag::MoveLight;
@@ -516,7 +613,10 @@ void PlanView::mouseMoveEvent(QMouseEvent* event) {
     if (drag_ == Drag::None) return;
     if (!moved_ && QLineF(pos, pressed_).length() < kClickSlop) return;
     moved_ = true;
-    if (drag_ == Drag::Pan) {
+    if (drag_ == Drag::Field) {
+        fieldEnd_ = snappedPlan(pos);
+        update();
+    } else if (drag_ == Drag::Pan) {
         offset_ += pos - last_;
         update();
     } else {
@@ -526,6 +626,18 @@ void PlanView::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void PlanView::mouseReleaseEvent(QMouseEvent* event) {
+    if (drag_ == Drag::Field) {
+        fieldEnd_ = snappedPlan(event->position());
+        drag_ = Drag::None;
+        hold_.reset();
+        drawField_->setChecked(false);
+        update();
+        if (fieldStart_.x() != fieldEnd_.x() && fieldStart_.y() != fieldEnd_.y())
+            emit fieldDrawn(fieldStart_.x(), fieldStart_.y(), fieldEnd_.x(), fieldEnd_.y());
+        else
+            emit message(tr("The field's rectangle has no area: drag from one corner to the opposite one"));
+        return;
+    }
     if (drag_ == Drag::MoveLight && moved_) moveDraggedLight(event->position());
     if (drag_ == Drag::MoveLight && moved_ && size_t(dragLight_) < doc_->scene().lights.size()) {
         const V3d p = doc_->scene().lights[size_t(dragLight_)].position;
@@ -549,6 +661,19 @@ void PlanView::wheelEvent(QWheelEvent* event) {
     offset_ = at - plan * scale_;  // the point under the cursor stays there
     fitted_ = true;
     update();
+}
+
+void PlanView::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && (drawField_->isChecked() || drag_ == Drag::Field)) {
+        if (drag_ == Drag::Field) {
+            drag_ = Drag::None;
+            hold_.reset();
+        }
+        drawField_->setChecked(false);
+        update();
+        return;
+    }
+    QWidget::keyPressEvent(event);
 }
 
 }  // namespace lucerna

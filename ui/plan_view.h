@@ -13,6 +13,10 @@
 //   moved coordinates snapped to the snap step (a grid in metres, drawn faintly); one undo step
 //   per drag. A click selects it.
 // - Left drag elsewhere, or a right or middle drag, pans; the wheel zooms about the cursor.
+// - Draw field (the bar's button, the plan only): a left drag draws the rectangle of a field of
+//   luminaires (snapped like a move), which the window's arrangement dialog then fills.
+// Lights of a group carry no name each: the group's name stands once by the box around them,
+// so a field of thousands draws as a field.
 
 #include "core/calculation_grid.h"
 #include "render/photometry/grid_calculation.h"
@@ -27,6 +31,7 @@
 class QCheckBox;
 class QDoubleSpinBox;
 class QLabel;
+class QToolButton;
 
 namespace lucerna {
 
@@ -44,6 +49,12 @@ public:
     Projection projection() const { return projection_; }
     void setProjection(Projection projection);
     void setSelectedLight(int index);
+    // Lights shown selected together (a group or a multi-selection), besides the one above.
+    void setSelectedLights(const std::vector<int>& lights);
+
+    // The field tool: the next left drag in the plan draws a field's rectangle.
+    QToolButton* drawFieldButton() const { return drawField_; }
+    void setDrawingField(bool on);
     // The calculation grid to draw (its rectangle, layout and newest result; null: none).
     void setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result);
 
@@ -72,6 +83,8 @@ public:
 
 signals:
     void lightClicked(int index);
+    // A field's rectangle drawn in the plan: corners (x0, z0) and (x1, z1), scene units.
+    void fieldDrawn(double x0, double z0, double x1, double z1);
     void message(const QString& text);
 
 protected:
@@ -81,10 +94,11 @@ protected:
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
 
 private:
     struct Face;  // a projected triangle
-    enum class Drag { None, Pan, MoveLight };
+    enum class Drag { None, Pan, MoveLight, Field };
 
     // Plan coordinates (u right, w down on the screen, scene units) of a world point, and back
     // for a displacement.
@@ -98,6 +112,9 @@ private:
     void paintSnapGrid(QPainter& painter) const;
     void paintCalculationGrid(QPainter& painter) const;
     void paintLights(QPainter& painter) const;
+    void paintGroups(QPainter& painter) const;
+    void paintField(QPainter& painter) const;
+    QPointF snappedPlan(const QPointF& widget) const;
     void paintCamera(QPainter& painter) const;
     void paintScaleBar(QPainter& painter) const;
     int lightAt(const QPointF& pos) const;
@@ -109,6 +126,7 @@ private:
     QLabel* title_;
     QCheckBox* snap_;
     QDoubleSpinBox* snapStep_;
+    QToolButton* drawField_;
 
     std::vector<Face> faces_;          // of the geometry below, for the projection
     std::vector<std::shared_ptr<const TriangleMesh>> facesOf_;  // the meshes faces_ were built from
@@ -119,6 +137,8 @@ private:
     QPointF offset_;                   // widget position of plan point (0, 0)
     bool fitted_ = false;
     int selected_ = -1;
+    std::vector<char> selectedSet_;  // by light index
+    int selectedCount_ = 0;
 
     CalculationGrid grid_;
     GridLayout layout_;
@@ -130,6 +150,7 @@ private:
     int dragLight_ = -1;
     Light dragStart_;
     QPointF pressed_, last_;
+    QPointF fieldStart_, fieldEnd_;  // plan coordinates of the field being drawn
     bool moved_ = false;
     int mergeKey_ = 0;
     std::unique_ptr<YieldGate::Scope> hold_;

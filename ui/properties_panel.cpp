@@ -1,6 +1,7 @@
 #include "ui/properties_panel.h"
 
 #include "ui/light_properties.h"
+#include "ui/light_set_properties.h"
 #include "ui/material_properties.h"
 #include "ui/object_properties.h"
 
@@ -24,8 +25,11 @@ PropertiesPanel::PropertiesPanel(Document* doc, LightProperties* lights, QWidget
     v->addWidget(separator_);
     v->addWidget(materials_);
     v->addStretch(1);
+    sets_ = new LightSetProperties(doc, this);
+    sets_->setObjectName("lightSetProperties");
     addWidget(lights_);
     addWidget(surfacePage_);
+    addWidget(sets_);
     connect(objects_, &ObjectProperties::materialAssigned, materials_, &MaterialProperties::setMaterial);
     // Undo of an assignment, or a rename of the object's material: the panel follows the object.
     connect(doc_, &Document::changed, this, &PropertiesPanel::followObjectMaterial);
@@ -39,7 +43,11 @@ void PropertiesPanel::showSelection(const Outliner::Selection& s) {
     else if (s.kind == Outliner::Kind::Object) followObjectMaterial();
     else materials_->setMaterial(-1);
     separator_->setVisible(s.kind == Outliner::Kind::Object);  // only between two panels
-    setCurrentWidget(s.kind == Outliner::Kind::Light ? static_cast<QWidget*>(lights_) : surfacePage_);
+    if (s.kind == Outliner::Kind::Group) sets_->setGroup(s.group);
+    else if (s.kind == Outliner::Kind::Lights) sets_->setLights(s.lights);
+    else sets_->setLights({});
+    const bool set = s.kind == Outliner::Kind::Group || s.kind == Outliner::Kind::Lights;
+    setCurrentWidget(set ? static_cast<QWidget*>(sets_) : s.kind == Outliner::Kind::Light ? static_cast<QWidget*>(lights_) : surfacePage_);
 }
 
 void PropertiesPanel::followObjectMaterial() {

@@ -1,6 +1,7 @@
 #pragma once
-// The properties dock: the panel of what the outliner selects. A light shows the light panel; an
-// object shows the object panel above its material's panel; a material shows the material panel.
+// The properties dock: the panel of what the outliner selects. A light shows the light panel; a
+// group or several lights the panel of a set of lights; an object shows the object panel above
+// its material's panel; a material shows the material panel.
 
 #include "ui/document.h"
 #include "ui/outliner.h"
@@ -12,6 +13,7 @@ class QFrame;
 namespace lucerna {
 
 class LightProperties;
+class LightSetProperties;
 class MaterialProperties;
 class ObjectProperties;
 
@@ -25,6 +27,7 @@ public:
 
     MaterialProperties* materialProperties() const { return materials_; }
     ObjectProperties* objectProperties() const { return objects_; }
+    LightSetProperties* lightSetProperties() const { return sets_; }
 
 private:
     void followObjectMaterial();
@@ -35,6 +38,7 @@ private:
     QFrame* separator_;
     ObjectProperties* objects_;
     MaterialProperties* materials_;
+    LightSetProperties* sets_;
 };
 
 }  // namespace lucerna

@@ -26,6 +26,7 @@ constexpr size_t kMaxOutlinedTriangles = 20000;
 
 const QColor kAxisColours[3] = {QColor(235, 70, 60), QColor(90, 200, 70), QColor(70, 130, 255)};
 const QColor kLightColour(255, 210, 60);
+constexpr size_t kCrowdedLights = 200;  // past this many lights, markers are small dots
 
 QString nameOf(const Light& light) { return QString::fromStdString(light.name); }
 }  // namespace
@@ -165,7 +166,10 @@ void Viewport::paintOverlay(QPainter& painter) {
     paintSelectedObject(painter);
     const Scene& scene = doc_->scene();
     const ViewMapping view = mapping();
-    for (int i = 0; i < int(scene.lights.size()); ++i) {
+    // Many lights (a field of luminaires): small dots without their axes, which would cover the
+    // ceiling; the selected light keeps its full marker.
+    const bool crowded = scene.lights.size() > kCrowdedLights;
+    for (int i = 0; i < int(scene.lights.size()) && !crowded; ++i) {
         const auto m = lightMarker(i);
         if (!m) continue;
         const Light& light = scene.lights[size_t(i)];
@@ -175,7 +179,7 @@ void Viewport::paintOverlay(QPainter& painter) {
             // shows its aim handle instead).
             const double len = 0.1 * (scene.camera.target - scene.camera.position).length();
             if (const auto tip = view.toWidget(light.position + light.direction.normalized() * len)) {
-                painter.setPen(QPen(kLightColour, 2));
+                painter.setPen(QPen(light.on ? kLightColour : QColor(150, 150, 150), 2));
                 painter.drawLine(*m, *tip);
             }
         }
@@ -186,8 +190,12 @@ void Viewport::paintOverlay(QPainter& painter) {
         if (!m) continue;
         const bool selected = i == selected_;
         painter.setPen(QPen(selected ? Qt::white : QColor(40, 40, 40), selected ? 3 : 1.5));
-        painter.setBrush(kLightColour);
-        painter.drawEllipse(*m, selected ? 7 : 5, selected ? 7 : 5);
+        // A light switched off: a hollow grey marker.
+        painter.setBrush(scene.lights[size_t(i)].on ? QBrush(kLightColour) : QBrush(Qt::NoBrush));
+        if (!scene.lights[size_t(i)].on && !selected) painter.setPen(QPen(QColor(150, 150, 150), 1.5));
+        const double r = selected ? 7 : crowded ? 2.5 : 5;
+        if (crowded && !selected) painter.setPen(scene.lights[size_t(i)].on ? QPen(Qt::NoPen) : QPen(QColor(150, 150, 150), 1));
+        painter.drawEllipse(*m, r, r);
     }
     paintToolHint(painter);
 }

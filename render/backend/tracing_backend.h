@@ -18,8 +18,10 @@ public:
     const Film& film() const override { return *film_; }
 
 protected:
+    // Lights switched off are left out here, so that no tracing backend ever sees them.
     TracingBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : snapshot_(std::move(scene)), settings_(settings), lightSelection_(lightSelectionOption(settings)) {}
+        : snapshot_(withoutLightsSwitchedOff(std::move(scene))), settings_(settings),
+          lightSelection_(lightSelectionOption(settings)) {}
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstring>
 #include <numeric>
+#include <unordered_map>
 #include <stdexcept>
 
 namespace lucerna {
@@ -183,8 +184,11 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
 }
 
 // A delta light for the light buffer (lights.glsl's layout), without its shadow layer; a
-// luminaire's table goes into `tables`.
-GpuLight gpuDeltaLight(const DeltaLight& d, float toScene, std::vector<const GoniometricDistribution*>& tables) {
+// luminaire's table goes into `tables` once however many luminaires share it (`layerOf`: the
+// layer of each table there), so that a field of 10,000 luminaires of one file is one layer
+// (the GPU's array textures hold 2,048 at least, not 10,000).
+GpuLight gpuDeltaLight(const DeltaLight& d, float toScene, std::vector<const GoniometricDistribution*>& tables,
+                       std::unordered_map<const GoniometricDistribution*, int>& layerOf) {
     static const GoniometricDistribution dark = [] {  // for a luminaire whose file is not loaded
         GoniometricDistribution g;
         g.cAngles = {0, 360};
@@ -200,8 +204,10 @@ GpuLight gpuDeltaLight(const DeltaLight& d, float toScene, std::vector<const Gon
     put(g.positionKind, d.position, kind);
     put(g.directionCosCone, d.direction, d.cosCone);
     if (d.type == LightType::Luminaire) {  // its table's layer in place of the cone
-        put(g.directionCosCone, d.direction, float(tables.size()));
-        tables.push_back(d.goniometric ? &d.goniometric->distribution() : &dark);
+        const GoniometricDistribution* table = d.goniometric ? &d.goniometric->distribution() : &dark;
+        const auto [it, fresh] = layerOf.try_emplace(table, int(tables.size()));
+        if (fresh) tables.push_back(table);
+        put(g.directionCosCone, d.direction, float(it->second));
     }
     put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
         d.cosFalloffStart);
@@ -263,11 +269,12 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     const bool interleave = subsets > 1;
     const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
     std::vector<const GoniometricDistribution*> tables;
+    std::unordered_map<const GoniometricDistribution*, int> layerOf;
     std::vector<GpuLight> directional, deltas;
     std::vector<double> deltaPower;
     st.dirShadows.matrices.clear();
     for (const DeltaLight& d : st.deltas) {
-        GpuLight g = gpuDeltaLight(d, toScene, tables);
+        GpuLight g = gpuDeltaLight(d, toScene, tables, layerOf);
         if (d.type != LightType::Directional) {
             deltas.push_back(g);
             // Intensity over the cone's solid angle share: which lights matter most.

@@ -110,7 +110,7 @@ struct Preview::State {
     preview_detail::ShadowCaster sceneCaster, proxyCaster;
     preview_detail::CubeShadowSet lightShadows, vplShadows;
     preview_detail::DirectionalShadows dirShadows;
-    gl::Texture luminaireTables;  // luminaire_textures.h: a layer per luminaire
+    gl::Texture luminaireTables;  // luminaire_textures.h: a layer per distinct distribution
     // directLights: [0, shadedHere) shaded in full by the direct pass; [firstInterleaved,
     // firstInterleaved + interleavedCount) dealt to the sub-buffers and shaded with the VPLs:
     // the delta lights when there are many (padded with dark lights to a multiple of n m), then

@@ -78,6 +78,8 @@ void Preview::setSettings(const PreviewSettings& s) {
 }
 
 void Preview::update(SceneSnapshot scene, int width, int height) {
+    // Lights switched off are left out (so switching one changes the set of lights).
+    scene = withoutLightsSwitchedOff(std::move(scene));
     const State& st = *state_;
     if (current_ && st.scene) {
         const SceneChange change = diff(*current_, *scene);
@@ -118,6 +120,7 @@ void uploadShadowProxy(Preview::State& st, const std::vector<float>& positions, 
 }  // namespace
 
 void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
+    snapshot = withoutLightsSwitchedOff(std::move(snapshot));
     State& st = *state_;
     current_ = snapshot;
     st.snapshot = snapshot;

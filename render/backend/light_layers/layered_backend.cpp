@@ -3,6 +3,8 @@
 #include "render/backend/light_layers/light_groups.h"
 #include "render/trace/rng.h"
 
+#include <stdexcept>
+
 namespace lucerna {
 
 namespace {
@@ -11,6 +13,7 @@ class LayeredBackend final : public ProgressiveBackend {
 public:
     LayeredBackend(BackendFactory base, SceneSnapshot scene, const RenderSettings& settings)
         : groups_(lightGroups(*scene)), combined_(0, 0) {
+        if (groups_.size() > kMaxLightLayers) throw std::invalid_argument(lightLayerLimitMessage(groups_.size()));
         for (size_t g = 0; g < groups_.size(); ++g) {
             RenderSettings s = settings;
             s.seed = hashSeed(settings.seed, g, 0x1a7e5);  // layers sample independently
