@@ -5,7 +5,8 @@
 #                                                  and bdpt (power light selection) as the cross-check,
 #                                                  SECONDS each (1500 unless given)
 #   bash bench/office_floor.sh cycles [SPP]        Blender Cycles on the point-light variant, converged
-#                                                  (SPP, 16384 unless given), compared with our reference
+#                                                  (SPP, 16384 unless given; $OUT/cycles-ref.exr), compared
+#                                                  with our reference and with the bdpt cross-check
 #   bash bench/office_floor.sh equal_time [T ...]  Cycles at the samples it renders in T seconds of wall
 #                                                  time (10 and 60 unless given) against path (tree, power)
 #                                                  and bdpt at the same wall time, all against the reference
@@ -45,8 +46,10 @@ refs)
     ;;
 cycles)
     spp=${2:-16384}
-    secs=$(cycles "$out/cycles-$spp.exr" "$spp")
-    echo "cycles $spp spp in $secs s: $(compare "$out/cycles-$spp.exr" "$scenes/office_floor_points.ref.exr")"
+    secs=$(cycles "$out/cycles-ref.exr" "$spp")
+    echo "cycles $spp spp in $secs s against our reference: $(compare "$out/cycles-ref.exr" "$scenes/office_floor_points.ref.exr")"
+    [ -f "$out/office_floor_points.bdpt.exr" ] &&
+        echo "our bdpt against cycles: $(compare "$out/office_floor_points.bdpt.exr" "$out/cycles-ref.exr")"
     ;;
 equal_time)
     shift
@@ -59,6 +62,7 @@ equal_time)
         spp=$(awk -v t="$t" -v c="$cal" 'BEGIN {n = int(64 * t / c); print (n < 1 ? 1 : n)}')
         secs=$(cycles "$out/cycles-$t.exr" "$spp")
         echo "t=$t cycles $spp spp in $secs s: $(compare "$out/cycles-$t.exr" "$ref")"
+        [ -f "$out/cycles-ref.exr" ] && echo "t=$t cycles against converged cycles: $(compare "$out/cycles-$t.exr" "$out/cycles-ref.exr")"
         for b in "path:light_sampler=tree" "path:light_sampler=power" "bdpt"; do
             name=${b//[:=]/_}
             opt=()

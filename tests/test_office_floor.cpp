@@ -17,6 +17,7 @@
 
 #include <QTest>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <map>
@@ -57,6 +58,9 @@ private slots:
         QVERIFY2(luminaires >= 100, qPrintable(QString::number(luminaires)));
         QCOMPARE(int(lum.lights.size()), luminaires);
         QCOMPARE(pts.lights.size(), lum.lights.size());
+
+        // Saved and read back unchanged (the loader's and the writer's view of the keys agree).
+        for (const Scene* s : {&lum, &pts}) QVERIFY(parseScene(saveSceneToString(*s), kScenes + "x.json") == *s);
 
         QVERIFY(pts.camera == lum.camera);
         QVERIFY(pts.materials == lum.materials);
@@ -104,15 +108,20 @@ private slots:
     }
 
     // A short render's mean is the reference's (at 60 x 36 the mean of the image is still the
-    // mean over the image plane), and its pixels the reference's 4 x 4 blocks within the noise of
-    // 64 samples per pixel.
+    // mean over the image plane: measured within 0.8% over 12 seeds), and its pixels the
+    // reference's 4 x 4 blocks within the noise of 64 samples per pixel.
     void shortRenderAgainstReference_data() {
         QTest::addColumn<QString>("scene");
-        QTest::newRow("luminaires") << "office_floor";
-        QTest::newRow("points") << "office_floor_points";
+        // About twice the most of 12 seeds (luminaires: relmse 0.0074, block 4.3%; points: 0.0188, 7.0%).
+        QTest::addColumn<double>("maxRelmse");
+        QTest::addColumn<double>("maxBlockError");
+        QTest::newRow("luminaires") << "office_floor" << 0.015 << 0.1;
+        QTest::newRow("points") << "office_floor_points" << 0.04 << 0.15;
     }
     void shortRenderAgainstReference() {
         QFETCH(QString, scene);
+        QFETCH(double, maxRelmse);
+        QFETCH(double, maxBlockError);
         const std::string refPath = kScenes + scene.toStdString() + ".ref.exr";
         QVERIFY2(std::filesystem::is_regular_file(refPath), refPath.c_str());
         const Image reference = readExr(refPath);
@@ -131,7 +140,14 @@ private slots:
               100 * (m.meanTest / m.meanRef - 1), m.relmse);
         QCOMPARE(m.nonfinite, 0L);
         QVERIFY(std::abs(m.meanTest / m.meanRef - 1) < 0.02);
-        QVERIFY(m.relmse < 0.01);
+        QVERIFY(m.relmse < maxRelmse);
+        // Where the light falls: blocks of 12 x 12 pixels (5 x 3 of them) against the reference's.
+        const Image blocks = image.downsampled(12), refBlocks = reference.downsampled(48);
+        double worst = 0;
+        for (size_t i = 0; i < blocks.pixels.size(); ++i)
+            worst = std::max(worst, std::abs(double(luminance(blocks.pixels[i])) / luminance(refBlocks.pixels[i]) - 1));
+        qInfo("worst block %.2f%%", 100 * worst);
+        QVERIFY(worst < maxBlockError);
     }
 
     // An office's light level on the work plane (EN 12464-1, writing and reading: 500 lx, U0 at
