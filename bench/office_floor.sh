@@ -10,6 +10,8 @@
 #   bash bench/office_floor.sh equal_time [T ...]  Cycles at the samples it renders in T seconds of wall
 #                                                  time (10 and 60 unless given) against path (tree, power)
 #                                                  and bdpt at the same wall time, all against the reference
+#   bash bench/office_floor.sh bench [SECONDS]     lucerna bench of path (tree, power), bdpt and cmlt on both
+#                                                  scenes against their references, SECONDS each (60)
 #   bash bench/office_floor.sh grid                the work-plane grid at 0.75 m of both scenes
 # Run from the repository root after a build (build/app/lucerna); cycles and equal_time need
 # `apt-get install blender python3-numpy` and ../shared/tools/cycles_ref.sh. Everything runs under
@@ -73,6 +75,14 @@ equal_time)
         done
     done
     ;;
+bench)
+    # Every backend auto might choose, and both light selections of path, against the reference.
+    t=${2:-60}
+    for s in office_floor office_floor_points; do
+        nice "$lucerna" bench "$scenes/$s.json" --reference "$scenes/$s.ref.exr" --time "$t" --seed 1 \
+            --backends path:light_sampler=tree,path:light_sampler=power,bdpt,cmlt --out "$out/bench-$s" | tail -6
+    done
+    ;;
 grid)
     for s in office_floor office_floor_points; do
         nice "$lucerna" grid "$scenes/$s.json" --work-plane 0.75 --error 0.02 --time 1200 --seed 1 --csv "$out/$s.grid.csv" |
@@ -80,7 +90,7 @@ grid)
     done
     ;;
 *)
-    sed -n '2,14p' "$0"
+    sed -n '2,18p' "$0"
     exit 2
     ;;
 esac
