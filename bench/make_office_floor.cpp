@@ -134,14 +134,6 @@ std::string ldtText(double scale, double uplightWeight) {
     return s.str();
 }
 
-double downwardShare(const GoniometricDistribution& d) {
-    double down = 0;
-    for (size_t c = 0; c + 1 < d.cAngles.size(); ++c)
-        for (size_t g = 0; g + 1 < d.gammaAngles.size(); ++g)
-            if (d.gammaAngles[g + 1] <= 90) down += d.cellFlux(c, g);
-    return down / d.integratedFlux();
-}
-
 // Writes the two files with their tables scaled so that each integrates to the flux it states
 // (IES: the lamp lumens; EULUMDAT: lamp flux x 100% light output ratio), so that `lucerna info`
 // finds them consistent.
@@ -150,7 +142,7 @@ void writeLuminaires(const std::filesystem::path& dir) {
     writeFile(dir / "office_panel.ies", iesText(kPanelLumens / panelFlux));
 
     // Uplight weight for a 20% upward share: the share is linear in the weight's odds.
-    const auto share = [](double w) { return 1 - downwardShare(parseEulumdat(ldtText(1.0, w), "linear")); };
+    const auto share = [](double w) { return 1 - parseEulumdat(ldtText(1.0, w), "linear").downwardFraction(); };
     const double s1 = share(1.0);
     const double w = (0.2 / 0.8) / (s1 / (1 - s1));
     const double linearFlux = parseEulumdat(ldtText(1.0, w), "linear").integratedFlux();
@@ -159,7 +151,7 @@ void writeLuminaires(const std::filesystem::path& dir) {
     const std::string ldt = ldtText(kLinearLumens / linearFlux, w);
     writeFile(dir / "office_linear.ldt", ldt);
     const GoniometricDistribution check = parseEulumdat(ldt, "linear");
-    std::printf("office_linear.ldt: %.1f lm, %.1f%% up\n", check.integratedFlux(), 100 * (1 - downwardShare(check)));
+    std::printf("office_linear.ldt: %.1f lm, %.1f%% up\n", check.integratedFlux(), 100 * (1 - check.downwardFraction()));
 }
 
 // --- geometry -----------------------------------------------------------------------------------

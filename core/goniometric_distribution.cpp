@@ -54,6 +54,14 @@ double GoniometricDistribution::integratedFlux() const {
     return sum;
 }
 
+double GoniometricDistribution::downwardFraction() const {
+    double down = 0;
+    for (size_t c = 0; c + 1 < cAngles.size(); ++c)
+        for (size_t g = 0; g + 1 < gammaAngles.size(); ++g)
+            if (gammaAngles[g + 1] <= 90) down += cellFlux(c, g);
+    return down / integratedFlux();
+}
+
 double GoniometricDistribution::maxIntensity() const {
     return candela.empty() ? 0.0 : *std::max_element(candela.begin(), candela.end());
 }

@@ -40,6 +40,9 @@ struct GoniometricDistribution {
     double cellFlux(size_t c, size_t g) const;
     // The distribution's total flux, the sum of cellFlux (exact for the bilinear interpolant).
     double integratedFlux() const;
+    // The share of integratedFlux() in the cells below the horizontal (gamma <= 90 degrees): the
+    // downward part of a luminaire's light (1 for a recessed panel, 0.8 for a 20% uplight).
+    double downwardFraction() const;
     double maxIntensity() const;
 
     // The TILT=INCLUDE multiplier at a tilt angle (degrees), linear between the table's angles

@@ -45,6 +45,17 @@ inline std::vector<double> expectedFloorImage(const Camera& cam, const std::func
     return out;
 }
 
+// A camera at `position` looking straight down (-y) with a 90 degree square view.
+inline Camera lookingDown(const V3d& position, int resolution) {
+    Camera c;
+    c.position = position;
+    c.target = V3d(position.x, 0, position.z);
+    c.up = V3d(0, 0, 1);
+    c.fovYDeg = 90;
+    c.width = c.height = resolution;
+    return c;
+}
+
 inline std::string jsonVec(const V3d& v) {
     std::ostringstream s;
     s.precision(17);
@@ -59,15 +70,7 @@ struct RectangleOverPlane {
     int resolution = 32;
 
     std::vector<V3d> emitter() const { return {{-a, h, -a}, {a, h, -a}, {a, h, a}, {-a, h, a}}; }
-    Camera camera() const {
-        Camera c;
-        c.position = V3d(0, h / 2, 0);
-        c.target = V3d(0, 0, 0);
-        c.up = V3d(0, 0, 1);
-        c.fovYDeg = 90;
-        c.width = c.height = resolution;
-        return c;
-    }
+    Camera camera() const { return lookingDown(V3d(0, h / 2, 0), resolution); }
     std::string json() const {
         const auto e = emitter();
         std::ostringstream s;
@@ -99,15 +102,7 @@ struct DeltaLightOverPlane {
     V3d sunDirection{-0.3, -1.0, 0.2};              // directional
     int resolution = 32;
 
-    Camera camera() const {
-        Camera c;
-        c.position = V3d(0, h / 2, 0);
-        c.target = V3d(0, 0, 0);
-        c.up = V3d(0, 0, 1);
-        c.fovYDeg = 90;
-        c.width = c.height = resolution;
-        return c;
-    }
+    Camera camera() const { return lookingDown(V3d(0, h / 2, 0), resolution); }
     std::string json() const {
         std::ostringstream s;
         s.precision(17);
@@ -181,15 +176,7 @@ struct ManyPointLightsOverPlane {
             }
         return out;
     }
-    Camera camera() const {
-        Camera c;
-        c.position = V3d(0.17, 1, 0.23);
-        c.target = V3d(0.17, 0, 0.23);
-        c.up = V3d(0, 0, 1);
-        c.fovYDeg = 90;
-        c.width = c.height = resolution;
-        return c;
-    }
+    Camera camera() const { return lookingDown(V3d(0.17, 1, 0.23), resolution); }
     std::string json() const {
         std::ostringstream s;
         s.precision(17);

@@ -35,14 +35,6 @@ double fluxOf(const Light& light) {
     return kLumensPerWatt * luminance(light.intensity) * pointSolidAngle();
 }
 
-double downwardShare(const GoniometricDistribution& d) {
-    double down = 0;
-    for (size_t c = 0; c + 1 < d.cAngles.size(); ++c)
-        for (size_t g = 0; g + 1 < d.gammaAngles.size(); ++g)
-            if (d.gammaAngles[g + 1] <= 90) down += d.cellFlux(c, g);
-    return down / d.integratedFlux();
-}
-
 }  // namespace
 
 class TestOfficeFloor : public QObject {
@@ -100,8 +92,8 @@ private slots:
         const GoniometricDistribution* linear = files.at("luminaires/office_linear.ldt");
         for (const GoniometricDistribution* d : {panel, linear})
             QVERIFY(std::abs(d->integratedFlux() / d->statedFluxLm - 1) < 0.005);
-        QCOMPARE(downwardShare(*panel), 1.0);
-        QVERIFY(std::abs(downwardShare(*linear) - 0.8) < 0.005);
+        QCOMPARE(panel->downwardFraction(), 1.0);
+        QVERIFY(std::abs(linear->downwardFraction() - 0.8) < 0.005);
         // A batwing: the panel's peak lies off the nadir, the linear one's across its length.
         QVERIFY(panel->intensity(0, 30) > panel->intensity(0, 0));
         QVERIFY(linear->intensity(0, 35) > linear->intensity(90, 35));

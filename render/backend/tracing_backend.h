@@ -10,6 +10,7 @@
 #include "render/trace/render_scene.h"
 
 #include <memory>
+#include <optional>
 
 namespace lucerna {
 
@@ -19,9 +20,12 @@ public:
 
 protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.
-    TracingBackend(SceneSnapshot scene, const RenderSettings& settings)
+    // lightSelection: how next-event estimation chooses lights; by default the option
+    // light_sampler (backend_options.h).
+    TracingBackend(SceneSnapshot scene, const RenderSettings& settings,
+                   std::optional<LightSelection> lightSelection = std::nullopt)
         : snapshot_(withoutLightsSwitchedOff(std::move(scene))), settings_(settings),
-          lightSelection_(lightSelectionOption(settings)) {}
+          lightSelection_(lightSelection ? *lightSelection : lightSelectionOption(settings)) {}
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {

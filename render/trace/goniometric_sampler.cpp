@@ -31,19 +31,16 @@ GoniometricSampler::GoniometricSampler(std::shared_ptr<const GoniometricDistribu
         for (size_t g = 0; g < gammaCells_; ++g) weights.push_back(std::max(0.0, d_->cellFlux(c, g)));
     cells_ = DiscreteDistribution(weights);
 
-    // Bilinear interpolation never exceeds the table's entries, and is nonzero up to the gamma
-    // node after the last nonzero entry of any C plane (zero beyond the tabulated range).
+    // Bilinear interpolation is nonzero up to the gamma node after the last nonzero entry of
+    // any C plane (zero beyond the tabulated range).
     size_t lastLit = 0;
     bool lit = false;
     for (size_t c = 0; c < nC; ++c)
-        for (size_t g = 0; g < nG; ++g) {
-            const double cd = d_->at(c, g);
-            peak_ = std::max(peak_, float(cd));
-            if (cd > 0) {
+        for (size_t g = 0; g < nG; ++g)
+            if (d_->at(c, g) > 0) {
                 lastLit = std::max(lastLit, g);
                 lit = true;
             }
-        }
     if (lit) coneRad_ = float(d_->gammaAngles[std::min(lastLit + 1, nG - 1)] * kDeg);
 }
 

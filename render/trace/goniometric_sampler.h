@@ -28,7 +28,8 @@ public:
     const GoniometricDistribution& distribution() const { return *d_; }
     // Upper bounds for light trees: no direction's intensity exceeds peakIntensity() (cd), and
     // every direction farther than emissionConeRad() from the nadir has none.
-    float peakIntensity() const { return peak_; }
+    // (Bilinear interpolation never exceeds the table's entries.)
+    float peakIntensity() const { return float(d_->maxIntensity()); }
     float emissionConeRad() const { return coneRad_; }
 
 private:
@@ -39,7 +40,7 @@ private:
     std::shared_ptr<const GoniometricDistribution> d_;
     DiscreteDistribution cells_;  // over c * (gammas - 1) + g
     size_t gammaCells_ = 0;
-    float peak_ = 0, coneRad_ = 0;
+    float coneRad_ = 0;
 };
 
 // Local (C0, C90, nadir) coordinates of a luminaire's direction in degrees.

@@ -74,13 +74,12 @@ namespace {
 class BdptBackend final : public TracingBackend {
 public:
     BdptBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : TracingBackend(std::move(scene), settings), bdptSettings_(BdptSettings::fromOptions(settings)) {
         // By power, always: the bidirectional family's MIS weights and CMLT's path-space
         // values take the recorded pdf of a next-event light vertex as the density it was drawn
         // with, which holds only for a choice that does not depend on the shading point
         // (issue 19: a tree here needs its density at x1 in every strategy's weight).
-        lightSelection_ = LightSelection::Power;
-    }
+        : TracingBackend(std::move(scene), settings, LightSelection::Power),
+          bdptSettings_(BdptSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
         prepareSceneAndFilm();

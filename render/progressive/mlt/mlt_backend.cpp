@@ -45,10 +45,9 @@ class MetropolisBackend final : public TracingBackend {
 public:
     MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make,
                       VariantDiagnostics variantDiagnostics)
-        : TracingBackend(std::move(scene), settings), mlt_(mlt), makeChain_(std::move(make)),
-          variantDiagnostics_(std::move(variantDiagnostics)) {
-        lightSelection_ = LightSelection::Power;  // the bdpt sampler's: see BdptBackend
-    }
+        // By power, as the bdpt sampler's (BdptBackend says why).
+        : TracingBackend(std::move(scene), settings, LightSelection::Power), mlt_(mlt), makeChain_(std::move(make)),
+          variantDiagnostics_(std::move(variantDiagnostics)) {}
 
     void prepare(TaskContext& ctx) override {
         prepareSceneAndFilm();
