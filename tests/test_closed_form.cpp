@@ -68,6 +68,8 @@ private slots:
     void deltaLightOverPlane();
     void sphereWithEmittingCap_data() { backends(); }
     void sphereWithEmittingCap();
+    void finelyTessellatedBrightSphere_data();
+    void finelyTessellatedBrightSphere();
     void manyPointLightsOverPlane_data();
     void manyPointLightsOverPlane();
 
@@ -151,6 +153,34 @@ void TestClosedForm::sphereWithEmittingCap() {
     }
 }
 
+// Issue 21: a closed sphere of albedo 0.8 in 32,000 triangles, 5,440 of them an emitting cap. Its
+// light is mostly many bounces of indirect light, which ir and mir carry by VPLs shared by every
+// pixel: a VPL set's total power varies with its particles' path lengths, and before interleaved
+// sets (ir) and the fixed-point importance (mir) the mean was a few percent off after seconds.
+// Three seeds each, each within 1.5%.
+void TestClosedForm::finelyTessellatedBrightSphere_data() {
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<int>("spp");
+    QTest::newRow("ir") << "ir" << 16;
+    QTest::newRow("mir") << "mir" << 32;
+}
+
+void TestClosedForm::finelyTessellatedBrightSphere() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    SphereWithEmittingCap s;
+    s.rho = 0.8;
+    s.rings = 100;
+    s.segments = 160;
+    s.resolution = 32;
+    const SceneSnapshot scene = sceneFromJson(s.json());
+    const double expected = s.expectedRadiance();
+    for (uint64_t seed : {1, 2, 3}) {
+        const double mean = render(backend.toStdString(), scene, spp, seed).mean();
+        qInfo("seed %d: mean %.6f, closed form %.6f, error %.3f%%", int(seed), mean, expected, 100 * (mean / expected - 1));
+        QVERIFY(std::abs(mean / expected - 1.0) < 0.015);
+    }
+}
 
 void TestClosedForm::manyPointLightsOverPlane_data() {
     QTest::addColumn<QString>("backend");

@@ -1,12 +1,9 @@
 #pragma once
 // The preview's second VPL source: Metropolis instant radiosity (Segovia, Iehl & Peroche 2007;
-// DESIGN.md), the same chain as `--backend mir` (render/progressive/mir/: metropolis.h,
-// mir_path.h) run once for a whole VPL set:
-//   1. n multiple-try Metropolis steps over camera-to-light paths in primary sample space, one
-//      path VPL per step, consecutive equal path VPLs merged into one geometric VPL of count k_i;
-//   2. Pc, the mean image luminance of the clamped VPL term, from the chain's uniform samples;
-//   3. each geometric VPL scaled so that its image contribution (measured on the CPU with Embree,
-//      one camera sample per block of pixels, visibility included) equals k_i Pc / n.
+// DESIGN.md), the same chain as `--backend mir` (render/vpl/mir_chain.h) run once for a whole
+// VPL set: n Metropolis steps over light sub-paths in primary sample space, whose vertices are
+// drawn in proportion to the light they send to camera points stratified over the image (plus a
+// defensive floor), merged into geometric VPLs, each weighted by its importance-sampling weight.
 // The VPLs land where they light what the camera sees, so they depend on the camera and on every
 // light: a light edit regenerates the whole set, and a camera move keeps it (the preview answers
 // the move at once; regenerate() brings the VPLs up to date).
@@ -28,7 +25,7 @@ struct MirVplSettings {
     float largeStepProbability = 0.3f;
     int startCandidates = 1024;
     int pcSamples = 1024;            // extra uniform samples refining Pc
-    int normalizationSamples = 4096; // camera samples measuring each VPL's image contribution
+    int importancePoints = 256;      // camera points a light path's importance is measured on
     float clampFraction = 0.05f;     // as PreviewSettings::clampDistance (0: no clamp)
     int maxBounces = 8;
 };

@@ -39,38 +39,9 @@ private:
 };
 }  // namespace
 
-MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl) {
-    MirPathLayout l;
-    l.cameraDimensions = 2 + 3 * (gather.maxSpecularDepth + 1);  // traceCameraVertex: 3 per iteration
+int mirPathDimension(const VplOptions& vpl) {
     // traceLightPath: 5, then 4 per bounce; bounces past kStoredLightBounces read padding.
-    l.lightDimensions = 5 + 4 * std::min(vpl.maxBounces, kStoredLightBounces);
-    return l;
-}
-
-double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const Sensor& camera,
-                       const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
-                       const std::vector<float>& u, MirPath& path) {
-    path.vpls.clear();
-    path.contribution.clear();
-    const float* cam = u.data();
-    const float* light = cam + layout.cameraDimensions;
-    PrimarySampleStream cameraStream(cam, light);
-    PrimarySampleStream lightStream(light, light + layout.lightDimensions);
-
-    const V2f raster = cameraStream.next2D();
-    const Ray ray = camera.ray(raster.x * float(camera.width()), raster.y * float(camera.height()));
-    const CameraVertex cv = traceCameraVertex(scene, ray, cameraStream, gather.maxSpecularDepth);
-    if (!cv.found) return 0.0;
-
-    traceLightPath(scene, lights, lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
-    double sum = 0;
-    for (const Vpl& v : path.vpls) {
-        const Rgb contribution = cv.throughput * vplContribution(scene, v, cv.receiver, maxG);
-        const double ck = std::max(0.0, double(luminance(contribution)));
-        path.contribution.push_back(std::isfinite(ck) ? ck : 0.0);
-        sum += path.contribution.back();
-    }
-    return sum;
+    return 5 + 4 * std::min(vpl.maxBounces, kStoredLightBounces);
 }
 
 std::vector<CameraVertex> traceImportancePoints(const RenderScene& scene, const Sensor& camera, int maxSpecularDepth,
@@ -90,11 +61,11 @@ std::vector<CameraVertex> traceImportancePoints(const RenderScene& scene, const 
 }
 
 double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
-                            const VplOptions& vpl, float maxG, double floor, const MirPathLayout& layout,
-                            const std::vector<float>& u, MirPath& path) {
+                            const VplOptions& vpl, float maxG, double floor, const std::vector<float>& u,
+                            MirPath& path) {
     path.vpls.clear();
     path.contribution.clear();
-    PrimarySampleStream lightStream(u.data(), u.data() + layout.lightDimensions);
+    PrimarySampleStream lightStream(u.data(), u.data() + u.size());
     traceLightPath(scene, lights, lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
     const double perPoint = points.empty() ? 0.0 : 1.0 / double(points.size());
     double sum = 0;
@@ -105,6 +76,23 @@ double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights
         c = std::isfinite(c) ? std::max(0.0, c) * perPoint : 0.0;
         path.contribution.push_back(c + floor);
         sum += c + floor;
+    }
+    return sum;
+}
+
+double estimateMirImportance(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
+                             const VplOptions& vpl, float maxG, double floor, int perVertex, Rng& rng) {
+    std::vector<Vpl> vertices;
+    traceLightPath(scene, lights, rng, 1.0f, vpl, [&](const Vpl& v) { vertices.push_back(v); });
+    if (points.empty()) return floor * double(vertices.size());
+    double sum = 0;
+    for (const Vpl& v : vertices) {
+        double c = 0;
+        for (int j = 0; j < perVertex; ++j) {
+            const size_t s = std::min(points.size() - 1, size_t(rng.next1D() * float(points.size())));
+            c += double(luminance(points[s].throughput * vplContribution(scene, v, points[s].receiver, maxG)));
+        }
+        sum += floor + (std::isfinite(c) ? std::max(0.0, c) / double(perVertex) : 0.0);
     }
     return sum;
 }

@@ -113,15 +113,4 @@ Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> 
     return L;
 }
 
-void VplGatherer::addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const {
-    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
-    if (!cv.found) return;
-    const float throughputY = luminance(cv.throughput);
-    if (!(throughputY > 0.0f)) return;
-    for (size_t i = 0; i < vpls.size(); ++i) {
-        const Rgb c = vplContribution(scene_, vpls[i], cv.receiver, maxG_);
-        if (!isBlack(c)) perVpl[i] += double(luminance(cv.throughput * c));
-    }
-}
-
 }  // namespace lucerna

@@ -52,10 +52,6 @@ public:
     Rgb reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
                   bool withoutDeltaLights = false) const;
 
-    // Adds to perVpl[i] the luminance that VPL i (clamped, visibility included) sends along the
-    // camera ray: the image contribution of each VPL, for the Metropolis backend's normalisation.
-    void addVplLuminance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<double> perVpl) const;
-
 private:
     Rgb directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const;
 

@@ -1,0 +1,79 @@
+#include "render/vpl/mir_chain.h"
+
+#include <cmath>
+
+namespace lucerna {
+
+MirChain::MirChain(const RenderScene& scene, const LightSampler& lights, const Sensor& camera,
+                   const MirChainSettings& settings, float maxG, uint64_t seed)
+    : scene_(scene), lights_(lights), settings_(settings), maxG_(maxG), dimension_(mirPathDimension(settings.vpl)),
+      rng_(seed, 0x4d495243) {
+    points_ = traceImportancePoints(scene, camera, settings.maxSpecularDepth, settings.importancePoints,
+                                    hashSeed(seed, 0x53));
+    floor_ = defensiveFloor();
+    MetropolisParams params;
+    params.dimension = dimension_;
+    params.tries = settings.tries;
+    params.largeStepProbability = settings.largeStepProbability;
+    mtm_ = std::make_unique<MultipleTryMetropolis<MirPath>>(
+        params, [this](const std::vector<float>& u, MirPath& path) { return target(floor_, u, path); });
+}
+
+double MirChain::target(double floor, const std::vector<float>& u, MirPath& path) const {
+    return evaluateMirLightPath(scene_, lights_, points_, settings_.vpl, maxG_, floor, u, path);
+}
+
+double MirChain::defensiveFloor() {
+    std::vector<float> u(static_cast<size_t>(dimension_));
+    MirPath path;
+    double sum = 0;
+    long long vertices = 0;
+    for (int i = 0; i < settings_.pilotPaths; ++i) {
+        for (float& x : u) x = rng_.next1D();
+        sum += target(0.0, u, path);
+        vertices += static_cast<long long>(path.vpls.size());
+    }
+    const double mean = vertices > 0 ? sum / double(vertices) : 0.0;
+    return mean > 0 && std::isfinite(mean) ? settings_.defensive * mean : 1.0;
+}
+
+double MirChain::pc() const {
+    const double exactCount = double(mtm_->uniformCount());
+    const double count = exactCount + double(cheapCount_);
+    return count > 0 ? (mtm_->uniformMean() * exactCount + cheapSum_) / count : 0.0;
+}
+
+VplSet MirChain::sampleVpls(int n) {
+    VplSet vpls;
+    if (n <= 0 || (!mtm_->started() && !mtm_->start(rng_, settings_.startCandidates))) return vpls;
+    for (int i = 0; i < settings_.pcSamples; ++i)
+        cheapSum_ += estimateMirImportance(scene_, lights_, points_, settings_.vpl, maxG_, floor_,
+                                           settings_.pcPointsPerVertex, rng_);
+    cheapCount_ += settings_.pcSamples;
+    std::vector<int> counts;
+    std::vector<double> importance;
+    for (int i = 0; i < n; ++i) {
+        const bool moved = mtm_->step(rng_);
+        if (moved || chosen_ < 0 || vpls.empty()) {
+            if (moved || chosen_ < 0) chosen_ = choosePathVertex(mtm_->payload(), rng_.nextDouble());
+            if (chosen_ < 0) continue;
+            vpls.push_back(mtm_->payload().vpls[size_t(chosen_)]);
+            importance.push_back(mtm_->payload().contribution[size_t(chosen_)]);
+            counts.push_back(1);
+        } else {
+            ++counts.back();  // a rejected step: the same path VPL again
+        }
+    }
+    const double pc = this->pc();
+    VplSet weighted;
+    for (size_t i = 0; i < vpls.size(); ++i) {
+        const double w = double(counts[i]) * pc / (double(n) * importance[i]);
+        if (!(w > 0) || !std::isfinite(w)) continue;
+        Vpl v = vpls[i];
+        v.power *= float(w);
+        if (isFinite(v.power) && !isBlack(v.power)) weighted.push_back(v);
+    }
+    return weighted;
+}
+
+}  // namespace lucerna
