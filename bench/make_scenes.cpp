@@ -6,11 +6,13 @@
 // emitters-10k (a ceiling panel of 10,082 emitter triangles in the 0.7 room), closed-sphere-1m
 // (the sphere at 1,000,000 triangles: a large model), and issue 21's closed spheres
 // closed-sphere-{0.5,0.6,0.7,0.8,0.9}-32k (32,000 triangles, a cap of 5,440 emitting, 96x96),
-// whose exact radiance goes to DIR/closed-spheres.txt. Albedo 0.5 and 0.8 were used to decide
+// whose exact radiance goes to DIR/closed-spheres.txt and, as a constant image, to NAME.ref.exr. Albedo 0.5 and 0.8 were used to decide
 // changes to ir and mir, 0.6, 0.7 and 0.9 were kept out (bench/make_families.py).
 
 #include "closed_form_scenes.h"
 #include "scene_families.h"
+
+#include "core/exr_io.h"
 
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +20,7 @@
 #include <fstream>
 #include <string>
 
+using namespace lucerna;
 using namespace lucerna::test;
 
 int main(int argc, char** argv) {
@@ -66,6 +69,11 @@ int main(int argc, char** argv) {
         const std::string name = std::string("closed-sphere-") + a + "-32k";
         write(name, s.json());
         exact << name << " " << s.expectedRadiance() << "\n";
+        // Its reference: the exact radiance in every pixel (the camera sits inside the sphere).
+        Image reference(s.resolution, s.resolution);
+        const float L = float(s.expectedRadiance());
+        for (Rgb& p : reference.pixels) p = Rgb(L, L, L);
+        writeExr(dir + "/" + name + ".ref.exr", reference);
     }
     if (!exact) {
         std::fprintf(stderr, "bench_make_scenes: cannot write %s/closed-spheres.txt\n", dir.c_str());

@@ -5,7 +5,9 @@
 #include "render/vpl/tile_scheduler.h"
 #include "render/vpl/vpl_gatherer.h"
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 
 namespace lucerna {
 
@@ -19,17 +21,21 @@ public:
     void prepare(TaskContext&) override {
         prepareSceneAndFilm();
         gatherer_ = std::make_unique<VplGatherer>(*scene_, ir_.gather);
+        // Each set is gathered by at least 64 pixels, so that particles stay cheap next to the
+        // gather on small films (a calculation grid's sensors).
+        const Sensor& camera = scene_->camera();
+        const double pixels = double(camera.width()) * double(camera.height());
+        interleave_ = std::clamp(int(std::sqrt(pixels / 64.0)), 1, ir_.interleave);
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
         // Fresh VPL sets per pass, independent of each other and of every other pass; set k is
         // gathered by the pixels at (x, y) = (k % m, k / m) modulo m.
-        const int m = ir_.interleave;
+        const int m = interleave_;
         std::vector<VplSet> sets(size_t(m) * size_t(m));
         for (size_t k = 0; k < sets.size(); ++k) {
-            const uint64_t setSeed = k == 0 ? hashSeed(settings_.seed, uint64_t(pass), 0x1a1)
-                                            : hashSeed(settings_.seed, uint64_t(pass), 0x1a1 + k);
-            sets[k] = generateVpls(*scene_, ir_.lightPathsPerPass, setSeed, ir_.vpl);
+            sets[k] = generateVpls(*scene_, ir_.lightPathsPerPass, hashSeed(settings_.seed, uint64_t(pass), 0x1a1 + k),
+                                   ir_.vpl);
             vplCount_ += sets[k].size();
         }
         const Sensor& camera = scene_->camera();
@@ -52,9 +58,9 @@ public:
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
         d["ir_light_paths_per_pass"] = std::to_string(ir_.lightPathsPerPass);
-        d["ir_interleave"] = std::to_string(ir_.interleave);
+        d["ir_interleave"] = std::to_string(interleave_);
         d["ir_mean_vpls_per_set"] =
-            std::to_string(passes_ > 0 ? double(vplCount_) / passes_ / double(ir_.interleave * ir_.interleave) : 0.0);
+            std::to_string(passes_ > 0 ? double(vplCount_) / passes_ / double(interleave_ * interleave_) : 0.0);
         d["ir_clamp_fraction"] = std::to_string(ir_.gather.clampFraction);
         d["ir_compensate"] = ir_.gather.compensate ? "1" : "0";
         return d;
@@ -63,6 +69,7 @@ public:
 private:
     IrSettings ir_;
     std::unique_ptr<VplGatherer> gatherer_;
+    int interleave_ = 1;  // m: the film's m x m blocks gather m^2 sets
     size_t vplCount_ = 0;
     int passes_ = 0;
 };

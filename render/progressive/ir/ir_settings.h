@@ -14,7 +14,8 @@ struct IrSettings {
     // sets and the pixels of every interleave x interleave block each gather a different one. A
     // pixel's estimate is as noisy as with one set, but the error shared by all pixels (a set's
     // total power, which in a closed bright room varies with the particles' random path lengths)
-    // falls by interleave^2 at almost no cost: particles are cheap next to the gather.
+    // falls by interleave^2 at almost no cost: particles are cheap next to the gather. Fewer
+    // where the film has under 64 pixels a set.
     int interleave = 8;
     VplOptions vpl;
 
