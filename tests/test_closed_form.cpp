@@ -161,7 +161,7 @@ void TestClosedForm::sphereWithEmittingCap() {
 void TestClosedForm::finelyTessellatedBrightSphere_data() {
     QTest::addColumn<QString>("backend");
     QTest::addColumn<int>("spp");
-    QTest::newRow("ir") << "ir" << 16;
+    QTest::newRow("ir") << "ir" << 32;
     QTest::newRow("mir") << "mir" << 32;
 }
 

@@ -21,7 +21,7 @@ public:
     void prepare(TaskContext&) override {
         prepareSceneAndFilm();
         gatherer_ = std::make_unique<VplGatherer>(*scene_, ir_.gather);
-        // Each set is gathered by at least 64 pixels, so that particles stay cheap next to the
+        // Each set is gathered by 64 pixels or more, so that particles stay cheap next to the
         // gather on small films (a calculation grid's sensors).
         const Sensor& camera = scene_->camera();
         const double pixels = double(camera.width()) * double(camera.height());
@@ -29,8 +29,9 @@ public:
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
-        // Fresh VPL sets per pass, independent of each other and of every other pass; set k is
-        // gathered by the pixels at (x, y) = (k % m, k / m) modulo m.
+        // Fresh VPL sets per pass, independent of each other and of every other pass; each pixel
+        // gathers one drawn by a hash of the pixel and the pass: white noise in the image, where
+        // a fixed m x m pattern showed as a texture for the first passes.
         const int m = interleave_;
         std::vector<VplSet> sets(size_t(m) * size_t(m));
         for (size_t k = 0; k < sets.size(); ++k) {
@@ -44,7 +45,8 @@ public:
         forEachPixel(camera.width(), camera.height(), ir_.gather.tileSize, ctx, [&](int x, int y) {
             Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
             const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
-            const VplSet& vpls = sets[size_t(y % m) * size_t(m) + size_t(x % m)];
+            const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
+            const VplSet& vpls = sets[size_t(hashSeed(passSeed, pixel, 0x696c76) % sets.size())];
             Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vpls);
             if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
             film_->addSample(half, x, y, L);
@@ -69,7 +71,7 @@ public:
 private:
     IrSettings ir_;
     std::unique_ptr<VplGatherer> gatherer_;
-    int interleave_ = 1;  // m: the film's m x m blocks gather m^2 sets
+    int interleave_ = 1;  // m: m^2 sets a pass
     size_t vplCount_ = 0;
     int passes_ = 0;
 };

@@ -11,7 +11,7 @@ struct IrSettings {
     GatherSettings gather;
     int lightPathsPerPass = 32;  // particles per VPL set: each pass draws fresh, independent sets
     // Interleaved sampling (Keller & Heidrich 2001): each pass draws interleave^2 independent VPL
-    // sets and the pixels of every interleave x interleave block each gather a different one. A
+    // sets and each pixel gathers one of them, drawn at random. A
     // pixel's estimate is as noisy as with one set, but the error shared by all pixels (a set's
     // total power, which in a closed bright room varies with the particles' random path lengths)
     // falls by interleave^2 at almost no cost: particles are cheap next to the gather. Fewer
