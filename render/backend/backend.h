@@ -12,6 +12,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lucerna {
 
@@ -46,6 +47,14 @@ public:
     virtual std::map<std::string, std::string> diagnostics() const { return {}; }
     // Adds named channels of the film's combined image to `image` (per-light layers), if any.
     virtual void addImageLayers(Image& image) const { (void)image; }
+
+    // Distributed renders (render/backend/pooled_films.h): the films the frame is made of, in a
+    // fixed order (the film, or one per light layer), and their replacement, once the passes are
+    // done, by the films pooled from every process (as many, of the same sizes, in that order),
+    // after which film(), diagnostics() and addImageLayers() show the whole run (diagnostics
+    // that count a backend's own chains still count this process's).
+    virtual std::vector<const Film*> films() const { return {&film()}; }
+    virtual void adoptFilms(std::vector<Film> pooled) = 0;
 };
 
 // Makes a backend for a scene; the backend prepares nothing until prepare().

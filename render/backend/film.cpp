@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 namespace lucerna {
@@ -30,6 +32,30 @@ Film Film::sum(std::span<const Film* const> films) {
         }
     }
     return out;
+}
+
+std::vector<double> Film::additive() const {
+    std::vector<double> out;
+    out.reserve(additiveSize(width_, height_));
+    for (int h = 0; h < 2; ++h)
+        for (const auto& s : sums_[h])
+            for (int c = 0; c < 3; ++c) out.push_back(scale_[h] * s[c]);  // a scale of 1 changes nothing
+    out.push_back(samples_[0]);
+    out.push_back(samples_[1]);
+    return out;
+}
+
+Film Film::fromAdditive(int width, int height, std::span<const double> values) {
+    if (values.size() != additiveSize(width, height))
+        throw std::invalid_argument("film: " + std::to_string(values.size()) + " values for a " + std::to_string(width) +
+                                    " x " + std::to_string(height) + " film");
+    Film f(width, height);
+    size_t k = 0;
+    for (int h = 0; h < 2; ++h)
+        for (auto& s : f.sums_[h])
+            for (int c = 0; c < 3; ++c) s[c] = values[k++];
+    f.samples_ = {values[k], values[k + 1]};
+    return f;
 }
 
 Image Film::image() const {

@@ -64,6 +64,17 @@ public:
     // an empty 0 x 0 film.
     static Film sum(std::span<const Film* const> films);
 
+    // The film as numbers that add (distributed renders, render/backend/pooled_films.h): each
+    // half's sums times its half scale, pixel by pixel and channel by channel, then the two
+    // sample counts; additiveSize() of them. Adding the arrays of several films gives the array
+    // of their pooled film, whose halves are the films' normalised halves averaged with weights
+    // by their samples (for unit half scales, the sums of the samples and of their counts).
+    std::vector<double> additive() const;
+    static size_t additiveSize(int width, int height) { return 6 * size_t(width) * size_t(height) + 2; }
+    // The film of such an array, its half scales 1. Throws std::invalid_argument for an array
+    // of another size.
+    static Film fromAdditive(int width, int height, std::span<const double> values);
+
     // The combined estimate (mean of all samples).
     Image image() const;
     // One half's own estimate.

@@ -53,11 +53,19 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
             deltaE[size_t(i)] = estimator.deltaLightsIrradiance(sensors[size_t(i)]);
     });
 
-    for (int pass = 0; !ctx.isCancelled(); ++pass) {
+    // Shared among processes, every process goes round until all agree to stop (shareRound), a
+    // cancelled one included.
+    const bool shared = sizeOf(settings.processes) > 1;
+    for (int pass = 0; shared || !ctx.isCancelled(); ++pass) {
         VplSet vpls;
         if (settings.method == GridMethod::Vpl)
             vpls = generateVpls(scene, settings.vplPathsPerPass, hashSeed(settings.seed, uint64_t(pass), 0x9d1));
         ctx.parallelFor(0, tasks, [&](int task) {
+            if (!ownsBlock(settings.processes, task)) {
+                for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i)
+                    passMean[size_t(i)] = 0;
+                return;
+            }
             for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
                 const IrradianceSensor& sensor = sensors[size_t(i)];
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
@@ -71,12 +79,15 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
                 passMean[size_t(i)] = sum / samples;
             }
         });
-        if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
+        std::vector<double> maxima{std::chrono::duration<double>(Clock::now() - start).count(),
+                                   ctx.isCancelled() ? 1.0 : 0.0};
+        shareRound(settings.processes, passMean, maxima);
+        if (maxima[1] > 0) break;  // a partial pass would bias the points it missed
 
         result.passes = pass + 1;
         result.samplesPerPoint = static_cast<long long>(result.passes) * samples;
         for (size_t i = 0; i < points.size(); ++i) batches[i].add(passMean[i]);
-        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+        result.seconds = maxima[0];
         if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
     }
     return result;

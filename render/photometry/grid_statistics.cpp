@@ -81,4 +81,18 @@ bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const Grid
     return result.converged || (settings.timeLimitSeconds > 0 && result.seconds >= settings.timeLimitSeconds);
 }
 
+void shareRound(ProcessGroup* processes, std::vector<double>& sums, std::vector<double>& maxima) {
+    if (!processes || processes->size() == 1) return;
+    std::vector<double> mine = sums;
+    mine.insert(mine.end(), maxima.begin(), maxima.end());
+    const std::vector<double> all = processes->allGather(mine);
+    const size_t n = mine.size();
+    for (int r = 0; r < processes->size(); ++r) {
+        const double* theirs = all.data() + size_t(r) * n;
+        for (size_t i = 0; i < sums.size(); ++i) sums[i] = r == 0 ? theirs[i] : sums[i] + theirs[i];
+        for (size_t i = 0; i < maxima.size(); ++i)
+            maxima[i] = r == 0 ? theirs[sums.size() + i] : std::max(maxima[i], theirs[sums.size() + i]);
+    }
+}
+
 }  // namespace lucerna

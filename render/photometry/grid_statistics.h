@@ -43,6 +43,16 @@ std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass);
 
+// The end of a round of a grid shared among processes (GridSettings::processes): each process
+// gives the values of what it owns (0 elsewhere) in `sums` and its own figures in `maxima` (times
+// so far, 1 when cancelled); every process gets back the sums over the processes (each value
+// from its owner alone, so exactly that) and the maxima, so that all decide alike. Nothing
+// changes when `processes` is nullptr.
+void shareRound(ProcessGroup* processes, std::vector<double>& sums, std::vector<double>& maxima);
+
+// Whether block `block` of the points, or replica `block`, is this process's.
+inline bool ownsBlock(const ProcessGroup* processes, int block) { return block % sizeOf(processes) == rankOf(processes); }
+
 // The bdpt, mir, mlt and cmlt methods (grid_calculation.h); `before` is the result before any
 // estimate (emptyGridResult, with the checks of the points).
 GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,

@@ -81,6 +81,7 @@ public:
     }
 
     const Film& film() const override { return *film_; }
+    void adoptFilms(std::vector<Film> pooled) override { film_ = std::make_unique<Film>(std::move(pooled.at(0))); }
 
     std::map<std::string, std::string> diagnostics() const override {
         auto d = lastTimings_;

@@ -40,6 +40,17 @@ public:
 
     const Film& film() const override { return combined_; }
 
+    std::vector<const Film*> films() const override {
+        std::vector<const Film*> films;
+        for (const auto& layer : layers_) films.push_back(&layer->film());
+        return films;
+    }
+
+    void adoptFilms(std::vector<Film> pooled) override {
+        for (size_t g = 0; g < layers_.size(); ++g) layers_[g]->adoptFilms({std::move(pooled.at(g))});
+        combine();
+    }
+
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d = layers_.front()->diagnostics();
         d["light_layers"] = std::to_string(groups_.size());
