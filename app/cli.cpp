@@ -200,9 +200,11 @@ void poolDistributedRender(RenderSetup& s, ProcessGroup& processes, RenderFrame&
     const double mine[2] = {frame.seconds, double(frame.passes)};
     const std::vector<double> all = processes.allGather(mine);
     double seconds = 0, passes = 0;
+    std::string rankPasses;  // "4 4 4": how the passes were shared
     for (int r = 0; r < processes.size(); ++r) {
         seconds = std::max(seconds, all[size_t(2 * r)]);
         passes += all[size_t(2 * r + 1)];
+        rankPasses += (r ? " " : "") + std::to_string(int(all[size_t(2 * r + 1)]));
     }
     const auto start = std::chrono::steady_clock::now();
     poolFilms(*s.backend, processes);
@@ -215,6 +217,7 @@ void poolDistributedRender(RenderSetup& s, ProcessGroup& processes, RenderFrame&
     if (processes.rank() != 0) return;
     frame = makeRenderFrame(*s.backend, s.backendName, s.r.settings, seconds, int(passes));
     frame.image.attributes["lucerna:ranks"] = std::to_string(processes.size());
+    frame.image.attributes["lucerna:rank_passes"] = rankPasses;
     frame.image.attributes["lucerna:reduction_seconds"] = formatNumber(reduction, 4);
 }
 
