@@ -287,7 +287,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         if (rank == 0) std::cerr << "render interrupted; no file written\n";
         return 130;
     }
-    if (processes && processes->size() > 1) {
+    if (processes) {  // one rank too, so that its header says so
         try {
             poolDistributedRender(s, *processes, *result, illuminance);
         } catch (const std::bad_alloc&) {
