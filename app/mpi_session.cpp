@@ -60,20 +60,35 @@ public:
         return all;
     }
 
+    // A reduce-scatter in rank order, then a gather: rank k adds up slice k of every rank's
+    // block (rank 0's values first, then 1's, ...), and rank 0 collects the slices' sums. Each
+    // rank sends and receives about two arrays whatever the number of ranks, where gathering
+    // every array at rank 0 would have it receive N - 1 of them through its one link; the sums
+    // are the same, added in the same order. Blocks keep each rank's buffer near 256 MB.
     void sumToRoot(std::span<double> values) override {
-        // Slices small enough that rank 0's buffer of one slice per process stays near 256 MB.
-        const size_t slice = std::max<size_t>(size_t(1) << 16, (size_t(1) << 25) / size_t(size_));
-        std::vector<double> gathered(rank_ == 0 ? std::min(slice, values.size()) * size_t(size_) : 0);
-        for (size_t begin = 0; begin < values.size(); begin += slice) {
-            const size_t n = std::min(slice, values.size() - begin);
-            MPI_Gather(values.data() + begin, count(n), MPI_DOUBLE, gathered.data(), count(n), MPI_DOUBLE, 0,
-                       MPI_COMM_WORLD);
-            if (rank_ != 0) continue;
-            // In rank order: rank 0's own values are where they were, then 1's, 2's, ...
-            for (int r = 1; r < size_; ++r) {
-                const double* theirs = gathered.data() + size_t(r) * n;
-                for (size_t i = 0; i < n; ++i) values[begin + i] += theirs[i];
+        const size_t ranks = size_t(size_), me = size_t(rank_);
+        const size_t blockSize = std::max<size_t>(ranks, (size_t(1) << 25));
+        std::vector<double> received, sum;
+        std::vector<int> sendCounts(ranks), sendOffsets(ranks), receiveCounts(ranks), receiveOffsets(ranks);
+        for (size_t begin = 0; begin < values.size(); begin += blockSize) {
+            const size_t n = std::min(blockSize, values.size() - begin);
+            const size_t slice = (n + ranks - 1) / ranks;  // rank k sums [k slice, (k + 1) slice)
+            const auto sliceLength = [&](size_t k) { return std::min(slice, n - std::min(n, k * slice)); };
+            const size_t mine = sliceLength(me);
+            for (size_t k = 0; k < ranks; ++k) {
+                sendCounts[k] = count(sliceLength(k));
+                sendOffsets[k] = count(k * slice);
+                receiveCounts[k] = count(mine);
+                receiveOffsets[k] = count(k * mine);
             }
+            received.resize(mine * ranks);
+            MPI_Alltoallv(values.data() + begin, sendCounts.data(), sendOffsets.data(), MPI_DOUBLE, received.data(),
+                          receiveCounts.data(), receiveOffsets.data(), MPI_DOUBLE, MPI_COMM_WORLD);
+            sum.assign(received.begin(), received.begin() + std::ptrdiff_t(mine));  // rank 0's
+            for (size_t r = 1; r < ranks; ++r)
+                for (size_t i = 0; i < mine; ++i) sum[i] += received[r * mine + i];
+            MPI_Gatherv(sum.data(), count(mine), MPI_DOUBLE, values.data() + begin, sendCounts.data(),
+                        sendOffsets.data(), MPI_DOUBLE, 0, MPI_COMM_WORLD);
         }
     }
 

@@ -32,4 +32,8 @@ done
   "${mpirun[@]}" -n 2 "$lucerna" render "$scene" --backend path --spp 4 --width 3840 --height 2160 --threads 1 \
   --seed 1 -o "$out/4k.exr" 2>&1 | grep -v "^wrote" || true
 run "path 4K: (above, read back)" "$out/4k.exr" true
+# The same 4K render in one process: the pooled film (two blocks of the reduce-scatter) must
+# give the same pixels.
+"$lucerna" render "$scene" --backend path --spp 4 --width 3840 --height 2160 --threads 2 --seed 1 -o "$out/4k_one.exr" 2>/dev/null
+echo "4K, 2 ranks against 1 process: $("$lucerna" compare "$out/4k.exr" "$out/4k_one.exr" | tr '\n' ' ')"
 echo "load average after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -26,7 +26,7 @@ public:
     // The sum over the processes of `values`, added in rank order ((v0 + v1) + v2 ...; MPI_Reduce
     // promises no order), so that a run's result does not depend on timing: on rank 0, `values`
     // becomes the sum; elsewhere it is left as it was. Arrays of any length: they travel in
-    // slices, so that rank 0 holds one slice of each process at a time, not whole arrays.
+    // blocks and slices, so that no process holds more than a block besides its own array.
     virtual void sumToRoot(std::span<double> values) = 0;
 };
 
