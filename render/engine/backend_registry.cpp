@@ -21,9 +21,9 @@ namespace {
 // path, ir and mir read light_sampler (TracingBackend; bdpt, mlt and cmlt choose by power).
 constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth", "light_sampler"};
 constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies"};
-constexpr std::string_view kIrOptions[] = {"vpl_paths", "max_bounces", "clamp", "compensate", "light_sampler"};
-constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples",
-                                            "norm_stride", "max_bounces", "clamp",   "compensate",
+constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounces", "clamp", "compensate", "light_sampler"};
+constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples", "importance_points", "defensive",
+                                            "max_bounces", "clamp",   "compensate",
                                             "light_sampler"};
 constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations", "large_step", "sigma",
                                             "caustic",   "max_depth", "rr_depth",  "strategies"};

@@ -18,12 +18,7 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
     if (points.empty()) return result;
 
     const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
-    // MIR scales each VPL by the inverse of its measured image contribution, a ratio estimator
-    // whose bias falls as 1 / (camera samples measuring it): a grid's image is small, so every
-    // pixel measures (measured on the interior work plane: Eavg +1.9% above path's with a
-    // sample per 2 x 2 block, +0.55% with every pixel).
-    std::map<std::string, std::string> options = settings.backendOptions;
-    if (settings.method == GridMethod::Mir) options.try_emplace("norm_stride", "1");
+    const std::map<std::string, std::string>& options = settings.backendOptions;
     const int replicaCount = std::max(2, settings.replicas);
     // Shared among processes, each makes the replicas it owns (replica r's seed is r's wherever
     // it runs), and every process goes round until all agree to stop.

@@ -1,6 +1,8 @@
 #include "render/vpl/mir_path.h"
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <optional>
 
 namespace lucerna {
@@ -67,6 +69,42 @@ double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, con
         const double ck = std::max(0.0, double(luminance(contribution)));
         path.contribution.push_back(std::isfinite(ck) ? ck : 0.0);
         sum += path.contribution.back();
+    }
+    return sum;
+}
+
+std::vector<CameraVertex> traceImportancePoints(const RenderScene& scene, const Sensor& camera, int maxSpecularDepth,
+                                                int count, uint64_t seed) {
+    const int w = camera.width(), h = camera.height();
+    const int sx = std::max(1, int(std::lround(std::sqrt(double(count) * w / h)))), sy = std::max(1, count / sx);
+    std::vector<CameraVertex> points;
+    Rng rng(seed, 0x696d70);
+    for (int j = 0; j < sy; ++j)
+        for (int i = 0; i < sx; ++i) {
+            const V2f r = rng.next2D();
+            const Ray ray = camera.ray((float(i) + r.x) * float(w) / float(sx), (float(j) + r.y) * float(h) / float(sy));
+            const CameraVertex cv = traceCameraVertex(scene, ray, rng, maxSpecularDepth);
+            if (cv.found) points.push_back(cv);
+        }
+    return points;
+}
+
+double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
+                            const VplOptions& vpl, float maxG, double floor, const MirPathLayout& layout,
+                            const std::vector<float>& u, MirPath& path) {
+    path.vpls.clear();
+    path.contribution.clear();
+    PrimarySampleStream lightStream(u.data(), u.data() + layout.lightDimensions);
+    traceLightPath(scene, lights, lightStream, 1.0f, vpl, [&](const Vpl& v) { path.vpls.push_back(v); });
+    const double perPoint = points.empty() ? 0.0 : 1.0 / double(points.size());
+    double sum = 0;
+    for (const Vpl& v : path.vpls) {
+        double c = 0;
+        for (const CameraVertex& cv : points)
+            c += double(luminance(cv.throughput * vplContribution(scene, v, cv.receiver, maxG)));
+        c = std::isfinite(c) ? std::max(0.0, c) * perPoint : 0.0;
+        path.contribution.push_back(c + floor);
+        sum += c + floor;
     }
     return sum;
 }

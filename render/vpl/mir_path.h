@@ -18,6 +18,7 @@
 
 #include "render/vpl/vpl_gatherer.h"
 
+#include <span>
 #include <vector>
 
 namespace lucerna {
@@ -44,6 +45,25 @@ MirPathLayout mirPathLayout(const GatherSettings& gather, const VplOptions& vpl)
 double evaluateMirPath(const RenderScene& scene, const LightSampler& lights, const Sensor& camera,
                        const GatherSettings& gather, const VplOptions& vpl, float maxG, const MirPathLayout& layout,
                        const std::vector<float>& u, MirPath& path);
+
+// The camera points the backend's chain measures a light path's importance on: `count` camera
+// rays stratified over the image (jittered with `seed`), followed through mirrors and glass to
+// their first diffuse or glossy vertex x_s; rays that find none are left out.
+std::vector<CameraVertex> traceImportancePoints(const RenderScene& scene, const Sensor& camera, int maxSpecularDepth,
+                                                int count, uint64_t seed);
+
+// The backend's target, over a light sub-path alone: u holds layout.lightDimensions numbers, and
+// the sub-path's non-delta vertices y_1..y_K are candidate VPLs with
+//   c_k(u) = floor + (1 / |S|) sum_s Y(T_s * contribution of y_k at x_s, G clamped),
+// the mean image luminance y_k brings to the fixed points S (traceImportancePoints) plus a
+// defensive floor > 0 (Hesterberg 1995): every VPL a light path can leave has a density, so the
+// estimator is unbiased however poorly S represents the image, and no VPL's weight exceeds
+// Pc / (n floor). f(u) = sum_k c_k(u) is a deterministic function of u, so a chain stuck on a lucky
+// camera point, the way a target measured on one random camera point per state sticks, cannot
+// happen.
+double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
+                            const VplOptions& vpl, float maxG, double floor, const MirPathLayout& layout,
+                            const std::vector<float>& u, MirPath& path);
 
 // Vertex k of the path with probability c_k / f, for u in [0, 1); -1 when f is 0.
 int choosePathVertex(const MirPath& path, double u);

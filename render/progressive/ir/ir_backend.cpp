@@ -22,16 +22,23 @@ public:
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
-        // A fresh VPL set per pass: independent of every other pass.
-        const VplSet vpls = generateVpls(*scene_, ir_.lightPathsPerPass, hashSeed(settings_.seed, uint64_t(pass), 0x1a1),
-                                         ir_.vpl);
-        vplCount_ += vpls.size();
+        // Fresh VPL sets per pass, independent of each other and of every other pass; set k is
+        // gathered by the pixels at (x, y) = (k % m, k / m) modulo m.
+        const int m = ir_.interleave;
+        std::vector<VplSet> sets(size_t(m) * size_t(m));
+        for (size_t k = 0; k < sets.size(); ++k) {
+            const uint64_t setSeed = k == 0 ? hashSeed(settings_.seed, uint64_t(pass), 0x1a1)
+                                            : hashSeed(settings_.seed, uint64_t(pass), 0x1a1 + k);
+            sets[k] = generateVpls(*scene_, ir_.lightPathsPerPass, setSeed, ir_.vpl);
+            vplCount_ += sets[k].size();
+        }
         const Sensor& camera = scene_->camera();
         const int half = pass % 2;
         const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
         forEachPixel(camera.width(), camera.height(), ir_.gather.tileSize, ctx, [&](int x, int y) {
             Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
             const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
+            const VplSet& vpls = sets[size_t(y % m) * size_t(m) + size_t(x % m)];
             Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vpls);
             if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
             film_->addSample(half, x, y, L);
@@ -45,7 +52,9 @@ public:
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d;
         d["ir_light_paths_per_pass"] = std::to_string(ir_.lightPathsPerPass);
-        d["ir_mean_vpls_per_pass"] = std::to_string(passes_ > 0 ? double(vplCount_) / passes_ : 0.0);
+        d["ir_interleave"] = std::to_string(ir_.interleave);
+        d["ir_mean_vpls_per_set"] =
+            std::to_string(passes_ > 0 ? double(vplCount_) / passes_ / double(ir_.interleave * ir_.interleave) : 0.0);
         d["ir_clamp_fraction"] = std::to_string(ir_.gather.clampFraction);
         d["ir_compensate"] = ir_.gather.compensate ? "1" : "0";
         return d;

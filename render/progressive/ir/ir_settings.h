@@ -9,11 +9,17 @@ namespace lucerna {
 
 struct IrSettings {
     GatherSettings gather;
-    int lightPathsPerPass = 32;  // particles per pass: each pass draws a fresh, independent VPL set
+    int lightPathsPerPass = 32;  // particles per VPL set: each pass draws fresh, independent sets
+    // Interleaved sampling (Keller & Heidrich 2001): each pass draws interleave^2 independent VPL
+    // sets and the pixels of every interleave x interleave block each gather a different one. A
+    // pixel's estimate is as noisy as with one set, but the error shared by all pixels (a set's
+    // total power, which in a closed bright room varies with the particles' random path lengths)
+    // falls by interleave^2 at almost no cost: particles are cheap next to the gather.
+    int interleave = 8;
     VplOptions vpl;
 
-    // Reads "vpl_paths", "clamp", "compensate", "max_bounces"; throws std::invalid_argument on
-    // bad values.
+    // Reads "vpl_paths", "interleave", "clamp", "compensate", "max_bounces"; throws
+    // std::invalid_argument on bad values.
     static IrSettings fromOptions(const RenderSettings& settings);
 };
 

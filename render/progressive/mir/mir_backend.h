@@ -15,8 +15,8 @@
 //      extra samples a pass), accumulated over all of half h's passes so far: an unbiased,
 //      ever-refined estimate of the integral of f;
 //   4. normalise:  each geometric VPL rendered with its own (unnormalised) power has the image
-//      contribution P'_i (mean over the image of the luminance it brings, measured with one
-//      camera sample per stride x stride pixel block); it is scaled by P_i / P'_i;
+//      contribution P'_i (mean over the image of the luminance it brings, measured on the
+//      gather's own camera samples); it is scaled by P_i / P'_i, so that it brings exactly P_i;
 //   5. gather:  one camera sample per pixel, as `ir` (vpl_gatherer.h): emitters, direct light,
 //      the scaled VPLs with the clamped geometric term, and the clamped-away residual by short
 //      path-traced paths.

@@ -16,10 +16,12 @@ struct MirSettings {
     float largeStepProbability = 0.3f;
     int startCandidates = 1024;    // uniform candidates the chain starts from (importance resampling)
     int pcSamplesPerPass = 256;    // extra independent uniform path samples refining Pc each pass
-    int normalizationStride = 2;   // each VPL's image contribution is measured on one camera sample
-                                   // per stride x stride block of pixels (1: every pixel)
+    int importancePoints = 64;     // |S|: camera points a light path's importance is measured on
+    float defensive = 0.2f;        // the target's floor, as a fraction of a VPL's mean importance
+    int pilotPaths = 256;          // uniform light paths that set the floor
 
-    // Reads "vpl_paths", "tries", "large_step", "pc_samples", "norm_stride", "max_bounces",
+    // Reads "vpl_paths", "tries", "large_step", "pc_samples", "importance_points",
+    // "defensive", "max_bounces",
     // "clamp", "compensate"; throws std::invalid_argument on bad values.
     static MirSettings fromOptions(const RenderSettings& settings);
 };
@@ -31,7 +33,8 @@ inline MirSettings MirSettings::fromOptions(const RenderSettings& settings) {
     readOption(settings, "tries", s.tries, 1);
     readOption(settings, "large_step", s.largeStepProbability, 1e-3, 1.0);
     readOption(settings, "pc_samples", s.pcSamplesPerPass, 0);
-    readOption(settings, "norm_stride", s.normalizationStride, 1);
+    readOption(settings, "importance_points", s.importancePoints, 1);
+    readOption(settings, "defensive", s.defensive, 1e-4, 1e4);
     readOption(settings, "max_bounces", s.vpl.maxBounces, 1);
     return s;
 }
