@@ -32,6 +32,9 @@ done
   "${mpirun[@]}" -n 2 "$lucerna" render "$scene" --backend path --spp 4 --width 3840 --height 2160 --threads 1 \
   --seed 1 -o "$out/4k.exr" 2>&1 | grep -v "^wrote" || true
 run "path 4K: (above, read back)" "$out/4k.exr" true
+# The pooling's copies alone (one rank: no transfer between processes) at 4K.
+run "path 4K: mpirun 1 rank, 2 threads" "$out/4k_1.exr" "${mpirun[@]}" -n 1 "$lucerna" render "$scene" --backend path \
+  --spp 1 --width 3840 --height 2160 --threads 2 --seed 1 -o "$out/4k_1.exr"
 # The same 4K render in one process: the pooled film (two blocks of the reduce-scatter) must
 # give the same pixels.
 "$lucerna" render "$scene" --backend path --spp 4 --width 3840 --height 2160 --threads 2 --seed 1 -o "$out/4k_one.exr" 2>/dev/null
