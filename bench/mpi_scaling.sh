@@ -8,7 +8,9 @@ out=${2:-/tmp/mpi_scaling}
 lucerna="$build/app/lucerna"
 scene=resources/scenes/cornell-box.json
 mkdir -p "$out"
-mpirun=(mpirun --oversubscribe --allow-run-as-root --mca btl_vader_single_copy_mechanism none)
+# --bind-to none: Open MPI binds each of up to 2 ranks to one core by default, which pins a
+# rank's threads to that core (and, on a shared machine, to whatever else runs there).
+mpirun=(mpirun --oversubscribe --allow-run-as-root --bind-to none --mca btl_vader_single_copy_mechanism none)
 attr() { exrheader "$1" | sed -n "s/^lucerna:$2 (type string): \"\(.*\)\"/\1/p"; }
 run() {  # label, output, command...
   local label=$1 exr=$2; shift 2

@@ -1,9 +1,8 @@
 #include "render/backend/film.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <stdexcept>
-#include <string>
 #include <vector>
 
 namespace lucerna {
@@ -34,28 +33,26 @@ Film Film::sum(std::span<const Film* const> films) {
     return out;
 }
 
-std::vector<double> Film::additive() const {
-    std::vector<double> out;
-    out.reserve(additiveSize(width_, height_));
-    for (int h = 0; h < 2; ++h)
-        for (const auto& s : sums_[h])
-            for (int c = 0; c < 3; ++c) out.push_back(scale_[h] * s[c]);  // a scale of 1 changes nothing
-    out.push_back(samples_[0]);
-    out.push_back(samples_[1]);
-    return out;
-}
-
-Film Film::fromAdditive(int width, int height, std::span<const double> values) {
-    if (values.size() != additiveSize(width, height))
-        throw std::invalid_argument("film: " + std::to_string(values.size()) + " values for a " + std::to_string(width) +
-                                    " x " + std::to_string(height) + " film");
-    Film f(width, height);
-    size_t k = 0;
-    for (int h = 0; h < 2; ++h)
-        for (auto& s : f.sums_[h])
-            for (int c = 0; c < 3; ++c) s[c] = values[k++];
-    f.samples_ = {values[k], values[k + 1]};
-    return f;
+void Film::rewriteAdditive(size_t blockSize, const std::function<void(std::span<double>)>& combine) {
+    const size_t values = 3 * sums_[0].size(), total = 2 * values + 2;  // two halves, two counts
+    const std::array<double, 2> scale = scale_;  // every block is read with the film's own scales
+    const auto at = [&](size_t k) -> double& {
+        if (k >= 2 * values) return samples_[k - 2 * values];
+        const size_t h = k / values, i = k % values;
+        return sums_[h][i / 3][i % 3];
+    };
+    std::vector<double> block;
+    for (size_t begin = 0; begin < total; begin += std::max<size_t>(1, blockSize)) {
+        const size_t n = std::min(std::max<size_t>(1, blockSize), total - begin);
+        block.resize(n);
+        for (size_t k = 0; k < n; ++k) {
+            const size_t index = begin + k;
+            block[k] = index < 2 * values ? scale[index / values] * at(index) : at(index);
+        }
+        combine(block);
+        for (size_t k = 0; k < n; ++k) at(begin + k) = block[k];
+    }
+    scale_ = {1.0, 1.0};
 }
 
 Image Film::image() const {

@@ -6,6 +6,7 @@
 #include "core/image.h"
 
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -66,14 +67,13 @@ public:
 
     // The film as numbers that add (distributed renders, render/backend/pooled_films.h): each
     // half's sums times its half scale, pixel by pixel and channel by channel, then the two
-    // sample counts; additiveSize() of them. Adding the arrays of several films gives the array
-    // of their pooled film, whose halves are the films' normalised halves averaged with weights
-    // by their samples (for unit half scales, the sums of the samples and of their counts).
-    std::vector<double> additive() const;
-    static size_t additiveSize(int width, int height) { return 6 * size_t(width) * size_t(height) + 2; }
-    // The film of such an array, its half scales 1. Throws std::invalid_argument for an array
-    // of another size.
-    static Film fromAdditive(int width, int height, std::span<const double> values);
+    // sample counts. Adding the arrays of several films gives the array of their pooled film,
+    // whose halves are the films' normalised halves averaged with weights by their samples (for
+    // unit half scales, the sums of the samples and of their counts). rewriteAdditive passes
+    // them, in order, a block of at most blockSize at a time, to `combine`, and makes the film
+    // the one of what `combine` leaves in the blocks (its half scales 1): no copy of the whole
+    // film is ever made.
+    void rewriteAdditive(size_t blockSize, const std::function<void(std::span<double>)>& combine);
 
     // The combined estimate (mean of all samples).
     Image image() const;

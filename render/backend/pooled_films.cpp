@@ -5,13 +5,11 @@
 namespace lucerna {
 
 void poolFilms(ProgressiveBackend& backend, ProcessGroup& group) {
-    std::vector<Film> pooled;
-    for (const Film* film : backend.films()) {
-        std::vector<double> values = film->additive();
-        group.sumToRoot(values);
-        if (group.rank() == 0) pooled.push_back(Film::fromAdditive(film->width(), film->height(), values));
-    }
-    if (group.rank() == 0) backend.adoptFilms(std::move(pooled));
+    // Blocks of 4 Mi values (32 MB): the film is pooled in place, never copied whole.
+    constexpr size_t kBlock = size_t(1) << 22;
+    backend.rewriteFilms([&](Film& film) {
+        film.rewriteAdditive(kBlock, [&](std::span<double> block) { group.sumToRoot(block); });
+    });
 }
 
 uint64_t processSeed(uint64_t seed, int rank) { return rank == 0 ? seed : hashSeed(seed, uint64_t(rank), 0x72616e6b); }

@@ -11,9 +11,9 @@
 
 namespace lucerna {
 
-// Collective: every process calls it once its passes are done. On rank 0 the backend then adopts
-// the pooled films (ProgressiveBackend::adoptFilms), so that its frame is the whole run's; the
-// other processes' backends keep their own.
+// Collective: every process calls it once its passes are done. On rank 0 the backend's films are
+// then the pooled ones (ProgressiveBackend::rewriteFilms), so that its frame is the whole run's;
+// the other processes' films stay their own (with unit half scales).
 void poolFilms(ProgressiveBackend& backend, ProcessGroup& group);
 
 // The seed of a process's own Metropolis chains: the render's seed on rank 0 (so that one rank

@@ -18,7 +18,7 @@ namespace lucerna {
 class TracingBackend : public ProgressiveBackend {
 public:
     const Film& film() const override { return *film_; }
-    void adoptFilms(std::vector<Film> pooled) override { film_ = std::make_unique<Film>(std::move(pooled.at(0))); }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
 
 protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.

@@ -81,7 +81,7 @@ public:
     }
 
     const Film& film() const override { return *film_; }
-    void adoptFilms(std::vector<Film> pooled) override { film_ = std::make_unique<Film>(std::move(pooled.at(0))); }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
 
     std::map<std::string, std::string> diagnostics() const override {
         auto d = lastTimings_;

@@ -40,14 +40,8 @@ public:
 
     const Film& film() const override { return combined_; }
 
-    std::vector<const Film*> films() const override {
-        std::vector<const Film*> films;
-        for (const auto& layer : layers_) films.push_back(&layer->film());
-        return films;
-    }
-
-    void adoptFilms(std::vector<Film> pooled) override {
-        for (size_t g = 0; g < layers_.size(); ++g) layers_[g]->adoptFilms({std::move(pooled.at(g))});
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override {
+        for (auto& layer : layers_) layer->rewriteFilms(rewrite);
         combine();
     }
 
