@@ -10,6 +10,7 @@
 #include "render/backend/film.h"
 #include "render/backend/light_layers/layered_backend.h"
 #include "render/backend/pass_loop.h"
+#include "render/backend/pooled_films.h"
 #include "render/display/display.h"
 #include "render/engine/backend_table.h"
 #include "render/photometry/illuminance_layer.h"
@@ -19,6 +20,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
+#include <cstdlib>
+#include <functional>
 #include <csignal>
 #include <cstdio>
 #include <iostream>
@@ -114,49 +118,124 @@ std::string tooLargeForMemory(int width, int height) {
     return buf;
 }
 
-int renderImpl(const std::vector<std::string>& args) {
-    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
-    exitOnInterrupt("render interrupted; no file written\n");
-    RenderArgs r = parseRenderArgs(args);
-    checkOutputPath(r.output);
-    LoadReport report;
-    const SceneSnapshot scene = std::make_shared<const Scene>(loadOrThrow(r.scene, &report));
-    for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+// What a render needs once its arguments, scene and backend are known.
+struct RenderSetup {
+    RenderArgs r;
+    SceneSnapshot scene;
+    std::string backendName;
+    const BackendInfo* info = nullptr;
+    std::unique_ptr<ProgressiveBackend> backend;
+    int width = 0, height = 0;
+    std::optional<GridMethod> illuminanceMethod;
+};
 
-    std::string backendName = r.backend;
+// Everything that can fail on bad input before any work. Of a distributed render, every rank
+// does this (each loads the scene and makes its backend); rank 0 alone prints what a single
+// process prints and checks the output path (it alone writes).
+RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup* processes) {
+    const int rank = rankOf(processes);
+    RenderSetup s;
+    s.r = parseRenderArgs(args);
+    RenderArgs& r = s.r;
+    if (rank == 0) checkOutputPath(r.output);
+    LoadReport report;
+    s.scene = std::make_shared<const Scene>(loadOrThrow(r.scene, &report));
+    if (rank == 0)
+        for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+
+    s.backendName = r.backend;
     std::string autoReason;
-    if (backendName == "auto") {
-        const AutoChoice choice = chooseAutoBackend(*scene);
+    if (s.backendName == "auto") {
+        const AutoChoice choice = chooseAutoBackend(*s.scene);
         autoReason = choice.reason;
-        backendName = choice.backend;
+        s.backendName = choice.backend;
     }
-    const BackendInfo* info = findBackend(backendName);
-    if (!info) {
+    s.info = findBackend(s.backendName);
+    if (!s.info) {
         std::string names = "auto";
         for (const BackendInfo& b : backendTable()) names += ", " + std::string(b.name);
         throw UsageError("unknown backend '" + r.backend + "' (available: " + names + ")");
     }
-    std::unique_ptr<ProgressiveBackend> backend;
     try {
         // auto passes the options to whichever backend it picks: any backend's are fine.
-        std::vector<const BackendInfo*> readers{info};
+        std::vector<const BackendInfo*> readers{s.info};
         if (r.backend == "auto")
             for (const BackendInfo& b : backendTable()) readers.push_back(&b);
         requireKnownOptions(r.settings.options, readers);
-        backend = (r.layers & kLightLayers) ? makeLayeredBackend(info->make, scene, r.settings)
-                                            : info->make(scene, r.settings);
+        // Of a distributed render, the Metropolis backends run chains of their own on each rank.
+        RenderSettings settings = r.settings;
+        if (s.info->share == ProcessShare::OwnChains) settings.seed = processSeed(r.settings.seed, rank);
+        s.backend = (r.layers & kLightLayers) ? makeLayeredBackend(s.info->make, s.scene, settings)
+                                              : s.info->make(s.scene, settings);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    const int width = r.settings.width ? r.settings.width : scene->camera.width;
-    const int height = r.settings.height ? r.settings.height : scene->camera.height;
+    s.width = r.settings.width ? r.settings.width : s.scene->camera.width;
+    s.height = r.settings.height ? r.settings.height : s.scene->camera.height;
     const double pages = double(::sysconf(_SC_PHYS_PAGES)), pageSize = double(::sysconf(_SC_PAGESIZE));
-    if (pages > 0 && pageSize > 0 && Film::bytes(width, height) > pages * pageSize)
-        throw UsageError(tooLargeForMemory(width, height));
-    if (!autoReason.empty()) std::cerr << "auto: " << autoReason << "\n";
-    const std::optional<GridMethod> illuminanceMethod = gridMethodFromName(backendName);
-    if ((r.layers & kIlluminanceLayer) && !illuminanceMethod)
-        throw UsageError("--layers illuminance: backend " + backendName + " has no illuminance estimator");
+    if (pages > 0 && pageSize > 0 && Film::bytes(s.width, s.height) > pages * pageSize)
+        throw UsageError(tooLargeForMemory(s.width, s.height));
+    if (!autoReason.empty() && rank == 0) std::cerr << "auto: " << autoReason << "\n";
+    s.illuminanceMethod = gridMethodFromName(s.backendName);
+    if ((r.layers & kIlluminanceLayer) && !s.illuminanceMethod)
+        throw UsageError("--layers illuminance: backend " + s.backendName + " has no illuminance estimator");
+    return s;
+}
+
+// A test's fault (tests/test_mpi.cpp): with LUCERNA_TEST_ABORT_RANK=N in the environment, rank N
+// of a distributed render aborts after its first pass, as a node that dies would.
+std::function<void(int)> testFault(const ProcessGroup* processes) {
+    const char* rank = std::getenv("LUCERNA_TEST_ABORT_RANK");
+    if (!processes || !rank || std::to_string(processes->rank()) != rank) return {};
+    return [](int) {
+        std::fprintf(stderr, "lucerna: LUCERNA_TEST_ABORT_RANK: rank %s aborts\n", std::getenv("LUCERNA_TEST_ABORT_RANK"));
+        std::abort();
+    };
+}
+
+// After every rank's passes: their films pooled on rank 0 (render/backend/pooled_films.h), and
+// rank 0's frame remade from them with the figures of the whole run. Collective.
+void poolDistributedRender(RenderSetup& s, ProcessGroup& processes, RenderFrame& frame, std::vector<float>& illuminance) {
+    // Every rank's render time and passes, so that the header tells the whole run.
+    const double mine[2] = {frame.seconds, double(frame.passes)};
+    const std::vector<double> all = processes.allGather(mine);
+    double seconds = 0, passes = 0;
+    std::string rankPasses;  // "4 4 4": how the passes were shared
+    for (int r = 0; r < processes.size(); ++r) {
+        seconds = std::max(seconds, all[size_t(2 * r)]);
+        passes += all[size_t(2 * r + 1)];
+        rankPasses += (r ? " " : "") + std::to_string(int(all[size_t(2 * r + 1)]));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    poolFilms(*s.backend, processes);
+    if (s.r.layers & kIlluminanceLayer) {
+        std::vector<double> lux(illuminance.begin(), illuminance.end());  // each rank's rows, 0 elsewhere
+        processes.sumToRoot(lux);
+        std::copy(lux.begin(), lux.end(), illuminance.begin());
+    }
+    const double reduction = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (processes.rank() != 0) return;
+    frame = makeRenderFrame(*s.backend, s.backendName, s.r.settings, seconds, int(passes));
+    frame.image.attributes["lucerna:ranks"] = std::to_string(processes.size());
+    frame.image.attributes["lucerna:rank_passes"] = rankPasses;
+    frame.image.attributes["lucerna:reduction_seconds"] = formatNumber(reduction, 4);
+}
+
+int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
+    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
+    exitOnInterrupt("render interrupted; no file written\n");
+    const int rank = rankOf(processes);
+    std::optional<RenderSetup> setup;
+    std::exception_ptr failure;
+    try {
+        setup = setUpRender(args, processes);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);  // every rank leaves, or none
+    RenderSetup& s = *setup;
+    const RenderArgs& r = s.r;
+    const std::string& backendName = s.backendName;
 
     catchInterrupts();
     TaskSystem tasks(r.threads);
@@ -167,49 +246,74 @@ int renderImpl(const std::vector<std::string>& args) {
     bool stoppedEarly = false;
     PassLoopOptions loop;
     if (r.saveOnInterrupt) loop.finishEarly = [&stoppedEarly] { return stoppedEarly = interrupted(); };
+    loop.shareIndex = rank;
+    loop.shareCount = sizeOf(processes);
+    loop.globalPassIndices = s.info->share == ProcessShare::DisjointPasses;
+    loop.afterPass = testFault(processes);
     auto job = tasks.submit([&](TaskContext& ctx) {
-        backend->prepare(ctx);
+        s.backend->prepare(ctx);
         if (ctx.isCancelled()) return;
-        RenderFrame frame = runProgressive(*backend, backendName, r.settings, ctx, nullptr, loop);
-        if (ctx.isCancelled() || (frame.passes == 0 && interrupted())) return;  // nothing converged to save
+        RenderFrame frame = runProgressive(*s.backend, backendName, r.settings, ctx, nullptr, loop);
+        if (ctx.isCancelled() || (frame.passes == 0 && interrupted() && !processes)) return;  // nothing converged to save
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
-            // By the render's own backend's machinery (illuminance_layer.h).
-            const RenderScene compiled(withoutLightsSwitchedOff(scene), frame.image.width, frame.image.height);
-            illuminance = traceIlluminanceLayer(compiled, *illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx,
-                                                r.settings.options);
+            // By the render's own backend's machinery (illuminance_layer.h); rows dealt to ranks.
+            const RenderScene compiled(withoutLightsSwitchedOff(s.scene), frame.image.width, frame.image.height);
+            illuminance = traceIlluminanceLayer(compiled, *s.illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx,
+                                                r.settings.options, RowShare{rank, sizeOf(processes)});
             if (ctx.isCancelled()) return;
         }
         result = std::move(frame);
     });
+    failure = nullptr;
     try {
         // With --save-on-interrupt the first Ctrl-C is the pass loop's (it finishes), a second
         // one cancels.
-        waitShowingProgress(*job, backendName, r.saveOnInterrupt ? 2 : 1);
+        waitShowingProgress(*job, backendName, r.saveOnInterrupt ? 2 : 1,
+                            !processes ? ProgressLines::TerminalOnly : rank == 0 ? ProgressLines::Also : ProgressLines::Never);
     } catch (const std::bad_alloc&) {
-        throw UsageError(tooLargeForMemory(width, height));
+        failure = std::make_exception_ptr(UsageError(tooLargeForMemory(s.width, s.height)));
+    } catch (...) {
+        failure = std::current_exception();
     }
-    if ((interrupted() && !r.saveOnInterrupt) || !result) {
-        std::cerr << "render interrupted; no file written\n";
+    agreeOnOutcome(processes, failure);
+    // Interrupted (mpirun passes a Ctrl-C on to every rank): no rank writes unless all saved.
+    bool stopped = (interrupted() && !r.saveOnInterrupt) || !result;
+    if (processes && processes->size() > 1) {
+        const double mine = stopped ? 1.0 : 0.0;
+        for (double theirs : processes->allGather(std::span(&mine, 1))) stopped = stopped || theirs > 0;
+    }
+    if (stopped) {
+        if (rank == 0) std::cerr << "render interrupted; no file written\n";
         return 130;
+    }
+    if (processes) {  // one rank too, so that its header says so
+        try {
+            poolDistributedRender(s, *processes, *result, illuminance);
+        } catch (const std::bad_alloc&) {
+            throw UsageError(tooLargeForMemory(s.width, s.height));
+        }
+        if (rank != 0) return stoppedEarly ? 130 : 0;  // rank 0 writes
     }
     const bool savedEarly = stoppedEarly;
     if (savedEarly)
         std::fprintf(stderr, "render interrupted after %d passes; saving what converged so far\n", result->passes);
     // From here on the image is complete: a Ctrl-C during the write is ignored (README).
     try {
-        if (r.layers & kAllLayers) addSurfaceLayers(result->image, scene, r.layers);
+        if (r.layers & kAllLayers) addSurfaceLayers(result->image, s.scene, r.layers);
         if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
         if (r.png) writePngPicture(result->image, r.output, 0.0f);
         else writeExr(r.output, result->image);
     } catch (const std::bad_alloc&) {
-        throw UsageError(tooLargeForMemory(width, height));
+        throw UsageError(tooLargeForMemory(s.width, s.height));
     } catch (const ImageError& e) {
         throw UsageError(e.what());  // the output path was checked, but the disk may be full
     }
-    std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g\n", r.output.c_str(),
+    std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g", r.output.c_str(),
                  backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
                  result->estimatedRelmse);
+    if (processes) std::fprintf(stderr, ", %d ranks", processes->size());
+    std::fprintf(stderr, "\n");
     // What a backend gave up to fit the machine (the preview's shadow maps), one line each.
     const std::string prefix = "lucerna:", suffix = ":degradation";  // lucerna:BACKEND:degradation
     for (const auto& [key, value] : result->image.attributes)
@@ -363,7 +467,9 @@ int convertImpl(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int render(const std::vector<std::string>& args) { return runCommand(renderImpl, args); }
+int render(const std::vector<std::string>& args, ProcessGroup* processes) {
+    return runCommand([&] { return renderImpl(args, processes); });
+}
 int compare(const std::vector<std::string>& args) { return runCommand(compareImpl, args); }
 int info(const std::vector<std::string>& args) { return runCommand(infoImpl, args); }
 int convert(const std::vector<std::string>& args) { return runCommand(convertImpl, args); }

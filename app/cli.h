@@ -5,9 +5,15 @@
 #include <string>
 #include <vector>
 
+namespace lucerna {
+class ProcessGroup;
+}
+
 namespace lucerna::cli {
 
-int render(const std::vector<std::string>& args);
+// Under mpirun (app/mpi_session.h), `processes` are the ranks that share the render
+// (render/backend/pooled_films.h); nullptr: this process alone.
+int render(const std::vector<std::string>& args, ProcessGroup* processes = nullptr);
 int compare(const std::vector<std::string>& args);
 int info(const std::vector<std::string>& args);
 // convert IN.exr OUT.png [--exposure STOPS]: what the screen would show (sRGB).

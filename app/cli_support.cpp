@@ -1,5 +1,6 @@
 #include "app/cli_support.h"
 
+#include "core/process_group.h"
 #include "core/task_system.h"
 
 #include <chrono>
@@ -61,18 +62,21 @@ std::string formatSeconds(double s) {
     return buf;
 }
 
-void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter) {
-    const bool tty = isatty(STDERR_FILENO);
+void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter, ProgressLines lines) {
+    const bool tty = lines != ProgressLines::Never && isatty(STDERR_FILENO);
+    const bool everyTenSeconds = !tty && lines == ProgressLines::Also;
     const auto start = std::chrono::steady_clock::now();
+    double lastLine = 0;
     while (!job.isFinished()) {
         std::this_thread::sleep_for(std::chrono::milliseconds(100));
         if (interruptCount() >= cancelAfter) job.cancel();
-        if (tty) {
-            const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        if (tty || (everyTenSeconds && t - lastLine >= 10)) {
             const double p = job.progress();
             const std::string left = p > 0.01 ? formatSeconds(t * (1.0 - p) / p) + " left" : "estimating";
-            std::fprintf(stderr, "\r%s: %5.1f%%  %s elapsed, %s   ", label.c_str(), 100.0 * p,
-                         formatSeconds(t).c_str(), left.c_str());
+            std::fprintf(stderr, "%s%s: %5.1f%%  %s elapsed, %s%s", tty ? "\r" : "", label.c_str(), 100.0 * p,
+                         formatSeconds(t).c_str(), left.c_str(), tty ? "   " : "\n");
+            lastLine = t;
         }
     }
     job.wait();
@@ -87,9 +91,35 @@ void addBackendOption(const std::string& nameValue, std::map<std::string, std::s
     options[nameValue.substr(0, eq)] = nameValue.substr(eq + 1);
 }
 
-int runCommand(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args) {
+void agreeOnOutcome(ProcessGroup* processes, std::exception_ptr error) {
+    if (!processes || processes->size() == 1) {
+        if (error) std::rethrow_exception(error);
+        return;
+    }
+    const double mine = error ? 1.0 : 0.0;
+    const std::vector<double> failed = processes->allGather(std::span(&mine, 1));
+    int speaker = -1;  // rank 0 if it failed, else the lowest failing rank
+    for (int r = 0; r < int(failed.size()) && speaker < 0; ++r)
+        if (failed[size_t(r)] > 0) speaker = r;
+    if (speaker < 0) return;
+    if (processes->rank() != speaker) throw QuietExit{2};
+    if (speaker == 0) std::rethrow_exception(error);
     try {
-        return impl(args);
+        std::rethrow_exception(error);
+    } catch (const UsageError& e) {
+        throw UsageError("rank " + std::to_string(speaker) + ": " + e.what());
+    }
+}
+
+int runCommand(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args) {
+    return runCommand([&] { return impl(args); });
+}
+
+int runCommand(const std::function<int()>& impl) {
+    try {
+        return impl();
+    } catch (const QuietExit& e) {
+        return e.status;
     } catch (const UsageError& e) {
         std::cerr << "lucerna: " << e.what() << "\n";
         return 2;

@@ -3,6 +3,8 @@
 // for options, the Ctrl-C flag, and the wrapper that turns exceptions into exit statuses.
 
 #include <charconv>
+#include <exception>
+#include <functional>
 #include <memory>
 #include <map>
 #include <stdexcept>
@@ -55,6 +57,7 @@ std::string formatSeconds(double seconds);
 
 namespace lucerna {
 class TaskHandle;
+class ProcessGroup;
 }
 
 namespace lucerna::cli {
@@ -62,10 +65,30 @@ namespace lucerna::cli {
 // Waits for a job, cancelling it once `cancelAfter` interrupts have come (a first Ctrl-C may be
 // the job's own to answer), and shows "LABEL: 42.0%  1.2 s elapsed, 3.4 s left"
 // on standard error while it runs when that is a terminal. Rethrows what the job threw.
-void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter = 1);
+// How: on a terminal, one line redrawn; ProgressLines::Also adds a line every 10 s where
+// standard error is no terminal (rank 0 of a distributed run, whose output mpirun forwards);
+// ProgressLines::Never shows nothing (the other ranks).
+enum class ProgressLines { TerminalOnly, Also, Never };
+void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter = 1,
+                         ProgressLines lines = ProgressLines::TerminalOnly);
+
+// A process of a distributed command that leaves without a word (agreeOnOutcome): runCommand
+// returns `status` and prints nothing.
+struct QuietExit {
+    int status = 2;
+};
+
+// The processes of a distributed command agree on a phase that may fail (the setup: arguments,
+// scene, backend; or the work), so that none is left waiting for another in MPI. Each calls this
+// with what its phase threw, or nothing. When any failed, every process leaves: one speaks, by
+// rethrowing its error (rank 0's own; when rank 0 is fine, the lowest failing rank's, its
+// message prefixed "rank N: "), the others throw QuietExit. Alone (nullptr), it rethrows the
+// error if there is one.
+void agreeOnOutcome(ProcessGroup* processes, std::exception_ptr error);
 
 // Runs a command: UsageError gives "lucerna: MESSAGE" and 2, any other exception "lucerna:
-// internal error: ..." and 1.
+// internal error: ..." and 1, QuietExit its status and nothing.
 int runCommand(int (*impl)(const std::vector<std::string>&), const std::vector<std::string>& args);
+int runCommand(const std::function<int()>& impl);
 
 }  // namespace lucerna::cli

@@ -3,6 +3,7 @@
 
 #include "core/atomic_file.h"
 #include "core/calculation_grid.h"
+#include "core/process_group.h"
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
 #include "render/backend/backend_options.h"
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <iostream>
 #include <optional>
+#include <span>
 
 namespace lucerna::cli {
 
@@ -98,11 +100,18 @@ void printTable(const GridLayout& layout, const GridResult& r) {
     }
 }
 
-int gridImpl(const std::vector<std::string>& args) {
-    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
-    exitOnInterrupt("grid interrupted; no file written\n");
+// What a grid needs once its arguments and scene are known.
+struct GridSetup {
+    GridArgs g;
+    SceneSnapshot scene;
+    GridLayout layout;
+};
+
+// Everything that can fail on bad input before any work; of a distributed grid, every rank does
+// it, and rank 0 alone checks the CSV's path (it alone writes).
+GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* processes) {
     GridArgs g = parseGridArgs(args);
-    if (!g.csv.empty()) checkOutputPath(g.csv);
+    if (!g.csv.empty() && rankOf(processes) == 0) checkOutputPath(g.csv);
     Scene loaded;
     try {
         loaded = loadScene(g.scene);
@@ -157,6 +166,25 @@ int gridImpl(const std::vector<std::string>& args) {
         throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
                          " takes no backend options but light_sampler (path and ir are set with --samples and --vpl-paths)");
     }
+    return {std::move(g), scene, std::move(layout)};
+}
+
+int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
+    // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
+    exitOnInterrupt("grid interrupted; no file written\n");
+    std::optional<GridSetup> setup;
+    std::exception_ptr failure;
+    try {
+        setup = setUpGrid(args, processes);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);  // every rank leaves, or none
+    GridArgs& g = setup->g;
+    const SceneSnapshot& scene = setup->scene;
+    const GridLayout& layout = setup->layout;
+    g.settings.processes = processes;
+    const bool speaks = rankOf(processes) == 0;  // of a distributed grid, rank 0 prints and writes
 
     catchInterrupts();
     TaskSystem tasks(g.threads);
@@ -164,15 +192,28 @@ int gridImpl(const std::vector<std::string>& args) {
     auto job = tasks.submit([&](TaskContext& ctx) {
         const RenderScene renderScene(withoutLightsSwitchedOff(scene), 16, 16, nullptr,
                                       g.settings.lightSelection);  // the camera is unused
-        if (ctx.isCancelled()) return;
+        if (ctx.isCancelled() && !processes) return;  // distributed, every rank goes to the exchanges
         GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);
     });
-    waitShowingProgress(*job, std::string("grid ") + (g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method)));
-    if (interrupted() || !result) {
-        std::cerr << "grid interrupted; no file written\n";
+    failure = nullptr;
+    try {
+        waitShowingProgress(*job, std::string("grid ") + (g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method)),
+                            1, !processes ? ProgressLines::TerminalOnly : speaks ? ProgressLines::Also : ProgressLines::Never);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);
+    bool stopped = interrupted() || !result;
+    if (sizeOf(processes) > 1) {  // every rank stopped with the others (shareRound), but say so together
+        const double mine = stopped ? 1.0 : 0.0;
+        for (double theirs : processes->allGather(std::span(&mine, 1))) stopped = stopped || theirs > 0;
+    }
+    if (stopped) {
+        if (speaks) std::cerr << "grid interrupted; no file written\n";
         return 130;
     }
+    if (!speaks) return 0;
 
     const GridResult& r = *result;
     const GridStatistics s = gridStatistics(r.lux, r.insideGeometry);
@@ -204,6 +245,8 @@ int gridImpl(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int grid(const std::vector<std::string>& args) { return runCommand(gridImpl, args); }
+int grid(const std::vector<std::string>& args, ProcessGroup* processes) {
+    return runCommand([&] { return gridImpl(args, processes); });
+}
 
 }  // namespace lucerna::cli

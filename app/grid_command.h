@@ -5,6 +5,10 @@
 #include <string>
 #include <vector>
 
+namespace lucerna {
+class ProcessGroup;
+}
+
 namespace lucerna::cli {
 
 // grid SCENE.json (--work-plane HEIGHT_M [--border M] | --corner X,Y,Z --u X,Y,Z --v X,Y,Z)
@@ -12,6 +16,8 @@ namespace lucerna::cli {
 //      [--samples N] [--vpl-paths N] [--threads N] [--name NAME] [--csv OUT.csv]
 // Returns the exit status of SPEC.md section 2 (2 with one line for bad usage or input, 130 when
 // interrupted, with no file written).
-int grid(const std::vector<std::string>& args);
+// Under mpirun (app/mpi_session.h), `processes` are the ranks that share the grid
+// (GridSettings::processes); nullptr: this process alone.
+int grid(const std::vector<std::string>& args, ProcessGroup* processes = nullptr);
 
 }  // namespace lucerna::cli

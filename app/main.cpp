@@ -4,6 +4,7 @@
 #include "app/cli.h"
 #include "app/grid_command.h"
 #include "app/import_command.h"
+#include "app/mpi_session.h"
 #include "core/resources.h"
 #include "ui/autosave.h"
 #include "ui/main_window.h"
@@ -11,7 +12,9 @@
 #include <QApplication>
 #include <QCoreApplication>
 
+#include <cstdio>
 #include <cstring>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,12 +28,23 @@ int main(int argc, char** argv) {
         const std::vector<std::string> rest(argv + 2, argv + argc);
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
             command == "bench" || command == "grid" || command == "import") {
+            // Started by mpirun: render and grid share their work among the ranks (MPI set up
+            // before Qt, finalised after it).
+            std::unique_ptr<lucerna::ProcessGroup> processes;
+            if (command == "render" || command == "grid") {
+                try {
+                    processes = lucerna::startMpiSession(argc, argv);
+                } catch (const std::exception& e) {
+                    std::fprintf(stderr, "lucerna: %s\n", e.what());
+                    return 1;
+                }
+            }
             QCoreApplication app(argc, argv);  // Qt's file and image helpers; no display needed
-            if (command == "render") return lucerna::cli::render(rest);
+            if (command == "render") return lucerna::cli::render(rest, processes.get());
+            if (command == "grid") return lucerna::cli::grid(rest, processes.get());
             if (command == "compare") return lucerna::cli::compare(rest);
             if (command == "convert") return lucerna::cli::convert(rest);
             if (command == "bench") return lucerna::cli::bench(rest);
-            if (command == "grid") return lucerna::cli::grid(rest);
             if (command == "import") return lucerna::cli::importModelCommand(rest);
             return lucerna::cli::info(rest);
         }

@@ -9,9 +9,11 @@
 #include "render/backend/film.h"
 #include "render/trace/sensor.h"
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace lucerna {
 
@@ -46,6 +48,13 @@ public:
     virtual std::map<std::string, std::string> diagnostics() const { return {}; }
     // Adds named channels of the film's combined image to `image` (per-light layers), if any.
     virtual void addImageLayers(Image& image) const { (void)image; }
+
+    // Distributed renders (render/backend/pooled_films.h), once the passes are done: calls
+    // `rewrite` on each film the frame is made of, in a fixed order (the film, or each light
+    // layer's), then remakes what derives from them (a layered backend's sum). With the films
+    // pooled from every process, film(), diagnostics() and addImageLayers() show the whole run
+    // (diagnostics that count a backend's own chains still count this process's).
+    virtual void rewriteFilms(const std::function<void(Film&)>& rewrite) = 0;
 };
 
 // Makes a backend for a scene; the backend prepares nothing until prepare().

@@ -1,5 +1,6 @@
 #include "render/backend/film.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -30,6 +31,28 @@ Film Film::sum(std::span<const Film* const> films) {
         }
     }
     return out;
+}
+
+void Film::rewriteAdditive(size_t blockSize, const std::function<void(std::span<double>)>& combine) {
+    const size_t values = 3 * sums_[0].size(), total = 2 * values + 2;  // two halves, two counts
+    const std::array<double, 2> scale = scale_;  // every block is read with the film's own scales
+    const auto at = [&](size_t k) -> double& {
+        if (k >= 2 * values) return samples_[k - 2 * values];
+        const size_t h = k / values, i = k % values;
+        return sums_[h][i / 3][i % 3];
+    };
+    std::vector<double> block;
+    for (size_t begin = 0; begin < total; begin += std::max<size_t>(1, blockSize)) {
+        const size_t n = std::min(std::max<size_t>(1, blockSize), total - begin);
+        block.resize(n);
+        for (size_t k = 0; k < n; ++k) {
+            const size_t index = begin + k;
+            block[k] = index < 2 * values ? scale[index / values] * at(index) : at(index);
+        }
+        combine(block);
+        for (size_t k = 0; k < n; ++k) at(begin + k) = block[k];
+    }
+    scale_ = {1.0, 1.0};
 }
 
 Image Film::image() const {

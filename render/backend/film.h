@@ -6,6 +6,7 @@
 #include "core/image.h"
 
 #include <array>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -63,6 +64,16 @@ public:
     // film per light (rendering is linear in the lights). Films of one size; an empty list gives
     // an empty 0 x 0 film.
     static Film sum(std::span<const Film* const> films);
+
+    // The film as numbers that add (distributed renders, render/backend/pooled_films.h): each
+    // half's sums times its half scale, pixel by pixel and channel by channel, then the two
+    // sample counts. Adding the arrays of several films gives the array of their pooled film,
+    // whose halves are the films' normalised halves averaged with weights by their samples (for
+    // unit half scales, the sums of the samples and of their counts). rewriteAdditive passes
+    // them, in order, a block of at most blockSize at a time, to `combine`, and makes the film
+    // the one of what `combine` leaves in the blocks (its half scales 1): no copy of the whole
+    // film is ever made.
+    void rewriteAdditive(size_t blockSize, const std::function<void(std::span<double>)>& combine);
 
     // The combined estimate (mean of all samples).
     Image image() const;

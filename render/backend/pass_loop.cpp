@@ -33,8 +33,13 @@ RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view 
 RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
                            TaskContext& ctx, Latest<RenderFrame>* latest, const PassLoopOptions& options) {
     using Clock = std::chrono::steady_clock;
-    const int targetPasses =
+    const int renderPasses =
         options.openEnded ? 0 : (settings.spp > 0 ? settings.spp : (settings.seconds > 0 ? 0 : 64));
+    const int shareCount = std::max(1, options.shareCount), shareIndex = std::clamp(options.shareIndex, 0, shareCount - 1);
+    // This process's passes: indices shareIndex, shareIndex + shareCount, ... below renderPasses.
+    const int targetPasses =
+        renderPasses > 0 ? std::max(0, (renderPasses - shareIndex + shareCount - 1) / shareCount) : 0;
+    const bool countedPasses = renderPasses > 0;  // else the time budget decides
     const double budget = settings.seconds;
     const auto start = Clock::now();
     double heldSeconds = 0;
@@ -63,18 +68,19 @@ RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backend
         }
         if (!options.openEnded) {
             if (options.finishEarly && options.finishEarly()) break;
-            if (targetPasses > 0 && passes >= targetPasses) break;
-            if (targetPasses == 0 && elapsed() >= budget) break;
+            if (countedPasses && passes >= targetPasses) break;
+            if (!countedPasses && elapsed() >= budget) break;
         }
-        backend.renderPass(ctx, passes);
+        backend.renderPass(ctx, options.globalPassIndices ? shareIndex + passes * shareCount : passes);
         if (ctx.isCancelled()) break;
         ++passes;
+        if (options.afterPass) options.afterPass(passes);
         const double t = elapsed();
         if (!options.openEnded) {
-            double fraction = targetPasses > 0 ? double(passes) / targetPasses : t / budget;
-            if (targetPasses > 0 && budget > 0) fraction = std::max(fraction, t / budget);
+            double fraction = countedPasses ? double(passes) / std::max(1, targetPasses) : t / budget;
+            if (countedPasses && budget > 0) fraction = std::max(fraction, t / budget);
             ctx.setProgress(std::min(1.0, fraction));
-            if (targetPasses > 0 && budget > 0 && t >= budget) break;  // both given: whichever comes first
+            if (countedPasses && budget > 0 && t >= budget) break;  // both given: whichever comes first
         }
         if (latest && (passes <= options.eagerPasses || t - lastPublish >= options.publishSeconds)) {
             latest->publish(std::make_shared<const RenderFrame>(makeFrame(passes)));

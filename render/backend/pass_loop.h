@@ -43,9 +43,20 @@ struct PassLoopOptions {
     // render/trace/surface_layers.h), traced once from this scene at the film's size, so that the
     // lux view can divide by it (render/display/display.h, pixelIlluminance).
     SceneSnapshot albedoScene;
+    // A share of a render run by several processes (a distributed render, pooled_films.h): of the
+    // render's passes 0, 1, 2, ... (the settings' spp counts them all), this process runs those
+    // whose index modulo shareCount is shareIndex. With globalPassIndices the backend gets those
+    // indices, so that the processes' passes are disjoint passes of the one estimate a single
+    // process would make (path, bdpt, ir, preview); without, it numbers its own passes 0, 1, ...
+    // (the Metropolis backends: each process its own chains, from its own seed).
+    int shareIndex = 0, shareCount = 1;
+    bool globalPassIndices = true;
+    // Called after each complete pass with the number of passes this process has done.
+    std::function<void(int passes)> afterPass;
 };
 
-// Runs passes of a prepared backend. With neither spp nor seconds set, 64 passes (SPEC.md).
+// Runs passes of a prepared backend. With neither spp nor seconds set, 64 passes (SPEC.md), of
+// which a share (options.shareIndex) runs here.
 // Render time is the wall-clock time since the call less the held time. Sets the context's
 // progress. Returns the final frame (complete passes only; empty when open-ended).
 RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,

@@ -11,12 +11,14 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace lucerna {
 
 class TracingBackend : public ProgressiveBackend {
 public:
     const Film& film() const override { return *film_; }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
 
 protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.

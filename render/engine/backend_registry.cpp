@@ -39,9 +39,9 @@ const BackendInfo kBackends[] = {
     {"path", "unidirectional path tracing with next-event estimation and MIS", &makePathBackend, kPathOptions},
     {"bdpt", "bidirectional path tracing: every connection strategy, light-tracing splats, power-heuristic MIS", &makeBdptBackend, kBdptOptions},
     {"ir", "instant radiosity: fresh VPLs per pass, clamped gathering with path-traced bias compensation", &makeIrBackend, kIrOptions},
-    {"mir", "Metropolis instant radiosity: VPLs from a multiple-try Metropolis chain over camera-to-light paths", &makeMirBackend, kMirOptions},
-    {"mlt", "Metropolis light transport: primary-sample-space chains driving the bidirectional sampler", &makeMltBackend, kMltOptions},
-    {"cmlt", "coherent Metropolis light transport: MLT seeds, lens sub-chains of candidates traced as packets, expected-value deposits", &makeCmltBackend, kCmltOptions},
+    {"mir", "Metropolis instant radiosity: VPLs from a multiple-try Metropolis chain over camera-to-light paths", &makeMirBackend, kMirOptions, ProcessShare::OwnChains},
+    {"mlt", "Metropolis light transport: primary-sample-space chains driving the bidirectional sampler", &makeMltBackend, kMltOptions, ProcessShare::OwnChains},
+    {"cmlt", "coherent Metropolis light transport: MLT seeds, lens sub-chains of candidates traced as packets, expected-value deposits", &makeCmltBackend, kCmltOptions, ProcessShare::OwnChains},
     {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend, kPreviewOptions},
 };
 }  // namespace

@@ -11,11 +11,17 @@
 
 namespace lucerna {
 
+// How a render under mpirun shares a backend's work among the processes
+// (render/backend/pooled_films.h): disjoint passes of the one estimate (same seed, pass indices
+// dealt out), or each process its own chains (own seed, own normalisation), pooled by work.
+enum class ProcessShare { DisjointPasses, OwnChains };
+
 struct BackendInfo {
     std::string_view name;
     std::string_view summary;
     BackendFactory make;
     std::span<const std::string_view> options;  // every option key its settings read
+    ProcessShare share = ProcessShare::DisjointPasses;
 };
 
 // Every backend that exists, in the order the UI lists them.

@@ -14,8 +14,6 @@ namespace lucerna {
 GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, TaskContext& ctx,
                                 const std::function<void(const GridResult&)>& onPass, GridResult before) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
     GridResult result = std::move(before);
     if (points.empty()) return result;
 
@@ -25,23 +23,17 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
     options.options = settings.backendOptions;
     PreviewIrradiance preview(scene.snapshot(), previewSettingsFromOptions(options));
 
-    std::vector<BatchMeans> batches(points.size());
-    for (int pass = 0; !ctx.isCancelled(); ++pass) {
+    constexpr size_t kPointsPerBlock = 16;  // shared among processes: blocks of points dealt out
+    runPointPasses(points.size(), 1, settings, ctx, [&](int pass, std::span<double> passLux) {
         const uint64_t passSeed = hashSeed(settings.seed, uint64_t(pass), 0x9e1d);
         preview.regenerate(passSeed);
         Rng rng(passSeed, 0x717e7ULL);
         const V2f jitter = rng.next2D();  // the faces' pixels, box-filtered over the passes
-        std::vector<double> passLux(points.size());
         for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i)
-            passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors.lifted[i], jitter.x, jitter.y))) +
-                         sensors.deltaLux[i];
-        if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
-        for (size_t i = 0; i < points.size(); ++i) batches[i].add(passLux[i]);
-        result.passes = pass + 1;
-        result.samplesPerPoint = result.passes;
-        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
-    }
+            if (ownsBlock(settings.processes, int(i / kPointsPerBlock)))
+                passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors.lifted[i], jitter.x, jitter.y))) +
+                             sensors.deltaLux[i];
+    }, onPass, result);
     return result;
 }
 

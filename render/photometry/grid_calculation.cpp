@@ -35,13 +35,9 @@ namespace {
 GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                   const GridSettings& settings, TaskContext& ctx,
                                   const std::function<void(const GridResult&)>& onPass, GridResult result) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
     const IrradianceEstimator estimator(scene);
     const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
     const int count = int(points.size());
-    std::vector<BatchMeans> batches(points.size());
-    std::vector<double> passMean(points.size());
     const int pointsPerTask = 16;
     const int samples =
         settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;
@@ -53,11 +49,12 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
             deltaE[size_t(i)] = estimator.deltaLightsIrradiance(sensors[size_t(i)]);
     });
 
-    for (int pass = 0; !ctx.isCancelled(); ++pass) {
+    runPointPasses(points.size(), samples, settings, ctx, [&](int pass, std::span<double> passMean) {
         VplSet vpls;
         if (settings.method == GridMethod::Vpl)
             vpls = generateVpls(scene, settings.vplPathsPerPass, hashSeed(settings.seed, uint64_t(pass), 0x9d1));
         ctx.parallelFor(0, tasks, [&](int task) {
+            if (!ownsBlock(settings.processes, task)) return;  // another process's points
             for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
                 const IrradianceSensor& sensor = sensors[size_t(i)];
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
@@ -71,14 +68,7 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
                 passMean[size_t(i)] = sum / samples;
             }
         });
-        if (ctx.isCancelled()) break;  // a partial pass would bias the points it missed
-
-        result.passes = pass + 1;
-        result.samplesPerPoint = static_cast<long long>(result.passes) * samples;
-        for (size_t i = 0; i < points.size(); ++i) batches[i].add(passMean[i]);
-        result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
-        if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) break;
-    }
+    }, onPass, result);
     return result;
 }
 }  // namespace

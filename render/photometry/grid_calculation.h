@@ -18,6 +18,7 @@
 // when every point's error bar is within the target fraction of its value (after a few passes,
 // so that the spread itself is estimated), at the time limit, or when cancelled.
 
+#include "core/process_group.h"
 #include "core/task_system.h"
 #include "render/photometry/irradiance_estimator.h"
 
@@ -58,6 +59,13 @@ struct GridSettings {
     LightSelection lightSelection = kDefaultLightSelection;
     double timeLimitSeconds = 0;   // 0: no limit
     uint64_t seed = 1;
+    // A grid shared among processes (`mpirun -n N lucerna grid`, core/process_group.h): path, ir
+    // and preview deal out blocks of points, bdpt, mir, mlt and cmlt their replicas; after each
+    // round the processes exchange their values, so that every one holds the whole result and
+    // all stop together. Each point's or replica's samples are drawn as one process draws them,
+    // so the values are those of one process. Every process calls computeGridIlluminance;
+    // nullptr: this process alone.
+    ProcessGroup* processes = nullptr;
 };
 
 struct GridResult {

@@ -1,10 +1,12 @@
 #include "render/photometry/illuminance_layer.h"
 
+#include "render/backend/pooled_films.h"
 #include "render/photometry/irradiance_estimator.h"
 #include "render/photometry/sensor_render.h"
 #include "render/preview/headless_backend.h"
 #include "render/vpl/instant_radiosity.h"
 
+#include <algorithm>
 #include <atomic>
 #include <optional>
 
@@ -23,7 +25,7 @@ std::optional<IrradianceSensor> surfaceSeen(const RenderScene& scene, const Ray&
 }
 
 std::vector<float> byEstimator(const RenderScene& scene, GridMethod method, int samplesPerPixel, uint64_t seed,
-                               TaskContext& ctx) {
+                               TaskContext& ctx, RowShare share) {
     const Sensor& camera = scene.camera();
     const int width = camera.width(), height = camera.height();
     std::vector<float> lux(size_t(width) * size_t(height), 0.0f);
@@ -34,6 +36,7 @@ std::vector<float> byEstimator(const RenderScene& scene, GridMethod method, int 
             vpls.push_back(generateVpls(scene, 16, hashSeed(seed, uint64_t(s), 0x9d1)));
     std::atomic<int> rowsDone{0};
     ctx.parallelFor(0, height, [&](int y) {
+        if (!share.owns(y)) return;
         for (int x = 0; x < width; ++x) {
             Rng rng(hashSeed(seed, 0x11c), uint64_t(y) * uint64_t(width) + uint64_t(x));
             double sum = 0;
@@ -47,20 +50,20 @@ std::vector<float> byEstimator(const RenderScene& scene, GridMethod method, int 
             }
             lux[size_t(y) * size_t(width) + size_t(x)] = float(sum / samplesPerPixel);
         }
-        ctx.setProgress(double(++rowsDone) / height);
+        ctx.setProgress(std::min(1.0, double(++rowsDone) * share.count / height));
     });
     return lux;
 }
 
 std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int passes, uint64_t seed,
-                             TaskContext& ctx, const std::map<std::string, std::string>& options) {
+                             TaskContext& ctx, const std::map<std::string, std::string>& options, RowShare share) {
     const Sensor& camera = scene.camera();
     const int width = camera.width(), height = camera.height();
     std::vector<float> lux(size_t(width) * size_t(height), 0.0f);
     std::vector<IrradianceSensor> sensors;
     std::vector<size_t> pixelOf;  // the pixel of each sensor
     for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
+        for (int x = 0; x < width && share.owns(y); ++x) {
             const size_t pixel = size_t(y) * size_t(width) + size_t(x);
             Rng rng(hashSeed(seed, 0x11d), pixel);
             if (const auto s = surfaceSeen(scene, camera.ray(float(x) + 0.5f, float(y) + 0.5f), rng)) {
@@ -69,7 +72,7 @@ std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int pa
             }
         }
     if (sensors.empty()) return lux;
-    SensorRender render(scene, gridMethodName(method), sensors, 1, seed, options);
+    SensorRender render(scene, gridMethodName(method), sensors, 1, processSeed(seed, share.index), options);
     render.prepare(ctx);
     for (int pass = 0; pass < passes && !ctx.isCancelled(); ++pass) {
         render.renderPass(ctx, pass);
@@ -84,17 +87,19 @@ std::vector<float> byBackend(const RenderScene& scene, GridMethod method, int pa
 
 std::vector<float> traceIlluminanceLayer(const RenderScene& scene, GridMethod method, int samplesPerPixel,
                                          uint64_t seed, TaskContext& ctx,
-                                         const std::map<std::string, std::string>& options) {
+                                         const std::map<std::string, std::string>& options, RowShare share) {
+    share.count = std::max(1, share.count);
     if (method == GridMethod::Path || method == GridMethod::Vpl)
-        return byEstimator(scene, method, samplesPerPixel, seed, ctx);
+        return byEstimator(scene, method, samplesPerPixel, seed, ctx, share);
     if (method == GridMethod::Preview) {
+        if (share.index != 0) return std::vector<float>(size_t(scene.camera().width()) * scene.camera().height(), 0.0f);
         RenderSettings settings;
         settings.seed = seed;
         settings.options = options;
         return previewIlluminanceLayer(scene.snapshot(), scene.camera().width(), scene.camera().height(),
                                        previewSettingsFromOptions(settings), samplesPerPixel, seed);
     }
-    return byBackend(scene, method, samplesPerPixel, seed, ctx, options);
+    return byBackend(scene, method, samplesPerPixel, seed, ctx, options, share);
 }
 
 }  // namespace lucerna

@@ -21,6 +21,17 @@
 
 namespace lucerna {
 
+// The rows of the layer one process computes when several share it (a distributed render,
+// render/backend/pooled_films.h): those whose index modulo `count` is `index`; the other rows
+// stay 0, so that the processes' layers add up to the whole. path and ir then give what one
+// process gives (each pixel's estimates depend on the pixel alone); bdpt, mir, mlt and cmlt
+// render each process's sensors from a seed of its own (processSeed); the preview's layer is
+// computed by index 0 alone.
+struct RowShare {
+    int index = 0, count = 1;
+    bool owns(int row) const { return row % count == index; }
+};
+
 // `samplesPerPixel` estimates per pixel (path, ir), passes of the backend (bdpt, mir, mlt,
 // cmlt) or frames (preview), at the RenderScene's camera resolution, row-major from the top-left
 // as Image::pixels; `options` are the backend's (render's --option). Cancellable (the result is
@@ -28,6 +39,7 @@ namespace lucerna {
 // option or in prepare().
 std::vector<float> traceIlluminanceLayer(const RenderScene& scene, GridMethod method, int samplesPerPixel,
                                          uint64_t seed, TaskContext& ctx,
-                                         const std::map<std::string, std::string>& options = {});
+                                         const std::map<std::string, std::string>& options = {},
+                                         RowShare share = {});
 
 }  // namespace lucerna

@@ -81,6 +81,7 @@ public:
     }
 
     const Film& film() const override { return *film_; }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
 
     std::map<std::string, std::string> diagnostics() const override {
         auto d = lastTimings_;

@@ -40,6 +40,11 @@ public:
 
     const Film& film() const override { return combined_; }
 
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override {
+        for (auto& layer : layers_) layer->rewriteFilms(rewrite);
+        combine();
+    }
+
     std::map<std::string, std::string> diagnostics() const override {
         std::map<std::string, std::string> d = layers_.front()->diagnostics();
         d["light_layers"] = std::to_string(groups_.size());
