@@ -37,6 +37,12 @@ private:
     const float* end_;
     std::optional<Rng> padding_;
 };
+
+// The luminance VPL v sends to the camera through importance point x_s (clamped G, visibility).
+double importanceAt(const RenderScene& scene, const Vpl& v, const CameraVertex& point, float maxG) {
+    return double(luminance(point.throughput * vplContribution(scene, v, point.receiver, maxG)));
+}
+
 }  // namespace
 
 int mirPathDimension(const VplOptions& vpl) {
@@ -71,8 +77,7 @@ double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights
     double sum = 0;
     for (const Vpl& v : path.vpls) {
         double c = 0;
-        for (const CameraVertex& cv : points)
-            c += double(luminance(cv.throughput * vplContribution(scene, v, cv.receiver, maxG)));
+        for (const CameraVertex& point : points) c += importanceAt(scene, v, point, maxG);
         c = std::isfinite(c) ? std::max(0.0, c) * perPoint : 0.0;
         path.contribution.push_back(c + floor);
         sum += c + floor;
@@ -90,7 +95,7 @@ double estimateMirImportance(const RenderScene& scene, const LightSampler& light
         double c = 0;
         for (int j = 0; j < perVertex; ++j) {
             const size_t s = std::min(points.size() - 1, size_t(rng.next1D() * float(points.size())));
-            c += double(luminance(points[s].throughput * vplContribution(scene, v, points[s].receiver, maxG)));
+            c += importanceAt(scene, v, points[s], maxG);
         }
         sum += floor + (std::isfinite(c) ? std::max(0.0, c) / double(perVertex) : 0.0);
     }
