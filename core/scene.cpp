@@ -92,6 +92,7 @@ SceneFeatures analyseFeatures(const Scene& scene) {
         case MaterialType::Mirror: f.hasMirror = true; break;
         case MaterialType::Dielectric: f.hasDielectric = true; break;
         case MaterialType::Emitter: f.emitterTriangles += int(count); break;
+        case MaterialType::Glazing: f.hasGlazing = true; break;
         }
     }
     for (const Light& l : scene.lights) {
@@ -101,8 +102,10 @@ SceneFeatures analyseFeatures(const Scene& scene) {
         case LightType::Spot: ++f.spotLights; break;
         case LightType::Directional: ++f.directionalLights; break;
         case LightType::Luminaire: ++f.luminaires; break;
+        case LightType::Sun: f.hasSun = true; break;
         }
     }
+    f.hasSky = scene.sky.has_value();
     return f;
 }
 

@@ -23,7 +23,9 @@ struct Camera {
     bool operator==(const Camera&) const = default;
 };
 
-enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter };
+// Glazing (SPEC.md section 5): a thin pane that light crosses straight, scaled by its
+// transmittance; no ray ever scatters on it.
+enum class MaterialType { Diffuse, Glossy, Mirror, Dielectric, Emitter, Glazing };
 
 struct Material {
     std::string name;
@@ -34,6 +36,7 @@ struct Material {
     Rgbd reflectance{0, 0, 0};  // mirror
     double ior = 1.5;           // dielectric
     Rgbd radiance{0, 0, 0};     // emitter, W sr^-1 m^-2, front face only
+    Rgbd transmittance{1, 1, 1};// glazing, each channel in [0, 1], at every angle
 
     bool operator==(const Material&) const = default;
 };
@@ -89,7 +92,9 @@ struct Object {
     }
 };
 
-enum class LightType { Point, Spot, Directional, Luminaire };
+// Sun: SPEC.md section 5, a disc of uniform radiance at infinity (a delta light when its
+// angular diameter is 0), placed by `direction` or by the site's local `time`.
+enum class LightType { Point, Spot, Directional, Luminaire, Sun };
 
 struct GoniometricDistribution;
 
@@ -113,6 +118,17 @@ struct LuminaireSpec {
     }
 };
 
+// A sun's keys (SPEC.md section 5). Its direction is Light::direction unless `time` is given.
+struct SunSpec {
+    double illuminanceLux = 0;        // direct normal illuminance
+    double angularDiameterDeg = 0.53; // in [0, 5]; 0: a delta light
+    bool angularDiameterGiven = false;// written back only if it was there
+    std::optional<std::string> time;  // "YYYY-MM-DDTHH:MM", local time at the site's utc_offset
+    std::optional<Rgbd> colour;       // normalised to luminance 1; white by default
+
+    bool operator==(const SunSpec&) const = default;
+};
+
 struct Light {
     std::string name;
     LightType type = LightType::Point;
@@ -127,6 +143,8 @@ struct Light {
     std::optional<PhotometricSpec> photometric;
     // Luminaire only (type Luminaire; position, and direction = the nadir, as for a spot).
     std::optional<LuminaireSpec> luminaire;
+    // Sun only (type Sun); `direction` is the direction its light travels when sun->time is absent.
+    std::optional<SunSpec> sun;
     // Additions to the format (README, "Light groups"): the group the light belongs to (empty:
     // none), and whether it is switched on. A light switched off is kept in the scene and the
     // file but renders as if it were not there (withoutLightsSwitchedOff).
@@ -134,6 +152,31 @@ struct Light {
     bool on = true;
 
     bool operator==(const Light&) const = default;
+};
+
+// Where the scene stands on Earth (SPEC.md section 5): what places the sun by local time.
+struct Site {
+    double latitudeDeg = 0;   // north positive
+    double longitudeDeg = 0;  // east positive
+    double utcOffsetHours = 0;
+    V3d north{0, 0, -1};      // horizontal direction of geographic north; east = north x up
+    bool northGiven = false;  // written back only if it was there
+
+    bool operator==(const Site&) const = default;
+};
+
+enum class SkyModelType { Uniform, CieOvercast, CieGeneral };
+
+// The sky of SPEC.md section 5: an emitter at infinity, the ground below the horizon.
+struct Sky {
+    SkyModelType model = SkyModelType::CieOvercast;
+    int cieType = 0;                                 // CieGeneral: 1..15
+    std::optional<double> zenithLuminance;           // cd/m^2; exactly one of the two is set
+    std::optional<double> horizontalIlluminance;     // lx, of the sky alone on an open plane
+    double groundReflectance = 0.2;                  // in [0, 1]
+    bool groundReflectanceGiven = false;             // written back only if it was there
+
+    bool operator==(const Sky&) const = default;
 };
 
 struct Scene {
@@ -144,6 +187,8 @@ struct Scene {
     std::vector<Material> materials;  // in file order; names unique
     std::vector<Object> objects;
     std::vector<Light> lights;
+    std::optional<Site> site;  // SPEC.md section 5
+    std::optional<Sky> sky;
     std::string baseDir;  // folder that relative mesh paths resolve against (absolute)
 
     const Material* findMaterial(const std::string& name) const;
@@ -151,7 +196,8 @@ struct Scene {
 
     bool operator==(const Scene& s) const {
         return version == s.version && metersPerUnit == s.metersPerUnit && camera == s.camera &&
-               materials == s.materials && objects == s.objects && lights == s.lights;
+               materials == s.materials && objects == s.objects && lights == s.lights && site == s.site &&
+               sky == s.sky;
     }
 };
 
@@ -166,12 +212,14 @@ SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene);
 // What a scene calls for, so that backends model only what it needs (and `lucerna info` says so).
 // Lights switched off are not counted.
 struct SceneFeatures {
-    bool hasDiffuse = false, hasGlossy = false, hasMirror = false, hasDielectric = false;
+    bool hasDiffuse = false, hasGlossy = false, hasMirror = false, hasDielectric = false, hasGlazing = false;
     int emitterTriangles = 0;
     int pointLights = 0, spotLights = 0, directionalLights = 0, luminaires = 0;
+    bool hasSun = false, hasSky = false;  // SPEC.md section 5
     size_t triangles = 0;
     bool hasSpecular() const { return hasMirror || hasDielectric; }
     bool hasDeltaLights() const { return pointLights + spotLights + directionalLights + luminaires > 0; }
+    bool hasDaylight() const { return hasSun || hasSky; }
 };
 SceneFeatures analyseFeatures(const Scene& scene);
 

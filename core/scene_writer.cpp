@@ -59,6 +59,7 @@ std::string material(const Material& m) {
     case MaterialType::Mirror: return "{\"type\": \"mirror\", \"reflectance\": " + rgb(m.reflectance) + "}";
     case MaterialType::Dielectric: return "{\"type\": \"dielectric\", \"ior\": " + num(m.ior) + "}";
     case MaterialType::Emitter: return "{\"type\": \"emitter\", \"radiance\": " + rgb(m.radiance) + "}";
+    case MaterialType::Glazing: return "{\"type\": \"glazing\", \"transmittance\": " + rgb(m.transmittance) + "}";
     }
     return "{}";
 }
@@ -151,9 +152,40 @@ std::string light(const Light& l) {
         if (s.temperatureK) out += ", \"temperature\": " + num(*s.temperatureK);
         break;
     }
+    case LightType::Sun: {
+        const SunSpec s = l.sun.value_or(SunSpec());
+        out += "\"sun\", \"illuminance\": " + num(s.illuminanceLux);
+        if (s.angularDiameterGiven || s.angularDiameterDeg != SunSpec().angularDiameterDeg)
+            out += ", \"angular_diameter\": " + num(s.angularDiameterDeg);
+        if (s.time) out += ", \"time\": " + str(*s.time);
+        else out += ", \"direction\": " + vec(l.direction);
+        if (s.colour) out += ", \"color\": " + rgb(*s.colour);
+        break;
+    }
     }
     if (!l.group.empty()) out += ", \"group\": " + str(l.group);
     if (!l.on) out += ", \"on\": false";
+    return out + "}";
+}
+
+std::string site(const Site& s) {
+    std::string out = "{\"latitude\": " + num(s.latitudeDeg) + ", \"longitude\": " + num(s.longitudeDeg) +
+                      ", \"utc_offset\": " + num(s.utcOffsetHours);
+    if (s.northGiven || s.north != Site().north) out += ", \"north\": " + vec(s.north);
+    return out + "}";
+}
+
+std::string sky(const Sky& s) {
+    std::string out = "{\"model\": ";
+    switch (s.model) {
+    case SkyModelType::Uniform: out += "\"uniform\""; break;
+    case SkyModelType::CieOvercast: out += "\"cie_overcast\""; break;
+    case SkyModelType::CieGeneral: out += "\"cie_general\", \"cie_type\": " + std::to_string(s.cieType); break;
+    }
+    if (s.zenithLuminance) out += ", \"zenith_luminance\": " + num(*s.zenithLuminance);
+    else out += ", \"horizontal_illuminance\": " + num(s.horizontalIlluminance.value_or(0.0));
+    if (s.groundReflectanceGiven || s.groundReflectance != Sky().groundReflectance)
+        out += ", \"ground_reflectance\": " + num(s.groundReflectance);
     return out + "}";
 }
 
@@ -190,6 +222,8 @@ std::string saveSceneToString(const Scene& scene) {
         for (size_t i = 0; i < scene.lights.size(); ++i) out += (i ? ",\n    " : "\n    ") + light(scene.lights[i]);
         out += "\n  ]";
     }
+    if (scene.site) out += ",\n  \"site\": " + site(*scene.site);
+    if (scene.sky) out += ",\n  \"sky\": " + sky(*scene.sky);
     return out + "\n}\n";
 }
 
