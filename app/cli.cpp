@@ -348,6 +348,7 @@ const char* materialTypeName(MaterialType t) {
     case MaterialType::Mirror: return "mirror";
     case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Emitter: return "emitter";
+    case MaterialType::Glazing: return "glazing";
     }
     return "?";
 }
