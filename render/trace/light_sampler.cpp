@@ -442,6 +442,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
         out.normal = l.direction;
         return true;
     }
+    case LightType::Sun: return false;  // never a delta light of its own (compileDeltaLight)
     }
     out.normal = out.direction;
     out.deltaPosition = true;
