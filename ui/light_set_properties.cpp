@@ -51,7 +51,8 @@ std::optional<double> fluxOf(const Light& l, FluxCache& cache) {
         const double scale = spec.lumens ? (ownFlux > 0 ? *spec.lumens / ownFlux : 0.0) : 1.0;
         return ownFlux * scale * spec.distribution->tiltMultiplier(luminaireTiltDeg(l.direction)) * luminance(colour);
     }
-    case LightType::Directional: return std::nullopt;
+    case LightType::Directional:
+    case LightType::Sun: return std::nullopt;
     }
     return std::nullopt;
 }

@@ -45,7 +45,8 @@ QColor materialShade(const Material* m) {
         case MaterialType::Diffuse:
         case MaterialType::Glossy: c = m->albedo; break;
         case MaterialType::Mirror: c = m->reflectance; break;
-        case MaterialType::Dielectric: c = Rgbd(0.6, 0.8, 0.95); break;
+        case MaterialType::Dielectric:
+        case MaterialType::Glazing: c = Rgbd(0.6, 0.8, 0.95); break;
         case MaterialType::Emitter: c = Rgbd(1.0, 0.95, 0.6); break;
         }
     const auto channel = [](double v) { return int(std::lround(255 * (0.45 + 0.5 * srgb(v)))); };
