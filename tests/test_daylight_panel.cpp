@@ -5,14 +5,16 @@
 // an angle; a CIE general sky without a sun is refused with a line saying why. Undo takes every
 // edit back to the scene as opened, redo forward again, and the edited scene reads back equal
 // from its file. Through the window: the dock is in the View menu, and Save then Open gives the
-// same scene and the panel shows it.
+// same scene and the panel shows it; the sun selected shows in the light panel without a place. A picture of the panel goes to the working directory.
 
 #include "core/daylight.h"
 #include "core/scene_io.h"
 #include "core/sky_model.h"
 #include "ui/commands/daylight_commands.h"
 #include "ui/daylight_panel.h"
+#include "ui/light_properties.h"
 #include "ui/main_window.h"
+#include "ui/outliner.h"
 #include "ui/site_cities.h"
 #include "window_test_helpers.h"
 
@@ -21,6 +23,7 @@
 #include <QDateEdit>
 #include <QDockWidget>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMenuBar>
 #include <QSlider>
 #include <QSpinBox>
@@ -71,6 +74,9 @@ double elevationDeg(const Scene& s) {
     return std::asin(sunDirection(s, sunOf(s)).y) * 180.0 / std::numbers::pi;
 }
 
+// Clicks the check box's indicator (a click right of its text misses it, as it would a user's).
+void clickBox(QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoint(6, box->height() / 2)); }
+
 // Drags the slider's handle `dx` pixels in `steps` moves with the left button held.
 void dragHandle(QSlider* slider, int dx, int steps) {
     QStyleOptionSlider opt;
@@ -100,6 +106,7 @@ private slots:
     void initTestCase() { useTestSettings("test_daylight_panel"); }
     void editsEveryPartOfTheDaylight();
     void savedAndOpenedThroughTheWindow();
+    void aSunByDirectionTakesTheClock();
 };
 
 void TestDaylightPanel::editsEveryPartOfTheDaylight() {
@@ -136,7 +143,7 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     QVERIFY(slider->isEnabled());
 
     // The sun, placed by the panel's clock (21 June, noon, until changed).
-    QTest::mouseClick(sunBox, Qt::LeftButton);
+    clickBox(sunBox);
     QCOMPARE(sunIndex(doc.scene()), 0);
     QCOMPARE(*sunOf(doc.scene()).sun->time, std::string("2025-06-21T12:00"));
     QCOMPARE(undo->count(), 2);
@@ -158,7 +165,7 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     const Scene beforeDrag = doc.scene();
     const V3d noon = sunDirection(beforeDrag, sunOf(beforeDrag));
     dragHandle(slider, 12, 4);
-    const Light& dragged = sunOf(doc.scene());
+    const Light dragged = sunOf(doc.scene());  // a copy: undo replaces the scene
     QVERIFY2(*dragged.sun->time > std::string("2025-12-21T12:00"), dragged.sun->time->c_str());
     QCOMPARE(QString::fromStdString(dragged.sun->time->substr(11)), time->time().toString("HH:mm"));
     const V3d afternoon = sunDirection(doc.scene(), dragged);
@@ -180,7 +187,7 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     QVERIFY(doc.scene().sky);
     QCOMPARE(doc.scene().sky->model, SkyModelType::CieOvercast);
     QCOMPARE(*doc.scene().sky->horizontalIlluminance, 10000.0);
-    choose(child<QComboBox>(panel, "daylightSkyQuantity"), "Zenith luminance");
+    choose(child<QComboBox>(panel, "daylightSkyQuantity"), "Lz (cd/m²)");
     QVERIFY(!doc.scene().sky->horizontalIlluminance);
     QVERIFY(std::abs(*doc.scene().sky->zenithLuminance - 10000 / (7 * std::numbers::pi / 9)) < 1e-6);
     QVERIFY(child<QDoubleSpinBox>(panel, "daylightSkyValue")->suffix().contains("cd"));
@@ -207,7 +214,7 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
 
     // The sun cannot go while the sky is shaped by it: refused, said why, nothing changed.
     const int steps = undo->count();
-    QTest::mouseClick(sunBox, Qt::LeftButton);
+    clickBox(sunBox);
     QCOMPARE(sunIndex(doc.scene()), 0);
     QVERIFY(sunBox->isChecked());
     QVERIFY(!error->text().isEmpty());
@@ -229,6 +236,10 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     QVERIFY(!sunBox->isChecked());
     undo->setIndex(undo->count());
     QCOMPARE(doc.scene(), edited);
+    // To look at: the panel at the width of the window's left dock.
+    panel.resize(240, panel.sizeHint().height());
+    QCoreApplication::processEvents();
+    QVERIFY(panel.grab().save("daylight-panel.png"));
 
     // The file keeps it all.
     const std::string text = saveSceneToString(edited);
@@ -262,7 +273,7 @@ void TestDaylightPanel::savedAndOpenedThroughTheWindow() {
     DaylightPanel& panel = *w.daylightPanel();
 
     choose(child<QComboBox>(panel, "daylightCity"), "Tokyo");
-    QTest::mouseClick(child<QCheckBox>(panel, "daylightSunPresent"), Qt::LeftButton);
+    clickBox(child<QCheckBox>(panel, "daylightSunPresent"));
     typeInto(child<QDoubleSpinBox>(panel, "daylightSunDiameter"), 0.6);
     choose(child<QComboBox>(panel, "daylightSkyModel"), "Uniform");
     typeInto(child<QDoubleSpinBox>(panel, "daylightGroundReflectance"), 0.1);
@@ -278,7 +289,47 @@ void TestDaylightPanel::savedAndOpenedThroughTheWindow() {
     QVERIFY(child<QCheckBox>(panel, "daylightSunPresent")->isChecked());
     QCOMPARE(child<QComboBox>(panel, "daylightSkyModel")->currentText(), QStringLiteral("Uniform"));
     QCOMPARE(child<QDoubleSpinBox>(panel, "daylightGroundReflectance")->value(), 0.1);
-    QVERIFY(w.grab().save(dir.filePath("window.png")));
+
+    // The sun selected in the outliner: the light panel shows its name and points to this panel;
+    // it has no position, and its place is its time.
+    w.outliner()->select(Outliner::Kind::Light, sunIndex(w.document()->scene()));
+    LightProperties& light = *w.lightProperties();
+    QVERIFY(child<QLabel>(light, "lightSunNote")->isVisibleTo(&light));
+    QVERIFY(!light.positionFields()[0]->isVisibleTo(&light));
+    QVERIFY(!light.directionFields()[0]->isVisibleTo(&light));
+    QCOMPARE(light.nameField()->text(), QStringLiteral("sun"));
+}
+
+// A file's sun given by direction at a site stays so (the panel says how it is placed) until the
+// clock is touched: then it is placed by time, its direction key gone (the file reads back equal).
+void TestDaylightPanel::aSunByDirectionTakesTheClock() {
+    QTemporaryDir dir;
+    std::string json = kFloorScene;
+    json.insert(json.rfind('}'), R"(,
+  "lights": [{"name": "sun", "type": "sun", "illuminance": 60000, "direction": [0.3, -1, -0.2]}],
+  "site": {"latitude": 40.4168, "longitude": -3.7038, "utc_offset": 1, "north": [0, 0, 1]})");
+    Document doc(loadScene(writeScene(dir, "madrid.json", json.c_str()).toStdString()));
+    DaylightPanel panel(&doc);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    QCOMPARE(child<QComboBox>(panel, "daylightCity")->currentText(), QStringLiteral("Madrid"));
+    QCOMPARE(child<QDoubleSpinBox>(panel, "daylightNorth")->value(), 180.0);
+    QVERIFY(child<QLabel>(panel, "daylightSunPosition")->text().contains("by direction"));
+    auto* time = child<QTimeEdit>(panel, "daylightTime");
+    time->setFocus();
+    time->setSelectedSection(QDateTimeEdit::HourSection);
+    QTest::keyClicks(time, "09");
+    time->setSelectedSection(QDateTimeEdit::MinuteSection);
+    QTest::keyClicks(time, "30");
+    QTest::keyClick(time, Qt::Key_Return);
+    const Light sun = sunOf(doc.scene());
+    QCOMPARE(QString::fromStdString(*sun.sun->time), QStringLiteral("2025-06-21T09:30"));
+    QCOMPARE(sun.direction, Light().direction);
+    QCOMPARE(child<QSlider>(panel, "daylightTimeSlider")->value(), 9 * 60 + 30);
+    QVERIFY(!child<QLabel>(panel, "daylightSunPosition")->text().contains("by direction"));
+    QCOMPARE(parseScene(saveSceneToString(doc.scene()), "t.json"), doc.scene());
+    doc.undoStack()->undo();
+    QCOMPARE(sunOf(doc.scene()).direction, V3d(0.3, -1, -0.2));
 }
 
 QTEST_MAIN(TestDaylightPanel)

@@ -12,7 +12,6 @@
 #include <QDateEdit>
 #include <QDoubleSpinBox>
 #include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
@@ -94,16 +93,26 @@ QString lux(double value) { return QStringLiteral("%L1 lx").arg(value, 0, 'f', 0
 
 DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* layout = new QVBoxLayout(this);
+    // Slim margins: the left docks are narrow, and the rows' labels take 110 px already.
+    layout->setContentsMargins(4, 4, 4, 4);
     const auto group = [this, layout](const QString& title) {
         auto* box = new QGroupBox(title, this);
         auto* rows = new QVBoxLayout(box);
+        rows->setContentsMargins(4, 4, 4, 4);
         layout->addWidget(box);
         return rows;
+    };
+    // The panel's labels are short: a narrower label column leaves the fields room in a narrow dock.
+    const auto row = [](QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields) {
+        QWidget* r = addPropertyRow(rows, label, fields);
+        rowLabel(r)->setMinimumWidth(84);
+        return r;
     };
     // A numeric field whose edits are one undo step per field until editing finishes.
     const auto spin = [this](QWidget* parent, const char* name, double lo, double hi, int decimals,
                              void (DaylightPanel::*apply)(const void*)) {
         QDoubleSpinBox* s = makePropertySpin(parent, lo, hi, decimals);
+        s->setMinimumWidth(50);
         s->setObjectName(name);
         connect(s, &QDoubleSpinBox::valueChanged, this, [this, s, apply] { (this->*apply)(s); });
         connect(s, &QDoubleSpinBox::editingFinished, this, [this] { merge_.finish(); });
@@ -119,7 +128,7 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     city_->addItem(tr("Custom site"));
     city_->setToolTip(tr("Where the scene stands on Earth: what places the sun by date and time"));
     connect(city_, &QComboBox::activated, this, &DaylightPanel::chooseCity);
-    addPropertyRow(site, tr("Place"), {city_});
+    row(site, tr("Place"), {city_});
     latitude_ = spin(this, "daylightLatitude", -90, 90, 4, &DaylightPanel::editSite);
     latitude_->setSuffix(QStringLiteral(" °N"));
     longitude_ = spin(this, "daylightLongitude", -180, 180, 4, &DaylightPanel::editSite);
@@ -133,17 +142,17 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     north_->setWrapping(true);
     north_->setSingleStep(5);
     north_->setToolTip(tr("The direction of geographic north, in degrees from -z toward +x (0: north is -z, east +x)"));
-    addPropertyRow(site, tr("Latitude"), {latitude_});
-    addPropertyRow(site, tr("Longitude"), {longitude_});
-    addPropertyRow(site, tr("UTC offset"), {utcOffset_});
-    addPropertyRow(site, tr("North"), {north_});
+    row(site, tr("Latitude"), {latitude_});
+    row(site, tr("Longitude"), {longitude_});
+    row(site, tr("UTC offset"), {utcOffset_});
+    row(site, tr("North"), {north_});
 
     // Sun.
     QVBoxLayout* sun = group(tr("Sun"));
-    sunPresent_ = new QCheckBox(tr("A sun in the scene"), this);
+    sunPresent_ = new QCheckBox(tr("present"), this);
     sunPresent_->setObjectName("daylightSunPresent");
     connect(sunPresent_, &QCheckBox::clicked, this, &DaylightPanel::setSunPresent);
-    addPropertyRow(sun, tr("Sun"), {sunPresent_});
+    row(sun, tr("Sun"), {sunPresent_});
     sunIlluminance_ = spin(this, "daylightSunIlluminance", 0, 1e6, 0, &DaylightPanel::editSun);
     sunIlluminance_->setSingleStep(1000);
     sunIlluminance_->setSuffix(QStringLiteral(" lx"));
@@ -152,8 +161,8 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     sunDiameter_->setSingleStep(0.05);
     sunDiameter_->setSuffix(QStringLiteral(" °"));
     sunDiameter_->setToolTip(tr("The sun's disc; 0 makes it a point at infinity with hard shadows"));
-    addPropertyRow(sun, tr("Illuminance"), {sunIlluminance_});
-    addPropertyRow(sun, tr("Angular diameter"), {sunDiameter_});
+    row(sun, tr("Illuminance"), {sunIlluminance_});
+    row(sun, tr("Angular diameter"), {sunDiameter_});
     date_ = new QDateEdit(QDate(2025, 6, 21), this);
     date_->setObjectName("daylightDate");
     date_->setDisplayFormat(QStringLiteral("yyyy-MM-dd"));
@@ -162,7 +171,7 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     date_->setKeyboardTracking(false);
     connect(date_, &QDateEdit::dateChanged, this, [this] { moveSun(date_); });
     connect(date_, &QDateEdit::editingFinished, this, [this] { merge_.finish(); });
-    addPropertyRow(sun, tr("Date"), {date_});
+    row(sun, tr("Date"), {date_});
     timeSlider_ = new QSlider(Qt::Horizontal, this);
     timeSlider_->setObjectName("daylightTimeSlider");
     timeSlider_->setRange(0, 24 * 60 - 1);  // minutes of the local day
@@ -178,8 +187,11 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     time_->setKeyboardTracking(false);
     connect(time_, &QTimeEdit::timeChanged, this, [this] { moveSun(time_); });
     connect(time_, &QTimeEdit::editingFinished, this, [this] { merge_.finish(); });
-    QWidget* timeRow = addPropertyRow(sun, tr("Time"), {timeSlider_, time_});
-    static_cast<QHBoxLayout*>(timeRow->layout())->setStretchFactor(time_, 0);
+    timeSlider_->setTickPosition(QSlider::TicksBelow);
+    timeSlider_->setTickInterval(3 * 60);
+    row(sun, tr("Time"), {time_});
+    // The slider has the dock's whole width: a narrow one would move the sun by the hour.
+    sun->addWidget(timeSlider_);
     sunPosition_ = new QLabel(this);
     sunPosition_->setObjectName("daylightSunPosition");
     sunPosition_->setWordWrap(true);
@@ -196,32 +208,38 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     skyModel_->setObjectName("daylightSkyModel");
     skyModel_->addItems({tr("None"), tr("Uniform"), tr("CIE overcast (traditional)"), tr("CIE general")});
     connect(skyModel_, &QComboBox::activated, this, &DaylightPanel::chooseSkyModel);
-    addPropertyRow(sky, tr("Model"), {skyModel_});
+    row(sky, tr("Model"), {skyModel_});
     cieType_ = new QSpinBox(this);
     cieType_->setObjectName("daylightCieType");
     cieType_->setRange(1, 15);
     cieType_->setKeyboardTracking(false);
     connect(cieType_, &QSpinBox::valueChanged, this, [this] { editSky(cieType_); });
     connect(cieType_, &QSpinBox::editingFinished, this, [this] { merge_.finish(); });
-    cieTypeRow_ = addPropertyRow(sky, tr("CIE type"), {cieType_});
+    cieTypeRow_ = row(sky, tr("CIE type"), {cieType_});
     cieTypeName_ = new QLabel(this);
     cieTypeName_->setObjectName("daylightCieTypeName");
     cieTypeName_->setWordWrap(true);
     sky->addWidget(cieTypeName_);
     skyQuantity_ = new QComboBox(this);
     skyQuantity_->setObjectName("daylightSkyQuantity");
-    skyQuantity_->addItems({tr("Horizontal illuminance"), tr("Zenith luminance")});
-    skyQuantity_->setToolTip(tr("Horizontal illuminance: of the sky alone on an open plane; zenith luminance: "
-                                "the sky's luminance straight up"));
+    skyQuantity_->addItems({tr("Eh (lx)"), tr("Lz (cd/m²)")});
+    skyQuantity_->setToolTip(tr("Eh: the horizontal illuminance of the sky alone on an open plane; Lz: the sky's "
+                                "luminance at the zenith. Switching keeps the sky as it is."));
     connect(skyQuantity_, &QComboBox::activated, this, &DaylightPanel::chooseSkyQuantity);
-    addPropertyRow(sky, tr("Given as"), {skyQuantity_});
-    skyValue_ = spin(this, "daylightSkyValue", 0, 1e7, 1, &DaylightPanel::editSky);
+    row(sky, tr("Given as"), {skyQuantity_});
+    skyValue_ = spin(this, "daylightSkyValue", 0, 1e7, 0, &DaylightPanel::editSky);
     skyValue_->setSingleStep(100);
-    addPropertyRow(sky, tr("Value"), {skyValue_});
+    row(sky, tr("Value"), {skyValue_});
     groundReflectance_ = spin(this, "daylightGroundReflectance", 0, 1, 2, &DaylightPanel::editSky);
     groundReflectance_->setSingleStep(0.05);
     groundReflectance_->setToolTip(tr("The ground below the horizon reflects this share of the sun and sky's light"));
-    addPropertyRow(sky, tr("Ground reflectance"), {groundReflectance_});
+    row(sky, tr("Ground reflectance"), {groundReflectance_});
+
+    // Lists and date fields narrow with the dock like the number fields (makePropertySpin).
+    for (QWidget* w : std::initializer_list<QWidget*>{city_, date_, time_, skyModel_, cieType_, skyQuantity_}) {
+        w->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        w->setMinimumWidth(50);
+    }
 
     error_ = new QLabel(this);
     error_->setObjectName("daylightError");
