@@ -84,11 +84,8 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
     if (current_ && st.scene) {
         const SceneChange change = diff(*current_, *scene);
         const int w = width > 0 ? width : scene->camera.width, h = height > 0 ? height : scene->camera.height;
-        // Daylight is not one light's state: the site places the sun, and the sun shapes the sky
-        // and lights the ground (SPEC.md section 5). A change of either sets the scene again.
-        bool daylight = change.daylight;
-        for (size_t i : change.lights) daylight = daylight || scene->lights[i].type == LightType::Sun;
-        if (!change.geometry && !change.materials && !change.lightSet && !daylight && !change.resolution &&
+        // A new site or sky (SPEC.md section 5) is no one light's edit: the scene is set again.
+        if (!change.geometry && !change.materials && !change.lightSet && !change.daylight && !change.resolution &&
             w == st.width && h == st.height) {
             if (change.camera) setCamera(scene->camera);
             for (size_t i : change.lights) setLight(i, scene->lights[i]);
