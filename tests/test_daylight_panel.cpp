@@ -1,11 +1,13 @@
 // The daylight panel (issue 22), clicked through as a designer would: a city places the site; the
 // sun is added by its check box and placed by the panel's clock; a typed date and a drag of the
-// time slider move it (the sun's `time` key and its direction change; the drag is one undo step);
-// the sky's model, CIE type, quantity (converted when switched) and ground reflectance; north as
-// an angle; a CIE general sky without a sun is refused with a line saying why. Undo takes every
-// edit back to the scene as opened, redo forward again, and the edited scene reads back equal
-// from its file. Through the window: the dock is in the View menu, and Save then Open gives the
-// same scene and the panel shows it; the sun selected shows in the light panel without a place. A picture of the panel goes to the working directory.
+// time slider move it (the sun's `time` key and its direction change; a drag is one undo step, a
+// key on the slider one each); the sky's model, CIE type, quantity (converted when switched) and
+// ground reflectance; north as an angle; removing the sun under a CIE general sky is refused with
+// a line saying why. Undo takes every edit back to the scene as opened, redo forward again, and
+// the edited scene reads back equal from its file; a sun given by direction takes the clock.
+// Through the window: the dock is in the View menu, Save then Open gives the same scene and the
+// panel shows it, and the sun selected shows in the light panel without a place. A picture of
+// the panel goes to the working directory.
 
 #include "core/daylight.h"
 #include "core/scene_io.h"
@@ -175,6 +177,15 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     undo->undo();
     QCOMPARE(doc.scene(), beforeDrag);
     undo->redo();
+    QCOMPARE(doc.scene().lights[0], dragged);
+    // Keys on the slider are a step each (5 minutes), as a click on its track would be.
+    slider->setFocus();
+    QTest::keyClick(slider, Qt::Key_Right);
+    QTest::keyClick(slider, Qt::Key_Right);
+    QCOMPARE(undo->count(), 6);
+    QCOMPARE(slider->value(), (std::stoi(dragged.sun->time->substr(11, 2)) * 60 + std::stoi(dragged.sun->time->substr(14))) + 10);
+    undo->undo();
+    undo->undo();
     QCOMPARE(doc.scene().lights[0], dragged);
 
     // The sun's illuminance.

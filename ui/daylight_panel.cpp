@@ -179,7 +179,11 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     timeSlider_->setPageStep(60);
     timeSlider_->setValue(12 * 60);
     timeSlider_->setToolTip(tr("Local time at the site: drag to move the sun"));
-    connect(timeSlider_, &QSlider::valueChanged, this, [this] { moveSun(timeSlider_); });
+    connect(timeSlider_, &QSlider::valueChanged, this, [this] {
+        moveSun(timeSlider_);
+        // A drag is one step; a click on the track or a key is a step of its own.
+        if (!timeSlider_->isSliderDown()) merge_.finish();
+    });
     connect(timeSlider_, &QSlider::sliderReleased, this, [this] { merge_.finish(); });
     time_ = new QTimeEdit(QTime(12, 0), this);
     time_->setObjectName("daylightTime");
@@ -400,7 +404,7 @@ void DaylightPanel::chooseCity(int item) {
     Site site = scene.site.value_or(Site());
     QString text;
     if (item == kCustomSite) {
-        if (scene.site) return;  // already a site of its own: the fields edit it
+        if (scene.site) return refresh();  // the fields edit the site; the list shows what it is
         site.latitudeDeg = latitude_->value();
         site.longitudeDeg = longitude_->value();
         site.utcOffsetHours = utcOffset_->value();
