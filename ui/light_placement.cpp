@@ -30,7 +30,6 @@ std::optional<Light> aimedLight(const Light& light, const SurfaceHit& hit) {
         return aimed;
     }
     case LightType::Directional: aimed.direction = -hit.normal; return aimed;
-    case LightType::Sun: return std::nullopt;  // the site and the time place it (the daylight panel)
     }
     return std::nullopt;
 }
