@@ -3,6 +3,7 @@
 // the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
 
 #include "closed_form_scenes.h"
+#include "daylight_scenes.h"
 #include "grid_check_scenes.h"
 #include "core/calculation_grid.h"
 #include "csv_table.h"
@@ -155,6 +156,59 @@ private slots:
         QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
         QVERIFY(std::abs(panel->result()->lux[0] / result->lux[0] - 2) < 1e-4);
+    }
+
+    // The daylight factor through the dock: a glazed opening in a black box's roof, a grid facing
+    // up below it. The dock's values are the CLI's (the same computation on the daylight-factor
+    // scene): 100 E / Eh,sky with E under the CIE overcast sky alone; the figures and EN 17037's
+    // lines shown, the CSV carrying the DF columns.
+    void daylightFactorThroughTheDock() {
+        SkyThroughOpening s;
+        s.glazing = 0.8;
+        const QString scenePath = dir_.filePath("daylit_box.json");
+        std::ofstream(scenePath.toStdString()) << s.json();
+        MainWindow w(scenePath);
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        w.findChild<QDockWidget*>("gridDock")->raise();
+        child<QDoubleSpinBox>(*panel, "gridHeight")->setValue(0.85);
+        child<QDoubleSpinBox>(*panel, "gridBorder")->setValue(0.5);
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(0.5);
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(3.0);
+        auto* quantity = child<QComboBox>(*panel, "gridQuantity");
+        quantity->setCurrentIndex(1);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        const auto result = panel->result();
+        QVERIFY(result && result->converged);
+        QVERIFY(panel->daylightFactorPerLux().has_value());
+        // Eh,sky of the overcast sky of the file's zenith luminance (uniform in the file).
+        QVERIFY(std::abs(*panel->daylightFactorPerLux() - 100.0 / (7.0 * std::numbers::pi / 9.0 * s.zenithLuminance)) < 1e-9);
+        // The brightest point lies under the opening, and its DF is the overcast sky through the
+        // pane: within a few percent of the uniform-sky Lambert value times (1 + 2 cos Z) / 3 >=
+        // 1/3 and <= 1 of it (the bounds of the overcast sky's gradation over the uniform one).
+        const GridLayout& layout = panel->layout();
+        auto* table = child<QTableWidget>(*panel, "gridTable");
+        double best = 0;
+        size_t bestK = 0;
+        for (size_t k = 0; k < layout.points.size(); ++k)
+            if (result->lux[k] > best) best = result->lux[k], bestK = k;
+        const double df = best * *panel->daylightFactorPerLux();
+        const double uniform = 100.0 * 0.8 * lambertPolygonIrradiance(layout.points[bestK], V3d(0, 1, 0), s.opening()) /
+                               (7.0 * std::numbers::pi / 9.0);
+        QVERIFY2(df > uniform / 3 * 0.97 && df < uniform * 1.03, qPrintable(QString("%1 %2").arg(df).arg(uniform)));
+        const int i = int(bestK) % layout.nu, j = int(bestK) / layout.nu;
+        QCOMPARE(table->item(layout.nv - 1 - j, i)->text(), QString::number(df, 'f', 2));
+        const QString figures = child<QLabel>(*panel, "gridFigures")->text();
+        QVERIFY2(figures.contains("DFavg") && figures.contains("EN 17037") && figures.contains("minimum level"),
+                 qPrintable(figures));
+        QTest::qWait(200);
+        w.grab().save("grid_panel_daylight_factor.png");
+        const QString csv = dir_.filePath("df.csv");
+        panel->exportCsv(csv);
+        const CsvTable exported = CsvTable::read(csv);
+        QVERIFY(std::abs(*exported.number(bestK, "daylight_factor_percent") / df - 1) < 1e-6);
     }
 
     void cancelStopsACalculation() {

@@ -1,5 +1,8 @@
 #include "ui/grid_panel.h"
 
+#include "core/daylight.h"
+#include "core/daylight_provision.h"
+
 #include "core/atomic_file.h"
 #include "core/scene_geometry.h"
 #include "render/display/display.h"
@@ -48,6 +51,13 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     method_->addItem(tr("auto"), kAutoMethod);
     method_->setItemData(method_->count() - 1, tr("bdpt where a lamp reaches points only through glass, else path"),
                          Qt::ToolTipRole);
+    quantity_ = new QComboBox(this);
+    quantity_->setObjectName("gridQuantity");
+    quantity_->addItem(tr("Illuminance (lx)"));
+    quantity_->addItem(tr("Daylight factor (%)"));
+    quantity_->setItemData(1, tr("Under the CIE overcast sky alone, sun and electric lights off (SPEC.md section 5), "
+                                 "with EN 17037's daylight provision"),
+                           Qt::ToolTipRole);
     compute_ = new QPushButton(tr("Compute"), this);
     compute_->setObjectName("gridCompute");
     cancel_ = new QPushButton(tr("Cancel"), this);
@@ -91,6 +101,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     form->addRow(tr("Spacing"), spacing_);
     form->addRow(tr("Error bar (95%)"), target_);
     form->addRow(tr("Estimator"), method_);
+    form->addRow(tr("Quantity"), quantity_);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(compute_);
     buttons->addWidget(cancel_);
@@ -138,7 +149,20 @@ void GridPanel::useWholeRoom() {
 
 void GridPanel::compute() {
     cancel();
-    const SceneSnapshot scene = doc_->snapshot();
+    SceneSnapshot scene = doc_->snapshot();
+    dfPerLux_.reset();
+    if (quantity_->currentIndex() == 1) {
+        const Scene& s = *scene;
+        medianGiven_ = s.site && s.site->medianDiffuseIlluminance;
+        medianDiffuseIlluminance_ = medianGiven_ ? *s.site->medianDiffuseIlluminance : kDefaultMedianDiffuseIlluminance;
+        DaylightFactorScene df = daylightFactorScene(s);
+        if (!(df.skyHorizontalIlluminance > 0)) {
+            status_->setText(tr("The sky gives no light: no daylight factor"));
+            return;
+        }
+        dfPerLux_ = 100.0 / df.skyHorizontalIlluminance;
+        scene = std::make_shared<const Scene>(std::move(df.scene));
+    }
     CalculationGrid grid;
     try {
         if (drawn_) {
@@ -224,13 +248,37 @@ void GridPanel::poll() {
 
 void GridPanel::showResult() {
     if (!shown_) return;
-    const GridStatistics s = gridStatistics(shown_->lux, shown_->insideGeometry);
+    // Daylight factor: every value is lux times 100 / Eh,sky, in %.
+    const double scale = dfPerLux_.value_or(1.0);
+    std::vector<double> values = shown_->lux;
+    for (double& v : values) v *= scale;
+    const GridStatistics s = gridStatistics(values, shown_->insideGeometry);
     QStringList lines;
-    lines << tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4")
-                 .arg(s.average, 0, 'f', 1)
-                 .arg(s.minimum, 0, 'f', 1)
-                 .arg(s.maximum, 0, 'f', 1)
-                 .arg(s.uniformity, 0, 'f', 2);
+    if (dfPerLux_) {
+        lines << tr("DFavg %1%   DFmin %2%   DFmax %3%   DFmin/DFavg %4")
+                     .arg(s.average, 0, 'f', 2)
+                     .arg(s.minimum, 0, 'f', 2)
+                     .arg(s.maximum, 0, 'f', 2)
+                     .arg(s.uniformity, 0, 'f', 2);
+        const DaylightProvision p = checkDaylightProvision(values, shown_->insideGeometry, medianDiffuseIlluminance_);
+        lines << tr("EN 17037 (E v,d,med %1 lx%2):").arg(medianDiffuseIlluminance_, 0, 'f', 0)
+                                                   .arg(medianGiven_ ? QString() : tr(", the usual value"));
+        for (const ProvisionLevel& l : p.levels)
+            lines << tr("  %1 level: %2 (half the plane %3% for %4%, margin %5; 95% %6% for %7%, margin %8)")
+                         .arg(QString::fromLatin1(l.name), l.met ? tr("met") : tr("not met"))
+                         .arg(p.dfHalf, 0, 'f', 2)
+                         .arg(l.targetDf, 0, 'f', 2)
+                         .arg(l.targetMargin, 0, 'f', 2)
+                         .arg(p.df95, 0, 'f', 2)
+                         .arg(l.minimumTargetDf, 0, 'f', 2)
+                         .arg(l.minimumMargin, 0, 'f', 2);
+    } else {
+        lines << tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4")
+                     .arg(s.average, 0, 'f', 1)
+                     .arg(s.minimum, 0, 'f', 1)
+                     .arg(s.maximum, 0, 'f', 1)
+                     .arg(s.uniformity, 0, 'f', 2);
+    }
     if (s.excluded > 0)
         lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());
     const QString method = QString::fromLatin1(gridMethodName(shown_->method));
@@ -249,7 +297,7 @@ void GridPanel::showResult() {
     for (int j = 0; j < layout_.nv; ++j)
         for (int i = 0; i < layout_.nu; ++i) {
             const size_t k = size_t(j) * size_t(layout_.nu) + size_t(i);
-            const double e = shown_->lux[k];
+            const double e = values[k];
             if (shown_->insideGeometry[k]) {
                 // Not a reading: grey, hatched, no number that could be taken for one.
                 auto* item = new QTableWidgetItem(tr("inside"));
@@ -260,15 +308,16 @@ void GridPanel::showResult() {
                 table_->setItem(layout_.nv - 1 - j, i, item);
                 continue;
             }
-            auto* item = new QTableWidgetItem(QString::number(e, 'f', 0));
+            auto* item = new QTableWidgetItem(QString::number(e, 'f', dfPerLux_ ? 2 : 0));
             item->setTextAlignment(Qt::AlignCenter);
             const double t = e > 0 ? std::log(e / lo) / std::log(hi / lo) : 0.0;
             const QColor c = falseColourRamp(std::clamp(t, 0.0, 1.0));
             item->setBackground(c);
             item->setForeground(c.lightnessF() > 0.55 ? Qt::black : Qt::white);
+            const QString unit = dfPerLux_ ? tr("%") : tr(" lx");
             item->setToolTip(shown_->errorBarUnknown
-                                 ? tr("%1 lx, error bar unknown (light through glass missing)").arg(e, 0, 'f', 1)
-                                 : tr("%1 lx +- %2 lx").arg(e, 0, 'f', 1).arg(shown_->errorLux[k], 0, 'f', 1));
+                                 ? tr("%1%2, error bar unknown (light through glass missing)").arg(e, 0, 'f', 2).arg(unit)
+                                 : tr("%1%3 +- %2%3").arg(e, 0, 'f', 2).arg(shown_->errorLux[k] * scale, 0, 'f', 2).arg(unit));
             table_->setItem(layout_.nv - 1 - j, i, item);
         }
     export_->setEnabled(true);
@@ -278,7 +327,8 @@ void GridPanel::showResult() {
 void GridPanel::exportCsv(const QString& path) const {
     if (!shown_) throw std::runtime_error("no grid result to export");
     writeTextAtomically(path.toStdString(),
-                        gridCsv(layout_, shown_->lux, shown_->errorLux, shown_->insideGeometry, shown_->errorBarUnknown));
+                        gridCsv(layout_, shown_->lux, shown_->errorLux, shown_->insideGeometry, shown_->errorBarUnknown,
+                                dfPerLux_));
 }
 
 void GridPanel::exportClicked() {

@@ -50,6 +50,9 @@ public:
     const CalculationGrid& grid() const { return grid_; }
     // Writes the shown result as CSV (core/calculation_grid.h); throws std::runtime_error.
     void exportCsv(const QString& path) const;
+    // With the quantity "Daylight factor", 100 / Eh,sky of the newest calculation (SPEC.md
+    // section 5: it ran on the daylight-factor scene, and the result's lux times this is DF in %).
+    std::optional<double> daylightFactorPerLux() const { return dfPerLux_; }
 
 signals:
     // The user asked to draw the rectangle in the viewport (two clicks there).
@@ -65,7 +68,7 @@ private:
     Document* doc_;
     YieldGate gate_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
-    QComboBox* method_;
+    QComboBox *method_, *quantity_;
     QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
     QProgressBar* progress_;
     QLabel *area_, *figures_, *status_;
@@ -84,6 +87,9 @@ private:
     std::shared_ptr<const GridResult> shown_;
     uint64_t shownVersion_ = 0;
     bool stale_ = false;
+    std::optional<double> dfPerLux_;
+    double medianDiffuseIlluminance_ = 0;  // lx, for EN 17037's check (the site's, or the usual value)
+    bool medianGiven_ = false;
 };
 
 }  // namespace lucerna
