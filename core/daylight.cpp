@@ -11,7 +11,7 @@
 namespace lucerna {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiD = std::numbers::pi;
 }
 
 Rgbd ResolvedSun::irradiance() const {
@@ -19,12 +19,12 @@ Rgbd ResolvedSun::irradiance() const {
     return colour * (illuminanceLux / kLumensPerWatt);
 }
 
-double ResolvedSun::solidAngle() const { return 2 * kPi * (1 - std::cos(halfAngleRad)); }
+double ResolvedSun::solidAngle() const { return 2 * kPiD * (1 - std::cos(halfAngleRad)); }
 
 Rgbd ResolvedSun::radiance() const {
     if (!aboveHorizon || !(halfAngleRad > 0)) return Rgbd(0, 0, 0);
     const double s = std::sin(halfAngleRad);
-    return colour * (illuminanceLux / (kLumensPerWatt * kPi * s * s));
+    return colour * (illuminanceLux / (kLumensPerWatt * kPiD * s * s));
 }
 
 double ResolvedSky::luminance(const V3d& w) const {
@@ -52,7 +52,7 @@ Daylight resolveDaylight(const Scene& scene) {
         ResolvedSun s;
         s.towardSun = sunDirection(scene, l);
         s.illuminanceLux = l.sun->illuminanceLux;
-        s.halfAngleRad = 0.5 * l.sun->angularDiameterDeg * kPi / 180.0;
+        s.halfAngleRad = 0.5 * l.sun->angularDiameterDeg * kPiD / 180.0;
         if (l.sun->colour) s.colour = *l.sun->colour / luminance(*l.sun->colour);
         s.aboveHorizon = s.towardSun.y > 0;
         d.sun = s;
@@ -70,7 +70,7 @@ Daylight resolveDaylight(const Scene& scene) {
         s.zenithLuminance = zenithLuminance(s.sky, s.towardSun);
         double eh = s.zenithLuminance * relativeHorizontalIlluminance(s.sky, s.towardSun);
         if (d.sun && d.sun->aboveHorizon) eh += d.sun->illuminanceLux * d.sun->towardSun.y;
-        s.groundLuminance = s.sky.groundReflectance * eh / kPi;
+        s.groundLuminance = s.sky.groundReflectance * eh / kPiD;
         d.sky = s;
     }
     return d;

@@ -10,7 +10,6 @@
 
 namespace lucerna {
 
-inline constexpr double kLumensPerWatt = 683.0;
 
 struct ResolvedSun {
     V3d towardSun{0, 1, 0};      // unit world direction toward the sun

@@ -24,7 +24,7 @@ CieSkyParameters cieSkyParameters(int type) {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+constexpr double kPiD = std::numbers::pi;
 
 double gradation(const CieSkyParameters& p, double cosZ) {
     // b < 0 for every type, so exp(b / cos Z) -> 0 at the horizon and phi -> 1.
@@ -33,7 +33,7 @@ double gradation(const CieSkyParameters& p, double cosZ) {
 
 double indicatrix(const CieSkyParameters& p, double chi) {
     const double c = std::cos(chi);
-    return 1.0 + p.c * (std::exp(p.d * chi) - std::exp(p.d * kPi / 2)) + p.e * c * c;
+    return 1.0 + p.c * (std::exp(p.d * chi) - std::exp(p.d * kPiD / 2)) + p.e * c * c;
 }
 
 double angleBetween(const V3d& a, const V3d& b) { return std::acos(std::clamp(a.dot(b), -1.0, 1.0)); }
@@ -47,7 +47,7 @@ double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun) 
     case SkyModelType::CieOvercast: return (1.0 + 2.0 * w.y) / 3.0;
     case SkyModelType::CieGeneral: {
         const CieSkyParameters p = cieSkyParameters(sky.cieType);
-        const double zs = std::min(std::acos(std::clamp(towardSun.y, -1.0, 1.0)), kPi / 2);
+        const double zs = std::min(std::acos(std::clamp(towardSun.y, -1.0, 1.0)), kPiD / 2);
         return indicatrix(p, angleBetween(w, towardSun)) * gradation(p, w.y) / (indicatrix(p, zs) * gradation(p, 1.0));
     }
     }
@@ -55,12 +55,13 @@ double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun) 
 }
 
 double relativeHorizontalIlluminance(const Sky& sky, const V3d& towardSun, int resolution) {
-    if (sky.model == SkyModelType::Uniform) return kPi;
-    if (sky.model == SkyModelType::CieOvercast) return 7.0 * kPi / 9.0;
+    if (sky.model == SkyModelType::Uniform) return kPiD;
+    if (sky.model == SkyModelType::CieOvercast) return 7.0 * kPiD / 9.0;
     // Midpoint rule in (Z, azimuth); the integrand is smooth except near the sun, where the
     // indicatrix has a kink of bounded slope.
     const int nz = std::max(resolution, 8), nphi = 4 * nz;
-    const double dz = (kPi / 2) / nz, dphi = 2 * kPi / nphi;
+    const double dz = (kPiD / 2) / nz;
+    const double dphi = 2 * kPiD / nphi;
     double sum = 0;
     for (int i = 0; i < nz; ++i) {
         const double z = (i + 0.5) * dz, sz = std::sin(z), cz = std::cos(z);
