@@ -73,6 +73,13 @@ struct PreviewSettings {
     // 2048 made the closed sphere's sets 4 times cheaper but lost the desks and partitions of a
     // 7,500-triangle hall (+6% of light leaked through them; BENCHMARKS.md, issue 20).
     int shadowProxyTriangles = 8192;
+    // Daylight (SPEC.md section 5): the sky and the ground as this many directional lights, drawn
+    // in proportion to their luminance anew for every fresh set (render/preview/daylight_samples.h),
+    // each with an orthographic shadow map of skyShadowSize^2 texels over the scene; with
+    // interleaving they are rounded up to a multiple of n m and dealt to the sub-buffers like the
+    // area samples. The sun is one directional light with a map of (4 shadowSize)^2.
+    int skySamples = 64;
+    int skyShadowSize = 512;
     // Surface interactions a VPL particle may have. Russian roulette ends particles long before
     // (as in the ir backend); a low cap would cut the long paths that closed bright rooms live
     // on (at albedo 0.8, 8 bounces lose 13% of the light).
@@ -87,6 +94,7 @@ struct PreviewTimings {
     double shadows = 0, gbuffer = 0, split = 0, shading = 0, gather = 0, direct = 0, readback = 0;
     double total = 0;  // the whole render() call
     int shadowCubes = 0;  // cube shadow maps drawn (only those of lights and VPLs that moved)
+    int directionalMaps = 0;  // orthographic maps drawn (directional lights, the sun, the sky's directions)
 };
 
 class Preview {

@@ -1,15 +1,18 @@
 // The direct lights (render/preview/frame_passes.cpp, uploadLights), shared by the direct pass
 // (direct.frag: lights it shades in full) and the VPL shading pass (shade_vpl.frag: lights dealt
 // to the sub-buffers like VPLs). Needs brdf.glsl, gbuffer.glsl and cube_shadows.glsl before it.
-// Compile-time switches: DIRECTIONAL, SPOT, AREA, LUMINAIRE: 1 when lights of that kind are in
-// the range the pass evaluates.
+// Compile-time switches: DIRECTIONAL, SPOT, AREA, LUMINAIRE, SKY: 1 when lights of that kind are
+// in the range the pass evaluates; GLAZING: 1 when the scene has panes (the directional maps then
+// have transmittance layers).
 //
-// kind: 0 point, 1 spot, 2 directional, 3 area-light sample, 4 luminaire. intensity is W/sr in
-// scene units (divided by meters_per_unit^2; a luminaire's per candela of its table), irradiance
-// for a directional light, and for an area sample Le / (samples pdf_area) so that it lights like
-// a one-sided cos-weighted point light. A luminaire keeps its table's layer in directionCosCone.w
-// (direction = its nadir) and its C0 direction in normalShadow.xyz. normalShadow.w: the light's
-// shadow cube (directional: its orthographic layer), -1 for none.
+// kind: 0 point, 1 spot, 2 directional (a scene's directional light or the sun), 3 area-light
+// sample, 4 luminaire, 5 one of the sky's directions (render/preview/daylight_samples.h). intensity
+// is W/sr in scene units (divided by meters_per_unit^2; a luminaire's per candela of its table),
+// irradiance for directional lights and sky directions, and for an area sample Le / (samples
+// pdf_area) so that it lights like a one-sided cos-weighted point light. A luminaire keeps its
+// table's layer in directionCosCone.w (direction = its nadir) and its C0 direction in
+// normalShadow.xyz. normalShadow.w: the light's shadow cube (directional: its orthographic layer,
+// sky: its layer of the sky's maps), -1 for none.
 struct Light { vec4 positionKind; vec4 directionCosCone; vec4 intensityCosFalloff; vec4 normalShadow; };
 layout(std430, binding = 2) readonly buffer Lights { Light lights[]; };
 uniform float lightShadowBias;   // relative
@@ -18,12 +21,25 @@ uniform float areaShadowSlack;   // scene units: the area samples' maps hold a p
 uniform int lightCubesPerArray;
 layout(binding = 8) uniform samplerCubeArray lightShadows[4];
 // Directional lights: orthographic depth maps (layer = normalShadow.w), looked up from the
-// surface point pushed along its normal (a normal offset, against acne at grazing light).
-const int MAX_DIRECTIONAL_SHADOWS = 4;
-uniform mat4 dirShadowMatrix[MAX_DIRECTIONAL_SHADOWS];
+// surface point pushed along its normal (a normal offset, against acne at grazing light). The
+// matrices: the directional lights' layers, then from skyMatrixBase on the sky's.
+layout(std430, binding = 3) readonly buffer DirShadowMatrices { mat4 dirShadowMatrix[]; };
 uniform float dirNormalOffset;  // world units
 uniform float dirDepthBias;     // in [0, 1] depth
 layout(binding = 12) uniform sampler2DArrayShadow dirShadows;
+#if SKY
+uniform int skyMatrixBase;
+uniform float skyNormalOffset, skyDepthBias;
+layout(binding = 14) uniform sampler2DArrayShadow skyShadows;
+#endif
+#if GLAZING
+// render/preview/shadow_maps.h: the panes' transmittance in front of the opaque depth (rgb) and
+// the nearest pane's depth (a).
+layout(binding = 15) uniform sampler2DArray dirTransmittance;
+#if SKY
+layout(binding = 16) uniform sampler2DArray skyTransmittance;
+#endif
+#endif
 // Luminaire tables (luminaire_textures.h): candela over (C / 360, gamma / 180), a layer each.
 layout(binding = 13) uniform sampler2DArray luminaireTables;
 uniform ivec2 luminaireTableSize;
@@ -45,6 +61,55 @@ float spotFactor(float cosTheta, float cosCone, float cosFalloff) {
     return t * t * (3.0 - 2.0 * t);
 }
 
+// What reaches y from a directional map's light: the opaque depth compared (2 x 2 PCF), and with
+// glazing each texel's panes' transmittance when y lies behind its nearest pane.
+#if GLAZING
+#define DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) directionalLight(maps, panes, m, layer, y, bias)
+vec3 directionalLight(sampler2DArrayShadow maps, sampler2DArray panes, mat4 m, int layer, vec3 y, float bias) {
+#else
+#define DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) directionalLight(maps, m, layer, y, bias)
+vec3 directionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 y, float bias) {
+#endif
+    const vec4 q = m * vec4(y, 1.0);
+    const vec3 c = q.xyz * 0.5 + 0.5;
+#if GLAZING
+    // The 2 x 2 PCF by hand, texel by texel: each texel's comparison times its panes'
+    // transmittance when y is behind its nearest pane, weighted bilinearly. (Filtering the two
+    // apart would let a lit texel at a window's edge pair with its unglazed opaque neighbour's
+    // transmittance of 1: a leak of untinted light along every window's border.)
+    const vec3 at = vec3(c.xy, float(layer));
+    const vec2 f = fract(c.xy * vec2(textureSize(maps, 0).xy) - 0.5);
+    const vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));  // gather's order
+    const vec4 lit = textureGather(maps, at, c.z - bias) * w;
+    const vec4 behind = vec4(greaterThan(vec4(c.z - bias), textureGather(panes, at, 3)));
+    const vec4 one = vec4(1.0);
+    return vec3(dot(lit, mix(one, textureGather(panes, at, 0), behind)), dot(lit, mix(one, textureGather(panes, at, 1), behind)),
+                dot(lit, mix(one, textureGather(panes, at, 2), behind)));
+#else
+    return vec3(texture(maps, vec4(c.xy, float(layer), c.z - bias)));
+#endif
+}
+
+// The same at the nearest texel of a map with nearest filtering (the sky's directions): the
+// comparison and the panes of one texel, so that they agree.
+#if GLAZING
+#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) nearestDirectionalLight(maps, panes, m, layer, y, bias)
+vec3 nearestDirectionalLight(sampler2DArrayShadow maps, sampler2DArray panes, mat4 m, int layer, vec3 y, float bias) {
+#else
+#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) nearestDirectionalLight(maps, m, layer, y, bias)
+vec3 nearestDirectionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 y, float bias) {
+#endif
+    const vec4 q = m * vec4(y, 1.0);
+    const vec3 c = q.xyz * 0.5 + 0.5;
+    const float lit = texture(maps, vec4(c.xy, float(layer), c.z - bias));
+#if GLAZING
+    const vec4 t = texture(panes, vec3(c.xy, float(layer)));
+    return c.z - bias > t.a ? lit * t.rgb : vec3(lit);
+#else
+    return vec3(lit);
+#endif
+}
+
 // Light i's direct contribution at s (towards wo), shadowed.
 vec3 lightContribution(int i, Surface s, vec3 wo) {
     const vec3 y = s.position, n = s.normal;
@@ -52,15 +117,28 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
     const int kind = int(l.positionKind.w);
     vec3 wi;
     float scale;
-#if DIRECTIONAL
-    if (kind == 2) {
+    vec3 tint = vec3(1.0);
+#if DIRECTIONAL || SKY
+    if (kind == 2 || kind == 5) {
         wi = -l.directionCosCone.xyz;
         scale = 1.0;
         const int layer = int(l.normalShadow.w);
         if (layer >= 0 && dot(n, wi) > 0.0) {
-            const vec4 q = dirShadowMatrix[layer] * vec4(y + n * dirNormalOffset, 1.0);
-            const vec3 c = q.xyz * 0.5 + 0.5;
-            scale = texture(dirShadows, vec4(c.xy, float(layer), c.z - dirDepthBias));
+#if SKY
+            if (kind == 5) {
+                // A slope-scaled depth bias and only a small normal offset: lifting the point by
+                // texels moves every direction's pool of light toward the foot of its window (a
+                // light pool under a skylight gained 1% in view).
+                const mat4 m = dirShadowMatrix[skyMatrixBase + layer];
+                const float cosY = dot(n, wi), tanY = sqrt(max(0.0, 1.0 - cosY * cosY)) / cosY;
+                tint = NEAREST_DIRECTIONAL_LIGHT(skyShadows, skyTransmittance, m, layer, y + n * skyNormalOffset,
+                                                 skyDepthBias * (1.0 + 2.0 * min(tanY, 8.0)));
+            } else
+#endif
+            {
+                const mat4 m = dirShadowMatrix[layer];
+                tint = DIRECTIONAL_LIGHT(dirShadows, dirTransmittance, m, layer, y + n * dirNormalOffset, dirDepthBias);
+            }
         }
     } else
 #endif
@@ -97,5 +175,5 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
     }
     const float cosY = dot(n, wi);
     if (cosY <= 0.0 || scale <= 0.0) return vec3(0.0);
-    return evalBsdf(n, wo, wi, s.albedo, s.specular, s.alpha) * l.intensityCosFalloff.rgb * (cosY * scale);
+    return evalBsdf(n, wo, wi, s.albedo, s.specular, s.alpha) * l.intensityCosFalloff.rgb * tint * (cosY * scale);
 }
