@@ -221,12 +221,11 @@ void setLightUniforms(Preview::State& st, const gl::Program& p) {
     setInt(p, "lightCubesPerArray", st.lightShadows.perArray());
     // Two texels of the map along the normal, half a texel of depth (the map spans 2 radii).
     const float diameter = 2.0f * st.scene->boundsRadius();
-    const int dirSize = std::max(st.dirShadows.size, 1), skySize = std::max(st.skyShadows.size, 1);
+    const int dirSize = std::max(st.dirShadows.size, 1);
     setFloat(p, "dirNormalOffset", 2.0f * diameter / float(dirSize));
     setFloat(p, "dirDepthBias", 0.5f / float(dirSize));
     setInt(p, "skyMatrixBase", st.skyMatrixBase);
-    setFloat(p, "skyNormalOffset", 0.25f * diameter / float(skySize));
-    setFloat(p, "skyDepthBias", 1.0f / float(skySize));
+    setFloat(p, "skyDepthBias", 0.05f);
     setIvec2(p, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, st.dirMatrices.id());

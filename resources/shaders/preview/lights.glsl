@@ -29,7 +29,7 @@ uniform float dirDepthBias;     // in [0, 1] depth
 layout(binding = 12) uniform sampler2DArrayShadow dirShadows;
 #if SKY
 uniform int skyMatrixBase;
-uniform float skyNormalOffset, skyDepthBias;
+uniform float skyDepthBias;  // texels of depth
 layout(binding = 14) uniform sampler2DArrayShadow skyShadows;
 #endif
 #if GLAZING
@@ -90,21 +90,32 @@ vec3 directionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 y, floa
 #endif
 }
 
-// The same at the nearest texel of a map with nearest filtering (the sky's directions): the
-// comparison and the panes of one texel, so that they agree.
+// The same at the nearest texel of a map with nearest filtering (the sky's directions), by the
+// receiver's plane: y's depth carried along its surface (normal n) to that texel's centre, where
+// the map holds the depth of whatever the texel's centre saw, so that a surface lit by the
+// direction meets its own depth there to float precision at any slope, and `bias` (texels of
+// depth) stays small. A bias of many texels instead let the ground's light in through the joints
+// of thin walls (a room glowed along every edge at 17 texels); a normal offset moved every
+// direction's pool of light toward the foot of its window (2 texels: +1% under a skylight).
+// The comparison and the panes of one texel, so that they agree.
 #if GLAZING
-#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) nearestDirectionalLight(maps, panes, m, layer, y, bias)
-vec3 nearestDirectionalLight(sampler2DArrayShadow maps, sampler2DArray panes, mat4 m, int layer, vec3 y, float bias) {
+#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, n, bias) nearestDirectionalLight(maps, panes, m, layer, y, n, bias)
+vec3 nearestDirectionalLight(sampler2DArrayShadow maps, sampler2DArray panes, mat4 m, int layer, vec3 y, vec3 n, float bias) {
 #else
-#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, bias) nearestDirectionalLight(maps, m, layer, y, bias)
-vec3 nearestDirectionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 y, float bias) {
+#define NEAREST_DIRECTIONAL_LIGHT(maps, panes, m, layer, y, n, bias) nearestDirectionalLight(maps, m, layer, y, n, bias)
+vec3 nearestDirectionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 y, vec3 n, float bias) {
 #endif
-    const vec4 q = m * vec4(y, 1.0);
-    const vec3 c = q.xyz * 0.5 + 0.5;
-    const float lit = texture(maps, vec4(c.xy, float(layer), c.z - bias));
+    const vec3 c = (m * vec4(y, 1.0)).xyz * 0.5 + 0.5;
+    // The plane's depth gradient in map space (the map scales x, y and depth alike).
+    const vec3 nm = mat3(m) * n;
+    const vec2 gradient = clamp(-nm.xy / min(nm.z, -1e-6), vec2(-16.0), vec2(16.0));
+    const vec2 size = vec2(textureSize(maps, 0).xy);
+    const vec2 centre = (floor(c.xy * size) + 0.5) / size;
+    const float depth = c.z + dot(gradient, centre - c.xy) - bias / size.x;
+    const float lit = texture(maps, vec4(centre, float(layer), depth));
 #if GLAZING
-    const vec4 t = texture(panes, vec3(c.xy, float(layer)));
-    return c.z - bias > t.a ? lit * t.rgb : vec3(lit);
+    const vec4 t = texture(panes, vec3(centre, float(layer)));
+    return depth > t.a ? lit * t.rgb : vec3(lit);
 #else
     return vec3(lit);
 #endif
@@ -126,13 +137,8 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
         if (layer >= 0 && dot(n, wi) > 0.0) {
 #if SKY
             if (kind == 5) {
-                // A slope-scaled depth bias and only a small normal offset: lifting the point by
-                // texels moves every direction's pool of light toward the foot of its window (a
-                // light pool under a skylight gained 1% in view).
                 const mat4 m = dirShadowMatrix[skyMatrixBase + layer];
-                const float cosY = dot(n, wi), tanY = sqrt(max(0.0, 1.0 - cosY * cosY)) / cosY;
-                tint = NEAREST_DIRECTIONAL_LIGHT(skyShadows, skyTransmittance, m, layer, y + n * skyNormalOffset,
-                                                 skyDepthBias * (1.0 + 2.0 * min(tanY, 8.0)));
+                tint = NEAREST_DIRECTIONAL_LIGHT(skyShadows, skyTransmittance, m, layer, y, n, skyDepthBias);
             } else
 #endif
             {
