@@ -160,6 +160,7 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     if (st.daylight.sun)
         if (const auto sun = sunSample(*st.daylight.sun, hashSeed(st.seed, 0x5a11ULL))) {
             directional.push_back(directionalGpuLight(*sun, 2.0f, 0));
+            directional.back().normalShadow[0] = 1.0f;  // lights.glsl: looked up by the receiver's plane
             st.dirShadows.matrices.push_back(
                 directionalShadowMatrix(-sun->toward, st.scene->boundsCenter(), st.scene->boundsRadius()));
         }

@@ -225,7 +225,7 @@ void setLightUniforms(Preview::State& st, const gl::Program& p) {
     setFloat(p, "dirNormalOffset", 2.0f * diameter / float(dirSize));
     setFloat(p, "dirDepthBias", 0.5f / float(dirSize));
     setInt(p, "skyMatrixBase", st.skyMatrixBase);
-    setFloat(p, "skyDepthBias", 0.05f);
+    setFloat(p, "planeDepthBias", 0.05f);
     setIvec2(p, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, st.dirMatrices.id());

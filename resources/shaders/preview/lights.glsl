@@ -26,10 +26,10 @@ layout(binding = 8) uniform samplerCubeArray lightShadows[4];
 layout(std430, binding = 3) readonly buffer DirShadowMatrices { mat4 dirShadowMatrix[]; };
 uniform float dirNormalOffset;  // world units
 uniform float dirDepthBias;     // in [0, 1] depth
+uniform float planeDepthBias;   // texels of depth, for the lookups by the receiver's plane (the sun, the sky)
 layout(binding = 12) uniform sampler2DArrayShadow dirShadows;
 #if SKY
 uniform int skyMatrixBase;
-uniform float skyDepthBias;  // texels of depth
 layout(binding = 14) uniform sampler2DArrayShadow skyShadows;
 #endif
 #if GLAZING
@@ -110,9 +110,25 @@ vec3 nearestDirectionalLight(sampler2DArrayShadow maps, mat4 m, int layer, vec3 
     const vec3 nm = mat3(m) * n;
     const vec2 gradient = clamp(-nm.xy / min(nm.z, -1e-6), vec2(-16.0), vec2(16.0));
     const vec2 size = vec2(textureSize(maps, 0).xy);
-    const vec2 centre = (floor(c.xy * size) + 0.5) / size;
-    const float depth = c.z + dot(gradient, centre - c.xy) - bias / size.x;
-    const float lit = texture(maps, vec4(centre, float(layer), depth));
+    vec2 centre = (floor(c.xy * size) + 0.5) / size;
+    float depth = c.z + dot(gradient, centre - c.xy) - bias / size.x;
+    float lit = texture(maps, vec4(centre, float(layer), depth));
+    // Near the edge of y's surface the texel's centre may lie off it, where the map saw something
+    // behind the surface's plane or nothing: that texel says nothing about y. The other texels
+    // around y decide, y in shadow if any of them is, which at a joint of thin walls finds the
+    // wall that meets this surface (the nearest texel alone let light in along every edge of a
+    // closed room, a texel wide). Rare: only where the map shows the surface's edge.
+    if (lit > 0.0 && texture(maps, vec4(centre, float(layer), depth + 0.5 / size.x)) > 0.0) {
+        const vec2 base = floor(c.xy * size - 0.5);
+        for (int k = 0; k < 4; ++k) {
+            const vec2 other = (base + vec2(k & 1, k >> 1) + 0.5) / size;
+            const float d = c.z + dot(gradient, other - c.xy) - bias / size.x;
+            if (texture(maps, vec4(other, float(layer), d)) == 0.0) {
+                lit = 0.0;
+                centre = other;
+            }
+        }
+    }
 #if GLAZING
     const vec4 t = texture(panes, vec3(centre, float(layer)));
     return depth > t.a ? lit * t.rgb : vec3(lit);
@@ -138,12 +154,18 @@ vec3 lightContribution(int i, Surface s, vec3 wo) {
 #if SKY
             if (kind == 5) {
                 const mat4 m = dirShadowMatrix[skyMatrixBase + layer];
-                tint = NEAREST_DIRECTIONAL_LIGHT(skyShadows, skyTransmittance, m, layer, y, n, skyDepthBias);
+                tint = NEAREST_DIRECTIONAL_LIGHT(skyShadows, skyTransmittance, m, layer, y, n, planeDepthBias);
             } else
 #endif
             {
                 const mat4 m = dirShadowMatrix[layer];
-                tint = DIRECTIONAL_LIGHT(dirShadows, dirTransmittance, m, layer, y + n * dirNormalOffset, dirDepthBias);
+                // The sun (normalShadow.x 1): by the receiver's plane, at the nearest texel (its
+                // disc's jitter over frames softens the edge); other directional lights with the
+                // 2 x 2 PCF and a normal offset.
+                if (l.normalShadow.x > 0.0)
+                    tint = NEAREST_DIRECTIONAL_LIGHT(dirShadows, dirTransmittance, m, layer, y, n, planeDepthBias);
+                else
+                    tint = DIRECTIONAL_LIGHT(dirShadows, dirTransmittance, m, layer, y + n * dirNormalOffset, dirDepthBias);
             }
         }
     } else
