@@ -1,11 +1,13 @@
 #include "app/cli.h"
 #include "app/cli_support.h"
 
+#include "core/daylight.h"
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
 #include "core/luminaire.h"
 #include "core/number_format.h"
 #include "core/scene_io.h"
+#include "core/sky_model.h"
 #include "core/task_system.h"
 #include "render/backend/film.h"
 #include "render/backend/light_layers/layered_backend.h"
@@ -25,6 +27,7 @@
 #include <functional>
 #include <csignal>
 #include <cstdio>
+#include <iomanip>
 #include <iostream>
 #include <new>
 #include <numbers>
@@ -348,6 +351,7 @@ const char* materialTypeName(MaterialType t) {
     case MaterialType::Mirror: return "mirror";
     case MaterialType::Dielectric: return "dielectric";
     case MaterialType::Emitter: return "emitter";
+    case MaterialType::Glazing: return "glazing";
     }
     return "?";
 }
@@ -383,6 +387,30 @@ void printLuminaire(const Light& l) {
 // Each light's luminous output (683 lm/W, Rec.709 luminance; SPEC.md): the flux of point and spot
 // lights from their distribution's solid angle, of emissive objects pi A L (one-sided Lambertian,
 // A in m^2), and the illuminance a directional light gives a surface facing it.
+// SPEC.md section 5: where the sun stands and what it gives.
+void printSun(const Scene& scene, const Light& l) {
+    const SunSpec s = l.sun.value_or(SunSpec());
+    const V3d toward = sunDirection(scene, l);
+    const double elevation = std::asin(std::clamp(toward.y, -1.0, 1.0)) * 180 / std::numbers::pi;
+    std::cout << "sun, " << formatLumens(s.illuminanceLux) << " lx direct normal, disc " << s.angularDiameterDeg
+              << " deg, elevation " << std::fixed << std::setprecision(2) << elevation << std::defaultfloat
+              << std::setprecision(6) << " deg" << (s.time ? " at " + *s.time + " local time" : std::string())
+              << (toward.y > 0 ? "" : " (below the horizon: no light)") << "\n";
+}
+
+void printSky(const Scene& scene) {
+    if (!scene.sky) return;
+    const Daylight d = resolveDaylight(scene);
+    const char* model = scene.sky->model == SkyModelType::Uniform       ? "uniform"
+                        : scene.sky->model == SkyModelType::CieOvercast ? "cie_overcast"
+                                                                        : "cie_general";
+    const double eh = d.sky->zenithLuminance * relativeHorizontalIlluminance(d.sky->sky, d.sky->towardSun);
+    std::cout << "sky: " << model;
+    if (scene.sky->model == SkyModelType::CieGeneral) std::cout << " type " << scene.sky->cieType;
+    std::cout << ", zenith luminance " << formatLumens(d.sky->zenithLuminance) << " cd/m2, horizontal illuminance "
+              << formatLumens(eh) << " lx, ground " << formatLumens(d.sky->groundLuminance) << " cd/m2\n";
+}
+
 void printPhotometry(const Scene& scene) {
     const auto lumens = [](double watts) { return formatLumens(watts * kLumensPerWatt); };
     for (const Light& l : scene.lights) {
@@ -399,8 +427,10 @@ void printPhotometry(const Scene& scene) {
             std::cout << "directional, " << lumens(luminance(l.irradiance)) << " lx on a surface facing it\n";
             break;
         case LightType::Luminaire: printLuminaire(l); break;
+        case LightType::Sun: printSun(scene, l); break;
         }
     }
+    printSky(scene);
     const double m2 = scene.metersPerUnit * scene.metersPerUnit;
     for (const Object& o : scene.objects) {
         const auto it = std::find_if(scene.materials.begin(), scene.materials.end(),
@@ -433,7 +463,7 @@ int infoImpl(const std::vector<std::string>& args) {
     for (const Material& m : scene.materials) std::cout << "  " << m.name << ": " << materialTypeName(m.type) << "\n";
     std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
               << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
-              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires;
+              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires << ", sun " << (f.hasSun ? 1 : 0);
     if (const auto off = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return !l.on; }))
         std::cout << "; " << off << " switched off";
     std::cout << ")\n";
@@ -445,6 +475,8 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasDielectric) needs += " dielectric";
     if (f.emitterTriangles) needs += " area-lights";
     if (f.hasDeltaLights()) needs += " delta-lights";
+    if (f.hasDaylight()) needs += " daylight";
+    if (f.hasGlazing) needs += " glazing";
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
     std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";
     return 0;
@@ -493,6 +525,8 @@ void printUsage() {
                  "               [--spacing M] [--method path|ir|bdpt|mir|mlt|cmlt|preview] [--error F]\n"
                  "               [--time SECONDS] [--option NAME=VALUE] [--csv OUT.csv]\n"
                  "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
+                 "               [--daylight-factor [--median-diffuse-illuminance LX]]   the daylight factor under\n"
+                 "               the CIE overcast sky instead, with EN 17037's daylight provision\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";

@@ -3,6 +3,8 @@
 
 #include "core/atomic_file.h"
 #include "core/calculation_grid.h"
+#include "core/daylight.h"
+#include "core/daylight_provision.h"
 #include "core/process_group.h"
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
@@ -28,6 +30,8 @@ struct GridArgs {
     bool corner = false, u = false, v = false;
     GridSettings settings;
     int threads = 0;
+    bool daylightFactor = false;                    // SPEC.md section 5's DF instead of lux
+    std::optional<double> medianDiffuseIlluminance; // lx, EN 17037's site value
 };
 
 V3d parseVector(const std::string& option, const std::string& text) {
@@ -76,6 +80,9 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--vpl-paths") g.settings.vplPathsPerPass = parseNumber<int>(a, value(), 1, 1 << 24);
         else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--csv") g.csv = value();
+        else if (a == "--daylight-factor") g.daylightFactor = true;
+        else if (a == "--median-diffuse-illuminance")
+            g.medianDiffuseIlluminance = parseNumber<double>(a, value(), 1.0, 200000.0);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (g.scene.empty()) g.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
@@ -85,16 +92,19 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     if (rectangle == g.workPlaneM.has_value())
         throw UsageError("grid: give either --work-plane HEIGHT or --corner, --u and --v");
     if (rectangle && !(g.corner && g.u && g.v)) throw UsageError("grid: --corner, --u and --v go together");
+    if (g.medianDiffuseIlluminance && !g.daylightFactor)
+        throw UsageError("--median-diffuse-illuminance: only with --daylight-factor");
     return g;
 }
 
-void printTable(const GridLayout& layout, const GridResult& r) {
+// The grid's values, rows from the far edge (v) down; `scale` turns lux into what is printed.
+void printTable(const GridLayout& layout, const GridResult& r, double scale = 1.0, const char* format = "%9.1f") {
     if (layout.nu > 16) return;  // a wide grid reads better from the CSV
     for (int j = layout.nv - 1; j >= 0; --j) {
         for (int i = 0; i < layout.nu; ++i) {
             const size_t k = size_t(j) * layout.nu + i;
             if (r.insideGeometry[k]) std::printf("%9s", "inside");
-            else std::printf("%9.1f", r.lux[k]);
+            else std::printf(format, r.lux[k] * scale);
         }
         std::printf("\n");
     }
@@ -103,8 +113,11 @@ void printTable(const GridLayout& layout, const GridResult& r) {
 // What a grid needs once its arguments and scene are known.
 struct GridSetup {
     GridArgs g;
-    SceneSnapshot scene;
+    SceneSnapshot scene;             // with --daylight-factor, the daylight-factor scene
     GridLayout layout;
+    double skyHorizontalIlluminance = 0;  // --daylight-factor: Eh,sky, lx
+    double medianDiffuseIlluminance = kDefaultMedianDiffuseIlluminance;
+    bool medianGiven = false;        // by the option or the site (else EN 17037's usual value)
 };
 
 // Everything that can fail on bad input before any work; of a distributed grid, every rank does
@@ -117,6 +130,19 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         loaded = loadScene(g.scene);
     } catch (const SceneError& e) {
         throw UsageError(e.what());
+    }
+    double skyEh = 0, median = kDefaultMedianDiffuseIlluminance;
+    bool medianGiven = false;
+    if (g.daylightFactor) {
+        // SPEC.md section 5: the CIE overcast sky alone, everything electric off.
+        if (g.medianDiffuseIlluminance) median = *g.medianDiffuseIlluminance, medianGiven = true;
+        else if (loaded.site && loaded.site->medianDiffuseIlluminance)
+            median = *loaded.site->medianDiffuseIlluminance, medianGiven = true;
+        DaylightFactorScene df = daylightFactorScene(loaded);
+        if (!(df.skyHorizontalIlluminance > 0))
+            throw UsageError("grid: --daylight-factor: the sky gives no light (its quantity is 0)");
+        skyEh = df.skyHorizontalIlluminance;
+        loaded = std::move(df.scene);
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(std::move(loaded));
     if (g.workPlaneM) {
@@ -166,7 +192,44 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
                          " takes no backend options but light_sampler (path and ir are set with --samples and --vpl-paths)");
     }
-    return {std::move(g), scene, std::move(layout)};
+    return {std::move(g), scene, std::move(layout), skyEh, median, medianGiven};
+}
+
+// --daylight-factor: DF = 100 E / Eh,sky per point (SPEC.md section 5), its average, minimum and
+// uniformity, and EN 17037's daylight provision on the plane.
+int reportDaylightFactor(const GridSetup& setup, const GridResult& r) {
+    const GridArgs& g = setup.g;
+    const GridLayout& layout = setup.layout;
+    const double perLux = 100.0 / setup.skyHorizontalIlluminance;
+    std::vector<double> df(r.lux.size());
+    for (size_t i = 0; i < df.size(); ++i) df[i] = r.lux[i] * perLux;
+    const GridStatistics s = gridStatistics(df, r.insideGeometry);
+    std::printf("daylight factor on grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(),
+                layout.nu, layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
+                g.settings.autoMethod ? " (auto)" : "");
+    std::printf("CIE overcast sky alone, Eh,sky %.1f lx on an open horizontal plane; sun and electric lights off\n",
+                setup.skyHorizontalIlluminance);
+    if (s.excluded > 0) std::printf("%d of %zu points inside geometry, excluded\n", s.excluded, layout.points.size());
+    if (s.counted == 0) {
+        std::printf("DF: none (every point is inside geometry)\n");
+    } else {
+        std::printf("DFavg %.2f%%, DFmin %.2f%%, DFmax %.2f%%, uniformity DFmin/DFavg %.3f\n", s.average, s.minimum,
+                    s.maximum, s.uniformity);
+        std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %s%s\n",
+                    100.0 * r.maxRelativeError, r.passes, formatSeconds(r.seconds).c_str(),
+                    r.converged ? "" : " (target not reached)");
+        const DaylightProvision p = checkDaylightProvision(df, r.insideGeometry, setup.medianDiffuseIlluminance);
+        std::printf("median external diffuse illuminance %.0f lx%s; EN 17037 asks for its reference plane 0.85 m above "
+                    "the floor (this grid's plane is the one given)\n",
+                    setup.medianDiffuseIlluminance, setup.medianGiven ? "" : " (not given: EN 17037's usual value)");
+        std::printf("%s", describeProvision(p).c_str());
+    }
+    printTable(layout, r, perLux, "%9.2f");
+    if (!g.csv.empty()) {
+        writeTextAtomically(g.csv, gridCsv(layout, r.lux, r.errorLux, r.insideGeometry, r.errorBarUnknown, perLux));
+        std::fprintf(stderr, "wrote %s\n", g.csv.c_str());
+    }
+    return 0;
 }
 
 int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
@@ -215,6 +278,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     }
     if (!speaks) return 0;
 
+    if (g.daylightFactor) return reportDaylightFactor(*setup, *result);
     const GridResult& r = *result;
     const GridStatistics s = gridStatistics(r.lux, r.insideGeometry);
     std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(), layout.nu,

@@ -104,10 +104,11 @@ GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<
 }
 
 std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux,
-                    const std::vector<uint8_t>& insideGeometry, bool errorUnknown) {
+                    const std::vector<uint8_t>& insideGeometry, bool errorUnknown, std::optional<double> dfPerLux) {
     std::ostringstream out;
     out.precision(9);
-    out << "i,j,x,y,z,illuminance_lux,error_lux,inside_geometry\n";
+    out << "i,j,x,y,z,illuminance_lux,error_lux,inside_geometry" << (dfPerLux ? ",daylight_factor_percent,error_percent" : "")
+        << "\n";
     for (int j = 0; j < layout.nv; ++j)
         for (int i = 0; i < layout.nu; ++i) {
             const size_t k = size_t(j) * size_t(layout.nu) + size_t(i);
@@ -116,7 +117,13 @@ std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, co
                 << ',';
             if (errorUnknown) out << "unknown";
             else out << (k < errorLux.size() ? errorLux[k] : 0.0);
-            out << ',' << (k < insideGeometry.size() && insideGeometry[k] ? 1 : 0) << '\n';
+            out << ',' << (k < insideGeometry.size() && insideGeometry[k] ? 1 : 0);
+            if (dfPerLux) {
+                out << ',' << (k < lux.size() ? lux[k] : 0.0) * *dfPerLux << ',';
+                if (errorUnknown) out << "unknown";
+                else out << (k < errorLux.size() ? errorLux[k] : 0.0) * *dfPerLux;
+            }
+            out << '\n';
         }
     return out.str();
 }

@@ -71,8 +71,10 @@ GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<
 
 // The grid as CSV: a header line, then one row per point: i, j, x, y, z (scene units), the
 // illuminance in lux, its error bar in lux ("unknown" where the method cannot back one) and
-// inside_geometry (1 for a point left out of the figures, else 0).
+// inside_geometry (1 for a point left out of the figures, else 0); with dfPerLux (100 / Eh,sky
+// of a daylight-factor grid), also daylight_factor_percent and error_percent.
 std::string gridCsv(const GridLayout& layout, const std::vector<double>& lux, const std::vector<double>& errorLux,
-                    const std::vector<uint8_t>& insideGeometry = {}, bool errorUnknown = false);
+                    const std::vector<uint8_t>& insideGeometry = {}, bool errorUnknown = false,
+                    std::optional<double> dfPerLux = std::nullopt);
 
 }  // namespace lucerna

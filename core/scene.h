@@ -161,6 +161,9 @@ struct Site {
     double utcOffsetHours = 0;
     V3d north{0, 0, -1};      // horizontal direction of geographic north; east = north x up
     bool northGiven = false;  // written back only if it was there
+    // An addition to SPEC.md (README, "Daylight"): the site's median external diffuse
+    // illuminance, lx, from which EN 17037's daylight-factor targets follow. Absent: not given.
+    std::optional<double> medianDiffuseIlluminance;
 
     bool operator==(const Site&) const = default;
 };

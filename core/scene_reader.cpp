@@ -519,7 +519,7 @@ private:
     }
 
     Site parseSite(const Value& v, const std::string& place) const {
-        checkKeys(v, place, {"latitude", "longitude", "utc_offset", "north"});
+        checkKeys(v, place, {"latitude", "longitude", "utc_offset", "north", "median_diffuse_illuminance"});
         Site s;
         s.latitudeDeg = numberIn(required(v, place, "latitude"), member(place, "latitude"), -90, false, 90, false, " degrees");
         s.longitudeDeg = numberIn(required(v, place, "longitude"), member(place, "longitude"), -180, false, 180, false, " degrees");
@@ -530,6 +530,9 @@ private:
             if (s.north.y != 0) fail(item(here, 1), "north is horizontal: its y must be 0, got " + shortestNumber(s.north.y));
             s.northGiven = true;
         }
+        if (const Value* e = v.find("median_diffuse_illuminance"))
+            s.medianDiffuseIlluminance =
+                numberIn(*e, member(place, "median_diffuse_illuminance"), 0, true, 200000, false, " lx");
         return s;
     }
 

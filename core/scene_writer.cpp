@@ -172,6 +172,7 @@ std::string site(const Site& s) {
     std::string out = "{\"latitude\": " + num(s.latitudeDeg) + ", \"longitude\": " + num(s.longitudeDeg) +
                       ", \"utc_offset\": " + num(s.utcOffsetHours);
     if (s.northGiven || s.north != Site().north) out += ", \"north\": " + vec(s.north);
+    if (s.medianDiffuseIlluminance) out += ", \"median_diffuse_illuminance\": " + num(*s.medianDiffuseIlluminance);
     return out + "}";
 }
 

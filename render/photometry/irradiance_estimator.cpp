@@ -72,12 +72,14 @@ Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r, bool through
         const float cosTheta = frame.toLocal(ls.wi).z;
         if (cosTheta <= 0.0f) continue;
         float transmittance = 1.0f;
-        if (scene_.occluded(ls.shadowRay)) {
+        const Rgb through = scene_.transmittance(ls.shadowRay);  // glazing on the way
+        if (isBlack(through)) {
             if (!throughPanes) continue;
             transmittance = thinPaneTransmittance(scene_, ls.shadowRay);
             if (transmittance <= 0.0f) continue;
         }
-        Lo += white_.albedo * ls.value * float(transmittance * cosTheta / std::numbers::pi);
+        Lo += white_.albedo * ls.value * (isBlack(through) ? Rgb(1, 1, 1) : through) *
+              float(transmittance * cosTheta / std::numbers::pi);
     }
     return Lo;
 }
@@ -106,8 +108,10 @@ Rgb IrradianceEstimator::samplePath(const IrradianceSensor& sensor, Rng& rng, co
     if (scene_.lights().sample(r.x, uLight, uSelect, ls, frame.n) && !ls.isDelta) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(white_, woLocal, wiLocal);
-        if (!isBlack(f) && !scene_.occluded(ls.shadowRay))
-            Lo += f * ls.value * (std::abs(wiLocal.z) / ls.pdf) * powerHeuristic(ls.pdf, bsdfPdf(white_, woLocal, wiLocal));
+        const Rgb through = isBlack(f) ? Rgb(0, 0, 0) : scene_.transmittance(ls.shadowRay);
+        if (!isBlack(through))
+            Lo += f * ls.value * through * (std::abs(wiLocal.z) / ls.pdf) *
+                  powerHeuristic(ls.pdf, bsdfPdf(white_, woLocal, wiLocal));
     }
 
     BsdfSample bs;

@@ -4,7 +4,9 @@
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cmath>
 
 #include <stdexcept>
 #include <string>
@@ -27,6 +29,56 @@ void fillRay(RTCRay& r, const Ray& ray) {
     r.id = 0;
     r.flags = 0;
 }
+
+// The panes a ray crosses, collected by a context filter: Embree calls it for every candidate
+// hit, in no particular order and possibly twice for one triangle (spatial splits), so the
+// crossings are kept and sorted out after the traversal. Plain contexts have no filter.
+constexpr int kMaxCrossings = 64;  // past that (never in a building) further panes count as clear
+struct PaneContext {
+    RTCIntersectContext base;  // first: Embree hands the filter &base
+    const PaneTable* panes = nullptr;
+    int count = 0;
+    struct Crossing {
+        float t;
+        int32_t pane;
+    } crossings[kMaxCrossings];
+};
+
+void crossPanes(const RTCFilterFunctionNArguments* args) {
+    auto* context = reinterpret_cast<PaneContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const unsigned triangle = RTCHitN_primID(args->hit, args->N, i);
+        const int32_t pane = context->panes->paneOfTriangle[triangle];
+        if (pane < 0) continue;  // opaque: the hit stands
+        if (context->count < kMaxCrossings) context->crossings[context->count++] = {RTCRayN_tfar(args->ray, args->N, i), pane};
+        args->valid[i] = 0;  // crossed, not hit
+    }
+}
+
+void initPaneContext(PaneContext& c, const PaneTable& panes) {
+    rtcInitIntersectContext(&c.base);
+    c.base.filter = crossPanes;
+    c.panes = &panes;
+}
+
+// The product over the crossings before tEnd, each pane once per place it is crossed: two
+// crossings of one pane within a relative 1e-5 of t are its triangles meeting at an edge, or one
+// triangle reported twice.
+Rgb crossedTransmittance(const PaneContext& c, const PaneTable& panes, float tEnd) {
+    Rgb product(1, 1, 1);
+    for (int i = 0; i < c.count; ++i) {
+        const auto& a = c.crossings[i];
+        if (!(a.t < tEnd)) continue;
+        bool counted = false;
+        for (int j = 0; j < i && !counted; ++j) {
+            const auto& b = c.crossings[j];
+            counted = b.pane == a.pane && b.t < tEnd && std::abs(b.t - a.t) <= 1e-5f * std::max(a.t, b.t);
+        }
+        if (!counted) product *= panes.transmittance[size_t(a.pane)];
+    }
+    return product;
+}
 }  // namespace
 
 struct EmbreeScene::Impl {
@@ -34,14 +86,16 @@ struct EmbreeScene::Impl {
     SceneHandle scene;
 };
 
-EmbreeScene::EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles)
+EmbreeScene::EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles, PaneTable panes)
     : impl_(std::make_unique<Impl>()) {
+    if (!panes.empty() && panes.paneOfTriangle.size() == triangles.size()) panes_ = std::move(panes);
     impl_->device.reset(rtcNewDevice(nullptr));
     if (!impl_->device)
         throw std::runtime_error("Embree: cannot create a device (error " +
                                  std::to_string(int(rtcGetDeviceError(nullptr))) + ")");
     impl_->scene.reset(rtcNewScene(impl_->device.get()));
-    rtcSetSceneFlags(impl_->scene.get(), RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(impl_->scene.get(), hasPanes() ? RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION
+                                                    : RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(impl_->scene.get(), RTC_BUILD_QUALITY_HIGH);
     if (!triangles.empty()) {
         RTCGeometry geom = rtcNewGeometry(impl_->device.get(), RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -102,19 +156,20 @@ size_t EmbreeScene::replay(const std::vector<RayRecorder::Entry>& rays) const {
     return hits;
 }
 
-RayHit EmbreeScene::intersect(const Ray& ray) const {
+RayHit EmbreeScene::intersect(const Ray& ray, Rgb* transmittance) const {
     if (recorder_) [[unlikely]] record(ray, false);
-    return intersectUnrecorded(ray);
+    return intersectUnrecorded(ray, transmittance);
 }
 
-RayHit EmbreeScene::intersectUnrecorded(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+RayHit EmbreeScene::intersectUnrecorded(const Ray& ray, Rgb* transmittance) const {
+    PaneContext context;
+    if (hasPanes()) initPaneContext(context, panes_);
+    else rtcInitIntersectContext(&context.base);
     RTCRayHit rh;
     fillRay(rh.ray, ray);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(impl_->scene.get(), &context, &rh);
+    rtcIntersect1(impl_->scene.get(), &context.base, &rh);
     RayHit hit;
     if (rh.hit.geomID != RTC_INVALID_GEOMETRY_ID) {
         hit.t = rh.ray.tfar;
@@ -122,7 +177,20 @@ RayHit EmbreeScene::intersectUnrecorded(const Ray& ray) const {
         hit.b1 = rh.hit.u;
         hit.b2 = rh.hit.v;
     }
+    if (transmittance) *transmittance = context.count > 0 ? crossedTransmittance(context, panes_, hit.t) : Rgb(1, 1, 1);
     return hit;
+}
+
+Rgb EmbreeScene::transmittance(const Ray& ray) const {
+    if (!hasPanes()) return occluded(ray) ? Rgb(0, 0, 0) : Rgb(1, 1, 1);
+    if (recorder_) [[unlikely]] record(ray, true);
+    PaneContext context;
+    initPaneContext(context, panes_);
+    RTCRay r;
+    fillRay(r, ray);
+    rtcOccluded1(impl_->scene.get(), &context.base, &r);
+    if (r.tfar < 0.0f) return Rgb(0, 0, 0);
+    return crossedTransmittance(context, panes_, std::numeric_limits<float>::infinity());
 }
 
 bool EmbreeScene::occluded(const Ray& ray) const {
@@ -136,6 +204,10 @@ bool EmbreeScene::occluded(const Ray& ray) const {
 }
 
 void EmbreeScene::intersectCoherent(const Ray* rays, RayHit* hits, size_t count) const {
+    if (hasPanes()) {  // the pane filter keeps one ray's crossings: no packets
+        for (size_t i = 0; i < count; ++i) hits[i] = intersect(rays[i]);
+        return;
+    }
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;

@@ -54,19 +54,34 @@ struct RayRecorder {
     bool countOnly;
 };
 
+// Glazing (SPEC.md section 5): triangles that rays cross instead of hitting, each crossing
+// scaling what the ray carries by its pane's transmittance. A pane is one surface: a ray that
+// crosses it where two of its triangles meet is scaled once.
+struct PaneTable {
+    std::vector<int32_t> paneOfTriangle;  // by triangle; -1: opaque
+    std::vector<Rgb> transmittance;       // by pane
+    bool empty() const { return transmittance.empty(); }
+};
+
 class EmbreeScene {
 public:
     // Builds a BVH over the triangles (robust, high-quality build). Throws std::runtime_error if
     // Embree cannot be initialised.
-    EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles);
+    EmbreeScene(const std::vector<V3f>& positions, const std::vector<V3i>& triangles, PaneTable panes = {});
     ~EmbreeScene();
     EmbreeScene(const EmbreeScene&) = delete;
     EmbreeScene& operator=(const EmbreeScene&) = delete;
 
-    // Closest hit in (tNear, tFar); incoherent single rays.
-    RayHit intersect(const Ray& ray) const;
-    // True when anything lies in (tNear, tFar).
+    // Closest opaque hit in (tNear, tFar); incoherent single rays. Panes are crossed: with
+    // `transmittance`, the product of the transmittances of the panes before the hit (or along
+    // the whole ray when nothing is hit).
+    RayHit intersect(const Ray& ray, Rgb* transmittance = nullptr) const;
+    // True when an opaque surface lies in (tNear, tFar); panes are not in the way.
     bool occluded(const Ray& ray) const;
+    // What reaches the end of the segment (tNear, tFar) per unit sent: 0 when an opaque surface
+    // is in the way, else the product of the transmittances of the panes it crosses.
+    Rgb transmittance(const Ray& ray) const;
+    bool hasPanes() const { return !panes_.empty(); }
 
     // Closest hits for many rays at once, traced as 8-wide packets with Embree's coherent flag
     // (a lone ray as a single ray): for camera rays and other bundles whose rays share an origin
@@ -81,9 +96,10 @@ public:
 
 private:
     void record(const Ray& ray, bool shadow) const;
-    RayHit intersectUnrecorded(const Ray& ray) const;
+    RayHit intersectUnrecorded(const Ray& ray, Rgb* transmittance = nullptr) const;
 
     RayRecorder* recorder_ = nullptr;
+    PaneTable panes_;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

@@ -10,6 +10,11 @@ namespace lucerna {
 
 DeltaLight compileDeltaLight(const Light& l, GoniometricSamplers* samplers) {
     DeltaLight d;
+    if (l.type == LightType::Sun) {  // daylight, placed by the site: RenderScene adds it (black here)
+        d.type = LightType::Directional;
+        d.intensity = Rgb(0, 0, 0);
+        return d;
+    }
     d.type = l.type;
     d.position = toFloat(l.position);
     d.direction = toFloat(l.direction.normalized());
@@ -80,6 +85,7 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
     }
     case LightType::Luminaire: return l.goniometric ? l.goniometric->flux() * y * toScene : 0.0;
     case LightType::Directional: return kPi * double(sceneRadius) * sceneRadius * y;
+    case LightType::Sun: return 0.0;  // never a delta light of its own (compileDeltaLight)
     }
     return 0.0;
 }
@@ -87,13 +93,15 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
 
 LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                            const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
-                           LightSelection selection)
-    : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit),
-      sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
+                           LightSelection selection, std::optional<EnvironmentLight> environment)
+    : emitters_(std::move(emitters)), deltas_(std::move(deltas)), environment_(std::move(environment)),
+      metersPerUnit_(metersPerUnit), sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
     std::vector<double> weights;
-    weights.reserve(emitters_.size() + deltas_.size());
+    weights.reserve(emitters_.size() + deltas_.size() + 1);
     for (const auto& e : emitters_) weights.push_back(emitterPower(e));
     for (const auto& l : deltas_) weights.push_back(deltaPower(l, metersPerUnit, sceneRadius));
+    // The power of the particles the environment sends: pi R^2 times its integrated radiance.
+    if (environment_) weights.push_back(kPi * double(sceneRadius) * sceneRadius * environment_->integratedLuminance());
     select_ = DiscreteDistribution(weights);
     areaPdf_.assign(emitters_.empty() ? 0 : triangleCount, 0.0f);
     if (!select_.empty())
@@ -170,6 +178,7 @@ void LightSampler::buildTree(size_t triangleCount) {
         }
         leaves_.push_back({index, index + 1, 0.0f});
     }
+    if (environment_) directional_.push_back(environmentIndex());
     if (leaves_.size() == 1 && directional_.empty()) {
         // One cluster (a quad lamp) or one light: the tree would choose it with probability 1
         // and its triangles by area, as power selection does, only slower.
@@ -215,7 +224,34 @@ bool LightSampler::sample(const SurfacePoint& ref, const V2f& u, float uSelect, 
     }
     out.light = uint32_t(index);
     if (index < emitters_.size()) return sampleEmitter(emitters_[index], selectPdf, ref, u, out);
+    if (isEnvironment(uint32_t(index))) return sampleEnvironment(selectPdf, ref, u, out);
     return sampleDelta(deltas_[index - emitters_.size()], selectPdf, ref, out);
+}
+
+float LightSampler::environmentSelectPdf() const {
+    if (!environment_) return 0.0f;
+    if (!leaves_.empty() || !directional_.empty()) return 1.0f / float(directional_.size() + (tree_.empty() ? 0 : 1));
+    return select_.size() > 1 ? float(select_.pdf(environmentIndex())) : 1.0f;
+}
+
+float LightSampler::pdfEnvironment(const V3f& w) const {
+    return environment_ ? environmentSelectPdf() * environment_->pdf(w) : 0.0f;
+}
+
+float LightSampler::pdfEnvironmentByPower(const V3f& w) const {
+    if (!environment_) return 0.0f;
+    return (select_.size() > 1 ? float(select_.pdf(environmentIndex())) : 1.0f) * environment_->pdf(w);
+}
+
+bool LightSampler::sampleEnvironment(float selectPdf, const SurfacePoint& ref, const V2f& u, LightSample& out) const {
+    float pdf = 0.0f;
+    if (!environment_->sample(u, out.wi, pdf, out.value)) return false;
+    out.pdf = selectPdf * pdf;
+    out.isDelta = false;
+    // Somewhere up the ray, outside the scene (bidirectional connections need a place).
+    out.position = ref.p + out.wi * (2.0f * sceneRadius_ + (ref.p - sceneCenter_).length());
+    out.shadowRay = Ray{ref.spawnOrigin(out.wi), out.wi};
+    return out.pdf > 0.0f && std::isfinite(out.pdf);
 }
 
 bool LightSampler::sampleDeltaLight(size_t index, const SurfacePoint& ref, LightSample& out) const {
@@ -295,6 +331,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
     }
     out = EmissionSample();
     out.light = uint32_t(index);
+    if (isEnvironment(uint32_t(index))) return emitFromEnvironment(selectPdf, uPosition, uDirection, out);
     if (index < emitters_.size()) {
         const EmitterTriangle& e = emitters_[index];
         const V2f b = squareToUniformTriangle(uPosition);
@@ -362,6 +399,27 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
     out.deltaPosition = true;
     out.pdfPosition = selectPdf;
     return true;
+}
+
+bool LightSampler::emitFromEnvironment(float selectPdf, const V2f& uPosition, const V2f& uDirection,
+                                       EmissionSample& out) const {
+    // A direction toward the sky, then a point on the disc of the scene's radius facing it,
+    // just outside the scene; the particle travels back along the direction.
+    V3f toward;
+    float pdfDirection = 0.0f;
+    Rgb L;
+    if (!environment_->sample(uDirection, toward, pdfDirection, L)) return false;
+    const V2f d = squareToUniformDisk(uPosition) * sceneRadius_;
+    const Frame frame(toward);
+    out.position = sceneCenter_ + toward * sceneRadius_ + frame.s * d.x + frame.t * d.y;
+    out.direction = -toward;
+    out.normal = -toward;
+    const float area = kPi * sceneRadius_ * sceneRadius_;
+    out.pdfPosition = selectPdf / area;
+    out.pdfDirection = pdfDirection;
+    out.power = L / (out.pdfPosition * pdfDirection);
+    out.environment = true;
+    return isFinite(out.power);
 }
 
 float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, const V3f& nq,

@@ -1,11 +1,14 @@
 #pragma once
 // Next-event estimation: choosing a light in proportion to its power and a point or direction on
 // it. Emissive triangles are one-sided (SPEC.md); point, spot and directional lights are delta
-// lights that no ray can hit. A scene with a single emitter skips the selection table.
+// lights that no ray can hit; daylight (sky, ground, the sun's disc) is one environment light
+// at infinity that rays leaving the scene see. A scene with a single emitter skips the
+// selection table.
 
 #include "core/scene.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/embree_scene.h"
+#include "render/trace/environment_light.h"
 #include "render/trace/goniometric_sampler.h"
 #include "render/trace/light_tree.h"
 #include "render/trace/surface_point.h"
@@ -58,8 +61,9 @@ struct LightSample {
     float pdf = 0;   // solid angle pdf (area lights), or the selection probability (delta lights)
     bool isDelta = false;
     Ray shadowRay;   // offset at both ends; occluded() on it decides visibility
-    // Which light: emitters()[light], or deltaLights()[light - emitters().size()]; and the point
-    // sampled on it (area, point, spot; unused for directional). Bidirectional MIS needs both.
+    // Which light: emitters()[light], deltaLights()[light - emitters().size()], or the
+    // environment (environmentIndex()); and the point sampled on it (area, point, spot; unused
+    // for directional and the environment). Bidirectional MIS needs both.
     uint32_t light = 0;
     V3f position{0, 0, 0};
 };
@@ -82,6 +86,7 @@ struct EmissionSample {
     SurfacePoint surface() const;     // the point on an area light, for spawning the first ray
     V3f pError{0, 0, 0};              // error bound of position (area lights)
     uint32_t light = 0;               // which light, numbered as LightSample::light
+    bool environment = false;         // from the environment: position is on a disc outside the scene
 };
 
 // How next-event estimation chooses a light: in proportion to power everywhere, or by a light
@@ -97,11 +102,16 @@ public:
     // scene's cross-section); triangleCount sizes the per-triangle pdf table for MIS.
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                  const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
-                 LightSelection selection = kDefaultLightSelection);
+                 LightSelection selection = kDefaultLightSelection,
+                 std::optional<EnvironmentLight> environment = std::nullopt);
 
-    bool empty() const { return emitters_.empty() && deltas_.empty(); }
+    bool empty() const { return emitters_.empty() && deltas_.empty() && !environment_; }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
     const std::vector<DeltaLight>& deltaLights() const { return deltas_; }
+    const EnvironmentLight* environment() const { return environment_ ? &*environment_ : nullptr; }
+    // The environment's number in LightSample::light's numbering (after every other light).
+    uint32_t environmentIndex() const { return uint32_t(emitters_.size() + deltas_.size()); }
+    bool isEnvironment(uint32_t light) const { return environment_ && light == environmentIndex(); }
 
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
     // (back of an emitter, outside a spot's cone, zero power). With the tree, directional lights
@@ -136,21 +146,32 @@ public:
     // strategies, pbrt-v4's PdfLightOrigin does the same).
     float areaPdfByPower(uint32_t triangle) const { return triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f; }
 
+    // Solid-angle pdf with which sample() yields the environment's direction w (unit, out of the
+    // scene) at p (sample()'s ref.p, with its `receiving`). 0 without an environment.
+    float pdfEnvironment(const V3f& w) const;
+    // The same were the light chosen by power (BDPT's light-path origin, as areaPdfByPower).
+    float pdfEnvironmentByPower(const V3f& w) const;
+
 private:
     bool sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
                        LightSample& out) const;
     bool sampleDelta(const DeltaLight& l, float selectPdf, const SurfacePoint& ref, LightSample& out) const;
+    bool sampleEnvironment(float selectPdf, const SurfacePoint& ref, const V2f& u, LightSample& out) const;
+    bool emitFromEnvironment(float selectPdf, const V2f& uPosition, const V2f& uDirection, EmissionSample& out) const;
+    // The probability that sample() chooses the environment (the same wherever it is).
+    float environmentSelectPdf() const;
     void buildTree(size_t triangleCount);
     // Tree selection: the light (emitters_ then deltas_ numbering) and its probability at p.
     bool selectByTree(const V3f& p, const V3f& n, float u, size_t& index, float& pdf) const;
 
     std::vector<EmitterTriangle> emitters_;
     std::vector<DeltaLight> deltas_;
-    DiscreteDistribution select_;       // over emitters_ then deltas_; unused with one entry
+    std::optional<EnvironmentLight> environment_;
+    DiscreteDistribution select_;       // over emitters_, deltas_, then the environment; unused with one entry
     std::vector<float> areaPdf_;        // by render-scene triangle: selection pdf / area (0: not an emitter)
     // Tree selection only: the tree, whose light k is leaves_[k]: a cluster of emissive
-    // triangles or one point, spot or luminaire light; the directional lights beside it; each
-    // emitter's share of its cluster (by area); each emissive triangle's leaf (-1: none).
+    // triangles or one point, spot or luminaire light; the directional lights and the
+    // environment beside it (directional_); each emitter's share of its cluster (by area); each emissive triangle's leaf (-1: none).
     struct TreeLeaf {
         uint32_t begin = 0, end = 0;  // lights [begin, end) in emitters_ then deltas_ numbering
         float area = 0;               // a cluster's area, scene units^2

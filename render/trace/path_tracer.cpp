@@ -19,8 +19,10 @@ Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial
     if (!scene_.lights().sample(hit, u, uSelect, ls, frame.n)) return Rgb(0, 0, 0);
     const V3f wiLocal = frame.toLocal(ls.wi);
     const Rgb f = bsdfEval(mat, woLocal, wiLocal);
-    if (isBlack(f) || scene_.occluded(ls.shadowRay)) return Rgb(0, 0, 0);
-    const Rgb unweighted = f * ls.value * (std::abs(wiLocal.z) / ls.pdf);
+    if (isBlack(f)) return Rgb(0, 0, 0);
+    const Rgb through = scene_.transmittance(ls.shadowRay);
+    if (isBlack(through)) return Rgb(0, 0, 0);
+    const Rgb unweighted = f * ls.value * through * (std::abs(wiLocal.z) / ls.pdf);
     if (ls.isDelta) return unweighted;
     return unweighted * powerHeuristic(ls.pdf, bsdfPdf(mat, woLocal, wiLocal));
 }
@@ -34,8 +36,19 @@ Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* fro
     V3f nPrev = from ? from->receiving : V3f(0, 0, 0);
 
     for (int depth = 0;; ++depth) {
-        const auto hit = scene_.intersect(ray);
-        if (!hit) break;
+        Rgb through;
+        const auto hit = scene_.intersect(ray, nullptr, &through);
+        throughput *= through;  // panes crossed on the way (glazing)
+        if (!hit) {
+            // Leaving the scene: daylight, weighted against next-event estimation as emitters are.
+            const Rgb Le = scene_.escapedRadiance(ray.direction);
+            if (!isBlack(Le)) {
+                const float weight =
+                    specularBounce ? 1.0f : powerHeuristic(bsdfPdfPrev, scene_.lights().pdfEnvironment(ray.direction));
+                L += throughput * Le * weight;
+            }
+            break;
+        }
         const ShadingMaterial& mat = scene_.material(hit->material);
         const V3f wo = -ray.direction;  // unit: camera and BSDF directions are
 

@@ -15,12 +15,18 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
     for (const Material& m : s.materials) materials_.push_back(ShadingMaterial::fromMaterial(m));
 
     std::vector<EmitterTriangle> emitters;
+    PaneTable panes;
     V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const Object& o : s.objects) {
         if (!o.worldMesh) continue;
         const uint32_t materialId = uint32_t(s.materialIndex(o.material));
         const ShadingMaterial& mat = materials_[materialId];
         const bool emits = mat.isEmitter() && !isBlack(mat.radiance);
+        int32_t pane = -1;
+        if (mat.type == MaterialType::Glazing) {
+            pane = int32_t(panes.transmittance.size());
+            panes.transmittance.push_back(toFloat(s.materials[materialId].transmittance));
+        }
         const int base = int(positions_.size());
         for (const V3d& v : o.worldMesh->vertices) {
             positions_.push_back(toFloat(v));
@@ -34,6 +40,7 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
             const auto index = uint32_t(triangles_.size());
             triangles_.push_back(V3i(t.x + base, t.y + base, t.z + base));
             triangleMaterial_.push_back(materialId);
+            panes.paneOfTriangle.push_back(pane);
             triangleNormal_.push_back(len > 0 ? toFloat(cross / len) : V3f(0, 0, 1));
             triangleArea_.push_back(float(0.5 * len));
             if (emits && len > 0) {
@@ -54,9 +61,20 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         DeltaLight d = compileDeltaLight(l, &samplers);
         if (!isBlack(d.intensity)) deltas.push_back(d);
     }
+    // Daylight (SPEC.md section 5): a sun without a disc is a directional light after the others;
+    // the sky and a sun with a disc are the environment.
+    const Daylight daylight = resolveDaylight(s);
+    if (daylight.sun && !(daylight.sun->halfAngleRad > 0) && daylight.sun->aboveHorizon) {
+        DeltaLight sun;
+        sun.type = LightType::Directional;
+        sun.direction = toFloat(-daylight.sun->towardSun);
+        sun.intensity = toFloat(daylight.sun->irradiance());
+        if (!isBlack(sun.intensity)) deltas.push_back(sun);
+    }
     lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
-                           triangles_.size(), lightSelection);
-    accel_ = std::make_unique<EmbreeScene>(positions_, triangles_);
+                           triangles_.size(), lightSelection, EnvironmentLight::fromDaylight(daylight));
+    if (panes.empty()) panes.paneOfTriangle.clear();
+    accel_ = std::make_unique<EmbreeScene>(positions_, triangles_, std::move(panes));
 }
 
 SurfacePoint RenderScene::surfacePoint(uint32_t tri, float b1, float b2) const {
@@ -72,8 +90,8 @@ SurfacePoint RenderScene::surfacePoint(uint32_t tri, float b1, float b2) const {
     return sp;
 }
 
-std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t) const {
-    const RayHit hit = accel_->intersect(ray);
+std::optional<SurfacePoint> RenderScene::intersect(const Ray& ray, float* t, Rgb* transmittance) const {
+    const RayHit hit = accel_->intersect(ray, transmittance);
     if (!hit.found()) return std::nullopt;
     if (t) *t = hit.t;
     return surfacePoint(hit.triangle, hit.b1, hit.b2);
@@ -90,11 +108,11 @@ void RenderScene::intersectCoherent(std::span<const Ray> rays, std::span<std::op
     }
 }
 
-bool RenderScene::unoccluded(const SurfacePoint& a, const SurfacePoint& b) const {
+Rgb RenderScene::transmittanceBetween(const SurfacePoint& a, const SurfacePoint& b) const {
     const V3f d = b.p - a.p;
     const V3f from = a.spawnOrigin(d);
     const V3f to = b.spawnOrigin(-d);
-    return !accel_->occluded(Ray{from, to - from, 0.0f, kShadowRayEnd});
+    return accel_->transmittance(Ray{from, to - from, 0.0f, kShadowRayEnd});
 }
 
 }  // namespace lucerna

@@ -42,17 +42,27 @@ public:
         return {positions_[t.x], positions_[t.y], positions_[t.z]};
     }
 
-    // Closest surface along the ray, if any.
-    std::optional<SurfacePoint> intersect(const Ray& ray, float* t = nullptr) const;
+    // Closest surface along the ray, if any. Glazing is crossed, never hit (SPEC.md section 5):
+    // with `transmittance`, what the panes before the hit (or along the whole ray on a miss)
+    // let through, per unit.
+    std::optional<SurfacePoint> intersect(const Ray& ray, float* t = nullptr, Rgb* transmittance = nullptr) const;
     // Closest hits of a bundle of coherent rays (camera rays through nearby pixels), traced as
     // Embree packets: the same answers as intersect(), ray by ray.
     void intersectCoherent(std::span<const Ray> rays, std::span<std::optional<SurfacePoint>> hits) const;
     // Point at barycentrics (b1, b2) of a triangle, with its error bound.
     SurfacePoint surfacePoint(uint32_t tri, float b1, float b2) const;
-    // True when nothing blocks the segment between two surface points (each offset off its
-    // surface toward the other).
-    bool unoccluded(const SurfacePoint& a, const SurfacePoint& b) const;
+    // What passes along the segment between two surface points (each offset off its surface
+    // toward the other), per unit: 0 when an opaque surface blocks it, else the product of the
+    // transmittances of the panes it crosses (1 without glazing).
+    Rgb transmittanceBetween(const SurfacePoint& a, const SurfacePoint& b) const;
+    // The same along a shadow ray (LightSample::shadowRay).
+    Rgb transmittance(const Ray& ray) const { return accel_->transmittance(ray); }
+    // True when an opaque surface blocks the ray; panes do not.
     bool occluded(const Ray& ray) const { return accel_->occluded(ray); }
+    bool hasGlazing() const { return accel_->hasPanes(); }
+    // Radiance (W sr^-1 m^-2) arriving from infinity along -w for a ray leaving the scene in unit
+    // direction w: the sky, the ground below the horizon and the sun's disc; 0 without daylight.
+    Rgb escapedRadiance(const V3f& w) const { return lights_.environment() ? lights_.environment()->radiance(w) : Rgb(0, 0, 0); }
     // Benchmarks only: records every ray traced from now on (nullptr stops).
     void setRayRecorder(RayRecorder* recorder) { accel_->setRecorder(recorder); }
 

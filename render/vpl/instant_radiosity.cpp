@@ -27,6 +27,7 @@ std::vector<size_t> objectTriangleStarts(const Scene& scene) {
 // its file's scale, black until the file is loaded), without building a luminaire's tables.
 bool lightIsBlack(const Light& l) {
     if (l.type == LightType::Luminaire) return isBlack(toFloat(luminaireRadiantScale(l)));
+    if (l.type == LightType::Sun) return true;  // daylight is the environment, no light of its own
     return isBlack(toFloat(l.type == LightType::Directional ? l.irradiance : l.intensity));
 }
 
@@ -120,8 +121,11 @@ int traceLightPath(const RenderScene& scene, const LightSampler& lights, SampleG
     Ray ray = emissionRay(e);
     int deposited = 0;
     for (int bounce = 1; bounce <= options.maxBounces; ++bounce) {
-        const auto hit = scene.intersect(ray);
+        Rgb through;
+        const auto hit = scene.intersect(ray, nullptr, &through);
         if (!hit) break;
+        beta *= through;  // glazing crossed on the way
+        if (isBlack(beta)) break;
         const ShadingMaterial& mat = scene.material(hit->material);
         if (mat.isEmitter()) break;  // emitters reflect nothing
         const V3f incident = -ray.direction.normalized();

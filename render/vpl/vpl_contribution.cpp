@@ -31,20 +31,20 @@ Rgb vplContributionUnshadowed(const RenderScene& scene, const Vpl& vpl, const Vp
     return isFinite(value) ? value : Rgb(0, 0, 0);
 }
 
-bool vplVisible(const RenderScene& scene, const Vpl& vpl, const SurfacePoint& x) {
+Rgb vplTransmittance(const RenderScene& scene, const Vpl& vpl, const SurfacePoint& x) {
     SurfacePoint v;
     v.p = vpl.position;
     v.pError = vpl.pError;
     v.ng = vpl.normal;
     v.triangle = vpl.triangle;
     v.material = vpl.material;
-    return scene.unoccluded(x, v);
+    return scene.transmittanceBetween(x, v);
 }
 
 Rgb vplContribution(const RenderScene& scene, const Vpl& vpl, const VplReceiver& r, float maxG) {
     const Rgb c = vplContributionUnshadowed(scene, vpl, r, maxG);
-    if (isBlack(c) || !vplVisible(scene, vpl, r.x)) return Rgb(0, 0, 0);
-    return c;
+    if (isBlack(c)) return c;
+    return c * vplTransmittance(scene, vpl, r.x);
 }
 
 Rgb gatherVpls(const RenderScene& scene, std::span<const Vpl> vpls, std::span<const float> scale,

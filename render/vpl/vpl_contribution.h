@@ -32,7 +32,7 @@ struct VplReceiver {
 Rgb vplContributionUnshadowed(const RenderScene& scene, const Vpl& vpl, const VplReceiver& r, float maxG);
 
 // True when nothing blocks the segment between x and the VPL (shadow ray offset at both ends).
-bool vplVisible(const RenderScene& scene, const Vpl& vpl, const SurfacePoint& x);
+Rgb vplTransmittance(const RenderScene& scene, const Vpl& vpl, const SurfacePoint& x);
 
 // vplContributionUnshadowed times visibility (the shadow ray is traced only when the rest is
 // non-zero).

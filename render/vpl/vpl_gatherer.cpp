@@ -14,10 +14,16 @@ PathSettings residualPathSettings() { return PathSettings{}; }
 CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth) {
     CameraVertex cv;
     for (int depth = 0; depth <= maxSpecularDepth; ++depth) {
-        const auto hit = scene.intersect(ray);
+        Rgb through;
+        const auto hit = scene.intersect(ray, nullptr, &through);
         const V2f ud = u.next2D();
         const float uLobe = u.next1D();
-        if (!hit) break;
+        cv.throughput *= through;  // glazing crossed on the way
+        if (!hit) {
+            // The sky seen directly or through mirrors and glass: no other strategy finds it.
+            cv.emitted += cv.throughput * scene.escapedRadiance(ray.direction.normalized());
+            break;
+        }
         const ShadingMaterial& mat = scene.material(hit->material);
         const V3f wo = -ray.direction.normalized();
         if (mat.isEmitter()) {
@@ -59,8 +65,9 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     if (scene_.lights().sample(r.x, uLight, uSelect, ls, frame.n) && !(withoutDeltaLights && ls.isDelta)) {
         const V3f wiLocal = frame.toLocal(ls.wi);
         const Rgb f = bsdfEval(mat, woLocal, wiLocal);
-        if (!isBlack(f) && !scene_.occluded(ls.shadowRay)) {
-            const Rgb unweighted = f * ls.value * (std::abs(wiLocal.z) / ls.pdf);
+        const Rgb through = isBlack(f) ? Rgb(0, 0, 0) : scene_.transmittance(ls.shadowRay);
+        if (!isBlack(through)) {
+            const Rgb unweighted = f * ls.value * through * (std::abs(wiLocal.z) / ls.pdf);
             L += ls.isDelta ? unweighted : unweighted * powerHeuristic(ls.pdf, bsdfPdf(mat, woLocal, wiLocal));
         }
     }
@@ -73,13 +80,20 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     const V3f wi = frame.toWorld(bs.wi);
     const Ray ray{r.x.spawnOrigin(wi), wi};
     float t = 0;
-    const auto hit = scene_.intersect(ray, &t);
-    if (!hit) return L;
+    Rgb through;
+    const auto hit = scene_.intersect(ray, &t, &through);
+    if (!hit) {
+        // Daylight, weighted against next-event estimation as emitters are.
+        const Rgb Le = scene_.escapedRadiance(wi);
+        if (!isBlack(Le)) L += bs.weight * through * Le * powerHeuristic(bs.pdf, scene_.lights().pdfEnvironment(wi));
+        return L;
+    }
+    if (isBlack(through)) return L;
     const ShadingMaterial& m2 = scene_.material(hit->material);
     if (m2.isEmitter()) {
         if (hit->ng.dot(-wi) > 0.0f) {
             const float w = powerHeuristic(bs.pdf, scene_.lights().pdfEmitter(hit->triangle, r.x.p, hit->p, hit->ng, frame.n));
-            L += bs.weight * m2.radiance * w;
+            L += bs.weight * through * m2.radiance * w;
         }
         return L;
     }
@@ -94,6 +108,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
         if (!(weight > 0.0f)) return L;
     }
     // Light leaving x2 toward x1: x2 does not emit, so the path tracer returns reflected light only.
+    // (It traces this ray again, panes included.)
     const Rgb Lx2 = pathTracer_.radiance(ray, rng);
     L += bs.weight * Lx2 * weight;
     return L;

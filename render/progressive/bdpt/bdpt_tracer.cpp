@@ -51,8 +51,14 @@ void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool 
     const float beta0 = maxComponent(beta);
     if (maxAdded <= 0 || !(beta0 > 0.0f)) return;
     for (int bounces = 0;;) {
-        const auto hit = bounces == 0 && firstHit ? *firstHit : scene_.intersect(ray);
-        if (!hit) break;
+        Rgb through(1, 1, 1);
+        const auto hit = bounces == 0 && firstHit ? *firstHit : scene_.intersect(ray, nullptr, &through);
+        beta *= through;  // glazing crossed on the way (a primary hit given by the caller crossed none)
+        if (!hit) {
+            if (cameraSide && scene_.lights().environment()) path.push_back(escapedVertex(ray, beta, pdfDir));
+            break;
+        }
+        if (isBlack(beta)) break;
         PathVertex v;
         v.kind = VertexKind::Surface;
         v.sp = *hit;
@@ -105,6 +111,24 @@ void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool 
     }
 }
 
+PathVertex BdptTracer::escapedVertex(const Ray& ray, const Rgb& beta, float pdfDir) const {
+    PathVertex v;
+    v.kind = VertexKind::EnvironmentLight;
+    const V3f dir = ray.direction.normalized();
+    v.sp.p = farAlong(ray.origin, dir);
+    v.sp.pError = V3f(0, 0, 0);
+    v.sp.ng = -dir;
+    v.wo = -dir;
+    v.beta = beta;
+    v.pdfFwd = pdfDir;  // per unit solid angle (toArea leaves densities toward infinity so)
+    v.light = scene_.lights().environmentIndex();
+    return v;
+}
+
+V3f BdptTracer::farAlong(const V3f& p, const V3f& dir) const {
+    return p + dir * (2.0f * scene_.boundsRadius() + (p - scene_.boundsCenter()).length());
+}
+
 void BdptTracer::traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit,
                                     SampleGenerator& rng) {
     const int point = scene_.camera().pointAt(x);
@@ -123,7 +147,11 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
     PathVertex v0;
     v0.sp = es.surface();
     v0.light = es.light;
-    if (es.triangle != 0xffffffffu) {
+    if (es.environment) {
+        v0.kind = VertexKind::EnvironmentLight;
+        v0.sp.ng = es.direction;
+        v0.pdfFwd = densities_.pdfLightOrigin(v0);
+    } else if (es.triangle != 0xffffffffu) {
         v0.kind = VertexKind::AreaLight;
         v0.sp.material = 0;
         v0.pdfFwd = es.pdfPosition;
@@ -143,7 +171,7 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
     const V3f origin = v0.kind == VertexKind::AreaLight ? v0.sp.spawnOrigin(es.direction) : es.position;
     randomWalk(Ray{origin, es.direction}, es.power, es.pdfDirection, settings_.maxDepth, false, rng, light_);
     // Parallel particles: the first hit's density is the disk's, projected (pbrt-v3 16.3.2).
-    if (v0.kind == VertexKind::DirectionalLight && light_.size() >= 2)
+    if ((v0.kind == VertexKind::DirectionalLight || v0.atInfinity()) && light_.size() >= 2)
         light_[1].pdfFwd = densities_.pdfLight(light_[0], light_[1]);
 }
 
@@ -163,8 +191,12 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
     const PathVertex* sampledPtr = nullptr;
     if (s == 0) {
         const PathVertex& pt = camera_[t - 1];
-        if (pt.kind != VertexKind::Surface || !scene_.material(pt.sp.material).isEmitter()) return L;
-        L = pt.beta * densities_.emitted(pt, pt.wo);
+        if (pt.atInfinity()) {
+            L = pt.beta * densities_.emitted(pt, pt.sp.ng);
+        } else {
+            if (pt.kind != VertexKind::Surface || !scene_.material(pt.sp.material).isEmitter()) return L;
+            L = pt.beta * densities_.emitted(pt, pt.wo);
+        }
     } else if (t == 1) {
         const PathVertex& qs = light_[s - 1];
         if (!connectible(qs) || qs.kind == VertexKind::Camera) return L;
@@ -185,7 +217,8 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         L = qs.beta * f * (std::abs(qs.sp.ng.dot(w)) * densities_.cameraImportance(point, -w) / dist2);
         if (isBlack(L)) return L;
         const V3f from = qs.sp.spawnOrigin(w);
-        if (scene_.occluded(Ray{from, sampled.p() - from, 0.0f, kShadowRayEnd})) return Rgb(0, 0, 0);
+        L *= scene_.transmittance(Ray{from, sampled.p() - from, 0.0f, kShadowRayEnd});
+        if (isBlack(L)) return L;
     } else if (s == 1) {
         const PathVertex& pt = camera_[t - 1];
         if (!connectible(pt)) return L;
@@ -197,7 +230,11 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         sampled.light = ls.light;
         sampled.sp.p = ls.position;
         sampled.sp.pError = V3f(0, 0, 0);
-        if (ls.light < lights.emitters().size()) {
+        if (lights.isEnvironment(ls.light)) {
+            sampled.kind = VertexKind::EnvironmentLight;
+            sampled.sp.ng = -ls.wi;
+            sampled.pdfFwd = densities_.pdfLightOrigin(sampled);
+        } else if (ls.light < lights.emitters().size()) {
             const EmitterTriangle& e = lights.emitters()[ls.light];
             sampled.kind = VertexKind::AreaLight;
             sampled.sp.ng = e.normal;
@@ -216,7 +253,8 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         sampledPtr = &sampled;
         L = pt.beta * densities_.bsdf(pt, ls.wi) * ls.value * (std::abs(pt.sp.ng.dot(ls.wi)) / ls.pdf);
         if (isBlack(L)) return L;
-        if (scene_.occluded(ls.shadowRay)) return Rgb(0, 0, 0);
+        L *= scene_.transmittance(ls.shadowRay);
+        if (isBlack(L)) return L;
     } else {
         const PathVertex &qs = light_[s - 1], &pt = camera_[t - 1];
         if (!connectible(qs) || !connectible(pt)) return L;
@@ -228,7 +266,8 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         const float g = std::abs(qs.sp.ng.dot(w)) * std::abs(pt.sp.ng.dot(w)) / dist2;
         L = qs.beta * densities_.bsdf(qs, w) * densities_.bsdf(pt, -w) * pt.beta * g;
         if (isBlack(L)) return L;
-        if (!scene_.unoccluded(qs.sp, pt.sp)) return Rgb(0, 0, 0);
+        L *= scene_.transmittanceBetween(qs.sp, pt.sp);
+        if (isBlack(L)) return L;
     }
     if (!weighted) return L;
     const float w = misWeight(s, t, sampledPtr);

@@ -8,6 +8,7 @@ VertexDensities::VertexDensities(const RenderScene& scene)
     : scene_(scene), directionalDiskPdf_(1.0f / (kPi * scene.boundsRadius() * scene.boundsRadius())) {}
 
 float VertexDensities::toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
+    if (to.atInfinity()) return pdfSolidAngle;  // a direction, not a place
     const V3f w = to.p() - from.p();
     const float dist2 = w.length2();
     if (!(dist2 > 0.0f)) return 0.0f;
@@ -67,6 +68,8 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
         const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
         return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(l.direction)) : directionalDiskPdf_;
     }
+    case VertexKind::EnvironmentLight:  // the same disk, facing the direction chosen
+        return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(v.sp.ng)) : directionalDiskPdf_;
     case VertexKind::Camera: return 0.0f;
     }
     if (next.onSurface()) pdf *= std::abs(next.sp.ng.dot(w));
@@ -74,6 +77,7 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
 }
 
 float VertexDensities::pdfLightOrigin(const PathVertex& v) const {
+    if (v.atInfinity()) return scene_.lights().pdfEnvironmentByPower(-v.sp.ng);  // its direction's density
     if (v.kind != VertexKind::AreaLight && v.kind != VertexKind::Surface) return 0.0f;
     // By power even where next-event estimation chooses lights by the tree: the weights of all
     // strategies then use one density for the origin and still sum to one (light_sampler.h).
@@ -95,6 +99,7 @@ Rgb VertexDensities::emitted(const PathVertex& v, const V3f& w) const {
         const float mpu = scene_.metersPerUnit();
         return l.intensity * (l.factor(w) / (mpu * mpu));
     }
+    case VertexKind::EnvironmentLight: return scene_.escapedRadiance(-w);
     default: return Rgb(0, 0, 0);
     }
 }

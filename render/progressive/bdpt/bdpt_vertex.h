@@ -20,6 +20,11 @@ enum class VertexKind : uint8_t {
     SpotLight,         // delta position
     Luminaire,         // delta position, a goniometric distribution
     DirectionalLight,  // delta direction; `sp.p` is a point on the disk the particles start from
+    // Daylight at infinity (pbrt-v3's infinite lights): `sp.ng` is the direction the light
+    // travels, `sp.p` a point far up the beam (a camera subpath that left the scene, a
+    // next-event sample) or on the disk particles start from. Densities toward it stay per
+    // unit solid angle; its origin density is the direction's.
+    EnvironmentLight,
 };
 
 struct PathVertex {
@@ -34,6 +39,7 @@ struct PathVertex {
 
     const V3f& p() const { return sp.p; }
     bool onSurface() const { return kind == VertexKind::Surface || kind == VertexKind::AreaLight; }
+    bool atInfinity() const { return kind == VertexKind::EnvironmentLight; }
     bool isDeltaLight() const {
         return kind == VertexKind::PointLight || kind == VertexKind::SpotLight || kind == VertexKind::Luminaire ||
                kind == VertexKind::DirectionalLight;
@@ -84,7 +90,7 @@ private:
     float bsdfPdf(const PathVertex& v, const V3f& wFrom, const V3f& wTo) const;
 
     const RenderScene& scene_;
-    float directionalDiskPdf_;  // 1 / (pi R^2): the disk a directional light's particles start from
+    float directionalDiskPdf_;  // 1 / (pi R^2): the disk a directional or environment light's particles start from
 };
 
 // Two-sided materials shade with the geometric normal flipped toward wo (SPEC.md); glass keeps

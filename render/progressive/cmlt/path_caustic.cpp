@@ -22,7 +22,8 @@ bool CausticPath::build(const std::vector<PathVertex>& path) {
     for (int j = 2; j < k; ++j)
         if (!path[size_t(j)].delta) return false;
     light_ = path[size_t(k)];
-    if (light_.kind == VertexKind::DirectionalLight || light_.kind == VertexKind::Camera) return false;
+    // Parallel light and the sky have no place to perturb a direction from.
+    if (light_.kind == VertexKind::DirectionalLight || light_.atInfinity() || light_.kind == VertexKind::Camera) return false;
     if (light_.kind == VertexKind::Surface && !scene_.material(light_.sp.material).isEmitter()) return false;
     sensorPoint_ = int(path[0].light);
     refracted_.clear();
@@ -36,11 +37,13 @@ Rgb CausticPath::contribution(const V3f& w, float& rasterX, float& rasterY) cons
     if (isBlack(le)) return Rgb(0, 0, 0);
     const bool area = light_.onSurface();
     Ray ray{area ? light_.sp.spawnOrigin(w) : light_.p(), w};
-    std::optional<SurfacePoint> hit = scene_.intersect(ray);
-    Rgb throughput = le * (area ? std::abs(light_.sp.ng.dot(w)) : 1.0f);
+    Rgb through;
+    std::optional<SurfacePoint> hit = scene_.intersect(ray, nullptr, &through);
+    Rgb throughput = le * through * (area ? std::abs(light_.sp.ng.dot(w)) : 1.0f);
     for (const bool refracted : refracted_) {
         if (!hit || !followSpecular(scene_, *hit, refracted, ray, throughput)) return Rgb(0, 0, 0);
-        hit = scene_.intersect(ray);
+        hit = scene_.intersect(ray, nullptr, &through);
+        throughput *= through;
     }
     if (!hit) return Rgb(0, 0, 0);
     const ShadingMaterial& mat = scene_.material(hit->material);
@@ -59,7 +62,7 @@ Rgb CausticPath::contribution(const V3f& w, float& rasterX, float& rasterY) cons
                   (std::abs(y1.sp.ng.dot(y1.wo)) * densities_.cameraImportance(sensorPoint_, -y1.wo) / dist2);
     if (isBlack(c) || !isFinite(c)) return Rgb(0, 0, 0);
     const V3f from = y1.sp.spawnOrigin(y1.wo);
-    return scene_.occluded(Ray{from, sensor - from, 0.0f, kShadowRayEnd}) ? Rgb(0, 0, 0) : c;
+    return c * scene_.transmittance(Ray{from, sensor - from, 0.0f, kShadowRayEnd});
 }
 
 }  // namespace lucerna

@@ -18,6 +18,7 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
     refracted_.assign(size_t(m_), false);
     for (int j = 1; j < m_; ++j) refracted_[size_t(j)] = refractedAt(path, j);
     endsAtM_ = m_ == k;
+    endsAtSky_ = path[size_t(k)].atInfinity();
     kept_.clear();
     keptEndsAtEmitter_ = false;
     rest_ = Rgb(1, 1, 1);
@@ -32,7 +33,7 @@ bool LensPath::build(const std::vector<PathVertex>& path) {
         if (n == k) {
             keptEndsAtEmitter_ = true;
             const bool causticSeenDirectly = m_ == 1 && kept_.size() == 1;  // path_caustic.h's
-            return path[size_t(k)].onSurface() && !causticSeenDirectly;
+            return (path[size_t(k)].onSurface() || endsAtSky_) && !causticSeenDirectly;
         }
     }
     return buildJoin(path, n);
@@ -75,15 +76,21 @@ bool LensPath::buildJoin(const std::vector<PathVertex>& path, int n) {
 
 Rgb LensPath::contribution(float x, float y, const std::optional<SurfacePoint>& primaryHit) const {
     Ray ray = scene_.camera().ray(x, y);
-    const SurfacePoint* hit = primaryHit ? &*primaryHit : nullptr;
     std::optional<SurfacePoint> traced;
     Rgb throughput(1, 1, 1);  // P
+    const auto trace = [&] {
+        Rgb through;
+        traced = scene_.intersect(ray, nullptr, &through);
+        throughput *= through;  // glazing on the way
+        return traced ? &*traced : nullptr;
+    };
+    // The packet's primary hit knows nothing of panes: with glazing the camera ray is traced again.
+    const SurfacePoint* hit = scene_.hasGlazing() ? trace() : primaryHit ? &*primaryHit : nullptr;
     for (int j = 1; j < m_; ++j) {
         if (!hit || !followSpecular(scene_, *hit, refracted_[size_t(j)], ray, throughput)) return Rgb(0, 0, 0);
-        traced = scene_.intersect(ray);
-        hit = traced ? &*traced : nullptr;
+        hit = trace();
     }
-    if (!hit) return Rgb(0, 0, 0);
+    if (!hit) return endsAtM_ && endsAtSky_ ? throughput * scene_.escapedRadiance(ray.direction.normalized()) : Rgb(0, 0, 0);
     PathVertex ym;
     ym.kind = VertexKind::Surface;
     ym.sp = *hit;
@@ -103,16 +110,20 @@ Rgb LensPath::alongKeptDirections(PathVertex& y) const {
         c *= densities_.bsdf(y, d.w) * std::abs(y.sp.ng.dot(d.w));
         if (isBlack(c)) return c;
         Ray ray{y.sp.spawnOrigin(d.w), d.w};
-        std::optional<SurfacePoint> hit = scene_.intersect(ray);
+        Rgb through;
+        std::optional<SurfacePoint> hit = scene_.intersect(ray, nullptr, &through);
+        c *= through;
         for (const bool refracted : d.refracted) {
             if (!hit || !followSpecular(scene_, *hit, refracted, ray, c)) return Rgb(0, 0, 0);
-            hit = scene_.intersect(ray);
+            hit = scene_.intersect(ray, nullptr, &through);
+            c *= through;
         }
-        if (!hit) return Rgb(0, 0, 0);
+        const bool last = keptEndsAtEmitter_ && i + 1 == kept_.size();
+        if (!hit) return last && endsAtSky_ ? c * scene_.escapedRadiance(ray.direction.normalized()) : Rgb(0, 0, 0);
         y.sp = *hit;
         y.wo = -ray.direction.normalized();
         const ShadingMaterial& mat = scene_.material(hit->material);
-        if (keptEndsAtEmitter_ && i + 1 == kept_.size())
+        if (last)
             return mat.isEmitter() ? c * densities_.emitted(y, y.wo) : Rgb(0, 0, 0);
         if (mat.isDelta() || mat.isEmitter()) return Rgb(0, 0, 0);
     }
@@ -120,6 +131,13 @@ Rgb LensPath::alongKeptDirections(PathVertex& y) const {
 }
 
 Rgb LensPath::joined(const PathVertex& yn, const Rgb& before) const {
+    if (next_.atInfinity()) {
+        // The sky keeps its direction, as a kept direction does: y_n sees it along w, or not.
+        const V3f w = -next_.sp.ng;
+        const Rgb c = before * densities_.bsdf(yn, w) * scene_.escapedRadiance(w) * std::abs(yn.sp.ng.dot(w));
+        if (isBlack(c) || !isFinite(c)) return Rgb(0, 0, 0);
+        return c * scene_.transmittance(Ray{yn.sp.spawnOrigin(w), w});
+    }
     const V3f d = next_.p() - yn.p();
     const float dist2 = d.length2();
     if (!(dist2 > 0.0f)) return Rgb(0, 0, 0);
@@ -128,9 +146,9 @@ Rgb LensPath::joined(const PathVertex& yn, const Rgb& before) const {
     const Rgb atNext = nextIsLast_ ? densities_.emitted(next_, -w) : densities_.bsdf(next_, -w);
     const Rgb c = before * densities_.bsdf(yn, w) * atNext * rest_ * g;
     if (isBlack(c) || !isFinite(c)) return Rgb(0, 0, 0);
-    if (next_.onSurface()) return scene_.unoccluded(yn.sp, next_.sp) ? c : Rgb(0, 0, 0);
+    if (next_.onSurface()) return c * scene_.transmittanceBetween(yn.sp, next_.sp);
     const V3f from = yn.sp.spawnOrigin(w);
-    return scene_.occluded(Ray{from, next_.p() - from, 0.0f, kShadowRayEnd}) ? Rgb(0, 0, 0) : c;
+    return c * scene_.transmittance(Ray{from, next_.p() - from, 0.0f, kShadowRayEnd});
 }
 
 }  // namespace lucerna

@@ -68,6 +68,7 @@ private:
     const VertexDensities& densities_;
     int m_ = 0;                   // the first non-specular vertex
     bool endsAtM_ = false;        // m = k: y_m must be an emitter
+    bool endsAtSky_ = false;      // x_k is the environment: the path's last edge leaves the scene
     std::vector<bool> refracted_; // per specular vertex 1 ... m-1
     std::vector<KeptDirection> kept_;  // the multi-chain form's kept directions, in path order
     bool keptEndsAtEmitter_ = false;   // the last kept direction's chain ends at the emitter x_k
