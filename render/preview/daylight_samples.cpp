@@ -115,18 +115,4 @@ std::vector<DirectionalSample> skySamples(const ResolvedSky& sky, int count, uin
     return out;
 }
 
-std::vector<DeltaLight> asDirectionalLights(const std::vector<DirectionalSample>& samples) {
-    std::vector<DeltaLight> lights;
-    for (const DirectionalSample& s : samples) {
-        if (isBlack(s.irradiance)) continue;
-        DeltaLight d;
-        d.type = LightType::Directional;
-        d.position = V3f(0, 0, 0);
-        d.direction = -s.toward;
-        d.intensity = s.irradiance;
-        lights.push_back(d);
-    }
-    return lights;
-}
-
 }  // namespace lucerna

@@ -7,7 +7,7 @@
 // unbiased estimate of the sky's light (frames with fresh directions average to it).
 
 #include "core/daylight.h"
-#include "render/trace/light_sampler.h"
+#include "core/math.h"
 
 #include <optional>
 #include <vector>
@@ -30,8 +30,5 @@ std::optional<DirectionalSample> sunSample(const ResolvedSun& sun, uint64_t seed
 // Empty when the sky is black.
 std::vector<DirectionalSample> skySamples(const ResolvedSky& sky, int count, uint64_t seed);
 inline constexpr int kSkyTableRows = 32;
-
-// Directional lights of these samples, for the light particles that become VPLs.
-std::vector<DeltaLight> asDirectionalLights(const std::vector<DirectionalSample>& samples);
 
 }  // namespace lucerna

@@ -2,7 +2,6 @@
 
 #include "core/scene_change.h"
 
-#include "render/preview/daylight_samples.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/mir_vpl_source.h"
 #include "render/preview/per_light_vpls.h"
@@ -100,10 +99,6 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
 }
 
 namespace {
-
-// Light particles leave the sky along this many of its directions (fresh for every set): tracing
-// costs nothing per direction, unlike a shadow map.
-constexpr int kDaylightParticleDirections = 256;
 
 // The preview's form of a scene light: its delta light, or for a sun (drawn as daylight,
 // render/preview/daylight_samples.h) a dark placeholder that keeps the lights' indices.
@@ -239,29 +234,39 @@ int vplShare(double power, double totalPower, int budget, int subsets) {
     return std::max(subsets, int(std::lround(budget * power / totalPower)));
 }
 
-// Daylight's light particles: the sun and kDaylightParticleDirections of the sky's directions
-// (drawn anew for each seed) as directional lights, each leaving over the scene's cross-section.
-std::vector<DeltaLight> daylightLights(const Preview::State& st, uint64_t seed) {
-    std::vector<DirectionalSample> samples;
-    if (st.daylight.sky) samples = skySamples(*st.daylight.sky, kDaylightParticleDirections, hashSeed(seed, 0xd5ULL));
-    if (st.daylight.sun)
-        if (const auto sun = sunSample(*st.daylight.sun, hashSeed(seed, 0x5a11ULL))) samples.push_back(*sun);
-    return asDirectionalLights(samples);
+// A light sampler over these emitters and delta lights, with the daylight's particles when
+// `daylight`: the sky and the sun's disc as the environment light (render/trace/environment_light.h;
+// particles leave a disc over the scene facing each direction), a sun without a disc as a
+// directional light, as the ray-traced backends have them.
+LightSampler previewLightSampler(const Preview::State& st, std::vector<EmitterTriangle> emitters,
+                                 std::vector<DeltaLight> deltas, bool daylight) {
+    std::optional<EnvironmentLight> environment;
+    if (daylight) {
+        environment = EnvironmentLight::fromDaylight(st.daylight);
+        const auto& sun = st.daylight.sun;
+        if (sun && sun->aboveHorizon && !(sun->halfAngleRad > 0)) {
+            DeltaLight d;
+            d.type = LightType::Directional;
+            d.position = V3f(0, 0, 0);
+            d.direction = toFloat(-sun->towardSun);
+            d.intensity = toFloat(sun->irradiance());
+            if (!isBlack(d.intensity)) deltas.push_back(d);
+        }
+    }
+    return LightSampler(std::move(emitters), std::move(deltas), st.scene->metersPerUnit(), st.scene->boundsCenter(),
+                        st.scene->boundsRadius(), st.scene->triangleCount(), kDefaultLightSelection,
+                        std::move(environment));
 }
 
-LightSampler deltaLightSampler(const Preview::State& st, std::vector<DeltaLight> deltas,
-                               std::vector<EmitterTriangle> emitters = {}) {
-    return LightSampler(std::move(emitters), std::move(deltas), st.scene->metersPerUnit(), st.scene->boundsCenter(),
-                        st.scene->boundsRadius(), st.scene->triangleCount());
-}
+// Daylight's particles alone.
+LightSampler daylightSampler(const Preview::State& st) { return previewLightSampler(st, {}, {}, true); }
 
 // Every light of the scene, daylight's too, chosen by power.
-LightSampler allLightsSampler(const Preview::State& st, uint64_t seed) {
+LightSampler allLightsSampler(const Preview::State& st) {
     std::vector<DeltaLight> deltas;
     for (const DeltaLight& d : st.deltas)
         if (d.type != LightType::Sun) deltas.push_back(d);
-    for (DeltaLight& d : daylightLights(st, seed)) deltas.push_back(std::move(d));
-    return deltaLightSampler(st, std::move(deltas), st.scene->lights().emitters());
+    return previewLightSampler(st, st.scene->lights().emitters(), std::move(deltas), true);
 }
 
 }  // namespace
@@ -296,7 +301,7 @@ void Preview::regenerate(uint64_t seed) {
         LightVpls set;
         set.lightIndex = kAllLights;
         set.count = budget;
-        set.vpls = traceVpls(*st.scene, allLightsSampler(st, seed), budget, hashSeed(seed, 0xa11ULL), settings_.maxBounces);
+        set.vpls = traceVpls(*st.scene, allLightsSampler(st), budget, hashSeed(seed, 0xa11ULL), settings_.maxBounces);
         ++st.generations;
         st.sets.push_back(std::move(set));
         st.vplsDirty = st.lightsDirty = true;
@@ -314,7 +319,7 @@ void Preview::regenerate(uint64_t seed) {
         indices.push_back(int(i));
     }
     if (st.daylight.sun || st.daylight.sky) {
-        samplers.push_back(deltaLightSampler(st, daylightLights(st, seed)));
+        samplers.push_back(daylightSampler(st));
         indices.push_back(kDaylightSet);
     }
     double total = 0;
@@ -371,7 +376,7 @@ void Preview::setLight(size_t index, const Light& light) {
     double total = 0;
     for (const LightVpls& s : st.sets)
         total += s.lightIndex == -1            ? singleLightSampler(*st.scene, nullptr).totalPower()
-                 : s.lightIndex == kDaylightSet ? deltaLightSampler(st, daylightLights(st, st.seed)).totalPower()
+                 : s.lightIndex == kDaylightSet ? daylightSampler(st).totalPower()
                                                 : singleLightSampler(*st.scene, &st.deltas[size_t(s.lightIndex)]).totalPower();
     for (LightVpls& set : st.sets) {
         if (set.lightIndex != int(index)) continue;
@@ -385,7 +390,7 @@ void Preview::setLight(size_t index, const Light& light) {
 
 void Preview::regenerateMir() {
     State& st = *state_;
-    const LightSampler all = allLightsSampler(st, st.seed);
+    const LightSampler all = allLightsSampler(st);
     MirVplSettings mir;
     mir.pathVpls = settings_.indirect ? settings_.vplCount : 0;
     mir.clampFraction = settings_.clampDistance;
