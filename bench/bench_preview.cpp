@@ -10,7 +10,7 @@
 //
 // usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
 //        bench_preview --scenes SCENE.json... [--frames N] [--shaded-lights N] [--proxy N] [--size W H]
-//                      [--sky-samples N]
+//                      [--sky-samples N] [--sky-size TEXELS]
 //        bench_preview --back-wall
 // --scenes: issue 20's table (realSceneRow), one row a scene; --back-wall: backWallBlotches.
 // --target: only the issue's llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
@@ -212,6 +212,7 @@ int main(int argc, char** argv) {
         } else if (!std::strcmp(argv[i], "--shaded-lights") && i + 1 < argc) realSettings.lightsShadedInFull = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--proxy") && i + 1 < argc) realSettings.shadowProxyTriangles = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--sky-samples") && i + 1 < argc) realSettings.skySamples = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--sky-size") && i + 1 < argc) realSettings.skyShadowSize = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--size") && i + 2 < argc) {
             realWidth = std::atoi(argv[++i]);
             realHeight = std::atoi(argv[++i]);

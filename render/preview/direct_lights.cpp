@@ -23,7 +23,7 @@ void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& light
     constexpr int kMaxUnrolledArea = 16;
     const int subsets = st.patternX * st.patternY;
     // Only when the dealt lights are area samples alone (areaSampleLight's cosine emitter).
-    const int perTile = subsets > 1 && !st.interleavedDeltas && st.skyLightCount == 0 ? st.areaLightCount / subsets : 0;
+    const int perTile = subsets > 1 && !st.interleavedDeltas ? st.areaLightCount / subsets : 0;
     st.areaPerTile = perTile <= kMaxUnrolledArea ? perTile : 0;
     if (st.areaPerTile == 0) return;
     const size_t stride = uniformBlockStride(size_t(perTile) * sizeof(GpuLight));
@@ -112,11 +112,11 @@ constexpr int kMaxInterleavedLights = 16;
 // texel): beyond, the faces shrink. 150 lights get 128 x 128 faces, 1,000 lights 32 x 32.
 constexpr double kLightShadowBytes = 160.0 * 1024 * 1024;
 
-// A directional light of the light buffer (kind 2: a scene's directional light or the sun; 5: one
-// of the sky's directions) with its layer of the orthographic maps.
-GpuLight directionalGpuLight(const DirectionalSample& d, float kind, int layer) {
+// A directional light of the light buffer (kind 2: a scene's directional light or the sun) with
+// its layer of the orthographic maps.
+GpuLight directionalGpuLight(const DirectionalSample& d, int layer) {
     GpuLight g{};
-    put(g.positionKind, V3f(0, 0, 0), kind);
+    put(g.positionKind, V3f(0, 0, 0), 2.0f);
     put(g.directionCosCone, -d.toward, -1.0f);
     put(g.intensityCosFalloff, d.irradiance, 0.0f);
     put(g.normalShadow, V3f(0, 0, 0), float(layer));
@@ -124,19 +124,37 @@ GpuLight directionalGpuLight(const DirectionalSample& d, float kind, int layer) 
 }
 
 // The sky's directions for this fresh set (st.seed), a multiple of `multiple` of them (every
-// sub-buffer gets as many), each with its map in st.skyShadows, dealt in the deal's order.
-std::vector<GpuLight> skyLights(Preview::State& st, const PreviewSettings& settings, int multiple, Rng& deal) {
-    std::vector<GpuLight> sky;
+// sub-buffer gets as many), each with its map in st.skyShadows, dealt in the deal's order: sky
+// light i lights sub-buffer i mod `multiple`. In st.skyLightBuffer, and with interleaving as one
+// uniform block per sub-buffer in st.tileSkyBlocks (shade_vpl.frag's SKY_PER_TILE).
+void uploadSkyLights(Preview::State& st, const PreviewSettings& settings, int multiple, Rng& deal) {
+    std::vector<GpuSkyLight> sky;
     st.skyShadows.matrices.clear();
-    if (!st.daylight.sky || settings.skySamples <= 0) return sky;
-    const int count = roundUp(settings.skySamples, multiple);
-    for (const DirectionalSample& d : skySamples(*st.daylight.sky, count, hashSeed(st.seed, 0x5c7ULL))) {
-        sky.push_back(directionalGpuLight(d, 5.0f, int(st.skyShadows.matrices.size())));
-        st.skyShadows.matrices.push_back(
-            directionalShadowMatrix(-d.toward, st.scene->boundsCenter(), st.scene->boundsRadius()));
+    if (st.daylight.sky && settings.skySamples > 0) {
+        const int count = roundUp(settings.skySamples, multiple);
+        for (const DirectionalSample& d : skySamples(*st.daylight.sky, count, hashSeed(st.seed, 0x5c7ULL))) {
+            const Mat4 m = directionalShadowMatrix(-d.toward, st.scene->boundsCenter(), st.scene->boundsRadius());
+            GpuSkyLight g{};
+            put(g.towardLayer, d.toward, float(st.skyShadows.matrices.size()));
+            put(g.irradiance, d.irradiance, 0.0f);
+            std::copy(m.m.begin(), m.m.end(), g.shadow);
+            sky.push_back(g);
+            st.skyShadows.matrices.push_back(m);
+        }
+        for (size_t i = sky.size(); i > 1; --i) std::swap(sky[i - 1], sky[deal.nextUint() % i]);
     }
-    for (size_t i = sky.size(); i > 1; --i) std::swap(sky[i - 1], sky[deal.nextUint() % i]);
-    return sky;
+    st.skyLightCount = int(sky.size());
+    upload(st.skyLightBuffer, sky);
+    st.skyPerTile = multiple > 1 ? st.skyLightCount / multiple : 0;
+    if (st.skyPerTile == 0) return;
+    const size_t stride = uniformBlockStride(size_t(st.skyPerTile) * sizeof(GpuSkyLight));
+    st.skyBlockStride = GLintptr(stride);
+    std::vector<unsigned char> blocks(size_t(multiple) * stride);
+    for (int k = 0; k < multiple; ++k)
+        for (int j = 0; j < st.skyPerTile; ++j)
+            std::memcpy(blocks.data() + size_t(k) * stride + size_t(j) * sizeof(GpuSkyLight),
+                        &sky[size_t(k + j * multiple)], sizeof(GpuSkyLight));
+    upload(st.tileSkyBlocks, blocks);
 }
 
 }  // namespace
@@ -159,7 +177,7 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     // each fresh set (st.seed), so that accumulated frames show the disc's penumbra.
     if (st.daylight.sun)
         if (const auto sun = sunSample(*st.daylight.sun, hashSeed(st.seed, 0x5a11ULL))) {
-            directional.push_back(directionalGpuLight(*sun, 2.0f, 0));
+            directional.push_back(directionalGpuLight(*sun, 0));
             directional.back().normalShadow[0] = 1.0f;  // lights.glsl: looked up by the receiver's plane
             st.dirShadows.matrices.push_back(
                 directionalShadowMatrix(-sun->toward, st.scene->boundsCenter(), st.scene->boundsRadius()));
@@ -223,9 +241,10 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     Rng rng(st.dealSeed, 0xd1ea7ULL);
     // The area samples' deal follows the deal's seed; each keeps its cube (assigned above).
     for (size_t i = area.size(); i > 1; --i) std::swap(area[i - 1], area[rng.nextUint() % i]);
-    // The sky's directions: many, and soft light, so dealt to the sub-buffers like the area samples.
-    const std::vector<GpuLight> sky = skyLights(st, settings, interleave ? subsets : 1, rng);
-    st.skyLightCount = int(sky.size());
+    // The sky's directions: many, and soft light, so dealt to the sub-buffers like the area
+    // samples, in buffers of their own (a loop of their own: through the general light loop they
+    // cost three times as much on llvmpipe).
+    uploadSkyLights(st, settings, interleave ? subsets : 1, rng);
     std::vector<GpuLight> lights = directional;
     st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
     if (!st.interleavedDeltas) {
@@ -254,7 +273,6 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     }
     if (!interleave) {
         lights.insert(lights.end(), area.begin(), area.end());
-        lights.insert(lights.end(), sky.begin(), sky.end());
     }
     st.shadedHere = int(lights.size());
     st.firstInterleaved = int(lights.size());
@@ -282,7 +300,6 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     st.areaLightCount = interleave ? int(area.size()) : 0;
     if (interleave) {
         lights.insert(lights.end(), area.begin(), area.end());
-        lights.insert(lights.end(), sky.begin(), sky.end());
     }
     st.interleavedCount = int(lights.size()) - st.firstInterleaved;
 
@@ -312,10 +329,7 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     st.timings.directionalMaps +=
         st.skyShadows.draw(st.dirShadowProgram, st.sceneCaster, st.glazingShadowProgram, st.paneCaster,
                            settings.skyShadowSize, st.glazing);
-    std::vector<Mat4> matrices = st.dirShadows.matrices;
-    matrices.insert(matrices.end(), st.skyShadows.matrices.begin(), st.skyShadows.matrices.end());
-    upload(st.dirMatrices, matrices);
-    st.skyMatrixBase = int(st.dirShadows.matrices.size());
+    upload(st.dirMatrices, st.dirShadows.matrices);
     st.lightsDirty = false;
 }
 

@@ -192,15 +192,17 @@ std::string define(const char* name, int value) { return std::string("#define ")
 std::string lightKindDefines(const Preview::State& st, int kinds) {
     const auto has = [&](int kind) { return (kinds >> kind) & 1; };
     return define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) + define("AREA", has(3)) + define("LUMINAIRE", has(4)) +
-           define("SKY", has(5)) + define("GLAZING", st.glazing ? 1 : 0);
+           define("GLAZING", st.glazing ? 1 : 0);
 }
 
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
-const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool findEdges, bool fusedSplit) {
+const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool interleavedSky, bool findEdges,
+                                bool fusedSplit) {
     std::string defines = define("VPL_VISIBILITY", st.vplVisibility ? 1 : 0) + define("GLOSSY", st.glossyScene ? 1 : 0) +
                           define("INTERLEAVED_LIGHTS", interleavedLights ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
                           define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
                           define("UNROLLED_AREA", interleavedLights ? st.areaPerTile : 0) +
+                          define("SKY_PER_TILE", interleavedSky ? st.skyPerTile : 0) +
                           lightKindDefines(st, interleavedLights ? st.interleavedKinds : 0) +
                           define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
@@ -208,9 +210,10 @@ const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool
 }
 
 // The direct pass's program for the lights it evaluates (direct.frag's switches).
-const gl::Program& directProgram(Preview::State& st, bool lightLoop) {
+const gl::Program& directProgram(Preview::State& st, bool lightLoop, bool skyLoop) {
     return programVariant(st, "direct.frag",
-                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + lightKindDefines(st, lightLoop ? st.shadedKinds : 0));
+                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + define("SKY_LIGHTS", skyLoop ? 1 : 0) +
+                              lightKindDefines(st, lightLoop ? st.shadedKinds : 0));
 }
 
 // The uniforms and textures of lights.glsl.
@@ -224,15 +227,17 @@ void setLightUniforms(Preview::State& st, const gl::Program& p) {
     const int dirSize = std::max(st.dirShadows.size, 1);
     setFloat(p, "dirNormalOffset", 2.0f * diameter / float(dirSize));
     setFloat(p, "dirDepthBias", 0.5f / float(dirSize));
-    setInt(p, "skyMatrixBase", st.skyMatrixBase);
     setFloat(p, "planeDepthBias", 0.05f);
     setIvec2(p, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, st.dirMatrices.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, st.skyLightBuffer.id());
     st.lightShadows.bind(8);
     glBindTextureUnit(12, st.dirShadows.depth.id());
     glBindTextureUnit(13, st.luminaireTables.id());
     glBindTextureUnit(14, st.skyShadows.depth.id());
+    glBindTextureUnit(17, st.dirShadows.depth.id());
+    glBindSampler(17, st.rawDepth.id());
     if (st.glazing) {
         glBindTextureUnit(15, st.dirShadows.transmittance.id());
         glBindTextureUnit(16, st.skyShadows.transmittance.id());
@@ -407,12 +412,13 @@ Image Preview::render(float jitterX, float jitterY) {
     // Lights dealt to the sub-buffers (area samples, many delta lights) are shaded with the VPLs
     // (shade_vpl.frag), so they are split, gathered and blurred with them.
     const bool interleavedLights = interleaved && s.direct && st.interleavedCount > 0;
-    if (indirect || interleavedLights) {
+    const bool interleavedSky = interleaved && s.direct && st.skyPerTile > 0;
+    if (indirect || interleavedLights || interleavedSky) {
         const bool fused = interleaved && s.split == SplitMode::Fused;
         if (interleaved && !fused) runSplit(st, s.split == SplitMode::TwoPass, w, h, s.blur, eye);
         lap(tm.split);
 
-        const gl::Program& p = shadeProgram(st, interleavedLights, interleaved && s.blur, fused);
+        const gl::Program& p = shadeProgram(st, interleavedLights, interleavedSky, interleaved && s.blur, fused);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
         setIvec2(p, "subSize", st.subW, st.subH);
@@ -441,6 +447,9 @@ Image Preview::render(float jitterX, float jitterY) {
             if (st.unrolledVpls > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
                                   GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
+            if (interleavedSky)
+                glBindBufferRange(GL_UNIFORM_BUFFER, 2, st.tileSkyBlocks.id(), k * st.skyBlockStride,
+                                  GLsizeiptr(size_t(st.skyPerTile) * sizeof(GpuSkyLight)));
             if (interleavedLights && st.areaPerTile > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
                                   GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
@@ -457,12 +466,16 @@ Image Preview::render(float jitterX, float jitterY) {
         if (interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
         lap(tm.gather);
     }
-    const bool withIndirect = indirect || interleavedLights;  // the shading pass's output holds light
+    // The shading pass's output holds light.
+    const bool withIndirect = indirect || interleavedLights || interleavedSky;
 
     const int shadedHere = s.direct ? st.shadedHere : 0;
-    const gl::Program& d = directProgram(st, shadedHere > 0);
+    // Without interleaving the sky's directions are all shaded here.
+    const int skyHere = s.direct && !interleaved ? st.skyLightCount : 0;
+    const gl::Program& d = directProgram(st, shadedHere > 0, skyHere > 0);
     glUseProgram(d.id());
     setInt(d, "shadedHere", shadedHere);
+    setInt(d, "skyLightCount", skyHere);
     setVec3(d, "cameraPos", eye);
     setLightUniforms(st, d);
     setInt(d, "addIndirect", withIndirect ? 1 : 0);

@@ -25,6 +25,9 @@ using Clock = std::chrono::steady_clock;
 struct GpuMaterial { float albedoKind[4], specularAlpha[4], radiance[4]; };
 struct GpuVpl { float positionIndex[4], normalAlpha[4], incident[4], power[4], albedo[4], specular[4]; };
 struct GpuLight { float positionKind[4], directionCosCone[4], intensityCosFalloff[4], normalShadow[4]; };
+// One of the sky's directions (lights.glsl's SkyLight): toward it and its map's layer, its
+// irradiance, its map's matrix (column-major).
+struct GpuSkyLight { float towardLayer[4], irradiance[4], shadow[16]; };
 
 inline void put(float* dst, const V3f& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
 inline void put(float* dst, const Rgb& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
@@ -133,12 +136,18 @@ struct Preview::State {
     gl::Texture viewTransmittance;
     gl::Framebuffer viewTransmittanceFbo;
     // Daylight (SPEC.md section 5, render/preview/daylight_samples.h): the scene's sun and sky,
-    // the sky's directions' maps, and every orthographic map's matrix (the directional lights'
-    // and the sun's, then the sky's from skyMatrixBase on).
+    // the directional lights' and the sun's maps' matrices, and the sky's directions with their
+    // maps (direct_lights.cpp, uploadSkyLights): all of them in skyLightBuffer, and with
+    // interleaving skyPerTile of them a sub-buffer as uniform blocks skyBlockStride apart.
     Daylight daylight;
-    preview_detail::DirectionalShadows skyShadows;
     gl::Buffer dirMatrices;
-    int skyMatrixBase = 0, skyLightCount = 0;
+    preview_detail::DirectionalShadows skyShadows;
+    gl::Buffer skyLightBuffer, tileSkyBlocks;
+    // Reads a depth map's texels as numbers (no comparison, nearest): the sun's, whose texture
+    // compares for the other directional lights' PCF.
+    gl::Sampler rawDepth;
+    int skyLightCount = 0, skyPerTile = 0;
+    GLintptr skyBlockStride = 0;
     gl::Texture luminaireTables;  // luminaire_textures.h: a layer per distinct distribution
     // directLights: [0, shadedHere) shaded in full by the direct pass; [firstInterleaved,
     // firstInterleaved + interleavedCount) dealt to the sub-buffers and shaded with the VPLs:

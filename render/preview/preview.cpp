@@ -36,6 +36,10 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.glazingProgram = gl::loadProgram(d, "gbuffer.vert", "glazing.frag");
     st.glazingShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "glazing.frag");
     st.skyShadows.filtered = false;
+    st.rawDepth = gl::makeSampler();
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
     st.emptyVao = gl::makeVertexArray();
     gl::checkErrors("Preview()");
 }

@@ -78,8 +78,11 @@ struct PreviewSettings {
     // each with an orthographic shadow map of skyShadowSize^2 texels over the scene; with
     // interleaving they are rounded up to a multiple of n m and dealt to the sub-buffers like the
     // area samples. The sun is one directional light with a map of (4 shadowSize)^2.
+    // 256: llvmpipe's shading pass fetched from 64 maps of 512^2 at twice the cost (memory-bound,
+    // 100 against 56 ms for the daylit office at 400x267) and drew them at twice the cost; the
+    // sky's light is soft, and each map's edges are looked up by the receiver's plane.
     int skySamples = 64;
-    int skyShadowSize = 512;
+    int skyShadowSize = 256;
     // Surface interactions a VPL particle may have. Russian roulette ends particles long before
     // (as in the ir backend); a low cap would cut the long paths that closed bright rooms live
     // on (at albedo 0.8, 8 bounces lose 13% of the light).

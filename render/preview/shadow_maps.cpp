@@ -135,7 +135,7 @@ void DirectionalShadows::ensure(int mapSize, int layerCount, bool withPanes) {
     glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, filtered ? GL_LINEAR : GL_NEAREST);
     glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, filtered ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
     glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
     transmittance = gl::Texture();
     if (panes) {

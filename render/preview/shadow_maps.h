@@ -92,9 +92,9 @@ struct DirectionalShadows {
     gl::Framebuffer fbo;
     int size = 0, layers = 0;
     bool panes = false;
-    // Compared with 2 x 2 PCF (the sun's and directional lights' sharp shadows), or at the
-    // nearest texel alone (the sky's many soft directions: a quarter of the lookups, and with
-    // panes two fetches instead of five gathers; 40% of a glazed room's shading pass on llvmpipe).
+    // Compared in the lookup with 2 x 2 PCF (directional lights' shadows), or read as numbers
+    // at the nearest texel (the sky's many directions: lights.glsl compares them by the
+    // receiver's plane).
     bool filtered = true;
     std::vector<Mat4> matrices;
 

@@ -10,7 +10,8 @@
 // Compile-time switches (frame_passes.cpp, directProgram), so that the pass holds only the
 // code the scene's lights need (on llvmpipe an unused light loop still halves this pass's speed):
 //   LIGHT_LOOP   0 when this pass evaluates no light (all light is in the indirect texture);
-//   DIRECTIONAL, SPOT, AREA, LUMINAIRE, SKY, GLAZING   lights.glsl's.
+//   SKY_LIGHTS   1 when the sky's directions are shaded here (no interleaving);
+//   DIRECTIONAL, SPOT, AREA, LUMINAIRE, GLAZING   lights.glsl's.
 #include_brdf
 #include_gbuffer
 #include_box_blur
@@ -20,6 +21,10 @@
 // With interleaving, the lights from firstInterleaved on (many delta lights, the area-light
 // samples) were shaded with the VPLs (shade_vpl.frag) and are inside indirectTex.
 uniform int shadedHere;  // lights[0 .. shadedHere) are evaluated here
+#if SKY_LIGHTS
+layout(std430, binding = 5) readonly buffer SkyLights { SkyLight skyLights[]; };
+uniform int skyLightCount;
+#endif
 uniform vec3 cameraPos;
 uniform int addIndirect;
 layout(binding = 0) uniform sampler2D g0Tex;
@@ -59,6 +64,10 @@ void main() {
         c = addIndirect != 0 ? boxBlur(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1), boxFlip != 0).rgb : vec3(0.0);
 #if LIGHT_LOOP
         for (int i = 0; i < shadedHere; ++i) c += lightContribution(i, s, wo);
+#endif
+#if SKY_LIGHTS
+        for (int i = 0; i < skyLightCount; ++i)
+            c += evalBsdf(s.normal, wo, skyLights[i].towardLayer.xyz, s.albedo, s.specular, s.alpha) * skyLight(skyLights[i], s);
 #endif
     }
 #if GLAZING
