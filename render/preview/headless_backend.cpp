@@ -17,6 +17,8 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     readOption(settings, "unroll", p.maxUnrolledVpls, 0);
     readOption(settings, "shaded_lights", p.lightsShadedInFull, 0);
     readOption(settings, "proxy_triangles", p.shadowProxyTriangles, 0);
+    readOption(settings, "sky_samples", p.skySamples, 0);
+    readOption(settings, "sky_shadow_size", p.skyShadowSize, 1, 16384);
     for (const auto& [key, value] : settings.options) {
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
