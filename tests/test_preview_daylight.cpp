@@ -8,8 +8,8 @@
 //   the roof around it black;
 // - pixels that see nothing show the sky's radiance toward them (a CIE general sky with its sun,
 //   the ground below the horizon), as core/daylight.h computes it;
-// - a sun over a plane: radiance albedo E cos Z / pi / 683 per channel, within 3%; a sun below
-//   the horizon gives nothing;
+// - a sun over a plane: radiance albedo E cos Z / pi / 683 per channel, within 3%; edited to
+//   below the horizon it gives nothing, and edited back at half the illuminance half the light;
 // - the sky's directions (daylight_samples.h) are an unbiased estimate: their irradiance on an
 //   open horizontal plane averages to the sky's horizontal illuminance.
 
@@ -279,10 +279,19 @@ void TestPreviewDaylight::sunOverPlane() {
     mean /= double(img.pixels.size());
     qInfo("sun over a plane: %.4f W/sr/m^2, expected %.4f (%+.2f%%)", mean, expected, 100 * (mean / expected - 1));
     QVERIFY2(std::abs(mean / expected - 1) < 0.03, qPrintable(QString::number(mean / expected - 1)));
-    // Below the horizon: no light.
-    preview.setScene(scene("[0.8660254037844386, 0.5, 0]"));
+    // The sun edited to below the horizon (Preview::setLight resolves daylight again): no light.
+    Light below = scene("[0.8660254037844386, 0.5, 0]")->lights[0];
+    preview.setLight(0, below);
     const Image dark = preview.render();
     for (const Rgb& p : dark.pixels) QCOMPARE(p, Rgb(0, 0, 0));
+    // And back, brighter: the plane follows.
+    below.direction = V3d(0.8660254037844386, -0.5, 0);
+    below.sun->illuminanceLux = 50000;
+    preview.setLight(0, below);
+    double again = 0;
+    for (const Rgb& p : preview.render().pixels) again += (double(p.x) + p.y + p.z) / 3.0;
+    again /= double(img.pixels.size());
+    QVERIFY2(std::abs(again / (0.5 * expected) - 1) < 0.03, qPrintable(QString::number(again / (0.5 * expected) - 1)));
 }
 
 QTEST_GUILESS_MAIN(TestPreviewDaylight)
