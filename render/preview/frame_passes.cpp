@@ -245,7 +245,7 @@ void setLightUniforms(Preview::State& st, const gl::Program& p) {
 }
 
 // The uniforms of sky.glsl: the scene's sky and the sun's disc as seen by pixels with no surface.
-void setBackgroundUniforms(const Preview::State& st, const gl::Program& p) {
+void setBackgroundUniforms(const Preview::State& st, const gl::Program& p, bool sunDisc) {
     int model = 0;
     float zenith = 0, ground = 0, normalisation = 1;
     V3f towardSun(0, 1, 0);
@@ -274,7 +274,7 @@ void setBackgroundUniforms(const Preview::State& st, const gl::Program& p) {
     const auto& sun = st.daylight.sun;
     setVec3(p, "sunToward", sun ? toFloat(sun->towardSun) : V3f(0, 1, 0));
     setFloat(p, "sunCosHalfAngle", sun ? float(std::cos(sun->halfAngleRad)) : 2.0f);
-    const Rgb disc = sun ? toFloat(sun->radiance()) : Rgb(0, 0, 0);
+    const Rgb disc = sun && sunDisc ? toFloat(sun->radiance()) : Rgb(0, 0, 0);
     glProgramUniform3f(p.id(), loc(p, "sunDiscRadiance"), disc.x, disc.y, disc.z);
 }
 
@@ -492,7 +492,7 @@ Image Preview::render(float jitterX, float jitterY) {
         glProgramUniform2f(d.id(), loc(d, "viewJitter"), jitterX, jitterY);
     }
     setInt(d, "showBackground", whiteReceivers_ ? 0 : 1);
-    setBackgroundUniforms(st, d);
+    setBackgroundUniforms(st, d, sunDiscShown_);
     setInt(d, "throughPanes", throughPanes ? 1 : 0);
     glBindTextureUnit(4, st.viewTransmittance.id());
     glBindTextureUnit(0, st.g[0].id());

@@ -2,6 +2,7 @@
 
 #include "core/scene_change.h"
 
+#include "render/preview/daylight_samples.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/mir_vpl_source.h"
 #include "render/preview/per_light_vpls.h"
@@ -427,6 +428,18 @@ double Preview::freshSetShadowTriangles() const {
     // The sky's maps and the sun's (whose direction moves within the disc) draw the scene.
     const double maps = double(st.skyLightCount) + (st.daylight.sun ? 1.0 : 0.0);
     return 6.0 * cubes * double(st.proxyCaster.vertexCount / 3) + maps * double(st.sceneCaster.vertexCount / 3);
+}
+
+Rgb Preview::sunDiscIrradiance(const V3f& point, const V3f& normal) const {
+    const State& st = *state_;
+    if (!st.scene || !st.daylight.sun || !(st.daylight.sun->halfAngleRad > 0)) return Rgb(0, 0, 0);
+    // The same direction as the sun's shadow map of this set (direct_lights.cpp).
+    const auto sun = sunSample(*st.daylight.sun, hashSeed(st.seed, 0x5a11ULL));
+    if (!sun) return Rgb(0, 0, 0);
+    const float cosine = normal.dot(sun->toward);
+    if (cosine <= 0.0f) return Rgb(0, 0, 0);
+    const Ray ray{point + normal * (st.scene->boundsRadius() * 1e-5f), sun->toward};
+    return sun->irradiance * st.scene->transmittance(ray) * cosine;
 }
 
 VplSet Preview::vpls() const {

@@ -161,6 +161,16 @@ public:
     // the irradiance over pi (0 on emitters, mirrors, glass and the background). The VPLs keep
     // the scene's own materials. For the illuminance layer (previewIlluminanceLayer).
     void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
+    // Whether pixels that see no surface show the sun's disc (on by default). Hemicubes of small
+    // faces (hemicube_irradiance.h) would catch a disc a fraction of a pixel wide only now and
+    // then, all their points alike: they take its light from sunDiscIrradiance instead.
+    void setSunDiscShown(bool shown) { sunDiscShown_ = shown; }
+    // The irradiance (W/m^2 per channel) of a sun with a disc at `point` on a surface of unit
+    // `normal`: from the direction the current fresh set draws within the disc, through panes
+    // times their transmittance, 0 behind anything opaque (a ray traced). 0 without such a sun,
+    // or for a sun of diameter 0 (a directional light of the render scene's, as calculation
+    // grids already sum).
+    Rgb sunDiscIrradiance(const V3f& point, const V3f& normal) const;
     const PreviewTimings& timings() const;
     // What the preview gave up on this scene to stay within the GPU's limits (fewer shadowed
     // VPLs, smaller or shared shadow maps, pooled VPLs), in one line for a status bar or stderr;
@@ -189,6 +199,7 @@ private:
     PreviewSettings settings_;
     bool albedoLayer_ = false;
     bool whiteReceivers_ = false;
+    bool sunDiscShown_ = true;
 };
 
 // The illuminance layer (lux, render/photometry/illuminance_layer.h) as the preview sees it: the
