@@ -1,6 +1,7 @@
 #include "core/model_import.h"
 
 #include "core/gltf_material_extensions.h"
+#include "core/mesh_edges.h"
 #include "core/message_text.h"
 #include "core/regular_file.h"
 #include "core/texture_average.h"
@@ -69,6 +70,15 @@ private:
     std::set<std::string> things_, materials_;
 };
 
+// What decides whether a material lets light through: an emissive colour first (an emitter),
+// then glTF's transmission factor or an opacity under 1 (OBJ `d`, glTF alpha unless OPAQUE).
+struct Transparency {
+    bool emissive = false;
+    std::optional<float> transmission;
+    double opacity = 1;
+    bool seeThrough() const { return !emissive && ((transmission && *transmission > 0) || opacity < 0.999); }
+};
+
 struct Mapper {
     const aiScene& ai;
     bool gltf;
@@ -76,12 +86,15 @@ struct Mapper {
     double toSceneUnits;  // metres per file unit after Assimp's own scaling / metres per scene unit
     NameBook names;
     ModelImport out;
-    std::map<unsigned, std::string> materialNames;  // Assimp index -> scene name
+    // (Assimp index, as glazing) -> scene name: a see-through material becomes glazing on an
+    // open sheet and a dielectric on a closed mesh, so it may be mapped both ways.
+    std::map<std::pair<unsigned, bool>, std::string> materialNames;
     std::vector<GltfMaterialExtensions> gltfExtensions;  // per glTF material (= Assimp index)
     aiMatrix4x4 axes;  // the file's axes to y up (FBX), before every node transform
     std::filesystem::path folder;  // the model's folder: texture paths are relative to it
 
-    std::string mapMaterial(unsigned index);
+    Transparency transparency(const aiMaterial& m) const;
+    std::string mapMaterial(unsigned index, bool openSheet);
     std::optional<Rgbd> textureAverage(const aiMaterial& m, aiTextureType type) const;
     void visit(const aiNode& node, const aiMatrix4x4& parent);
     void mapLight(const aiLight& light);
@@ -98,9 +111,25 @@ std::optional<Rgbd> getColour(const aiMaterial& m, const char* key, unsigned typ
     return std::nullopt;
 }
 
-std::string Mapper::mapMaterial(unsigned index) {
-    if (auto it = materialNames.find(index); it != materialNames.end()) return it->second;
+Transparency Mapper::transparency(const aiMaterial& m) const {
+    Transparency t;
+    t.emissive = maxChannel(getColour(m, AI_MATKEY_COLOR_EMISSIVE).value_or(Rgbd(0, 0, 0))) > 0;
+    t.transmission = getFloat(m, AI_MATKEY_TRANSMISSION_FACTOR);
+    aiString alphaMode;
+    // glTF's OPAQUE mode says the base colour's alpha is to be ignored.
+    const bool opaqueMode =
+        gltf && m.Get(AI_MATKEY_GLTF_ALPHAMODE, alphaMode) == aiReturn_SUCCESS && std::string(alphaMode.C_Str()) == "OPAQUE";
+    t.opacity = opaqueMode ? 1.0 : double(getFloat(m, AI_MATKEY_OPACITY).value_or(1.0f));
+    return t;
+}
+
+// openSheet: the mesh has edges on a boundary (core/mesh_edges.h), so a see-through material on
+// it is a thin pane.
+std::string Mapper::mapMaterial(unsigned index, bool openSheet) {
     const aiMaterial& m = *ai.mMaterials[index];
+    const Transparency see = transparency(m);
+    const bool asGlazing = openSheet && see.seeThrough();
+    if (auto it = materialNames.find({index, asGlazing}); it != materialNames.end()) return it->second;
     aiString aiName;
     std::string source = m.Get(AI_MATKEY_NAME, aiName) == aiReturn_SUCCESS ? aiName.C_Str() : "";
     if (source.empty()) source = "material-" + std::to_string(index);
@@ -112,16 +141,12 @@ std::string Mapper::mapMaterial(unsigned index) {
     Rgbd colour = base ? *base : getColour(m, AI_MATKEY_COLOR_DIFFUSE).value_or(Rgbd(0.8, 0.8, 0.8));
     const std::optional<float> metallic = getFloat(m, AI_MATKEY_METALLIC_FACTOR);
     const std::optional<float> roughness = getFloat(m, AI_MATKEY_ROUGHNESS_FACTOR);
-    const std::optional<float> transmission = getFloat(m, AI_MATKEY_TRANSMISSION_FACTOR);
+    const std::optional<float> transmission = see.transmission;
     const GltfMaterialExtensions ext = index < gltfExtensions.size() ? gltfExtensions[index] : GltfMaterialExtensions{};
     std::optional<double> refracti = ext.ior;
     if (!refracti)
         if (const std::optional<float> r = getFloat(m, AI_MATKEY_REFRACTI)) refracti = *r;
-    aiString alphaMode;
-    // glTF's OPAQUE mode says the base colour's alpha is to be ignored.
-    const bool opaqueMode =
-        gltf && m.Get(AI_MATKEY_GLTF_ALPHAMODE, alphaMode) == aiReturn_SUCCESS && std::string(alphaMode.C_Str()) == "OPAQUE";
-    const double opacity = opaqueMode ? 1.0 : double(getFloat(m, AI_MATKEY_OPACITY).value_or(1.0f));
+    const double opacity = see.opacity;
     const Rgbd emissive = getColour(m, AI_MATKEY_COLOR_EMISSIVE).value_or(Rgbd(0, 0, 0));
     const double emissiveStrength =
         ext.emissiveStrength.value_or(double(getFloat(m, AI_MATKEY_EMISSIVE_INTENSITY).value_or(1.0f)));
@@ -155,6 +180,29 @@ std::string Mapper::mapMaterial(unsigned index) {
         out.report.push_back(tag + "emissive " + rgbText(emissive) + " x strength " + format("%g", emissiveStrength) +
                              " taken as cd/m^2 -> emitter radiance " + rgbText(mat.radiance) +
                              " W sr^-1 m^-2 (front face only; base colour ignored)");
+    } else if (asGlazing) {
+        // A pane: light crosses it straight (SPEC.md's glazing). glTF tints transmitted light by
+        // the base colour, and the pane's two surfaces still reflect: a clear slab's
+        // normal-incidence transmittance is (1 - R0) / (1 + R0), R0 = ((n - 1) / (n + 1))^2
+        // (0.923 at n = 1.5). An opacity is what the author lets through, 1 - opacity, tinted by a
+        // transmission filter (OBJ `Tf`) where there is one.
+        mat.type = MaterialType::Glazing;
+        std::string how;
+        if (transmission && *transmission > 0) {
+            const double r0 = (ior - 1) * (ior - 1) / ((ior + 1) * (ior + 1));
+            const double t = *transmission * (1 - r0) / (1 + r0);
+            mat.transmittance = clamp01(colour * t);
+            how = "transmission " + format("%g", *transmission) + " x base colour " + rgbText(colour) + " x " +
+                  format("%.3g", (1 - r0) / (1 + r0)) + " (the two surfaces' reflection at ior " + format("%g", ior) + iorNote + ")";
+        } else {
+            // A black filter is what some exporters write for "none".
+            Rgbd filter = getColour(m, AI_MATKEY_COLOR_TRANSPARENT).value_or(Rgbd(1, 1, 1));
+            if (!(maxChannel(filter) > 0)) filter = Rgbd(1, 1, 1);
+            mat.transmittance = clamp01(filter * (1 - opacity));
+            how = "1 - opacity " + format("%g", opacity);
+            if (filter != Rgbd(1, 1, 1)) how += " x transmission filter " + rgbText(filter);
+        }
+        out.report.push_back(tag + "on an open sheet -> glazing, transmittance " + rgbText(mat.transmittance) + " = " + how);
     } else if (transmission && *transmission > 0) {
         mat.type = MaterialType::Dielectric;
         mat.ior = ior;
@@ -198,7 +246,7 @@ std::string Mapper::mapMaterial(unsigned index) {
     if (mat.type == MaterialType::Diffuse && maxChannel(colour) > 1.0)
         out.report.push_back(tag + "colour " + rgbText(colour) + " clamped to [0, 1]");
     out.materials.push_back(mat);
-    materialNames[index] = mat.name;
+    materialNames[{index, asGlazing}] = mat.name;
     return mat.name;
 }
 
@@ -264,9 +312,17 @@ void Mapper::visit(const aiNode& node, const aiMatrix4x4& parent) {
         if (others) out.report.push_back("mesh '" + base + "': " + std::to_string(others) + " point/line primitives ignored");
         if (tm.triangles.empty()) continue;
         // One object per material group: several meshes of one node get the material's name too.
-        const std::string materialName = mapMaterial(mesh.mMaterialIndex);
+        // Edges are counted only where they decide something (a see-through material).
+        const bool seeThrough = transparency(*ai.mMaterials[mesh.mMaterialIndex]).seeThrough();
+        const size_t boundary = seeThrough ? boundaryEdgeCount(tm) : 0;
+        const std::string materialName = mapMaterial(mesh.mMaterialIndex, boundary > 0);
         if (node.mNumMeshes > 1) base += "-" + materialName;
         obj.name = names.thing(base);
+        if (seeThrough)
+            out.report.push_back("object '" + obj.name + "': " +
+                                 (boundary > 0 ? "an open sheet (" + std::to_string(boundary) +
+                                                     " boundary edges) -> glazing '" + materialName + "'"
+                                               : "a closed mesh -> dielectric '" + materialName + "'"));
         obj.material = materialName;
         obj.mesh.kind = MeshSource::Kind::Inline;
         out.triangles += tm.triangles.size();

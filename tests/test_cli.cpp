@@ -49,6 +49,8 @@ private slots:
     void renderBadUsage_data();
     void renderBadUsage();
     void badSceneIsOneLine();
+    void badDaylightSceneIsOneLine_data();
+    void badDaylightSceneIsOneLine();
     void compareMetrics();
     void compareErrors();
     void infoPrintsStatistics();
@@ -128,6 +130,44 @@ void TestCli::badSceneIsOneLine() {
         QCOMPARE(r.exitCode, 2);
         QVERIFY2(isOneLine(r.err), qPrintable(r.err));
         QVERIFY2(r.err.contains("bad.json") && r.err.contains("camera"), qPrintable(r.err));
+    }
+    QVERIFY(!QFile::exists(dir.filePath("o.exr")));
+}
+
+void TestCli::badDaylightSceneIsOneLine_data() {
+    // SPEC.md section 5's rules that span keys, as `lucerna info` and `lucerna render` meet them.
+    QTest::addColumn<QString>("daylight");
+    QTest::addColumn<QString>("place");
+    QTest::newRow("sun time without site")
+        << R"("lights": [{"name": "sun", "type": "sun", "illuminance": 1000, "time": "2024-06-21T10:00"}])"
+        << "lights[0].time";
+    QTest::newRow("cie_general without sun") << R"("sky": {"model": "cie_general", "cie_type": 12, "zenith_luminance": 1})"
+                                             << "sky.model";
+    QTest::newRow("two suns") << R"("lights": [{"name": "a", "type": "sun", "illuminance": 1, "direction": [0, -1, 0]},
+                                             {"name": "b", "type": "sun", "illuminance": 1, "direction": [0, -1, 0]}])"
+                              << "lights[1]";
+    QTest::newRow("bad date") << R"("lights": [{"name": "sun", "type": "sun", "illuminance": 1, "time": "2026-02-30T10:00"}],
+                                  "site": {"latitude": 47, "longitude": 8, "utc_offset": 1})"
+                              << "lights[0].time";
+}
+
+void TestCli::badDaylightSceneIsOneLine() {
+    QFETCH(QString, daylight);
+    QFETCH(QString, place);
+    QTemporaryDir dir;
+    const QString bad = dir.filePath("daylight.json");
+    QFile f(bad);
+    QVERIFY(f.open(QIODevice::WriteOnly));
+    f.write(R"({"lucerna": 1, "camera": {"position": [0, 1, 5], "target": [0, 1, 0], "fov_y": 40, "resolution": [8, 8]},
+               "materials": {"white": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}},
+               "objects": [{"name": "floor", "material": "white", "mesh": {"quad": [[-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]]}}],
+               )" + daylight.toUtf8() + "}");
+    f.close();
+    for (const QStringList& args : {QStringList{"info", bad}, QStringList{"render", bad, "-o", dir.filePath("o.exr")}}) {
+        const Run r = runLucerna(args);
+        QCOMPARE(r.exitCode, 2);
+        QVERIFY2(isOneLine(r.err), qPrintable(r.err));
+        QVERIFY2(r.err.contains("daylight.json: " + place), qPrintable(r.err));
     }
     QVERIFY(!QFile::exists(dir.filePath("o.exr")));
 }

@@ -1,9 +1,10 @@
 // Model import through Assimp (core/model_import.h) on files the test writes: an OBJ with its MTL
 // (usemtl groups become objects with their Kd), a glTF 2.0 file with an embedded buffer (node
 // transforms, metallic-roughness, transmission and emissive materials, KHR_lights_punctual), a
-// COLLADA file in centimetres, bad files; then File > Import Model through the real window on the
+// COLLADA file in centimetres, bad files, glass on open sheets and closed meshes; then File > Import Model through the real window on the
 // Cornell box (one undo step, the report, the preview's pixels).
 
+#include "core/mesh_edges.h"
 #include "core/model_import.h"
 #include "core/scene_io.h"
 #include "file_helpers.h"
@@ -36,6 +37,8 @@ private slots:
     void initTestCase();
     void objWithMtl();
     void gltfMaterialsLightsAndTransforms();
+    void meshEdgesTellSheetsFromSolids();
+    void glassSheetsBecomeGlazing();
     void colladaUnit();
     void colladaLights();
     void fbxUnit();
@@ -159,6 +162,41 @@ Kd 0.8 0.1 0.1
 Ks 0.5 0.5 0.5
 newmtl Blue
 Kd 0.1 0.2 0.9
+)";
+
+// One see-through material (OBJ `d` and `Tf`) on a pane (an open quad) and on a block (a closed
+// cube whose corners are repeated per face, as exporters do where normals differ).
+const char* kGlassObj = R"(mtllib glass.mtl
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+v 0 0 1
+v 1 0 1
+v 1 1 1
+v 0 1 1
+vn 0 0 -1
+vn 0 0 1
+vn -1 0 0
+vn 1 0 0
+vn 0 -1 0
+vn 0 1 0
+o Pane
+usemtl Glass
+f 1 4 3 2
+o Block
+usemtl Glass
+f 1//1 4//1 3//1 2//1
+f 5//2 6//2 7//2 8//2
+f 1//3 5//3 8//3 4//3
+f 2//4 3//4 7//4 6//4
+f 1//5 2//5 6//5 5//5
+f 4//6 8//6 7//6 3//6
+)";
+const char* kGlassMtl = R"(newmtl Glass
+Kd 0.8 0.8 0.8
+d 0.1
+Tf 0.9 1 0.9
 )";
 
 // One triangle 100 x 100 centimetres, translated 50 cm along x.
@@ -371,9 +409,11 @@ void TestModelImport::gltfMaterialsLightsAndTransforms() {
     const Material* mirror = material("Chrome");
     QVERIFY(mirror && mirror->type == MaterialType::Mirror);
     QVERIFY(near(mirror->reflectance, Rgbd(0.9, 0.8, 0.7)));
+    // The glass square is an open sheet: a pane of glazing, its transmission 1 times the white
+    // base colour times a clear slab's (1 - R0) / (1 + R0) at ior 1.5, R0 = 0.04.
     const Material* glass = material("Glass");
-    QVERIFY(glass && glass->type == MaterialType::Dielectric);
-    QCOMPARE(glass->ior, 1.5);
+    QVERIFY(glass && glass->type == MaterialType::Glazing);
+    QVERIFY2(near(glass->transmittance, Rgbd(0.96 / 1.04, 0.96 / 1.04, 0.96 / 1.04)), qPrintable(report));
     const Material* lamp = material("Lamp");
     QVERIFY(lamp && lamp->type == MaterialType::Emitter);
     // emissiveFactor x KHR_materials_emissive_strength, taken as cd/m^2: luminance 683 Y(radiance).
@@ -408,13 +448,76 @@ void TestModelImport::gltfMaterialsLightsAndTransforms() {
 
     // The report says what was approximated.
     QVERIFY2(reportHas(m.report, "5 object(s), 10 triangles", "2 light(s)"), qPrintable(report));
-    QVERIFY2(reportHas(m.report, "'Glass'", "transmission 1 -> dielectric ior 1.5"), qPrintable(report));
+    QVERIFY2(reportHas(m.report, "material 'Glass'", "on an open sheet -> glazing"), qPrintable(report));
+    QVERIFY2(reportHas(m.report, "object 'Glass'", "open sheet (4 boundary edges) -> glazing 'Glass'"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "'Chrome'", "mirror"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "'Satin'", "glossy"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "'Lamp'", "emitter"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "'Bulb'", "100 cd"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "'Spot'", "cone"), qPrintable(report));
     QVERIFY2(reportHas(m.report, "camera", "ignored"), qPrintable(report));
+}
+
+void TestModelImport::meshEdgesTellSheetsFromSolids() {
+    // A quad: two triangles sharing the diagonal, four edges on the boundary.
+    TriangleMesh quad{{V3d(0, 0, 0), V3d(1, 0, 0), V3d(1, 1, 0), V3d(0, 1, 0)}, {V3i(0, 1, 2), V3i(0, 2, 3)}};
+    QCOMPARE(boundaryEdgeCount(quad), size_t(4));
+    // A cube whose corners are repeated per face: welded by position, every edge has two sides.
+    const V3d corner[8] = {V3d(0, 0, 0), V3d(1, 0, 0), V3d(1, 1, 0), V3d(0, 1, 0),
+                           V3d(0, 0, 1), V3d(1, 0, 1), V3d(1, 1, 1), V3d(0, 1, 1)};
+    const int faces[6][4] = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 4, 7, 3}, {1, 2, 6, 5}, {0, 1, 5, 4}, {3, 7, 6, 2}};
+    TriangleMesh cube;
+    for (const auto& f : faces) {
+        const int base = int(cube.vertices.size());
+        for (int k = 0; k < 4; ++k) cube.vertices.push_back(corner[f[k]]);
+        cube.triangles.push_back(V3i(base, base + 1, base + 2));
+        cube.triangles.push_back(V3i(base, base + 2, base + 3));
+    }
+    QCOMPARE(boundaryEdgeCount(cube), size_t(0));
+    // Without its top it is open: the four edges around the hole.
+    TriangleMesh box = cube;
+    box.triangles.erase(box.triangles.begin() + 10, box.triangles.end());
+    QCOMPARE(boundaryEdgeCount(box), size_t(4));
+    // A triangle with two corners in one place adds no edge.
+    quad.triangles.push_back(V3i(1, 1, 2));
+    QCOMPARE(boundaryEdgeCount(quad), size_t(4));
+}
+
+void TestModelImport::glassSheetsBecomeGlazing() {
+    writeFile(dir_.filePath("glass.obj"), kGlassObj);
+    writeFile(dir_.filePath("glass.mtl"), kGlassMtl);
+    const ModelImport m = importModel(dir_.filePath("glass.obj").toStdString(), {});
+    const QString report = joined(m.report);
+    QCOMPARE(m.objects.size(), size_t(2));
+    const Object* pane = objectNamed(m, "Pane");
+    const Object* block = objectNamed(m, "Block");
+    QVERIFY2(pane && block, qPrintable(report));
+    QCOMPARE(pane->mesh.inlineMesh.triangles.size(), size_t(2));
+    QCOMPARE(block->mesh.inlineMesh.triangles.size(), size_t(12));
+    // One material, mapped both ways: glazing on the pane (1 - d, tinted by Tf), a clear
+    // dielectric on the block.
+    QCOMPARE(m.materials.size(), size_t(2));
+    const Material* paneGlass = materialNamed(m, pane->material);
+    const Material* blockGlass = materialNamed(m, block->material);
+    QVERIFY(paneGlass && blockGlass && paneGlass != blockGlass);
+    QCOMPARE(paneGlass->type, MaterialType::Glazing);
+    QVERIFY2(near(paneGlass->transmittance, Rgbd(0.81, 0.9, 0.81)), qPrintable(report));
+    QCOMPARE(blockGlass->type, MaterialType::Dielectric);
+    QCOMPARE(blockGlass->ior, 1.5);
+    // The report says which object became what.
+    QVERIFY2(reportHas(m.report, "object 'Pane'", "open sheet (4 boundary edges) -> glazing '" + pane->material + "'"),
+             qPrintable(report));
+    QVERIFY2(reportHas(m.report, "object 'Block'", "closed mesh -> dielectric '" + block->material + "'"), qPrintable(report));
+    QVERIFY2(reportHas(m.report, "material 'Glass'", "glazing, transmittance [0.81, 0.9, 0.81] = 1 - opacity 0.1"),
+             qPrintable(report));
+    QVERIFY2(reportHas(m.report, "material 'Glass'", "opacity 0.1 -> dielectric"), qPrintable(report));
+    // The scene they make reads back (glazing is a SPEC.md material).
+    Scene scene;
+    scene.camera.position = V3d(0, 1, 5);
+    scene.camera.target = V3d(0.5, 0.5, 0.5);
+    scene.materials = m.materials;
+    scene.objects = m.objects;
+    QVERIFY(parseScene(saveSceneToString(scene), dir_.filePath("glass.json").toStdString()) == scene);
 }
 
 void TestModelImport::colladaUnit() {
@@ -690,7 +793,7 @@ void TestModelImport::importThroughTheWindow() {
     auto* text = w.findChild<QPlainTextEdit*>("importReportText");
     QVERIFY(text);
     QVERIFY(text->window()->isVisible() && !text->window()->isModal());
-    QVERIFY2(text->toPlainText().contains("5 object(s), 10 triangles") && text->toPlainText().contains("dielectric"),
+    QVERIFY2(text->toPlainText().contains("5 object(s), 10 triangles") && text->toPlainText().contains("glazing"),
              qPrintable(text->toPlainText()));
 
     // The green square turns its pixels green: its projected bounds in the preview.

@@ -93,9 +93,15 @@ double deltaPower(const DeltaLight& l, float metersPerUnit, float sceneRadius) {
 
 LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                            const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
-                           LightSelection selection, std::optional<EnvironmentLight> environment)
+                           LightSelection selection, std::optional<EnvironmentLight> environment,
+                           std::vector<Portal> portals)
     : emitters_(std::move(emitters)), deltas_(std::move(deltas)), environment_(std::move(environment)),
       metersPerUnit_(metersPerUnit), sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
+    if (environment_ && !portals.empty() && portals.size() <= kMaxPortalTriangles) {
+        std::vector<double> areas;
+        for (const Portal& p : portals) areas.push_back(p.area), portalArea_ += p.area;
+        if (portalArea_ > 0) portals_ = std::move(portals), portalSelect_ = DiscreteDistribution(areas);
+    }
     std::vector<double> weights;
     weights.reserve(emitters_.size() + deltas_.size() + 1);
     for (const auto& e : emitters_) weights.push_back(emitterPower(e));
@@ -234,19 +240,61 @@ float LightSampler::environmentSelectPdf() const {
     return select_.size() > 1 ? float(select_.pdf(environmentIndex())) : 1.0f;
 }
 
-float LightSampler::pdfEnvironment(const V3f& w) const {
-    return environment_ ? environmentSelectPdf() * environment_->pdf(w) : 0.0f;
+float LightSampler::portalPdf(const V3f& w, const V3f& p) const {
+    // Every pane triangle the ray from p along w crosses adds t^2 / (A |cos|): the uniform
+    // density 1 / A over the panes' total area A, turned into solid angle at p.
+    float pdf = 0.0f;
+    for (const Portal& portal : portals_) {
+        const float cosine = portal.normal.dot(w);
+        if (cosine == 0.0f) continue;
+        const V3f e1 = portal.p1 - portal.p0, e2 = portal.p2 - portal.p0;
+        const V3f s = w.cross(e2);
+        const float det = e1.dot(s);
+        if (det == 0.0f) continue;
+        const V3f o = p - portal.p0;
+        const float b1 = o.dot(s) / det;
+        const V3f q = o.cross(e1);
+        const float b2 = w.dot(q) / det, t = e2.dot(q) / det;
+        if (b1 < 0 || b2 < 0 || b1 + b2 > 1 || !(t > 0)) continue;
+        pdf += t * t / (portalArea_ * std::abs(cosine));
+    }
+    return pdf;
 }
 
-float LightSampler::pdfEnvironmentByPower(const V3f& w) const {
+float LightSampler::environmentDirectionPdf(const V3f& w, const V3f& p) const {
+    const float q = portalShare();
+    return (1.0f - q) * environment_->pdf(w) + (q > 0 ? q * portalPdf(w, p) : 0.0f);
+}
+
+float LightSampler::pdfEnvironment(const V3f& w, const V3f& p) const {
+    return environment_ ? environmentSelectPdf() * environmentDirectionPdf(w, p) : 0.0f;
+}
+
+float LightSampler::pdfEnvironmentByPower(const V3f& w, const V3f& p) const {
     if (!environment_) return 0.0f;
-    return (select_.size() > 1 ? float(select_.pdf(environmentIndex())) : 1.0f) * environment_->pdf(w);
+    return (select_.size() > 1 ? float(select_.pdf(environmentIndex())) : 1.0f) * environmentDirectionPdf(w, p);
 }
 
 bool LightSampler::sampleEnvironment(float selectPdf, const SurfacePoint& ref, const V2f& u, LightSample& out) const {
-    float pdf = 0.0f;
-    if (!environment_->sample(u, out.wi, pdf, out.value)) return false;
-    out.pdf = selectPdf * pdf;
+    const float q = portalShare();
+    if (u.x < q) {
+        // Aim at a uniform point of the panes.
+        float uRest = 0.0f;
+        const Portal& portal = portals_[portalSelect_.sample(std::min(u.x / q, 0x1.fffffep-1f), &uRest)];
+        const V2f b = squareToUniformTriangle(V2f(uRest, u.y));
+        const V3f target = portal.p0 * (1.0f - b.x - b.y) + portal.p1 * b.x + portal.p2 * b.y;
+        const V3f d = target - ref.p;
+        const float length = d.length();
+        if (!(length > 0.0f)) return false;
+        out.wi = d / length;
+        out.value = environment_->radiance(out.wi);
+        if (isBlack(out.value)) return false;
+    } else {
+        float ignored = 0.0f;
+        const V2f rest(std::min((u.x - q) / (1.0f - q), 0x1.fffffep-1f), u.y);
+        if (!environment_->sample(rest, out.wi, ignored, out.value)) return false;
+    }
+    out.pdf = selectPdf * environmentDirectionPdf(out.wi, ref.p);
     out.isDelta = false;
     // Somewhere up the ray, outside the scene (bidirectional connections need a place).
     out.position = ref.p + out.wi * (2.0f * sceneRadius_ + (ref.p - sceneCenter_).length());

@@ -89,6 +89,17 @@ struct EmissionSample {
     bool environment = false;         // from the environment: position is on a disc outside the scene
 };
 
+// A glazing triangle through which daylight enters (Bitterli et al. 2015, "Portal-masked
+// environment map sampling"): next-event estimation of the environment also aims at points on
+// the panes, so that a room lit through its windows does not spend most sky samples on its walls.
+struct Portal {
+    V3f p0, p1, p2;
+    V3f normal;      // unit
+    float area = 0;  // scene units^2
+};
+// Past this many pane triangles the portals are not used (each density evaluation loops over them).
+inline constexpr size_t kMaxPortalTriangles = 512;
+
 // How next-event estimation chooses a light: in proportion to power everywhere, or by a light
 // tree by each light's importance at the shading point (`--option light_sampler=power|tree`).
 enum class LightSelection { Power, Tree };
@@ -103,7 +114,7 @@ public:
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                  const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
                  LightSelection selection = kDefaultLightSelection,
-                 std::optional<EnvironmentLight> environment = std::nullopt);
+                 std::optional<EnvironmentLight> environment = std::nullopt, std::vector<Portal> portals = {});
 
     bool empty() const { return emitters_.empty() && deltas_.empty() && !environment_; }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
@@ -147,10 +158,10 @@ public:
     float areaPdfByPower(uint32_t triangle) const { return triangle < areaPdf_.size() ? areaPdf_[triangle] : 0.0f; }
 
     // Solid-angle pdf with which sample() yields the environment's direction w (unit, out of the
-    // scene) at p (sample()'s ref.p, with its `receiving`). 0 without an environment.
-    float pdfEnvironment(const V3f& w) const;
+    // scene) at p (sample()'s ref.p; the portals make it depend on p). 0 without an environment.
+    float pdfEnvironment(const V3f& w, const V3f& p) const;
     // The same were the light chosen by power (BDPT's light-path origin, as areaPdfByPower).
-    float pdfEnvironmentByPower(const V3f& w) const;
+    float pdfEnvironmentByPower(const V3f& w, const V3f& p) const;
 
 private:
     bool sampleEmitter(const EmitterTriangle& e, float selectPdf, const SurfacePoint& ref, const V2f& u,
@@ -160,6 +171,11 @@ private:
     bool emitFromEnvironment(float selectPdf, const V2f& uPosition, const V2f& uDirection, EmissionSample& out) const;
     // The probability that sample() chooses the environment (the same wherever it is).
     float environmentSelectPdf() const;
+    // The environment's direction density at p: its own sampling mixed with the portals'.
+    float environmentDirectionPdf(const V3f& w, const V3f& p) const;
+    // Solid-angle density of aiming at a uniform point of the panes (by area) from p toward w.
+    float portalPdf(const V3f& w, const V3f& p) const;
+    float portalShare() const { return portals_.empty() ? 0.0f : 0.5f; }
     void buildTree(size_t triangleCount);
     // Tree selection: the light (emitters_ then deltas_ numbering) and its probability at p.
     bool selectByTree(const V3f& p, const V3f& n, float u, size_t& index, float& pdf) const;
@@ -167,6 +183,9 @@ private:
     std::vector<EmitterTriangle> emitters_;
     std::vector<DeltaLight> deltas_;
     std::optional<EnvironmentLight> environment_;
+    std::vector<Portal> portals_;
+    DiscreteDistribution portalSelect_;  // by area
+    float portalArea_ = 0;
     DiscreteDistribution select_;       // over emitters_, deltas_, then the environment; unused with one entry
     std::vector<float> areaPdf_;        // by render-scene triangle: selection pdf / area (0: not an emitter)
     // Tree selection only: the tree, whose light k is leaves_[k]: a cluster of emissive

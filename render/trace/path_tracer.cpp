@@ -44,7 +44,7 @@ Rgb PathTracer::radiance(Ray ray, SampleGenerator& rng, const ScatteredFrom* fro
             const Rgb Le = scene_.escapedRadiance(ray.direction);
             if (!isBlack(Le)) {
                 const float weight =
-                    specularBounce ? 1.0f : powerHeuristic(bsdfPdfPrev, scene_.lights().pdfEnvironment(ray.direction));
+                    specularBounce ? 1.0f : powerHeuristic(bsdfPdfPrev, scene_.lights().pdfEnvironment(ray.direction, pPrev));
                 L += throughput * Le * weight;
             }
             break;

@@ -15,6 +15,7 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
     for (const Material& m : s.materials) materials_.push_back(ShadingMaterial::fromMaterial(m));
 
     std::vector<EmitterTriangle> emitters;
+    std::vector<Portal> portals;
     PaneTable panes;
     V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (const Object& o : s.objects) {
@@ -43,6 +44,10 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
             panes.paneOfTriangle.push_back(pane);
             triangleNormal_.push_back(len > 0 ? toFloat(cross / len) : V3f(0, 0, 1));
             triangleArea_.push_back(float(0.5 * len));
+            if (pane >= 0 && len > 0) {
+                const V3i& g = triangles_.back();
+                portals.push_back({positions_[g.x], positions_[g.y], positions_[g.z], triangleNormal_.back(), float(0.5 * len)});
+            }
             if (emits && len > 0) {
                 const V3i& g = triangles_.back();
                 emitters.push_back({index, positions_[g.x], positions_[g.y], positions_[g.z], triangleNormal_.back(),
@@ -72,7 +77,7 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         if (!isBlack(sun.intensity)) deltas.push_back(sun);
     }
     lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
-                           triangles_.size(), lightSelection, EnvironmentLight::fromDaylight(daylight));
+                           triangles_.size(), lightSelection, EnvironmentLight::fromDaylight(daylight), std::move(portals));
     if (panes.empty()) panes.paneOfTriangle.clear();
     accel_ = std::make_unique<EmbreeScene>(positions_, triangles_, std::move(panes));
 }

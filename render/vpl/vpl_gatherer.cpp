@@ -85,7 +85,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     if (!hit) {
         // Daylight, weighted against next-event estimation as emitters are.
         const Rgb Le = scene_.escapedRadiance(wi);
-        if (!isBlack(Le)) L += bs.weight * through * Le * powerHeuristic(bs.pdf, scene_.lights().pdfEnvironment(wi));
+        if (!isBlack(Le)) L += bs.weight * through * Le * powerHeuristic(bs.pdf, scene_.lights().pdfEnvironment(wi, r.x.p));
         return L;
     }
     if (isBlack(through)) return L;

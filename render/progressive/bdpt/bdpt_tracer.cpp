@@ -149,8 +149,7 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
     v0.light = es.light;
     if (es.environment) {
         v0.kind = VertexKind::EnvironmentLight;
-        v0.sp.ng = es.direction;
-        v0.pdfFwd = densities_.pdfLightOrigin(v0);
+        v0.sp.ng = es.direction;  // its pdfFwd needs the first hit: below
     } else if (es.triangle != 0xffffffffu) {
         v0.kind = VertexKind::AreaLight;
         v0.sp.material = 0;
@@ -173,6 +172,7 @@ void BdptTracer::traceLightSubpath(SampleGenerator& rng) {
     // Parallel particles: the first hit's density is the disk's, projected (pbrt-v3 16.3.2).
     if ((v0.kind == VertexKind::DirectionalLight || v0.atInfinity()) && light_.size() >= 2)
         light_[1].pdfFwd = densities_.pdfLight(light_[0], light_[1]);
+    if (v0.atInfinity() && light_.size() >= 2) light_[0].pdfFwd = densities_.pdfLightOrigin(light_[0], &light_[1]);
 }
 
 void SampledPaths::path(const StrategyRecord& r, std::vector<PathVertex>& out) const {
@@ -233,7 +233,7 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         if (lights.isEnvironment(ls.light)) {
             sampled.kind = VertexKind::EnvironmentLight;
             sampled.sp.ng = -ls.wi;
-            sampled.pdfFwd = densities_.pdfLightOrigin(sampled);
+            sampled.pdfFwd = densities_.pdfLightOrigin(sampled, &pt);
         } else if (ls.light < lights.emitters().size()) {
             const EmitterTriangle& e = lights.emitters()[ls.light];
             sampled.kind = VertexKind::AreaLight;
@@ -289,7 +289,7 @@ float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
 
     // The reverse densities of the (up to) four vertices beside the connection, as they are in
     // this strategy's path (pbrt-v3's scoped assignments, without mutating the subpaths).
-    const float ptRev = qs ? densities_.pdf(*qs, qsMinus, pt) : densities_.pdfLightOrigin(pt);
+    const float ptRev = qs ? densities_.pdf(*qs, qsMinus, pt) : densities_.pdfLightOrigin(pt, ptMinus);
     const float ptMinusRev = !ptMinus ? 0.0f : qs ? densities_.pdf(pt, qs, *ptMinus) : densities_.pdfLight(pt, *ptMinus);
     const float qsRev = qs ? densities_.pdf(pt, ptMinus, *qs) : 0.0f;
     const float qsMinusRev = qsMinus ? densities_.pdf(*qs, &pt, *qsMinus) : 0.0f;

@@ -76,8 +76,8 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
     return pdf;
 }
 
-float VertexDensities::pdfLightOrigin(const PathVertex& v) const {
-    if (v.atInfinity()) return scene_.lights().pdfEnvironmentByPower(-v.sp.ng);  // its direction's density
+float VertexDensities::pdfLightOrigin(const PathVertex& v, const PathVertex* next) const {
+    if (v.atInfinity()) return next ? scene_.lights().pdfEnvironmentByPower(-v.sp.ng, next->p()) : 0.0f;
     if (v.kind != VertexKind::AreaLight && v.kind != VertexKind::Surface) return 0.0f;
     // By power even where next-event estimation chooses lights by the tree: the weights of all
     // strategies then use one density for the origin and still sum to one (light_sampler.h).

@@ -63,8 +63,10 @@ public:
     float pdfLight(const PathVertex& v, const PathVertex& next) const;
     // Density of choosing light vertex `v` as the start of a light subpath (selection times
     // position, per unit area); the same for next-event estimation. 0 for delta lights (it is
-    // never compared: their strategy s = 0 does not exist).
-    float pdfLightOrigin(const PathVertex& v) const;
+    // never compared: their strategy s = 0 does not exist). For the environment, the density of
+    // its direction as next-event estimation at `next` (its neighbour on the path) draws it, the
+    // windows' portals included; every strategy uses that one, so the weights still sum to one.
+    float pdfLightOrigin(const PathVertex& v, const PathVertex* next = nullptr) const;
 
     // Solid-angle density of the camera rays of sensor point `point` (pbrt's Pdf_We; the
     // pinhole's is 1 / (A cos^3 theta) for all the image together, A the image plane's area at
