@@ -4,6 +4,9 @@ namespace lucerna {
 
 namespace {
 
+// A sun whose direction comes from the site's clock (SPEC.md section 5).
+bool placedByTime(const Light& l) { return l.type == LightType::Sun && l.sun && l.sun->time; }
+
 bool sameMaterials(const Scene& a, const Scene& b) {
     if (a.materials != b.materials || a.metersPerUnit != b.metersPerUnit) return false;
     for (size_t i = 0; i < a.objects.size() && i < b.objects.size(); ++i)
@@ -16,7 +19,8 @@ bool sameMaterials(const Scene& a, const Scene& b) {
 bool differOnlyInEmission(const Scene& before, const Scene& after) {
     if (before.version != after.version || before.metersPerUnit != after.metersPerUnit ||
         !(before.camera == after.camera) || before.objects != after.objects ||
-        before.lights.size() != after.lights.size() || before.materials.size() != after.materials.size())
+        before.lights.size() != after.lights.size() || before.materials.size() != after.materials.size() ||
+        before.site != after.site || before.sky != after.sky)
         return false;
     for (size_t i = 0; i < after.lights.size(); ++i) {
         Light l = after.lights[i];
@@ -25,8 +29,9 @@ bool differOnlyInEmission(const Scene& before, const Scene& after) {
         l.irradiance = r.irradiance;
         l.photometric = r.photometric;
         // Switching a light is a change of its emission (to or from none); its group changes
-        // nothing that renders.
-        l.on = r.on;
+        // nothing that renders. Not so a sun under a sky: the ground's luminance is the sky's
+        // and the sun's light together (SPEC.md section 5), so it changes with the sun.
+        if (!(l.type == LightType::Sun && after.sky)) l.on = r.on;
         l.group = r.group;
         if (l.luminaire && r.luminaire) {
             l.luminaire->lumens = r.luminaire->lumens;
@@ -65,7 +70,9 @@ SceneChange diff(const Scene& before, const Scene& after) {
     c.lightSet = before.lights.size() != after.lights.size();
     if (!c.lightSet)
         for (size_t i = 0; i < after.lights.size(); ++i)
-            if (!(before.lights[i] == after.lights[i])) c.lights.push_back(i);
+            if (!(before.lights[i] == after.lights[i]) || (placedByTime(after.lights[i]) && before.site != after.site))
+                c.lights.push_back(i);
+    c.daylight = before.site != after.site || before.sky != after.sky;
     c.emissionOnly = differOnlyInEmission(before, after);
     return c;
 }

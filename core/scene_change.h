@@ -16,13 +16,17 @@ struct SceneChange {
     bool resolution = false;  // the camera's width or height
     bool lightSet = false;    // lights added or removed (then `lights` is empty)
     std::vector<size_t> lights;  // the indices of the lights that differ (same count)
+    // The site or the sky differ (SPEC.md section 5). A sun placed by time moves with its site,
+    // so a site change also lists such a sun in `lights`.
+    bool daylight = false;
     // The scenes differ at most in the emission of their lights (intensity, irradiance,
     // photometric values, a luminaire's lumens and colour, switched on or off), in their lights'
-    // groups, and in their emitters' radiance; true when they are equal.
+    // groups, and in their emitters' radiance; true when they are equal. Never with `daylight`.
     bool emissionOnly = false;
 
     bool none() const {
-        return !geometry && !materials && !camera && !resolution && !lightSet && lights.empty() && emissionOnly;
+        return !geometry && !materials && !camera && !resolution && !lightSet && lights.empty() && !daylight &&
+               emissionOnly;
     }
 };
 

@@ -1,9 +1,10 @@
-// EXR input and output, atomic writes, the error metrics, the task system.
+// EXR input and output, atomic writes, the error metrics, the task system, what a scene change is.
 
 #include "core/atomic_file.h"
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
 #include "core/mesh_file.h"
+#include "core/scene_change.h"
 #include "core/task_system.h"
 
 #include <QFile>
@@ -28,6 +29,7 @@ private slots:
     void taskExceptionIsKept();
     void latestKeepsNewest();
     void plyFilesKeepEveryTriangle();
+    void daylightChangesAreLightChanges();
 };
 
 void TestCore::exrRoundTrip() {
@@ -186,6 +188,65 @@ void TestCore::plyFilesKeepEveryTriangle() {
     QCOMPARE(back.vertices.size(), mesh.vertices.size());
     for (size_t i = 0; i < mesh.vertices.size(); ++i)
         QVERIFY((back.vertices[i] - mesh.vertices[i]).length() < 1e-6);
+}
+
+// Site, sky and sun (SPEC.md section 5) are what lights a daylit scene: a change of any is a change
+// the preview and the converging render answer, never "nothing" nor a re-mix of light layers. A
+// site change moves a sun placed by time; switching a sun under a sky changes the ground's light.
+void TestCore::daylightChangesAreLightChanges() {
+    Scene base;
+    base.site = Site{51.5, -0.1, 0, V3d(0, 0, -1), false};
+    Sky sky;
+    sky.horizontalIlluminance = 10000;
+    base.sky = sky;
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Sun;
+    sun.sun = SunSpec();
+    sun.sun->illuminanceLux = 75000;
+    sun.sun->time = "2025-06-21T12:00";
+    Light lamp;
+    lamp.name = "lamp";
+    lamp.intensity = Rgbd(1, 1, 1);
+    base.lights = {lamp, sun};
+    QVERIFY(diff(base, base).none());
+
+    Scene moved = base;
+    moved.site->latitudeDeg = 48.9;
+    SceneChange c = diff(base, moved);
+    QVERIFY(!c.none());
+    QVERIFY(c.daylight);
+    QVERIFY(!c.emissionOnly);
+    QCOMPARE(c.lights, std::vector<size_t>{1});  // the sun placed by time moves with its site
+
+    Scene overcast = base;
+    overcast.sky->groundReflectance = 0.3;
+    c = diff(base, overcast);
+    QVERIFY(c.daylight && !c.emissionOnly && !c.none());
+    QVERIFY(c.lights.empty());
+    Scene skyless = base;
+    skyless.sky.reset();
+    QVERIFY(diff(base, skyless).daylight);
+
+    Scene later = base;
+    later.lights[1].sun->time = "2025-06-21T15:30";
+    c = diff(base, later);
+    QVERIFY(!c.daylight && !c.emissionOnly);
+    QCOMPARE(c.lights, std::vector<size_t>{1});
+
+    // Switching the sun off under a sky is no re-mix (the ground loses the sun's share); without
+    // a sky, or switching the lamp, it is one.
+    Scene dark = base;
+    dark.lights[1].on = false;
+    QVERIFY(!diff(base, dark).emissionOnly);
+    Scene noSky = base, noSkyDark = base;
+    noSky.sky.reset();
+    noSkyDark.sky.reset();
+    noSkyDark.lights[1].on = false;
+    QVERIFY(diff(noSky, noSkyDark).emissionOnly);
+    Scene lampOff = base;
+    lampOff.lights[0].on = false;
+    QVERIFY(diff(base, lampOff).emissionOnly);
 }
 
 #include "test_core.moc"

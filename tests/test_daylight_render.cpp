@@ -46,6 +46,7 @@ private slots:
     void skySamplingChiSquare_data();
     void skySamplingChiSquare();
     void portalSamplingChiSquare();
+    void sunSamplesAreBounded();
 
 private:
     // Samples per pixel for the open scenes, for the opening without a pane (no portal: the sky's
@@ -189,6 +190,37 @@ void TestDaylightRender::portalSamplingChiSquare() {
         },
         [&](const V3f& w) { return double(scene.lights().pdfEnvironment(w, x.p)); }, 24, 48, 400000, 7);
     QVERIFY2(r.passed, r.message.c_str());
+}
+
+void TestDaylightRender::sunSamplesAreBounded() {
+    // Every sample's value over its density stays near the environment's integral: a direction
+    // drawn in the sun's disc but judged outside it by pdf() (rounding at its rim) would carry
+    // the sun's radiance at the sky's density, 1e5 times too much.
+    Scene scene;
+    Sky sky;
+    sky.model = SkyModelType::CieGeneral;
+    sky.cieType = 12;
+    sky.horizontalIlluminance = 12000;
+    scene.sky = sky;
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Sun;
+    sun.direction = V3d(-0.5, -0.6, -0.62);
+    sun.sun = SunSpec{70000, 0.53};
+    scene.lights.push_back(sun);
+    const auto env = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    QVERIFY(env.has_value());
+    Rng rng(5, 0);
+    double worst = 0;
+    for (int i = 0; i < 2000000; ++i) {
+        V3f w;
+        float pdf = 0;
+        Rgb value;
+        if (!env->sample(V2f(rng.next1D(), rng.next1D()), w, pdf, value)) continue;
+        worst = std::max(worst, double(luminance(value)) / pdf);
+    }
+    qInfo("largest sample %.3g of the integral", worst / env->integratedLuminance());
+    QVERIFY(worst < 4 * env->integratedLuminance());
 }
 
 QTEST_GUILESS_MAIN(TestDaylightRender)

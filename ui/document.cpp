@@ -29,6 +29,7 @@ void Document::reset(Scene scene) {
     emit changed(++version_);
     emit structureChanged();
     emit cameraChanged();
+    emit daylightChanged();
 }
 
 void Document::setLight(int index, Light light) {
@@ -128,6 +129,20 @@ void Document::setCamera(const Camera& camera) {
     copy->camera = camera;
     publish(std::move(copy));
     emit cameraChanged();
+}
+
+void Document::setSite(std::optional<Site> site) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->site = std::move(site);
+    publish(std::move(copy));
+    emit daylightChanged();
+}
+
+void Document::setSky(std::optional<Sky> sky) {
+    auto copy = std::make_shared<Scene>(*scene_);
+    copy->sky = std::move(sky);
+    publish(std::move(copy));
+    emit daylightChanged();
 }
 
 bool Document::nameInUse(const std::string& name) const {

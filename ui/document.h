@@ -55,6 +55,9 @@ public:
     void insertObject(int index, Object object);
     void removeObject(int index);
     void setCamera(const Camera& camera);
+    // SPEC.md section 5; absent: none. The sun is a light (setLight).
+    void setSite(std::optional<Site> site);
+    void setSky(std::optional<Sky> sky);
 
     // A name not used by any object or light (SPEC.md: names are unique across both): base,
     // or base-2, base-3, ...
@@ -69,6 +72,8 @@ signals:
     // Finer signals so that views redo only what changed (the preview re-lights one light).
     void lightChanged(int index);
     void cameraChanged();
+    // The site or the sky (a sun placed by time moves with its site).
+    void daylightChanged();
     // Objects, lights or materials were added or removed, renamed, or lights regrouped: lists
     // must be rebuilt.
     void structureChanged();

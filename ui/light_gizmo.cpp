@@ -50,7 +50,7 @@ double ViewMapping::worldPerPixel(const V3d& world) const {
 }
 
 std::optional<LightGizmo> LightGizmo::of(const Light& light, const ViewMapping& view) {
-    if (light.type == LightType::Directional || !view.isValid()) return std::nullopt;
+    if (light.type == LightType::Directional || light.type == LightType::Sun || !view.isValid()) return std::nullopt;
     const auto centre = view.toWidget(light.position);
     if (!centre) return std::nullopt;
     LightGizmo g;

@@ -20,7 +20,8 @@ Light placedLight(const Scene& scene, LightType type, const std::string& name, c
 std::optional<Light> aimedLight(const Light& light, const SurfaceHit& hit) {
     Light aimed = light;
     switch (light.type) {
-    case LightType::Point: return std::nullopt;
+    case LightType::Point:
+    case LightType::Sun: return std::nullopt;  // the sun is placed by its site and time, or its own panel
     case LightType::Spot:
     case LightType::Luminaire: {  // its direction is its nadir, aimed like a spot's axis
         const V3d d = hit.point - light.position;

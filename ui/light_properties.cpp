@@ -114,6 +114,11 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     coneRow_ = addPropertyRow(rows_, tr("Cone half-angle"), {cone_});
     falloffRow_ = addPropertyRow(rows_, tr("Falloff start"), {falloff_});
 
+    sunNote_ = new QLabel(tr("The sun's illuminance, disc, date and time are in the Daylight panel."), fields_);
+    sunNote_->setObjectName("lightSunNote");
+    sunNote_->setWordWrap(true);
+    rows_->addWidget(sunNote_);
+
     polar_ = new LuminairePolarPlot(fields_);
     polar_->setObjectName("luminairePolarPlot");
     rows_->addWidget(polar_);
@@ -198,8 +203,11 @@ void LightProperties::refresh() {
     const bool spot = l.type == LightType::Spot;
     const bool luminaire = l.type == LightType::Luminaire;
     const bool pointOrSpot = l.type == LightType::Point || spot;
-    positionRow_->setVisible(!directional);
-    directionRow_->setVisible(l.type != LightType::Point);
+    const bool sun = l.type == LightType::Sun;
+    positionRow_->setVisible(!directional && !sun);
+    directionRow_->setVisible(l.type != LightType::Point && !(sun && l.sun && l.sun->time));
+    colourRow_->setVisible(!sun);
+    sunNote_->setVisible(sun);
     rowLabel(directionRow_)->setText(luminaire ? tr("Nadir") : tr("Direction"));
     rowLabel(positionRow_)->setText(tr("Position (%1)").arg(lengthUnit(scene)));
     for (int i = 0; i < 3; ++i) {
@@ -217,8 +225,8 @@ void LightProperties::refresh() {
     lumensRow_->setVisible(luminaire);
     polarRow_->setVisible(luminaire);
     // A luminaire's output is its file's distribution: no radiometric view of it.
-    advanced_->setVisible(!luminaire);
-    powerRow_->setVisible(!luminaire && advanced_->isChecked());
+    advanced_->setVisible(!luminaire && !sun);
+    powerRow_->setVisible(!luminaire && !sun && advanced_->isChecked());
     colour_->setColourOnly(directional);  // the scene format has no temperature for a sun
 
     if (pointOrSpot) {

@@ -4,7 +4,8 @@
 // written into the light's photometric keys so that the file keeps what was typed; a spot's cone
 // and falloff half-angles; a directional light's illuminance (lx) on a surface facing it; a
 // luminaire's file, rotation, flux, colour and its distribution as a polar plot. The radiometric
-// values (W/sr, W/m²) are an advanced view behind a toggle. Lengths are in the scene's unit.
+// values (W/sr, W/m²) are an advanced view behind a toggle. A sun shows its name, group and (when
+// placed by direction) its direction; the rest of it is the daylight panel's. Lengths are in the scene's unit.
 // Every edit of a field is one EditLightCommand holding the whole light before and after; the
 // arrow steps of one field merge into it until the field's editing finishes.
 
@@ -67,7 +68,7 @@ private:
 
     Document* doc_;
     int index_ = -1;
-    QLabel *empty_, *type_, *outputOther_, *file_;
+    QLabel *empty_, *type_, *outputOther_, *file_, *sunNote_;
     QWidget* fields_;
     QVBoxLayout* rows_;
     QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;

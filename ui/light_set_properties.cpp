@@ -26,7 +26,7 @@ namespace lucerna {
 namespace {
 constexpr double kMixed = -1;  // a field's value below its real range: shown as "mixed"
 
-bool hasPosition(const Light& l) { return l.type != LightType::Directional; }
+bool hasPosition(const Light& l) { return l.type != LightType::Directional && l.type != LightType::Sun; }
 
 // A distribution's own flux, integrated once per refresh however many luminaires share it (a
 // field of 10,000 luminaires of one file integrates its table once, not 10,000 times).
@@ -51,7 +51,8 @@ std::optional<double> fluxOf(const Light& l, FluxCache& cache) {
         const double scale = spec.lumens ? (ownFlux > 0 ? *spec.lumens / ownFlux : 0.0) : 1.0;
         return ownFlux * scale * spec.distribution->tiltMultiplier(luminaireTiltDeg(l.direction)) * luminance(colour);
     }
-    case LightType::Directional: return std::nullopt;
+    case LightType::Directional:
+    case LightType::Sun: return std::nullopt;
     }
     return std::nullopt;
 }
@@ -59,13 +60,13 @@ std::optional<double> fluxOf(const Light& l, FluxCache& cache) {
 // A light's colour temperature in K; nothing when it has a colour instead, or neither (white).
 std::optional<double> temperatureOf(const Light& l) {
     if (l.type == LightType::Luminaire) return l.luminaire ? l.luminaire->temperatureK : std::nullopt;
-    if (l.type == LightType::Directional) return std::nullopt;
+    if (l.type == LightType::Directional || l.type == LightType::Sun) return std::nullopt;
     return photometricOf(l).temperatureK;
 }
 
 bool colourGivenFor(const Light& l) {
     if (l.type == LightType::Luminaire) return l.luminaire && l.luminaire->colour;
-    if (l.type == LightType::Directional) return false;
+    if (l.type == LightType::Directional || l.type == LightType::Sun) return false;
     return photometricOf(l).colour.has_value();
 }
 
@@ -228,7 +229,8 @@ void LightSetProperties::refresh() {
         {LightType::Point, tr("point light"), tr("point lights")},
         {LightType::Spot, tr("spot"), tr("spots")},
         {LightType::Luminaire, tr("luminaire"), tr("luminaires")},
-        {LightType::Directional, tr("directional light"), tr("directional lights")}};
+        {LightType::Directional, tr("directional light"), tr("directional lights")},
+        {LightType::Sun, tr("sun"), tr("suns")}};
     for (const auto& [type, one, many] : names)
         if (types[type] > 0) parts << counted(types[type], one, many);
     if (on < n) parts << tr("%1 switched off").arg(n - on);

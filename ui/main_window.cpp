@@ -13,6 +13,7 @@
 #include "ui/commands/object_commands.h"
 #include "ui/commands/scene_commands.h"
 #include "ui/compare_view.h"
+#include "ui/daylight_panel.h"
 #include "ui/display_controls.h"
 #include "ui/converging_render.h"
 #include "ui/file_dialogs.h"
@@ -141,6 +142,9 @@ void MainWindow::createDocks() {
     cameraPanel_ = new CameraPanel(doc_.get(), this);
     cameraPanel_->setObjectName("cameraPanel");
     tabifyDockWidget(propertiesDock, dock(cameraPanel_, tr("Camera"), "cameraDock", Qt::LeftDockWidgetArea, true));
+    daylightPanel_ = new DaylightPanel(doc_.get(), this);
+    daylightPanel_->setObjectName("daylightPanel");
+    tabifyDockWidget(propertiesDock, dock(daylightPanel_, tr("Daylight"), "daylightDock", Qt::LeftDockWidgetArea, true));
     propertiesDock->raise();
     // The comparison shares the render's side, a tab behind it.
     compare_ = new CompareView(this);
@@ -187,6 +191,7 @@ void MainWindow::createDocks() {
     });
     connect(sets, &LightSetProperties::message, this, [this](const QString& text) { statusBar()->showMessage(text, 8000); });
     connect(cameraPanel_, &CameraPanel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
+    connect(daylightPanel_, &DaylightPanel::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     // The plan shows the newest calculation grid on its plane.
     connect(gridPanel_, &GridPanel::resultChanged, this,
             [this] { plan_->setGridResult(gridPanel_->grid(), gridPanel_->layout(), gridPanel_->result()); });
@@ -568,6 +573,10 @@ void MainWindow::duplicateSelection() {
     const int index = selectedLight();
     if (index < 0) return;
     Light light = doc_->scene().lights[size_t(index)];
+    if (light.type == LightType::Sun) {
+        fail(tr("A scene has one sun at most: it is not duplicated."));
+        return;
+    }
     light.name = doc_->uniqueName(light.name);
     doc_->undoStack()->push(new AddLightCommand(doc_.get(), index + 1, light,
                                                 tr("Duplicate %1").arg(QString::fromStdString(light.name))));

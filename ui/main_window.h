@@ -26,6 +26,7 @@ namespace lucerna {
 class Autosave;
 class CameraPanel;
 class CompareView;
+class DaylightPanel;
 class FileDialogs;
 class LayoutState;
 class ConvergingRender;
@@ -118,6 +119,7 @@ public:
     PlanView* planView() const { return plan_; }
     ViewArea* viewArea() const { return viewArea_; }
     CameraPanel* cameraPanel() const { return cameraPanel_; }
+    DaylightPanel* daylightPanel() const { return daylightPanel_; }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -141,6 +143,7 @@ private:
     PlanView* plan_ = nullptr;
     ViewArea* viewArea_ = nullptr;  // the viewport or the plan view
     CameraPanel* cameraPanel_ = nullptr;
+    DaylightPanel* daylightPanel_ = nullptr;
     RenderPanel* renderPanel_ = nullptr;
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;

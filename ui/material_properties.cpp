@@ -16,7 +16,7 @@ namespace lucerna {
 namespace {
 constexpr int kSliderSteps = 1000;  // roughness slider: (0, 1] in steps of 0.001
 constexpr MaterialType kTypes[] = {MaterialType::Diffuse, MaterialType::Glossy, MaterialType::Mirror,
-                                   MaterialType::Dielectric, MaterialType::Emitter};
+                                   MaterialType::Dielectric, MaterialType::Emitter, MaterialType::Glazing};
 }  // namespace
 
 MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
@@ -67,6 +67,9 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
     luminance_ = new QLabel(fields_);
     luminance_->setObjectName("materialLuminance");
     luminanceRow_ = addPropertyRow(rows_, tr("Luminance"), {luminance_});
+    transmittance_ = new ColourEdit(1.0, fields_);
+    transmittance_->setObjectName("materialTransmittance");
+    transmittanceRow_ = addPropertyRow(rows_, tr("Transmittance"), {transmittance_});
     rows_->addStretch(1);  // rows packed at the top while hidden ones still count in the hint
 
     auto* layout = new QVBoxLayout(this);
@@ -81,7 +84,7 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
         push(withMaterialType(m, MaterialType(type_->currentData().toInt())), type_, tr("Change type of %1"));
         merge_.finish();
     });
-    for (ColourEdit* c : {albedo_, specular_, reflectance_, radiance_}) {
+    for (ColourEdit* c : {albedo_, specular_, reflectance_, radiance_, transmittance_}) {
         connect(c, &ColourEdit::edited, this, &MaterialProperties::applyFields);
         connect(c, &ColourEdit::editingFinished, this, [this] { merge_.finish(); });
     }
@@ -132,6 +135,7 @@ void MaterialProperties::refresh() {
     specular_->setValue(m.specular);
     reflectance_->setValue(m.reflectance);
     radiance_->setValue(m.radiance);
+    transmittance_->setValue(m.transmittance);
     luminance_->setText(tr("%1 cd/m²").arg(kLumensPerWatt * luminance(m.radiance), 0, 'g', 5));
 
     const MaterialType t = m.type;
@@ -142,6 +146,7 @@ void MaterialProperties::refresh() {
     iorRow_->setVisible(t == MaterialType::Dielectric);
     radianceRow_->setVisible(t == MaterialType::Emitter);
     luminanceRow_->setVisible(t == MaterialType::Emitter);
+    transmittanceRow_->setVisible(t == MaterialType::Glazing);
 }
 
 void MaterialProperties::applyFields(const void* source) {
@@ -160,11 +165,13 @@ void MaterialProperties::applyFields(const void* source) {
     take(specular_, m.specular);
     take(reflectance_, m.reflectance);
     take(radiance_, m.radiance);
+    take(transmittance_, m.transmittance);
     if (source == roughnessSlider_ || source == roughness_) m.roughness = roughness_->value();
     if (source == ior_) m.ior = ior_->value();
     if (source == roughnessSlider_ || source == roughness_) what = tr("Change roughness of %1");
     else if (source == ior_) what = tr("Change index of refraction of %1");
     else if (m.type == MaterialType::Emitter) what = tr("Change radiance of %1");
+    else if (m.type == MaterialType::Glazing) what = tr("Change transmittance of %1");
     else what = tr("Change colour of %1");
     push(std::move(m), source, what);
 }
@@ -175,7 +182,7 @@ void MaterialProperties::push(Material m, const void* source, const QString& wha
     // SPEC.md bounds, which the fields' ranges keep; checked again so that no path around them
     // (a picked colour, a future field) writes a scene the loader would reject.
     const auto unit = [](const Rgbd& c) { return c.x >= 0 && c.x <= 1 && c.y >= 0 && c.y <= 1 && c.z >= 0 && c.z <= 1; };
-    const bool ok = unit(m.albedo) && unit(m.specular) && unit(m.reflectance) && m.roughness > 0 &&
+    const bool ok = unit(m.albedo) && unit(m.specular) && unit(m.reflectance) && unit(m.transmittance) && m.roughness > 0 &&
                     m.roughness <= 1 && m.ior > 0 && m.radiance.x >= 0 && m.radiance.y >= 0 && m.radiance.z >= 0;
     if (!ok) {
         refresh();

@@ -52,10 +52,11 @@ private:
     QWidget* fields_;
     QVBoxLayout* rows_;
     QComboBox* type_;
-    ColourEdit *albedo_, *specular_, *reflectance_, *radiance_;
+    ColourEdit *albedo_, *specular_, *reflectance_, *radiance_, *transmittance_;
     QSlider* roughnessSlider_;
     QDoubleSpinBox *roughness_, *ior_;
-    QWidget *albedoRow_, *specularRow_, *roughnessRow_, *reflectanceRow_, *iorRow_, *radianceRow_, *luminanceRow_;
+    QWidget *albedoRow_, *specularRow_, *roughnessRow_, *reflectanceRow_, *iorRow_, *radianceRow_, *luminanceRow_,
+        *transmittanceRow_;
     MergeTracker merge_;
 };
 

@@ -45,7 +45,8 @@ QColor materialShade(const Material* m) {
         case MaterialType::Diffuse:
         case MaterialType::Glossy: c = m->albedo; break;
         case MaterialType::Mirror: c = m->reflectance; break;
-        case MaterialType::Dielectric: c = Rgbd(0.6, 0.8, 0.95); break;
+        case MaterialType::Dielectric:
+        case MaterialType::Glazing: c = Rgbd(0.6, 0.8, 0.95); break;
         case MaterialType::Emitter: c = Rgbd(1.0, 0.95, 0.6); break;
         }
     const auto channel = [](double v) { return int(std::lround(255 * (0.45 + 0.5 * srgb(v)))); };
@@ -194,7 +195,8 @@ QPointF PlanView::widgetOf(const V3d& world) const { return widgetOfPlan(planOf(
 
 std::optional<QPointF> PlanView::lightSymbol(int index) const {
     const auto& lights = doc_->scene().lights;
-    if (index < 0 || size_t(index) >= lights.size() || lights[size_t(index)].type == LightType::Directional)
+    if (index < 0 || size_t(index) >= lights.size() || lights[size_t(index)].type == LightType::Directional ||
+        lights[size_t(index)].type == LightType::Sun)
         return std::nullopt;
     return widgetOf(lights[size_t(index)].position);
 }
@@ -212,7 +214,7 @@ std::optional<Legend> PlanView::gridLegend() const {
 bool PlanView::gridOutOfDate() const {
     if (!result_ || !resultScene_) return false;
     const SceneChange change = diff(*resultScene_, doc_->scene());
-    return change.geometry || change.materials || change.lightSet || !change.lights.empty();
+    return change.geometry || change.materials || change.lightSet || !change.lights.empty() || change.daylight;
 }
 
 void PlanView::fitToScene() {
@@ -386,7 +388,7 @@ void PlanView::paintLights(QPainter& painter) const {
     std::vector<QRectF> labels;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
         const Light& l = scene.lights[i];
-        if (l.type == LightType::Directional) continue;
+        if (l.type == LightType::Directional || l.type == LightType::Sun) continue;  // at infinity
         const QPointF c = widgetOf(l.position);
         const double r = kSymbolRadius;
         // Selected: a ring; in a large selection (a dense field) the symbol itself turns blue,
@@ -448,7 +450,7 @@ void PlanView::paintGroups(QPainter& painter) const {
     };
     std::map<std::string, Box> boxes;
     for (const Light& l : doc_->scene().lights) {
-        if (l.group.empty() || l.type == LightType::Directional) continue;
+        if (l.group.empty() || l.type == LightType::Directional || l.type == LightType::Sun) continue;
         const QPointF c = widgetOf(l.position);
         Box& b = boxes[l.group];
         b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x());

@@ -137,7 +137,8 @@ std::optional<QPointF> Viewport::lightMarker(int index) const {
     if (index < 0 || index >= int(scene.lights.size())) return std::nullopt;
     const Light& light = scene.lights[size_t(index)];
     const ViewMapping view = mapping();
-    if (light.type == LightType::Directional || !view.isValid()) return std::nullopt;
+    // Lights at infinity (directional, sun) have no place to draw.
+    if (light.type == LightType::Directional || light.type == LightType::Sun || !view.isValid()) return std::nullopt;
     return view.toWidget(light.position);
 }
 

@@ -92,8 +92,9 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
     if (current_ && st.scene) {
         const SceneChange change = diff(*current_, *scene);
         const int w = width > 0 ? width : scene->camera.width, h = height > 0 ? height : scene->camera.height;
-        if (!change.geometry && !change.materials && !change.lightSet && !change.resolution && w == st.width &&
-            h == st.height) {
+        // A new site or sky (SPEC.md section 5) is no one light's edit: the scene is set again.
+        if (!change.geometry && !change.materials && !change.lightSet && !change.daylight && !change.resolution &&
+            w == st.width && h == st.height) {
             if (change.camera) setCamera(scene->camera);
             for (size_t i : change.lights) setLight(i, scene->lights[i]);
             current_ = std::move(scene);

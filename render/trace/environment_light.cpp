@@ -55,8 +55,10 @@ std::optional<EnvironmentLight> EnvironmentLight::fromDaylight(const Daylight& d
 }
 
 bool EnvironmentLight::insideSun(const V3f& w) const {
-    // By the sine of the angle to the centre: its square keeps its precision for tiny discs.
-    return sunSin2_ > 0 && w.dot(towardSun_) > 0 && w.cross(towardSun_).length2() <= sunSin2_;
+    // By the sine of the angle to the centre: its square keeps its precision for tiny discs. The
+    // 1e-4 of slack keeps every direction sample() draws in the disc despite w's rounding: one
+    // that fell out would carry the sun's radiance at the sky's density, a firefly of 1e5.
+    return sunSin2_ > 0 && w.dot(towardSun_) > 0 && w.cross(towardSun_).length2() <= sunSin2_ * 1.0001f;
 }
 
 Rgb EnvironmentLight::radiance(const V3f& w) const {
@@ -93,10 +95,11 @@ bool EnvironmentLight::sample(const V2f& u, V3f& w, float& pdfOut, Rgb& value) c
         const float sinTheta = std::sqrt(std::max(0.0f, oneMinusCos * (2.0f - oneMinusCos)));
         const float phi = 2.0f * kPi * v.y;
         w = Frame(towardSun_).toWorld(V3f(sinTheta * std::cos(phi), sinTheta * std::sin(phi), 1.0f - oneMinusCos));
-        // The sampled point is in the disc by construction; the rounding of w must not drop it.
-        value = sunRadiance_ + (sky_ ? Rgb(float(sky_->radiance(toDouble(w)))) : Rgb(0, 0, 0));
-        pdfOut = sunProbability_ / (2.0f * kPi * sunOneMinusCos_) + (1.0f - sunProbability_) * skyPdf(w);
-        return true;
+        // Value and density by the same test as radiance() and pdf(), which MIS and the
+        // portals' mixture evaluate.
+        value = radiance(w);
+        pdfOut = pdf(w);
+        return pdfOut > 0 && !isBlack(value);
     }
     if (rows_.empty()) return false;
     v.x = std::min((v.x - sunProbability_) / (1.0f - sunProbability_), 0x1.fffffep-1f);

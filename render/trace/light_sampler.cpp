@@ -56,7 +56,8 @@ float DeltaLight::pdfDirection(const V3f& w) const {
     case LightType::Point: return uniformSpherePdf();
     case LightType::Spot: return w.dot(direction) < cosCone ? 0.0f : uniformConePdf(cosCone);
     case LightType::Luminaire: return goniometric ? goniometric->pdf(toLuminaire(w)) : 0.0f;
-    case LightType::Directional: return 0.0f;
+    case LightType::Directional:
+    case LightType::Sun: return 0.0f;
     }
     return 0.0f;
 }
@@ -442,6 +443,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
         out.normal = l.direction;
         return true;
     }
+    case LightType::Sun: return false;  // never a delta light of its own (compileDeltaLight)
     }
     out.normal = out.direction;
     out.deltaPosition = true;

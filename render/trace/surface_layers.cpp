@@ -16,6 +16,7 @@ Rgb layerAlbedo(const Material& m) {
     case MaterialType::Mirror: return toFloat(m.reflectance);
     case MaterialType::Dielectric: return Rgb(1, 1, 1);
     case MaterialType::Emitter: return Rgb(0, 0, 0);
+    case MaterialType::Glazing: return toFloat(m.transmittance);  // never the first surface: panes are crossed
     }
     return Rgb(0, 0, 0);
 }

@@ -38,6 +38,7 @@ QString lightTypeName(LightType type) {
     case LightType::Spot: return QObject::tr("Spot light");
     case LightType::Directional: return QObject::tr("Directional light");
     case LightType::Luminaire: return QObject::tr("Luminaire");
+    case LightType::Sun: return QObject::tr("Sun");
     }
     return {};
 }
@@ -67,7 +68,8 @@ Light defaultLight(const Scene& scene, LightType type, const std::string& name) 
         l.direction = V3d(-0.3, -1, 0.2);
         l.irradiance = Rgbd(2, 2, 2);
         break;
-    case LightType::Luminaire: break;  // needs a file: not made from the Edit menu
+    case LightType::Luminaire:  // needs a file: not made from the Edit menu
+    case LightType::Sun: break;   // made by the daylight panel (daylight_commands.h)
     }
     return l;
 }

@@ -27,6 +27,7 @@ Material withMaterialType(const Material& m, MaterialType type) {
     case MaterialType::Glossy: colour = m.albedo; break;
     case MaterialType::Mirror: colour = m.reflectance; break;
     case MaterialType::Dielectric: break;
+    case MaterialType::Glazing: colour = m.transmittance; break;
     case MaterialType::Emitter: {
         const double peak = std::max({m.radiance.x, m.radiance.y, m.radiance.z});
         if (peak > 0) colour = m.radiance / peak;
@@ -46,6 +47,7 @@ Material withMaterialType(const Material& m, MaterialType type) {
     case MaterialType::Mirror: out.reflectance = colour; break;
     case MaterialType::Dielectric: out.ior = 1.5; break;
     case MaterialType::Emitter: out.radiance = colour * 10.0; break;
+    case MaterialType::Glazing: out.transmittance = Rgbd(0.7, 0.7, 0.7); break;  // clear double glazing, about
     }
     return out;
 }
@@ -57,6 +59,7 @@ QString materialTypeName(MaterialType type) {
     case MaterialType::Mirror: return QObject::tr("mirror");
     case MaterialType::Dielectric: return QObject::tr("dielectric");
     case MaterialType::Emitter: return QObject::tr("emitter");
+    case MaterialType::Glazing: return QObject::tr("glazing");
     }
     return {};
 }
