@@ -59,10 +59,13 @@ void Preview::setSettings(const PreviewSettings& s) {
     const bool regenerateVpls =
         s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces ||
         s.vplSource != settings_.vplSource || s.indirect != settings_.indirect ||
+        s.metropolisUnderDaylight != settings_.metropolisUnderDaylight ||
         // Whether one set serves all lights depends on the sub-buffer count.
         s.patternX * s.patternY != settings_.patternX * settings_.patternY ||
         // MIR's chain targets the clamped contribution, so its VPLs depend on the clamp.
-        (s.vplSource == VplSource::Metropolis && s.clampDistance != settings_.clampDistance);
+        (s.clampDistance != settings_.clampDistance &&
+         (s.vplSource == VplSource::Metropolis ||
+          (s.metropolisUnderDaylight && (state_->daylight.sun || state_->daylight.sky))));
     // The area-light samples are dealt to the sub-buffers like VPLs: a new pattern redeals them.
     const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize ||
                          s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
@@ -291,7 +294,7 @@ void Preview::regenerate(uint64_t seed) {
         st.lightsDirty = true;
         return;
     }
-    if (settings_.vplSource == VplSource::Metropolis) {
+    if (usesMetropolis()) {
         regenerateMir();
         return;
     }
@@ -360,7 +363,7 @@ void Preview::setLight(size_t index, const Light& light) {
         return;
     }
     if (st.customVpls) return;
-    if (settings_.vplSource == VplSource::Metropolis) {
+    if (usesMetropolis()) {
         regenerateMir();  // MIR's VPLs serve every light at once
         return;
     }
@@ -392,6 +395,12 @@ void Preview::setLight(size_t index, const Light& light) {
         ++st.generations;
     }
     st.vplsDirty = true;
+}
+
+bool Preview::usesMetropolis() const {
+    const State& st = *state_;
+    return settings_.vplSource == VplSource::Metropolis ||
+           (settings_.metropolisUnderDaylight && (st.daylight.sun || st.daylight.sky));
 }
 
 void Preview::regenerateMir() {

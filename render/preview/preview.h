@@ -36,6 +36,12 @@ enum class SplitMode { TwoPass, OnePass, Fused };
 struct PreviewSettings {
     int vplCount = 256;            // indirect VPLs over all lights (MIR: chain steps, at most this many)
     VplSource vplSource = VplSource::InstantRadiosity;
+    // Under daylight the VPLs come from MIR whatever vplSource says: the sky's and the sun's
+    // particles land mostly on the building's outside, which leaves a room lit through its
+    // windows a few dozen of its 256 instant-radiosity VPLs, whose spots (squares, interleaved)
+    // still showed along the daylit office's ceiling and corners after 64 frames; MIR puts them
+    // where the camera looks (relmse 0.041 against 0.048 at 64 frames, the same cost).
+    bool metropolisUnderDaylight = true;
     int patternX = 4, patternY = 4;  // interleaving n x m (1 x 1: no interleaving)
     // The VPL geometric term is clamped as geometricClampBound (render/vpl/vpl_contribution.h):
     // at 1 / (this fraction of the scene's bounding radius)^2; 0: no clamping. It removes the
@@ -189,6 +195,9 @@ public:
     // The GL objects and CPU-side scene data; opaque (defined in gpu_state.h) and public
     // only so that the passes' free functions can take it.
     struct State;
+
+    // Whether the VPLs come from MIR: asked for, or under daylight (metropolisUnderDaylight).
+    bool usesMetropolis() const;
 
 private:
     void regenerateMir();
