@@ -9,7 +9,8 @@
 // pass (one sample per pixel at 16 samples and 4x4); without, in the direct pass.
 //
 // usage: bench_preview [SCENE.json] [--quick] [--accuracy-only] [--target] [--frames N]
-//        bench_preview --scenes SCENE.json... [--frames N] [--shaded-lights N] [--proxy N]
+//        bench_preview --scenes SCENE.json... [--frames N] [--shaded-lights N] [--proxy N] [--size W H]
+//                      [--sky-samples N] [--sky-size TEXELS]
 //        bench_preview --back-wall
 // --scenes: issue 20's table (realSceneRow), one row a scene; --back-wall: backWallBlotches.
 // --target: only the issue's llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
@@ -95,12 +96,12 @@ Image average(Preview& preview, int frames) {
 // and light deal, a jittered pixel position, as the application's idle refinement draws them),
 // per pass; then, when SCENE.ref.exr exists beside it, a single frame's and 16 frames' relmse and
 // mean against it at its resolution.
-void realSceneRow(const std::string& path, const PreviewSettings& settings, int frames) {
+void realSceneRow(const std::string& path, const PreviewSettings& settings, int frames, int width, int height) {
     const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(path));
     Preview preview;
     preview.setSettings(settings);
     const auto t0 = std::chrono::steady_clock::now();
-    preview.setScene(scene, 640, 480);
+    preview.setScene(scene, width, height);
     preview.render();
     const double firstMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     // The least time of `frames` calls of step(f), in ms.
@@ -204,11 +205,18 @@ int main(int argc, char** argv) {
     int frames = 5;
     std::vector<std::string> realScenes;
     PreviewSettings realSettings;
+    int realWidth = 640, realHeight = 480;
     for (int i = 1; i < argc; ++i) {
         if (!std::strcmp(argv[i], "--scenes")) {
             while (i + 1 < argc && argv[i + 1][0] != '-') realScenes.push_back(argv[++i]);
         } else if (!std::strcmp(argv[i], "--shaded-lights") && i + 1 < argc) realSettings.lightsShadedInFull = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--proxy") && i + 1 < argc) realSettings.shadowProxyTriangles = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--sky-samples") && i + 1 < argc) realSettings.skySamples = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--sky-size") && i + 1 < argc) realSettings.skyShadowSize = std::atoi(argv[++i]);
+        else if (!std::strcmp(argv[i], "--size") && i + 2 < argc) {
+            realWidth = std::atoi(argv[++i]);
+            realHeight = std::atoi(argv[++i]);
+        }
         else if (!std::strcmp(argv[i], "--back-wall")) {
             backWallBlotches();
             return 0;
@@ -219,11 +227,11 @@ int main(int argc, char** argv) {
         else scenePath = argv[i];
     }
     if (!realScenes.empty()) {
-        std::printf("## 640x480, defaults (least of %d frames; ms)\n\n", frames);
+        std::printf("## %dx%d, defaults (least of %d frames; ms)\n\n", realWidth, realHeight, frames);
         std::printf("| scene | first frame (setup) | camera-move frame | idle frame, fresh VPLs | idle frame, new deal | "
                     "relmse 1 frame | relmse 16 frames | mean error 1 / 16 | degradation |\n"
                     "|---|---|---|---|---|---|---|---|---|\n");
-        for (const std::string& path : realScenes) realSceneRow(path, realSettings, frames);
+        for (const std::string& path : realScenes) realSceneRow(path, realSettings, frames, realWidth, realHeight);
         return 0;
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(loadScene(scenePath));

@@ -32,7 +32,7 @@ constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "si
                                              "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
 constexpr std::string_view kPreviewOptions[] = {"vpls",       "clamp", "area_samples", "unroll",        "pattern",
                                                 "visibility", "blur",  "split",        "vpl_source",    "shaded_lights",
-                                                "proxy_triangles"};
+                                                "proxy_triangles", "sky_samples", "sky_shadow_size"};
 
 // The explicit factory table: one row per backend.
 const BackendInfo kBackends[] = {

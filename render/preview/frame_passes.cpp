@@ -2,6 +2,7 @@
 // split (with the discontinuity buffer), interleaved VPL shading, gather with the horizontal
 // blur, vertical blur with the direct light and the blend.
 
+#include "core/sky_model.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/luminaire_textures.h"
 #include "render/trace/rng.h"
@@ -50,16 +51,10 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     st.blurTemp = gl::makeTexture2D(GL_RGBA32F, w, h);
     st.blurFbo = gl::makeFramebuffer({st.blurTemp.id()});
     st.final = gl::makeTexture2D(GL_RGBA32F, w, h);
+    st.viewTransmittance = gl::makeTexture2D(GL_RGBA16F, w, h);
+    st.viewTransmittanceFbo = gl::makeFramebuffer({st.viewTransmittance.id()}, st.depth.id());
     st.finalFbo = gl::makeFramebuffer({st.final.id()});
     gl::checkErrors("preview targets");
-}
-
-// Bytes from one per-sub-buffer uniform block to the next: blockBytes rounded up to the offset
-// alignment GL asks of glBindBufferRange.
-size_t uniformBlockStride(size_t blockBytes) {
-    GLint align = 1;
-    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
-    return size_t(roundUp(int(blockBytes), std::max(align, 1)));
 }
 
 // The sub-buffers' VPLs as uniform blocks, one after the other at the alignment GL asks for,
@@ -79,25 +74,6 @@ void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int ma
         std::memcpy(blocks.data() + k * stride, gpu.data() + t.first, size_t(t.count) * sizeof(GpuVpl));
     }
     upload(st.tileVplBlocks, blocks);
-}
-
-// Interleaved, the area samples of each sub-buffer (sample i serves sub-buffer i mod (n m)) as
-// uniform blocks, as uploadTileBlocks does for the VPLs: constant-index reads in shade_vpl.frag.
-void uploadTileAreaBlocks(Preview::State& st, const std::vector<GpuLight>& lights) {
-    constexpr int kMaxUnrolledArea = 16;
-    const int subsets = st.patternX * st.patternY;
-    // Only when the dealt lights are area samples alone (areaSampleLight's cosine emitter).
-    const int perTile = subsets > 1 && !st.interleavedDeltas ? st.areaLightCount / subsets : 0;
-    st.areaPerTile = perTile <= kMaxUnrolledArea ? perTile : 0;
-    if (st.areaPerTile == 0) return;
-    const size_t stride = uniformBlockStride(size_t(perTile) * sizeof(GpuLight));
-    st.areaBlockStride = GLintptr(stride);
-    std::vector<unsigned char> blocks(size_t(subsets) * stride);
-    for (int k = 0; k < subsets; ++k)
-        for (int j = 0; j < perTile; ++j)
-            std::memcpy(blocks.data() + size_t(k) * stride + size_t(j) * sizeof(GpuLight),
-                        &lights[size_t(st.firstAreaLight + k + j * subsets)], sizeof(GpuLight));
-    upload(st.tileAreaBlocks, blocks);
 }
 
 // Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
@@ -183,228 +159,6 @@ void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
     st.vplsDirty = false;
 }
 
-// A delta light for the light buffer (lights.glsl's layout), without its shadow layer; a
-// luminaire's table goes into `tables` once however many luminaires share it (`layerOf`: the
-// layer of each table there), so that a field of 10,000 luminaires of one file is one layer
-// (the GPU's array textures hold 2,048 at least, not 10,000).
-GpuLight gpuDeltaLight(const DeltaLight& d, float toScene, std::vector<const GoniometricDistribution*>& tables,
-                       std::unordered_map<const GoniometricDistribution*, int>& layerOf) {
-    static const GoniometricDistribution dark = [] {  // for a luminaire whose file is not loaded
-        GoniometricDistribution g;
-        g.cAngles = {0, 360};
-        g.gammaAngles = {0, 180};
-        g.candela = {0, 0, 0, 0};
-        return g;
-    }();
-    GpuLight g{};
-    const float kind = d.type == LightType::Point       ? 0.0f
-                       : d.type == LightType::Spot      ? 1.0f
-                       : d.type == LightType::Luminaire ? 4.0f
-                                                        : 2.0f;
-    put(g.positionKind, d.position, kind);
-    put(g.directionCosCone, d.direction, d.cosCone);
-    if (d.type == LightType::Luminaire) {  // its table's layer in place of the cone
-        const GoniometricDistribution* table = d.goniometric ? &d.goniometric->distribution() : &dark;
-        const auto [it, fresh] = layerOf.try_emplace(table, int(tables.size()));
-        if (fresh) tables.push_back(table);
-        put(g.directionCosCone, d.direction, float(it->second));
-    }
-    put(g.intensityCosFalloff, d.type == LightType::Directional ? d.intensity : d.intensity * toScene,
-        d.cosFalloffStart);
-    // A luminaire keeps its C0 direction where area samples keep their normal.
-    put(g.normalShadow, d.type == LightType::Luminaire ? d.c0 : V3f(0, 0, 0), -1.0f);
-    return g;
-}
-
-// Point samples on the emissive triangles chosen in proportion to area times luminance,
-// stratified, each lighting as Le / (samples pdf_area); interleaved, a multiple of the sub-buffer
-// count so that every sub-buffer gets as many, shuffled so that which part of the light a
-// sub-buffer sees changes with every seed (where the blur box is cut short by an edge, a fixed
-// assignment would be a bias that no number of frames averages away). Cost: a search in the
-// emitters' CDF per sample, whatever their number.
-std::vector<GpuLight> areaLightSamples(const RenderScene& scene, int count, uint64_t seed) {
-    std::vector<GpuLight> samples;
-    const auto& emitters = scene.lights().emitters();
-    if (emitters.empty() || count <= 0) return samples;
-    std::vector<double> cdf;
-    double total = 0;
-    for (const EmitterTriangle& e : emitters) cdf.push_back(total += e.area * std::max(1e-6f, luminance(e.radiance)));
-    Rng rng(seed, 0xa4ea11ULL);
-    for (int i = 0; i < count; ++i) {
-        const double u = (i + rng.nextDouble()) / count;
-        const size_t k = std::min(size_t(std::lower_bound(cdf.begin(), cdf.end(), u * total) - cdf.begin()),
-                                  emitters.size() - 1);
-        const EmitterTriangle& e = emitters[k];
-        float b1 = rng.next1D(), b2 = rng.next1D();
-        if (b1 + b2 > 1.0f) b1 = 1.0f - b1, b2 = 1.0f - b2;
-        const V3f p = e.p0 * (1.0f - b1 - b2) + e.p1 * b1 + e.p2 * b2;
-        const double weight = e.area * std::max(1e-6f, luminance(e.radiance));
-        const float pdfArea = float(weight / total / e.area);
-        GpuLight g{};
-        put(g.positionKind, p, 3.0f);
-        put(g.intensityCosFalloff, e.radiance * (1.0f / (float(count) * pdfArea)), 0);
-        put(g.normalShadow, e.normal, -1.0f);
-        samples.push_back(g);
-    }
-    for (size_t i = samples.size(); i > 1; --i) std::swap(samples[i - 1], samples[rng.nextUint() % i]);
-    return samples;
-}
-
-// Delta lights dealt to each sub-buffer per frame at most (beyond, a random subset a frame): 16
-// kept the VPL shading pass of a 135-light office near 80 ms at 640x480 on llvmpipe, where 62
-// (1,000 lights) took 240 ms.
-constexpr int kMaxInterleavedLights = 16;
-
-// Bytes the delta lights' and area samples' cube maps may take (distance and depth, 8 bytes a
-// texel): beyond, the faces shrink. 150 lights get 128 x 128 faces, 1,000 lights 32 x 32.
-constexpr double kLightShadowBytes = 160.0 * 1024 * 1024;
-
-// Direct lights: the scene's delta lights and the area lights' samples, in the ranges gpu_state.h
-// describes, with their shadow maps: cube maps for point, spot and luminaire lights (the scene
-// drawn) and area samples (the proxy drawn), orthographic maps for directional lights (beyond
-// DirectionalShadows::kMaxLights, unshadowed). Past the cubes the GPU holds, the weakest delta
-// lights go unshadowed; past the memory budget, every face shrinks; both are said in lightNote.
-void uploadLights(Preview::State& st, const PreviewSettings& settings) {
-    const int subsets = st.patternX * st.patternY;
-    const bool interleave = subsets > 1;
-    const float toScene = 1.0f / (st.scene->metersPerUnit() * st.scene->metersPerUnit());
-    std::vector<const GoniometricDistribution*> tables;
-    std::unordered_map<const GoniometricDistribution*, int> layerOf;
-    std::vector<GpuLight> directional, deltas;
-    std::vector<double> deltaPower;
-    st.dirShadows.matrices.clear();
-    for (const DeltaLight& d : st.deltas) {
-        GpuLight g = gpuDeltaLight(d, toScene, tables, layerOf);
-        if (d.type != LightType::Directional) {
-            deltas.push_back(g);
-            // Intensity over the cone's solid angle share: which lights matter most.
-            deltaPower.push_back(double(luminance(d.intensity)) * (d.type == LightType::Spot ? 1.0 - d.cosCone : 2.0));
-            continue;
-        }
-        if (st.dirShadows.matrices.size() < size_t(DirectionalShadows::kMaxLights)) {
-            g.normalShadow[3] = float(st.dirShadows.matrices.size());
-            st.dirShadows.matrices.push_back(
-                directionalShadowMatrix(d.direction, st.scene->boundsCenter(), st.scene->boundsRadius()));
-        }
-        directional.push_back(g);
-    }
-    st.luminaireTables = makeLuminaireTables(tables);
-    const int areaCount = interleave ? roundUp(settings.areaLightSamples, subsets) : settings.areaLightSamples;
-    std::vector<GpuLight> area = areaLightSamples(*st.scene, areaCount, st.seed);
-
-    // Shadow cubes: the delta lights in scene order (so that an edit redraws one), then the area
-    // samples; the strongest delta lights keep theirs when not all fit.
-    const int capacity = CubeShadowSet::capacity();
-    const int areaCubes = std::min(int(area.size()), capacity);
-    const int shadowedDeltas = std::min(int(deltas.size()), capacity - areaCubes);
-    std::vector<size_t> byPower(deltas.size());
-    std::iota(byPower.begin(), byPower.end(), size_t(0));
-    std::stable_sort(byPower.begin(), byPower.end(), [&](size_t a, size_t b) { return deltaPower[a] > deltaPower[b]; });
-    std::vector<bool> shadowed(deltas.size(), false);
-    for (int r = 0; r < shadowedDeltas; ++r) shadowed[byPower[size_t(r)]] = true;
-    std::vector<V3f> deltaCentres, areaCentres;
-    for (size_t i = 0; i < deltas.size(); ++i)
-        if (shadowed[i]) {
-            deltas[i].normalShadow[3] = float(deltaCentres.size());
-            deltaCentres.push_back(V3f(deltas[i].positionKind[0], deltas[i].positionKind[1], deltas[i].positionKind[2]));
-        }
-    const float lift = st.scene->boundsRadius() * 1e-4f;
-    for (int i = 0; i < areaCubes; ++i) {
-        GpuLight& g = area[size_t(i)];
-        g.normalShadow[3] = float(shadowedDeltas + i);
-        areaCentres.push_back(V3f(g.positionKind[0], g.positionKind[1], g.positionKind[2]) +
-                              V3f(g.normalShadow[0], g.normalShadow[1], g.normalShadow[2]) * lift);
-    }
-    const int cubes = shadowedDeltas + areaCubes;
-    int face = settings.shadowSize;
-    while (face > 16 && double(cubes) * 6.0 * face * face * 8.0 > kLightShadowBytes) face /= 2;
-    st.lightNote.clear();
-    if (shadowedDeltas < int(deltas.size()))
-        st.lightNote = "shadows for the " + std::to_string(shadowedDeltas) + " strongest of " +
-                       std::to_string(deltas.size()) + " lights (this GPU's limit)";
-    if (face < settings.shadowSize)
-        st.lightNote += std::string(st.lightNote.empty() ? "" : ", ") + "light shadow maps at " + std::to_string(face) +
-                        " px a face for " + std::to_string(cubes) + " maps";
-
-    // The ranges: shaded in full, then dealt to the sub-buffers (many delta lights, padded with
-    // dark ones to a multiple of n m so that every sub-buffer gets as many; the area samples).
-    Rng rng(st.dealSeed, 0xd1ea7ULL);
-    // The area samples' deal follows the deal's seed; each keeps its cube (assigned above).
-    for (size_t i = area.size(); i > 1; --i) std::swap(area[i - 1], area[rng.nextUint() % i]);
-    std::vector<GpuLight> lights = directional;
-    st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
-    if (!st.interleavedDeltas) {
-        lights.insert(lights.end(), deltas.begin(), deltas.end());
-    } else {
-        // The lights that matter most to the picture stay shaded in full: those nearest the
-        // camera for their power, whose pools of light (and the hot spots where a lamp hangs
-        // close to the ceiling) cover the most pixels; the blur would smear their shape.
-        const V3f eye = toFloat(st.camera.position);
-        const float nearest = 0.05f * st.scene->boundsRadius();
-        std::vector<double> score(deltas.size());
-        for (size_t i = 0; i < deltas.size(); ++i) {
-            const V3f p(deltas[i].positionKind[0], deltas[i].positionKind[1], deltas[i].positionKind[2]);
-            score[i] = deltaPower[i] / std::max(double((p - eye).length2()), double(nearest) * nearest);
-        }
-        std::vector<size_t> order(deltas.size());
-        std::iota(order.begin(), order.end(), size_t(0));
-        const size_t full = size_t(std::max(settings.lightsShadedInFull, 0));
-        std::partial_sort(order.begin(), order.begin() + long(full), order.end(),
-                          [&](size_t a, size_t b) { return score[a] > score[b]; });
-        std::vector<GpuLight> rest;
-        std::vector<bool> inFull(deltas.size(), false);
-        for (size_t r = 0; r < full; ++r) inFull[order[r]] = true;
-        for (size_t i = 0; i < deltas.size(); ++i) (inFull[i] ? lights : rest).push_back(deltas[i]);
-        deltas = std::move(rest);
-    }
-    if (!interleave) lights.insert(lights.end(), area.begin(), area.end());
-    st.shadedHere = int(lights.size());
-    st.firstInterleaved = int(lights.size());
-    if (st.interleavedDeltas && int(deltas.size()) > kMaxInterleavedLights * subsets) {
-        // A frame shades a uniformly chosen subset of the rest, scaled up: the cost per pixel
-        // stays that of kMaxInterleavedLights lights, and frames accumulated while idle converge.
-        for (size_t i = 0; i < size_t(kMaxInterleavedLights * subsets); ++i)
-            std::swap(deltas[i], deltas[i + rng.nextUint() % (deltas.size() - i)]);
-        const float scale = float(deltas.size()) / float(kMaxInterleavedLights * subsets);
-        st.lightNote += std::string(st.lightNote.empty() ? "" : ", ") + "a random " +
-                        std::to_string(kMaxInterleavedLights * subsets) + " of " + std::to_string(deltas.size()) +
-                        " far lights a frame";
-        deltas.resize(size_t(kMaxInterleavedLights * subsets));
-        for (GpuLight& g : deltas)
-            for (int c = 0; c < 3; ++c) g.intensityCosFalloff[c] *= scale;
-    }
-    if (st.interleavedDeltas) {
-        GpuLight darkLight{};
-        darkLight.normalShadow[3] = -1.0f;
-        deltas.resize(size_t(roundUp(int(deltas.size()), subsets)), darkLight);
-        for (size_t i = deltas.size(); i > 1; --i) std::swap(deltas[i - 1], deltas[rng.nextUint() % i]);
-        lights.insert(lights.end(), deltas.begin(), deltas.end());
-    }
-    st.firstAreaLight = int(lights.size());
-    st.areaLightCount = interleave ? int(area.size()) : 0;
-    if (interleave) lights.insert(lights.end(), area.begin(), area.end());
-    st.interleavedCount = int(lights.size()) - st.firstInterleaved;
-
-    const auto kinds = [&](int first, int end) {
-        int bits = 0;
-        for (int i = first; i < end; ++i) bits |= 1 << int(lights[size_t(i)].positionKind[3]);
-        return bits;
-    };
-    st.shadedKinds = kinds(0, st.shadedHere);
-    st.interleavedKinds = kinds(st.firstInterleaved, int(lights.size()));
-    upload(st.lightBuffer, lights);
-    uploadTileAreaBlocks(st, lights);
-    st.directLights = std::move(lights);
-
-    st.lightShadows.reserve(cubes, face);
-    const float radius = st.scene->boundsRadius();
-    st.timings.shadowCubes += st.lightShadows.draw(st.shadowProgram, st.sceneCaster, deltaCentres, 0, radius, st.shadowCentres);
-    st.timings.shadowCubes +=
-        st.lightShadows.draw(st.shadowProgram, st.proxyCaster, areaCentres, shadowedDeltas, radius, st.shadowCentres);
-    st.dirShadows.draw(st.dirShadowProgram, st.sceneCaster, settings.shadowSize * 4);
-    st.lightsDirty = false;
-}
-
 // The SPEC.md pinhole projection: pixel (i, j) shows the raster point (i + jx, j + jy). Rows are
 // stored top first (NDC y is flipped), so texel rows match Image rows.
 Mat4 viewProjection(const Camera& camera, int w, int h, float jx, float jy, float nearZ, float farZ) {
@@ -435,27 +189,31 @@ const gl::Program& programVariant(Preview::State& st, const std::string& fragmen
 
 std::string define(const char* name, int value) { return std::string("#define ") + name + " " + std::to_string(value) + "\n"; }
 
-std::string lightKindDefines(int kinds) {
+std::string lightKindDefines(const Preview::State& st, int kinds) {
     const auto has = [&](int kind) { return (kinds >> kind) & 1; };
-    return define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) + define("AREA", has(3)) + define("LUMINAIRE", has(4));
+    return define("SPOT", has(1)) + define("DIRECTIONAL", has(2)) + define("AREA", has(3)) + define("LUMINAIRE", has(4)) +
+           define("GLAZING", st.glazing ? 1 : 0);
 }
 
 // The VPL shading program for the current tiles, settings and scene (shade_vpl.frag's switches).
-const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool findEdges, bool fusedSplit) {
+const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool interleavedSky, bool findEdges,
+                                bool fusedSplit) {
     std::string defines = define("VPL_VISIBILITY", st.vplVisibility ? 1 : 0) + define("GLOSSY", st.glossyScene ? 1 : 0) +
                           define("INTERLEAVED_LIGHTS", interleavedLights ? 1 : 0) + define("FIND_EDGES", findEdges ? 1 : 0) +
                           define("FUSED_SPLIT", fusedSplit ? 1 : 0) +
                           define("UNROLLED_AREA", interleavedLights ? st.areaPerTile : 0) +
-                          lightKindDefines(interleavedLights ? st.interleavedKinds : 0) +
+                          define("SKY_PER_TILE", interleavedSky ? st.skyPerTile : 0) +
+                          lightKindDefines(st, interleavedLights ? st.interleavedKinds : 0) +
                           define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
     return programVariant(st, "shade_vpl.frag", defines);
 }
 
 // The direct pass's program for the lights it evaluates (direct.frag's switches).
-const gl::Program& directProgram(Preview::State& st, bool lightLoop) {
+const gl::Program& directProgram(Preview::State& st, bool lightLoop, bool skyLoop) {
     return programVariant(st, "direct.frag",
-                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + lightKindDefines(lightLoop ? st.shadedKinds : 0));
+                          define("LIGHT_LOOP", lightLoop ? 1 : 0) + define("SKY_LIGHTS", skyLoop ? 1 : 0) +
+                              lightKindDefines(st, lightLoop ? st.shadedKinds : 0));
 }
 
 // The uniforms and textures of lights.glsl.
@@ -464,18 +222,60 @@ void setLightUniforms(Preview::State& st, const gl::Program& p) {
     setFloat(p, "lightTexelAngle", 2.0f / float(std::max(st.lightShadows.faceSize(), 1)));
     setFloat(p, "areaShadowSlack", st.proxyCaster.slack);
     setInt(p, "lightCubesPerArray", st.lightShadows.perArray());
-    const DirectionalShadows& ds = st.dirShadows;
-    if (!ds.matrices.empty())
-        glProgramUniformMatrix4fv(p.id(), loc(p, "dirShadowMatrix"), GLsizei(ds.matrices.size()), GL_FALSE,
-                                  ds.matrices[0].m.data());
     // Two texels of the map along the normal, half a texel of depth (the map spans 2 radii).
-    setFloat(p, "dirNormalOffset", 2.0f * 2.0f * st.scene->boundsRadius() / float(std::max(ds.size, 1)));
-    setFloat(p, "dirDepthBias", 0.5f / float(std::max(ds.size, 1)));
+    const float diameter = 2.0f * st.scene->boundsRadius();
+    const int dirSize = std::max(st.dirShadows.size, 1);
+    setFloat(p, "dirNormalOffset", 2.0f * diameter / float(dirSize));
+    setFloat(p, "dirDepthBias", 0.5f / float(dirSize));
+    setFloat(p, "planeDepthBias", 0.05f);
     setIvec2(p, "luminaireTableSize", kLuminaireTableC, kLuminaireTableGamma);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, st.lightBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, st.dirMatrices.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, st.skyLightBuffer.id());
     st.lightShadows.bind(8);
     glBindTextureUnit(12, st.dirShadows.depth.id());
     glBindTextureUnit(13, st.luminaireTables.id());
+    glBindTextureUnit(14, st.skyShadows.depth.id());
+    glBindTextureUnit(17, st.dirShadows.depth.id());
+    glBindSampler(17, st.rawDepth.id());
+    if (st.glazing) {
+        glBindTextureUnit(15, st.dirShadows.transmittance.id());
+        glBindTextureUnit(16, st.skyShadows.transmittance.id());
+    }
+}
+
+// The uniforms of sky.glsl: the scene's sky and the sun's disc as seen by pixels with no surface.
+void setBackgroundUniforms(const Preview::State& st, const gl::Program& p, bool sunDisc) {
+    int model = 0;
+    float zenith = 0, ground = 0, normalisation = 1;
+    V3f towardSun(0, 1, 0);
+    CieSkyParameters cie{0, -1, 0, -1, 0};
+    if (const auto& sky = st.daylight.sky) {
+        model = sky->sky.model == SkyModelType::Uniform ? 1 : sky->sky.model == SkyModelType::CieOvercast ? 2 : 3;
+        zenith = float(sky->zenithLuminance / kLumensPerWatt);
+        ground = float(sky->groundLuminance / kLumensPerWatt);
+        towardSun = toFloat(sky->towardSun);
+        if (model == 3) {
+            // relativeSkyLuminance's denominator, f(Zs) phi(0), the sun at most on the horizon.
+            cie = cieSkyParameters(sky->sky.cieType);
+            const double zs = std::min(std::acos(std::clamp(sky->towardSun.y, -1.0, 1.0)), 0.5 * double(kPi));
+            const double c = std::cos(zs);
+            const double f = 1.0 + cie.c * (std::exp(cie.d * zs) - std::exp(cie.d * 0.5 * double(kPi))) + cie.e * c * c;
+            normalisation = float(1.0 / (f * (1.0 + cie.a * std::exp(cie.b))));
+        }
+    }
+    setInt(p, "skyModel", model);
+    setFloat(p, "skyZenithRadiance", zenith);
+    setFloat(p, "groundRadiance", ground);
+    setVec3(p, "skyTowardSun", towardSun);
+    glProgramUniform4f(p.id(), loc(p, "cieAbcd"), float(cie.a), float(cie.b), float(cie.c), float(cie.d));
+    setFloat(p, "cieE", float(cie.e));
+    setFloat(p, "cieNormalisation", normalisation);
+    const auto& sun = st.daylight.sun;
+    setVec3(p, "sunToward", sun ? toFloat(sun->towardSun) : V3f(0, 1, 0));
+    setFloat(p, "sunCosHalfAngle", sun ? float(std::cos(sun->halfAngleRad)) : 2.0f);
+    const Rgb disc = sun && sunDisc ? toFloat(sun->radiance()) : Rgb(0, 0, 0);
+    glProgramUniform3f(p.id(), loc(p, "sunDiscRadiance"), disc.x, disc.y, disc.z);
 }
 
 void bindTextures(std::initializer_list<GLuint> textures) {
@@ -516,6 +316,7 @@ void runGatherBlur(Preview::State& st, GLuint splitTexture, int boxWidth) {
     setIvec2(p, "pattern", st.patternX, st.patternY);
     setIvec2(p, "subSize", st.subW, st.subH);
     setInt(p, "boxWidth", boxWidth);
+    setInt(p, "boxFlip", int(st.dealSeed & 1));
     bindTextures({splitTexture});
     drawFullscreen(st.blurFbo.id(), st.targetW, st.targetH);
 }
@@ -582,7 +383,27 @@ Image Preview::render(float jitterX, float jitterY) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.triangles.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.materials.id());
     glBindVertexArray(st.sceneVao.id());
-    glDrawArrays(GL_TRIANGLES, 0, st.vertexCount);
+    glDrawArrays(GL_TRIANGLES, 0, st.opaqueVertexCount);
+    // What the camera sees through panes: the product of the transmittances of those in front of
+    // each pixel's surface (glazing.frag), which the direct pass multiplies everything by. White
+    // receivers read the surface behind a pane as it is (the illuminance layer).
+    const bool throughPanes = st.glazing && !whiteReceivers_;
+    if (throughPanes) {
+        const float white[4] = {1, 1, 1, 1};
+        glClearNamedFramebufferfv(st.viewTransmittanceFbo.id(), GL_COLOR, 0, white);
+        glBindFramebuffer(GL_FRAMEBUFFER, st.viewTransmittanceFbo.id());
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
+        glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE);
+        const gl::Program& g = st.glazingProgram;
+        glUseProgram(g.id());
+        glProgramUniformMatrix4fv(g.id(), loc(g, "viewProj"), 1, GL_FALSE, vp.m.data());
+        setInt(g, "firstTriangle", st.opaqueVertexCount / 3);
+        glDrawArrays(GL_TRIANGLES, st.opaqueVertexCount, st.vertexCount - st.opaqueVertexCount);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+    }
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(st.emptyVao.id());
     lap(tm.gbuffer);
@@ -591,12 +412,13 @@ Image Preview::render(float jitterX, float jitterY) {
     // Lights dealt to the sub-buffers (area samples, many delta lights) are shaded with the VPLs
     // (shade_vpl.frag), so they are split, gathered and blurred with them.
     const bool interleavedLights = interleaved && s.direct && st.interleavedCount > 0;
-    if (indirect || interleavedLights) {
+    const bool interleavedSky = interleaved && s.direct && st.skyPerTile > 0;
+    if (indirect || interleavedLights || interleavedSky) {
         const bool fused = interleaved && s.split == SplitMode::Fused;
         if (interleaved && !fused) runSplit(st, s.split == SplitMode::TwoPass, w, h, s.blur, eye);
         lap(tm.split);
 
-        const gl::Program& p = shadeProgram(st, interleavedLights, interleaved && s.blur, fused);
+        const gl::Program& p = shadeProgram(st, interleavedLights, interleavedSky, interleaved && s.blur, fused);
         glUseProgram(p.id());
         setIvec2(p, "pattern", st.patternX, st.patternY);
         setIvec2(p, "subSize", st.subW, st.subH);
@@ -625,6 +447,9 @@ Image Preview::render(float jitterX, float jitterY) {
             if (st.unrolledVpls > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
                                   GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
+            if (interleavedSky)
+                glBindBufferRange(GL_UNIFORM_BUFFER, 2, st.tileSkyBlocks.id(), k * st.skyBlockStride,
+                                  GLsizeiptr(size_t(st.skyPerTile) * sizeof(GpuSkyLight)));
             if (interleavedLights && st.areaPerTile > 0)
                 glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
                                   GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
@@ -641,16 +466,35 @@ Image Preview::render(float jitterX, float jitterY) {
         if (interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
         lap(tm.gather);
     }
-    const bool withIndirect = indirect || interleavedLights;  // the shading pass's output holds light
+    // The shading pass's output holds light.
+    const bool withIndirect = indirect || interleavedLights || interleavedSky;
 
     const int shadedHere = s.direct ? st.shadedHere : 0;
-    const gl::Program& d = directProgram(st, shadedHere > 0);
+    // Without interleaving the sky's directions are all shaded here.
+    const int skyHere = s.direct && !interleaved ? st.skyLightCount : 0;
+    const gl::Program& d = directProgram(st, shadedHere > 0, skyHere > 0);
     glUseProgram(d.id());
     setInt(d, "shadedHere", shadedHere);
+    setInt(d, "skyLightCount", skyHere);
     setVec3(d, "cameraPos", eye);
     setLightUniforms(st, d);
     setInt(d, "addIndirect", withIndirect ? 1 : 0);
     setInt(d, "boxHeight", interleaved && s.blur ? st.patternY : 1);
+    setInt(d, "boxFlip", int(st.dealSeed & 1));
+    {
+        // The pinhole's rays for the background (SPEC.md section 1's camera).
+        const V3d f = (st.camera.target - st.camera.position).normalized();
+        const V3d r = f.cross(st.camera.up).normalized(), u = r.cross(f);
+        const double t = std::tan(radians(st.camera.fovYDeg) * 0.5);
+        setVec3(d, "viewForward", toFloat(f));
+        setVec3(d, "viewRight", toFloat(r * (t * double(w) / double(h))));
+        setVec3(d, "viewUp", toFloat(u * t));
+        glProgramUniform2f(d.id(), loc(d, "viewJitter"), jitterX, jitterY);
+    }
+    setInt(d, "showBackground", whiteReceivers_ ? 0 : 1);
+    setBackgroundUniforms(st, d, sunDiscShown_);
+    setInt(d, "throughPanes", throughPanes ? 1 : 0);
+    glBindTextureUnit(4, st.viewTransmittance.id());
     glBindTextureUnit(0, st.g[0].id());
     glBindTextureUnit(1, st.g[1].id());
     glBindTextureUnit(3, interleaved ? st.blurTemp.id() : st.indirect.id());

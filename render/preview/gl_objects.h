@@ -45,6 +45,7 @@ inline void deleteFramebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 inline void deleteVertexArray(GLuint id) { glDeleteVertexArrays(1, &id); }
 inline void deleteProgram(GLuint id) { glDeleteProgram(id); }
 inline void deleteQuery(GLuint id) { glDeleteQueries(1, &id); }
+inline void deleteSampler(GLuint id) { glDeleteSamplers(1, &id); }
 
 using Buffer = Handle<deleteBuffer>;
 using Texture = Handle<deleteTexture>;
@@ -52,10 +53,12 @@ using Framebuffer = Handle<deleteFramebuffer>;
 using VertexArray = Handle<deleteVertexArray>;
 using Program = Handle<deleteProgram>;
 using Query = Handle<deleteQuery>;
+using Sampler = Handle<deleteSampler>;
 
 inline Buffer makeBuffer() { GLuint id = 0; glCreateBuffers(1, &id); return Buffer(id); }
 inline Texture makeTexture(GLenum target) { GLuint id = 0; glCreateTextures(target, 1, &id); return Texture(id); }
 inline Framebuffer makeFramebuffer() { GLuint id = 0; glCreateFramebuffers(1, &id); return Framebuffer(id); }
+inline Sampler makeSampler() { GLuint id = 0; glCreateSamplers(1, &id); return Sampler(id); }
 inline VertexArray makeVertexArray() { GLuint id = 0; glCreateVertexArrays(1, &id); return VertexArray(id); }
 
 // A 2D texture of the given internal format with nearest filtering (all preview passes fetch

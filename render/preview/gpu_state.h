@@ -2,6 +2,7 @@
 // Private to the preview's sources (preview.cpp: scene and VPLs; frame_passes.cpp: the passes):
 // the GL objects and CPU-side data behind Preview, and the GPU buffer layouts the shaders mirror.
 
+#include "core/daylight.h"
 #include "render/preview/gl_objects.h"
 #include "render/preview/per_light_vpls.h"
 #include "render/preview/shadow_maps.h"
@@ -24,6 +25,9 @@ using Clock = std::chrono::steady_clock;
 struct GpuMaterial { float albedoKind[4], specularAlpha[4], radiance[4]; };
 struct GpuVpl { float positionIndex[4], normalAlpha[4], incident[4], power[4], albedo[4], specular[4]; };
 struct GpuLight { float positionKind[4], directionCosCone[4], intensityCosFalloff[4], normalShadow[4]; };
+// One of the sky's directions (lights.glsl's SkyLight): toward it and its map's layer, its
+// irradiance, its map's matrix (column-major).
+struct GpuSkyLight { float towardLayer[4], irradiance[4], shadow[16]; };
 
 inline void put(float* dst, const V3f& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
 inline void put(float* dst, const Rgb& v, float w) { dst[0] = v.x; dst[1] = v.y; dst[2] = v.z; dst[3] = w; }
@@ -33,6 +37,7 @@ inline float materialKind(MaterialType t) {
     case MaterialType::Diffuse:
     case MaterialType::Glossy: return 1.0f;
     case MaterialType::Emitter: return 2.0f;
+    case MaterialType::Glazing: return 4.0f;  // never in the G-buffer: seen through (glazing.frag)
     default: return 3.0f;  // mirror, glass: no preview model, drawn black
     }
 }
@@ -40,8 +45,10 @@ inline float materialKind(MaterialType t) {
 inline int roundUp(int v, int multiple) { return (v + multiple - 1) / multiple * multiple; }
 
 // Per light, the VPLs it gave: lightIndex -1 is all emissive triangles together, -2 a set given
-// by setVpls, -3 the MIR set of all lights, kAllLights one instant radiosity set of all lights.
+// by setVpls, -3 the MIR set of all lights, kAllLights one instant radiosity set of all lights,
+// kDaylightSet the sun's and the sky's.
 constexpr int kAllLights = -4;
+constexpr int kDaylightSet = -5;
 struct LightVpls {
     int lightIndex = -1;
     int count = 0;
@@ -53,6 +60,14 @@ inline void setInt(const gl::Program& p, const char* n, int v) { glProgramUnifor
 inline void setFloat(const gl::Program& p, const char* n, float v) { glProgramUniform1f(p.id(), loc(p, n), v); }
 inline void setIvec2(const gl::Program& p, const char* n, int a, int b) { glProgramUniform2i(p.id(), loc(p, n), a, b); }
 inline void setVec3(const gl::Program& p, const char* n, const V3f& v) { glProgramUniform3f(p.id(), loc(p, n), v.x, v.y, v.z); }
+
+// Bytes from one per-sub-buffer uniform block to the next: blockBytes rounded up to the offset
+// alignment GL asks of glBindBufferRange.
+inline size_t uniformBlockStride(size_t blockBytes) {
+    GLint align = 1;
+    glGetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &align);
+    return size_t(roundUp(int(blockBytes), std::max(align, 1)));
+}
 
 inline void drawFullscreen(GLuint fbo, int w, int h) {
     glBindFramebuffer(GL_FRAMEBUFFER, fbo);
@@ -73,9 +88,14 @@ void upload(gl::Buffer& buffer, const std::vector<T>& data) {
 struct Preview::State {
     std::string shaderDir;
     gl::Program gbufferProgram, splitProgram, blurProgram, shadowProgram, dirShadowProgram;
+    // Panes (glazing.frag) seen by the camera (with gbuffer.vert) and by the directional maps.
+    gl::Program glazingProgram, glazingShadowProgram;
     gl::VertexArray emptyVao, sceneVao;
     gl::Buffer vertices, triangles, materials, vplBuffer, tileVplBlocks, lightBuffer, shadowCentres;
-    GLsizei vertexCount = 0;
+    // The opaque triangles first, then the panes (glazing), which the G-buffer and the shadow
+    // maps leave out: the camera sees through them, and they cast no shadow.
+    GLsizei vertexCount = 0, opaqueVertexCount = 0;
+    bool glazing = false;  // the scene has panes
 
     // Scene.
     SceneSnapshot snapshot;
@@ -110,6 +130,24 @@ struct Preview::State {
     preview_detail::ShadowCaster sceneCaster, proxyCaster;
     preview_detail::CubeShadowSet lightShadows, vplShadows;
     preview_detail::DirectionalShadows dirShadows;
+    // The panes, drawn into the directional maps' transmittance layers (render/preview/shadow_maps.h)
+    // and into viewTransmittance: what the camera sees through them (product of transmittances).
+    preview_detail::ShadowCaster paneCaster;
+    gl::Texture viewTransmittance;
+    gl::Framebuffer viewTransmittanceFbo;
+    // Daylight (SPEC.md section 5, render/preview/daylight_samples.h): the scene's sun and sky,
+    // the directional lights' and the sun's maps' matrices, and the sky's directions with their
+    // maps (direct_lights.cpp, uploadSkyLights): all of them in skyLightBuffer, and with
+    // interleaving skyPerTile of them a sub-buffer as uniform blocks skyBlockStride apart.
+    Daylight daylight;
+    gl::Buffer dirMatrices;
+    preview_detail::DirectionalShadows skyShadows;
+    gl::Buffer skyLightBuffer, tileSkyBlocks;
+    // Reads a depth map's texels as numbers (no comparison, nearest): the sun's, whose texture
+    // compares for the other directional lights' PCF.
+    gl::Sampler rawDepth;
+    int skyLightCount = 0, skyPerTile = 0;
+    GLintptr skyBlockStride = 0;
     gl::Texture luminaireTables;  // luminaire_textures.h: a layer per distinct distribution
     // directLights: [0, shadedHere) shaded in full by the direct pass; [firstInterleaved,
     // firstInterleaved + interleavedCount) dealt to the sub-buffers and shaded with the VPLs:
@@ -148,5 +186,10 @@ struct Preview::State {
     int splitW() const { return subW * patternX; }
     int splitH() const { return subH * patternY; }
 };
+
+namespace preview_detail {
+// Direct lights (direct_lights.cpp): the light buffer's ranges above and their shadow maps.
+void uploadLights(Preview::State& st, const PreviewSettings& settings);
+}  // namespace preview_detail
 
 }  // namespace lucerna

@@ -17,6 +17,8 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     readOption(settings, "unroll", p.maxUnrolledVpls, 0);
     readOption(settings, "shaded_lights", p.lightsShadedInFull, 0);
     readOption(settings, "proxy_triangles", p.shadowProxyTriangles, 0);
+    readOption(settings, "sky_samples", p.skySamples, 0);
+    readOption(settings, "sky_shadow_size", p.skyShadowSize, 1, 16384);
     for (const auto& [key, value] : settings.options) {
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
@@ -37,6 +39,7 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
         } else if (key == "vpl_source") {
             if (value != "ir" && value != "mir") throw bad("ir or mir");
             p.vplSource = value == "mir" ? VplSource::Metropolis : VplSource::InstantRadiosity;
+            p.metropolisUnderDaylight = value == "mir";  // asked for by name: ir under daylight too
         }
         // Other keys belong to other backends (the CLI passes every option to every backend).
     }
@@ -88,7 +91,7 @@ public:
         d["preview:renderer"] = preview_ ? preview_->context().renderer() : "";
         d["preview:degradation"] = preview_ ? preview_->degradation() : "";
         d["preview:vpls"] = std::to_string(previewSettings_.vplCount);
-        d["preview:vpl_source"] = previewSettings_.vplSource == VplSource::Metropolis ? "mir" : "ir";
+        d["preview:vpl_source"] = preview_ && preview_->usesMetropolis() ? "mir" : "ir";
         d["preview:pattern"] = std::to_string(previewSettings_.patternX) + "x" + std::to_string(previewSettings_.patternY);
         return d;
     }

@@ -21,6 +21,7 @@ Camera faceCamera(const V3f& position, const V3f& forward, const V3f& up, int si
 PreviewIrradiance::PreviewIrradiance(SceneSnapshot scene, const PreviewSettings& settings, int faceSize)
     : size_(std::max(2, faceSize)) {
     preview_.setSettings(settings);
+    preview_.setSunDiscShown(false);  // irradiance() adds its light
     preview_.setScene(std::move(scene), size_, size_);
     // The faces in the frame of a sensor with normal +z: the top, then the four sides (their
     // upper halves face +z).
@@ -59,7 +60,8 @@ Rgb PreviewIrradiance::irradiance(const IrradianceSensor& sensor, float jitterX,
         for (size_t i = 0; i < f.weight.size() && i < image.pixels.size(); ++i)
             if (f.weight[i] > 0.0f && isFinite(image.pixels[i])) E += image.pixels[i] * f.weight[i];
     }
-    return E;
+    // The sun's disc, far smaller than a face's pixel, directly (the faces do not show it).
+    return E + preview_.sunDiscIrradiance(sensor.position, sensor.normal.normalized());
 }
 
 }  // namespace lucerna

@@ -4,7 +4,8 @@
 // point's normal and the upper halves of four side faces, each texel's radiance weighted by the
 // cosine and the solid angle it subtends. The preview's own light comes with it: VPL indirect
 // light, shadow-mapped direct light reflected by the surfaces, emitters seen directly; delta
-// lights shining on the point itself are the caller's (no frame can see them).
+// lights shining on the point itself are the caller's (no frame can see them); a sun with a disc
+// is added directly (Preview::sunDiscIrradiance: a ray toward it), the sky seen in the frames.
 
 #include "render/preview/preview.h"
 #include "render/trace/sensor.h"

@@ -2,6 +2,7 @@
 
 #include "core/scene_change.h"
 
+#include "render/preview/daylight_samples.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/mir_vpl_source.h"
 #include "render/preview/per_light_vpls.h"
@@ -33,6 +34,13 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
     st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");
     st.dirShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "shadow_dir.frag");
+    st.glazingProgram = gl::loadProgram(d, "gbuffer.vert", "glazing.frag");
+    st.glazingShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "glazing.frag");
+    st.skyShadows.filtered = false;
+    st.rawDepth = gl::makeSampler();
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(st.rawDepth.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
     st.emptyVao = gl::makeVertexArray();
     gl::checkErrors("Preview()");
 }
@@ -51,10 +59,13 @@ void Preview::setSettings(const PreviewSettings& s) {
     const bool regenerateVpls =
         s.vplCount != settings_.vplCount || s.seed != settings_.seed || s.maxBounces != settings_.maxBounces ||
         s.vplSource != settings_.vplSource || s.indirect != settings_.indirect ||
+        s.metropolisUnderDaylight != settings_.metropolisUnderDaylight ||
         // Whether one set serves all lights depends on the sub-buffer count.
         s.patternX * s.patternY != settings_.patternX * settings_.patternY ||
         // MIR's chain targets the clamped contribution, so its VPLs depend on the clamp.
-        (s.vplSource == VplSource::Metropolis && s.clampDistance != settings_.clampDistance);
+        (s.clampDistance != settings_.clampDistance &&
+         (s.vplSource == VplSource::Metropolis ||
+          (s.metropolisUnderDaylight && (state_->daylight.sun || state_->daylight.sky))));
     // The area-light samples are dealt to the sub-buffers like VPLs: a new pattern redeals them.
     const bool relight = s.areaLightSamples != settings_.areaLightSamples || s.shadowSize != settings_.shadowSize ||
                          s.patternX != settings_.patternX || s.patternY != settings_.patternY ||
@@ -98,6 +109,17 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
 
 namespace {
 
+// The preview's form of a scene light: its delta light, or for a sun (drawn as daylight,
+// render/preview/daylight_samples.h) a dark placeholder that keeps the lights' indices.
+DeltaLight previewDeltaLight(const Light& l, GoniometricSamplers* samplers = nullptr) {
+    if (l.type != LightType::Sun) return compileDeltaLight(l, samplers);
+    DeltaLight d;
+    d.type = LightType::Sun;
+    d.position = d.direction = V3f(0, 0, 0);
+    d.intensity = Rgb(0, 0, 0);
+    return d;
+}
+
 // The proxy the VPLs' and area samples' shadow maps draw (shadow_proxy.h): the scene's own
 // vertex array when it is small enough.
 void uploadShadowProxy(Preview::State& st, const std::vector<float>& positions, int maxTriangles) {
@@ -129,33 +151,44 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     // New geometry: every shadow map must be drawn again, wherever its light or VPL is.
     st.lightShadows.forget();
     st.vplShadows.forget();
+    st.dirShadows.forget();
+    st.skyShadows.forget();
+    st.daylight = resolveDaylight(*snapshot);
     st.camera = snapshot->camera;
     st.width = st.scene->camera().width();
     st.height = st.scene->camera().height();
     st.deltas.clear();
     GoniometricSamplers samplers;
-    for (const Light& l : snapshot->lights) st.deltas.push_back(compileDeltaLight(l, &samplers));
+    for (const Light& l : snapshot->lights) st.deltas.push_back(previewDeltaLight(l, &samplers));
     st.customVpls = false;
 
-    // Geometry: non-indexed world-space triangles, per-triangle normal and material.
+    // Geometry: non-indexed world-space triangles, per-triangle normal and material; the opaque
+    // ones first, then the panes (drawn apart: seen through, casting no shadow).
     const RenderScene& rs = *st.scene;
     std::vector<float> positions;
     std::vector<std::array<float, 4>> tris;
     positions.reserve(rs.triangleCount() * 9);
-    for (uint32_t i = 0; i < rs.triangleCount(); ++i) {
-        for (const V3f& v : rs.verticesOfTriangle(i)) positions.insert(positions.end(), {v.x, v.y, v.z});
-        const V3f n = rs.normalOfTriangle(i);
-        // The material id rides in a float: exact for any realistic number of materials.
-        const auto mat = uint32_t(&rs.materialOfTriangle(i) - &rs.material(0));
-        tris.push_back({n.x, n.y, n.z, float(mat)});
+    for (const bool panes : {false, true}) {
+        if (panes) st.opaqueVertexCount = GLsizei(positions.size() / 3);
+        for (uint32_t i = 0; i < rs.triangleCount(); ++i) {
+            if ((rs.materialOfTriangle(i).type == MaterialType::Glazing) != panes) continue;
+            for (const V3f& v : rs.verticesOfTriangle(i)) positions.insert(positions.end(), {v.x, v.y, v.z});
+            const V3f n = rs.normalOfTriangle(i);
+            // The material id rides in a float: exact for any realistic number of materials.
+            const auto mat = uint32_t(&rs.materialOfTriangle(i) - &rs.material(0));
+            tris.push_back({n.x, n.y, n.z, float(mat)});
+        }
     }
+    st.glazing = GLsizei(positions.size() / 3) > st.opaqueVertexCount;
     std::vector<GpuMaterial> mats;
     st.glossyScene = false;
     for (uint32_t m = 0; m < snapshot->materials.size(); ++m) {
         const ShadingMaterial& sm = rs.material(m);
         st.glossyScene = st.glossyScene || (sm.type == MaterialType::Glossy && !isBlack(sm.specular));
         GpuMaterial g{};
-        put(g.albedoKind, sm.albedo, materialKind(sm.type));
+        // A pane's transmittance where the others keep their albedo (glazing.frag reads it).
+        put(g.albedoKind, sm.type == MaterialType::Glazing ? toFloat(snapshot->materials[m].transmittance) : sm.albedo,
+            materialKind(sm.type));
         put(g.specularAlpha, sm.type == MaterialType::Glossy ? sm.specular : Rgb(0, 0, 0), sm.alpha);
         put(g.radiance, sm.radiance, 0);
         mats.push_back(g);
@@ -171,7 +204,9 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
         glEnableVertexArrayAttrib(st.sceneVao.id(), 0);
         glVertexArrayAttribFormat(st.sceneVao.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
         glVertexArrayAttribBinding(st.sceneVao.id(), 0, 0);
-        st.sceneCaster = {st.sceneVao.id(), st.vertexCount, 0.0f};
+        st.sceneCaster = {st.sceneVao.id(), st.opaqueVertexCount, 0.0f, 0};
+        st.paneCaster = {st.sceneVao.id(), st.vertexCount - st.opaqueVertexCount, 0.0f, st.opaqueVertexCount};
+        positions.resize(size_t(st.opaqueVertexCount) * 3);  // the proxy of what casts shadows
         uploadShadowProxy(st, positions, settings_.shadowProxyTriangles);
     }
     regenerate(settings_.seed);
@@ -208,10 +243,39 @@ int vplShare(double power, double totalPower, int budget, int subsets) {
     return std::max(subsets, int(std::lround(budget * power / totalPower)));
 }
 
-// Every light of the scene, chosen by power.
+// A light sampler over these emitters and delta lights, with the daylight's particles when
+// `daylight`: the sky and the sun's disc as the environment light (render/trace/environment_light.h;
+// particles leave a disc over the scene facing each direction), a sun without a disc as a
+// directional light, as the ray-traced backends have them.
+LightSampler previewLightSampler(const Preview::State& st, std::vector<EmitterTriangle> emitters,
+                                 std::vector<DeltaLight> deltas, bool daylight) {
+    std::optional<EnvironmentLight> environment;
+    if (daylight) {
+        environment = EnvironmentLight::fromDaylight(st.daylight);
+        const auto& sun = st.daylight.sun;
+        if (sun && sun->aboveHorizon && !(sun->halfAngleRad > 0)) {
+            DeltaLight d;
+            d.type = LightType::Directional;
+            d.position = V3f(0, 0, 0);
+            d.direction = toFloat(-sun->towardSun);
+            d.intensity = toFloat(sun->irradiance());
+            if (!isBlack(d.intensity)) deltas.push_back(d);
+        }
+    }
+    return LightSampler(std::move(emitters), std::move(deltas), st.scene->metersPerUnit(), st.scene->boundsCenter(),
+                        st.scene->boundsRadius(), st.scene->triangleCount(), kDefaultLightSelection,
+                        std::move(environment));
+}
+
+// Daylight's particles alone.
+LightSampler daylightSampler(const Preview::State& st) { return previewLightSampler(st, {}, {}, true); }
+
+// Every light of the scene, daylight's too, chosen by power.
 LightSampler allLightsSampler(const Preview::State& st) {
-    return LightSampler(st.scene->lights().emitters(), std::vector<DeltaLight>(st.deltas), st.scene->metersPerUnit(),
-                        st.scene->boundsCenter(), st.scene->boundsRadius(), st.scene->triangleCount());
+    std::vector<DeltaLight> deltas;
+    for (const DeltaLight& d : st.deltas)
+        if (d.type != LightType::Sun) deltas.push_back(d);
+    return previewLightSampler(st, st.scene->lights().emitters(), std::move(deltas), true);
 }
 
 }  // namespace
@@ -230,13 +294,14 @@ void Preview::regenerate(uint64_t seed) {
         st.lightsDirty = true;
         return;
     }
-    if (settings_.vplSource == VplSource::Metropolis) {
+    if (usesMetropolis()) {
         regenerateMir();
         return;
     }
     const int subsets = settings_.patternX * settings_.patternY;
     const int budget = settings_.indirect ? settings_.vplCount : 0;
-    const size_t sources = (st.scene->lights().emitters().empty() ? 0 : 1) + st.deltas.size();
+    size_t sources = (st.scene->lights().emitters().empty() ? 0 : 1) + (st.daylight.sun || st.daylight.sky ? 1 : 0);
+    for (const DeltaLight& d : st.deltas) sources += d.type != LightType::Sun;
     st.sets.clear();
     // The VPL budget is the scene's, not the light count's: when every light cannot have a set
     // of at least one VPL per sub-buffer within it, one set serves all lights, its paths
@@ -258,8 +323,13 @@ void Preview::regenerate(uint64_t seed) {
         indices.push_back(-1);
     }
     for (size_t i = 0; i < st.deltas.size(); ++i) {
+        if (st.deltas[i].type == LightType::Sun) continue;  // with daylight
         samplers.push_back(singleLightSampler(*st.scene, &st.deltas[i]));
         indices.push_back(int(i));
+    }
+    if (st.daylight.sun || st.daylight.sky) {
+        samplers.push_back(daylightSampler(st));
+        indices.push_back(kDaylightSet);
     }
     double total = 0;
     for (const LightSampler& s : samplers) total += s.totalPower();
@@ -279,10 +349,21 @@ void Preview::setLight(size_t index, const Light& light) {
     State& st = *state_;
     if (index >= st.deltas.size()) throw std::out_of_range("preview: no light " + std::to_string(index));
     const DeltaLight previous = st.deltas[index];
-    st.deltas[index] = compileDeltaLight(light);
+    st.deltas[index] = previewDeltaLight(light);
     st.lightsDirty = true;
+    if (previous.type == LightType::Sun || light.type == LightType::Sun) {
+        // The sun shapes the sky too (cie_general, the ground's luminance): daylight resolved
+        // again with the edited sun (a scene holds at most one), and every set drawn anew.
+        Scene sky;
+        sky.site = st.snapshot->site;
+        sky.sky = st.snapshot->sky;
+        if (light.type == LightType::Sun) sky.lights.push_back(light);
+        st.daylight = resolveDaylight(sky);
+        regenerate(st.seed);
+        return;
+    }
     if (st.customVpls) return;
-    if (settings_.vplSource == VplSource::Metropolis) {
+    if (usesMetropolis()) {
         regenerateMir();  // MIR's VPLs serve every light at once
         return;
     }
@@ -303,8 +384,9 @@ void Preview::setLight(size_t index, const Light& light) {
     const LightSampler sampler = singleLightSampler(*st.scene, &st.deltas[index]);
     double total = 0;
     for (const LightVpls& s : st.sets)
-        total += s.lightIndex == -1 ? singleLightSampler(*st.scene, nullptr).totalPower()
-                                    : singleLightSampler(*st.scene, &st.deltas[size_t(s.lightIndex)]).totalPower();
+        total += s.lightIndex == -1            ? singleLightSampler(*st.scene, nullptr).totalPower()
+                 : s.lightIndex == kDaylightSet ? daylightSampler(st).totalPower()
+                                                : singleLightSampler(*st.scene, &st.deltas[size_t(s.lightIndex)]).totalPower();
     for (LightVpls& set : st.sets) {
         if (set.lightIndex != int(index)) continue;
         set.count = vplShare(sampler.totalPower(), total, settings_.indirect ? settings_.vplCount : 0,
@@ -313,6 +395,12 @@ void Preview::setLight(size_t index, const Light& light) {
         ++st.generations;
     }
     st.vplsDirty = true;
+}
+
+bool Preview::usesMetropolis() const {
+    const State& st = *state_;
+    return settings_.vplSource == VplSource::Metropolis ||
+           (settings_.metropolisUnderDaylight && (st.daylight.sun || st.daylight.sky));
 }
 
 void Preview::regenerateMir() {
@@ -347,7 +435,21 @@ void Preview::setVpls(VplSet vpls) {
 double Preview::freshSetShadowTriangles() const {
     const State& st = *state_;
     const double cubes = double(st.uploadedVplCount) + double(st.areaLightCount);
-    return 6.0 * cubes * double(st.proxyCaster.vertexCount / 3);
+    // The sky's maps and the sun's (whose direction moves within the disc) draw the scene.
+    const double maps = double(st.skyLightCount) + (st.daylight.sun ? 1.0 : 0.0);
+    return 6.0 * cubes * double(st.proxyCaster.vertexCount / 3) + maps * double(st.sceneCaster.vertexCount / 3);
+}
+
+Rgb Preview::sunDiscIrradiance(const V3f& point, const V3f& normal) const {
+    const State& st = *state_;
+    if (!st.scene || !st.daylight.sun || !(st.daylight.sun->halfAngleRad > 0)) return Rgb(0, 0, 0);
+    // The same direction as the sun's shadow map of this set (direct_lights.cpp).
+    const auto sun = sunSample(*st.daylight.sun, hashSeed(st.seed, 0x5a11ULL));
+    if (!sun) return Rgb(0, 0, 0);
+    const float cosine = normal.dot(sun->toward);
+    if (cosine <= 0.0f) return Rgb(0, 0, 0);
+    const Ray ray{point + normal * (st.scene->boundsRadius() * 1e-5f), sun->toward};
+    return sun->irradiance * st.scene->transmittance(ray) * cosine;
 }
 
 VplSet Preview::vpls() const {

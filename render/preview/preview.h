@@ -36,6 +36,12 @@ enum class SplitMode { TwoPass, OnePass, Fused };
 struct PreviewSettings {
     int vplCount = 256;            // indirect VPLs over all lights (MIR: chain steps, at most this many)
     VplSource vplSource = VplSource::InstantRadiosity;
+    // Under daylight the VPLs come from MIR whatever vplSource says: the sky's and the sun's
+    // particles land mostly on the building's outside, which leaves a room lit through its
+    // windows a few dozen of its 256 instant-radiosity VPLs, whose spots (squares, interleaved)
+    // still showed along the daylit office's ceiling and corners after 64 frames; MIR puts them
+    // where the camera looks (relmse 0.041 against 0.048 at 64 frames, the same cost).
+    bool metropolisUnderDaylight = true;
     int patternX = 4, patternY = 4;  // interleaving n x m (1 x 1: no interleaving)
     // The VPL geometric term is clamped as geometricClampBound (render/vpl/vpl_contribution.h):
     // at 1 / (this fraction of the scene's bounding radius)^2; 0: no clamping. It removes the
@@ -73,6 +79,16 @@ struct PreviewSettings {
     // 2048 made the closed sphere's sets 4 times cheaper but lost the desks and partitions of a
     // 7,500-triangle hall (+6% of light leaked through them; BENCHMARKS.md, issue 20).
     int shadowProxyTriangles = 8192;
+    // Daylight (SPEC.md section 5): the sky and the ground as this many directional lights, drawn
+    // in proportion to their luminance anew for every fresh set (render/preview/daylight_samples.h),
+    // each with an orthographic shadow map of skyShadowSize^2 texels over the scene; with
+    // interleaving they are rounded up to a multiple of n m and dealt to the sub-buffers like the
+    // area samples. The sun is one directional light with a map of (4 shadowSize)^2.
+    // 256: llvmpipe's shading pass fetched from 64 maps of 512^2 at twice the cost (memory-bound,
+    // 100 against 56 ms for the daylit office at 400x267) and drew them at twice the cost; the
+    // sky's light is soft, and each map's edges are looked up by the receiver's plane.
+    int skySamples = 64;
+    int skyShadowSize = 256;
     // Surface interactions a VPL particle may have. Russian roulette ends particles long before
     // (as in the ir backend); a low cap would cut the long paths that closed bright rooms live
     // on (at albedo 0.8, 8 bounces lose 13% of the light).
@@ -87,6 +103,7 @@ struct PreviewTimings {
     double shadows = 0, gbuffer = 0, split = 0, shading = 0, gather = 0, direct = 0, readback = 0;
     double total = 0;  // the whole render() call
     int shadowCubes = 0;  // cube shadow maps drawn (only those of lights and VPLs that moved)
+    int directionalMaps = 0;  // orthographic maps drawn (directional lights, the sun, the sky's directions)
 };
 
 class Preview {
@@ -150,6 +167,16 @@ public:
     // the irradiance over pi (0 on emitters, mirrors, glass and the background). The VPLs keep
     // the scene's own materials. For the illuminance layer (previewIlluminanceLayer).
     void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
+    // Whether pixels that see no surface show the sun's disc (on by default). Hemicubes of small
+    // faces (hemicube_irradiance.h) would catch a disc a fraction of a pixel wide only now and
+    // then, all their points alike: they take its light from sunDiscIrradiance instead.
+    void setSunDiscShown(bool shown) { sunDiscShown_ = shown; }
+    // The irradiance (W/m^2 per channel) of a sun with a disc at `point` on a surface of unit
+    // `normal`: from the direction the current fresh set draws within the disc, through panes
+    // times their transmittance, 0 behind anything opaque (a ray traced). 0 without such a sun,
+    // or for a sun of diameter 0 (a directional light of the render scene's, as calculation
+    // grids already sum).
+    Rgb sunDiscIrradiance(const V3f& point, const V3f& normal) const;
     const PreviewTimings& timings() const;
     // What the preview gave up on this scene to stay within the GPU's limits (fewer shadowed
     // VPLs, smaller or shared shadow maps, pooled VPLs), in one line for a status bar or stderr;
@@ -169,6 +196,9 @@ public:
     // only so that the passes' free functions can take it.
     struct State;
 
+    // Whether the VPLs come from MIR: asked for, or under daylight (metropolisUnderDaylight).
+    bool usesMetropolis() const;
+
 private:
     void regenerateMir();
 
@@ -178,6 +208,7 @@ private:
     PreviewSettings settings_;
     bool albedoLayer_ = false;
     bool whiteReceivers_ = false;
+    bool sunDiscShown_ = true;
 };
 
 // The illuminance layer (lux, render/photometry/illuminance_layer.h) as the preview sees it: the

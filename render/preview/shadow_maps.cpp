@@ -108,7 +108,7 @@ int CubeShadowSet::draw(const gl::Program& program, const ShadowCaster& caster, 
         glNamedBufferStorage(scratch.id(), GLsizeiptr(stale.size() * sizeof(stale[0])), stale.data(), 0);
         glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, scratch.id());
         glBindFramebuffer(GL_FRAMEBUFFER, arr.fbo.id());
-        glDrawArraysInstanced(GL_TRIANGLES, 0, caster.vertexCount, GLsizei(stale.size()));
+        glDrawArraysInstanced(GL_TRIANGLES, caster.firstVertex, caster.vertexCount, GLsizei(stale.size()));
         drawnNow += int(stale.size());
     }
     glDisable(GL_DEPTH_TEST);
@@ -122,41 +122,82 @@ void CubeShadowSet::bind(GLuint firstUnit) const {
     }
 }
 
-void DirectionalShadows::ensure(int mapSize, int layerCount) {
+void DirectionalShadows::ensure(int mapSize, int layerCount, bool withPanes) {
     layerCount = std::max(layerCount, 1);  // always something bound to the sampler
-    if (mapSize == size && layerCount <= layers && depth) return;
+    if (mapSize == size && layerCount <= layers && withPanes == panes && depth) return;
+    drawn_.clear();
     size = mapSize;
     layers = layerCount;
+    panes = withPanes;
     depth = gl::makeTexture(GL_TEXTURE_2D_ARRAY);
     glTextureStorage3D(depth.id(), 1, GL_DEPTH_COMPONENT32F, size, size, layers);
-    glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);  // 2 x 2 PCF
-    glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTextureParameteri(depth.id(), GL_TEXTURE_MIN_FILTER, filtered ? GL_LINEAR : GL_NEAREST);  // 2 x 2 PCF
+    glTextureParameteri(depth.id(), GL_TEXTURE_MAG_FILTER, filtered ? GL_LINEAR : GL_NEAREST);
     glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTextureParameteri(depth.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_MODE, filtered ? GL_COMPARE_REF_TO_TEXTURE : GL_NONE);
     glTextureParameteri(depth.id(), GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+    transmittance = gl::Texture();
+    if (panes) {
+        // Half floats: the transmittance to 0.05%, the pane's depth to 2^-11 of the map's range.
+        transmittance = gl::makeTexture(GL_TEXTURE_2D_ARRAY);
+        glTextureStorage3D(transmittance.id(), 1, GL_RGBA16F, size, size, layers);
+        glTextureParameteri(transmittance.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTextureParameteri(transmittance.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        glTextureParameteri(transmittance.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTextureParameteri(transmittance.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     fbo = gl::makeFramebuffer();
     glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
     glNamedFramebufferReadBuffer(fbo.id(), GL_NONE);
 }
 
-void DirectionalShadows::draw(const gl::Program& program, const ShadowCaster& caster, int mapSize) {
-    ensure(mapSize, int(matrices.size()));
-    if (matrices.empty()) return;
-    glUseProgram(program.id());
-    glBindVertexArray(caster.vao);
-    glEnable(GL_DEPTH_TEST);
+int DirectionalShadows::draw(const gl::Program& depthProgram, const ShadowCaster& caster, const gl::Program& paneProgram,
+                             const ShadowCaster& paneCaster, int mapSize, bool withPanes) {
+    ensure(mapSize, int(matrices.size()), withPanes && paneCaster.vertexCount > 0);
+    if (matrices.empty()) return 0;
     glViewport(0, 0, size, size);
+    int drawnNow = 0;
     for (size_t i = 0; i < matrices.size(); ++i) {
+        if (i < drawn_.size() && drawn_[i] == matrices[i].m) continue;
+        if (drawn_.size() <= i) drawn_.resize(i + 1);
+        drawn_[i] = matrices[i].m;
+        ++drawnNow;
         glNamedFramebufferTextureLayer(fbo.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0, GLint(i));
+        glNamedFramebufferDrawBuffer(fbo.id(), GL_NONE);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
         const float one = 1.0f;
         glClearNamedFramebufferfv(fbo.id(), GL_DEPTH, 0, &one);
-        glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "lightViewProj"), 1, GL_FALSE,
-                                  matrices[i].m.data());
-        glDrawArrays(GL_TRIANGLES, 0, caster.vertexCount);
+        glEnable(GL_DEPTH_TEST);
+        glUseProgram(depthProgram.id());
+        glProgramUniformMatrix4fv(depthProgram.id(), glGetUniformLocation(depthProgram.id(), "lightViewProj"), 1,
+                                  GL_FALSE, matrices[i].m.data());
+        glBindVertexArray(caster.vao);
+        glDrawArrays(GL_TRIANGLES, caster.firstVertex, caster.vertexCount);
+        if (!panes) continue;
+        // The panes in front of the opaque depth, not writing it: their transmittances
+        // multiplied (any order), the nearest one's depth kept by GL_MIN.
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, transmittance.id(), 0, GLint(i));
+        glNamedFramebufferDrawBuffer(fbo.id(), GL_COLOR_ATTACHMENT0);
+        const float white[4] = {1, 1, 1, 1};
+        glClearNamedFramebufferfv(fbo.id(), GL_COLOR, 0, white);
+        glDepthMask(GL_FALSE);
+        glEnable(GL_BLEND);
+        glBlendEquationSeparate(GL_FUNC_ADD, GL_MIN);
+        glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE);
+        glUseProgram(paneProgram.id());
+        glProgramUniformMatrix4fv(paneProgram.id(), glGetUniformLocation(paneProgram.id(), "lightViewProj"), 1,
+                                  GL_FALSE, matrices[i].m.data());
+        glProgramUniform1i(paneProgram.id(), glGetUniformLocation(paneProgram.id(), "firstTriangle"),
+                           paneCaster.firstVertex / 3);
+        glBindVertexArray(paneCaster.vao);
+        glDrawArrays(GL_TRIANGLES, paneCaster.firstVertex, paneCaster.vertexCount);
+        glDisable(GL_BLEND);
+        glDepthMask(GL_TRUE);
+        glNamedFramebufferTextureLayer(fbo.id(), GL_COLOR_ATTACHMENT0, 0, 0, 0);
     }
     glDisable(GL_DEPTH_TEST);
+    return drawnNow;
 }
 
 }  // namespace lucerna::preview_detail

@@ -39,6 +39,7 @@ struct ShadowCaster {
     GLuint vao = 0;
     GLsizei vertexCount = 0;
     float slack = 0;
+    GLint firstVertex = 0;
 };
 
 // Cube shadow maps (distance in R32F, depth for the z-test) of up to capacity() centres, cube i
@@ -79,17 +80,36 @@ private:
     std::vector<std::array<float, 4>> drawn_;
 };
 
-// Orthographic depth maps of the directional lights, one layer each, compared in the lookup.
+// Orthographic depth maps of directional lights (scene directional lights and the sun, or the
+// sky's directions), one layer each, compared in the lookup. With panes (glazing, which casts no
+// shadow), a companion layer holds, in front of the opaque depth, the product of the panes'
+// transmittances (rgb) and the depth of the pane nearest the light (a): a receiver behind that
+// pane takes the product. Exact for one pane, or several all in front of the receiver; a
+// receiver between panes takes them all.
 struct DirectionalShadows {
-    static constexpr int kMaxLights = 4;  // lights.glsl's MAX_DIRECTIONAL_SHADOWS
-    gl::Texture depth;
+    static constexpr int kMaxLights = 8;  // scene directional lights with a map (the sun first)
+    gl::Texture depth, transmittance;
     gl::Framebuffer fbo;
     int size = 0, layers = 0;
+    bool panes = false;
+    // Compared in the lookup with 2 x 2 PCF (directional lights' shadows), or read as numbers
+    // at the nearest texel (the sky's many directions: lights.glsl compares them by the
+    // receiver's plane).
+    bool filtered = true;
     std::vector<Mat4> matrices;
 
-    void ensure(int mapSize, int layerCount);
-    // One depth-only draw of the caster per light.
-    void draw(const gl::Program& program, const ShadowCaster& caster, int mapSize);
+    void ensure(int mapSize, int layerCount, bool withPanes);
+    // Draws the layers whose matrix changed since they were last drawn (all after ensure()
+    // reallocated or forget()): a depth-only draw of the opaque caster, then with panes the
+    // panes' transmittance (paneProgram: glazing.frag; the caller binds the triangles' and
+    // materials' buffers). Returns the layers drawn.
+    int draw(const gl::Program& depthProgram, const ShadowCaster& caster, const gl::Program& paneProgram,
+             const ShadowCaster& paneCaster, int mapSize, bool withPanes);
+    // New geometry: every layer must be drawn again.
+    void forget() { drawn_.clear(); }
+
+private:
+    std::vector<std::array<float, 16>> drawn_;  // by layer, the matrix it was drawn with
 };
 
 }  // namespace lucerna::preview_detail

@@ -8,9 +8,10 @@
 uniform ivec2 pattern;
 uniform ivec2 subSize;
 uniform int boxWidth;   // n, or 1
+uniform int boxFlip;    // box_blur.glsl
 layout(binding = 0) uniform sampler2D splitTex;
 layout(location = 0) out vec4 result;
 
 void main() {
-    result = boxBlur(splitTex, ivec2(gl_FragCoord.xy), ivec2(1, 0), boxWidth, pattern, subSize);
+    result = boxBlur(splitTex, ivec2(gl_FragCoord.xy), ivec2(1, 0), boxWidth, pattern, subSize, boxFlip != 0);
 }

@@ -12,10 +12,10 @@ vec4 boxTexel(sampler2D tex, ivec2 image, ivec2 pattern, ivec2 subSize) {
     return texelFetch(tex, (image % pattern) * subSize + image / pattern, 0);
 }
 
-vec4 boxBlur(sampler2D tex, ivec2 p, ivec2 axis, int box, ivec2 pattern, ivec2 subSize) {
+vec4 boxBlur(sampler2D tex, ivec2 p, ivec2 axis, int box, ivec2 pattern, ivec2 subSize, bool flip) {
     const int bit = axis.x != 0 ? 1 : 2;
     const vec4 centre = boxTexel(tex, p, pattern, subSize);
-    const int before = (box - 1) / 2, after = box - 1 - before;
+    const int before = flip ? box / 2 : (box - 1) / 2, after = box - 1 - before;
     vec3 sum = centre.rgb;
     float count = 1.0;
     int bits = int(centre.a);

@@ -1,22 +1,30 @@
 #version 450 core
-// Direct light and the final blend: emitters show their radiance; shaded surfaces get the direct
-// light of the lights it shades in full (lights.glsl: point, spot and luminaire lights with cube
-// shadow maps, directional lights with orthographic ones, and without interleaving the area
-// lights' point samples), plus the indirect light, which with interleaving also holds the area
-// lights and, when there are many, the delta lights, blurred vertically here
-// (the second half of the box blur; blur.frag did the gather and the horizontal half).
+// Direct light and the final blend: emitters show their radiance, pixels that see nothing the sky
+// (sky.glsl); shaded surfaces get the direct light of the lights it shades in full (lights.glsl:
+// point, spot and luminaire lights with cube shadow maps, directional lights and the sun with
+// orthographic ones, and without interleaving the area lights' point samples and the sky's
+// directions), plus the indirect light, which with interleaving also holds the area lights, the
+// sky's directions and, when there are many, the delta lights, blurred vertically here (the
+// second half of the box blur; blur.frag did the gather and the horizontal half). With panes in
+// the scene, everything is seen through them: times the camera's transmittance texture.
 // Compile-time switches (frame_passes.cpp, directProgram), so that the pass holds only the
 // code the scene's lights need (on llvmpipe an unused light loop still halves this pass's speed):
 //   LIGHT_LOOP   0 when this pass evaluates no light (all light is in the indirect texture);
-//   DIRECTIONAL, SPOT, AREA, LUMINAIRE   1 when lights of that kind are among those it shades.
+//   SKY_LIGHTS   1 when the sky's directions are shaded here (no interleaving);
+//   DIRECTIONAL, SPOT, AREA, LUMINAIRE, GLAZING   lights.glsl's.
 #include_brdf
 #include_gbuffer
 #include_box_blur
 #include_cube_shadows
 #include_lights
+#include_sky
 // With interleaving, the lights from firstInterleaved on (many delta lights, the area-light
 // samples) were shaded with the VPLs (shade_vpl.frag) and are inside indirectTex.
 uniform int shadedHere;  // lights[0 .. shadedHere) are evaluated here
+#if SKY_LIGHTS
+layout(std430, binding = 5) readonly buffer SkyLights { SkyLight skyLights[]; };
+uniform int skyLightCount;
+#endif
 uniform vec3 cameraPos;
 uniform int addIndirect;
 layout(binding = 0) uniform sampler2D g0Tex;
@@ -25,20 +33,45 @@ layout(binding = 1) uniform usampler2D g1Tex;
 // the one below lie on different surfaces). boxHeight m, or 1: no vertical blur.
 layout(binding = 3) uniform sampler2D indirectTex;
 uniform int boxHeight;
+uniform int boxFlip;  // box_blur.glsl
+// The pixel's ray for the background: the pinhole's forward, right * tan(fov / 2) * aspect and
+// up * tan(fov / 2), and the point of the pixel sampled (the frame's jitter).
+uniform vec3 viewForward, viewRight, viewUp;
+uniform vec2 viewJitter;
+uniform int showBackground;  // 0 for white receivers (the illuminance layer)
+#if GLAZING
+layout(binding = 4) uniform sampler2D viewTransmittance;  // the panes in front of each pixel's surface
+uniform int throughPanes;
+#endif
 layout(location = 0) out vec4 result;
 
 void main() {
     const ivec2 p = ivec2(gl_FragCoord.xy);
     const vec4 g0 = texelFetch(g0Tex, p, 0);
     const int kind = surfaceKind(g0);
-    if (kind == 2) { result = vec4(emitterRadiance(texelFetch(g1Tex, p, 0)), 1.0); return; }
-    if (kind != 1) { result = vec4(0.0, 0.0, 0.0, 1.0); return; }
-    const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
-    const vec3 wo = normalize(cameraPos - s.position);
-    // The vertical half of the box blur (box_blur.glsl), over the image layout.
-    vec3 sum = addIndirect != 0 ? boxBlur(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1)).rgb : vec3(0.0);
+    vec3 c = vec3(0.0);
+    if (kind == 2) {
+        c = emitterRadiance(texelFetch(g1Tex, p, 0));
+    } else if (kind == 0) {
+        if (showBackground != 0) {
+            const vec2 ndc = (vec2(p) + viewJitter) / vec2(textureSize(g0Tex, 0)) * 2.0 - 1.0;
+            c = backgroundRadiance(normalize(viewForward + ndc.x * viewRight - ndc.y * viewUp));
+        }
+    } else if (kind == 1) {
+        const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
+        const vec3 wo = normalize(cameraPos - s.position);
+        // The vertical half of the box blur (box_blur.glsl), over the image layout.
+        c = addIndirect != 0 ? boxBlur(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1), boxFlip != 0).rgb : vec3(0.0);
 #if LIGHT_LOOP
-    for (int i = 0; i < shadedHere; ++i) sum += lightContribution(i, s, wo);
+        for (int i = 0; i < shadedHere; ++i) c += lightContribution(i, s, wo);
 #endif
-    result = vec4(sum, 1.0);
+#if SKY_LIGHTS
+        for (int i = 0; i < skyLightCount; ++i)
+            c += evalBsdf(s.normal, wo, skyLights[i].towardLayer.xyz, s.albedo, s.specular, s.alpha) * skyLight(skyLights[i], s);
+#endif
+    }
+#if GLAZING
+    if (throughPanes != 0) c *= texelFetch(viewTransmittance, p, 0).rgb;
+#endif
+    result = vec4(c, 1.0);
 }

@@ -18,8 +18,9 @@ void main() {
     const float facing = dot(t.xyz, cameraPos - worldPos);
     const bool white = whiteReceivers != 0;
     int kind = int(m.albedoKind.w);
-    // SPEC: an emitter emits from its front face only, and reflects nothing.
-    if (kind == 2 && (white || facing <= 0.0)) kind = 0;
+    // SPEC: an emitter emits from its front face only, and reflects nothing: black from behind
+    // (kind 3; kind 0 would show the sky through it).
+    if (kind == 2 && (white || facing <= 0.0)) kind = 3;
     if (kind == 2) {
         g0 = vec4(worldPos, 2.0);
         g1 = uvec4(floatBitsToUint(m.radiance.rgb), 0u);

@@ -18,7 +18,9 @@
 //   UNROLLED_AREA      with INTERLEAVED_LIGHTS, when they are area samples only, the samples each
 //                      sub-buffer gets, read at constant indices from a uniform block (as the
 //                      VPLs); 0: a loop over the buffer, any kind of light;
-//   SPOT, AREA, LUMINAIRE   lights.glsl's switches for the interleaved lights;
+//   SPOT, AREA, LUMINAIRE, GLAZING   lights.glsl's switches for the interleaved lights;
+//   SKY_PER_TILE       the sky's directions each sub-buffer gets (lights.glsl's SkyLight), read at
+//                      constant indices from a uniform block; 0: none here;
 //   FIND_EDGES         1 when the box blur follows (the discontinuity bits go out in alpha);
 //   FUSED_SPLIT        1: no split pass ran; each fragment of tile t at q reads its G-buffer texel
 //                      q n + t straight from the image-layout G-buffer (and finds its
@@ -65,6 +67,9 @@ uniform int firstInterleaved;
 uniform int interleavedCount;
 #if UNROLLED_AREA > 0
 layout(std140, binding = 1) uniform TileAreas { Light tileAreas[UNROLLED_AREA]; };  // this sub-buffer's
+#endif
+#if SKY_PER_TILE > 0
+layout(std140, binding = 2) uniform TileSky { SkyLight tileSky[SKY_PER_TILE]; };  // this sub-buffer's
 #endif
 
 // An area sample's light at y: at `position`, facing normalShadow.xyz, its shadow cube
@@ -173,5 +178,17 @@ void main() {
 #endif
     area *= float(subsets);
 #endif
-    result = vec4(sum + area, edges);
+    // The sky's directions dealt to this sub-buffer, times n m like the lights above.
+    vec3 sky = vec3(0.0);
+#if SKY_PER_TILE > 0
+    for (int j = 0; j < SKY_PER_TILE; ++j)
+#if GLOSSY
+        sky += evalBsdf(sy.normal, wo, tileSky[j].towardLayer.xyz, sy.albedo, sy.specular, sy.alpha) * skyLight(tileSky[j], sy);
+#else
+        sky += skyLight(tileSky[j], sy);
+    sky *= sy.albedo * (1.0 / PI);
+#endif
+    sky *= float(pattern.x * pattern.y);
+#endif
+    result = vec4(sum + area + sky, edges);
 }
