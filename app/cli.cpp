@@ -463,7 +463,8 @@ int infoImpl(const std::vector<std::string>& args) {
     for (const Material& m : scene.materials) std::cout << "  " << m.name << ": " << materialTypeName(m.type) << "\n";
     std::cout << "emitter triangles: " << f.emitterTriangles << "\n"
               << "lights: " << scene.lights.size() << " (point " << f.pointLights << ", spot " << f.spotLights
-              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires << ", sun " << (f.hasSun ? 1 : 0);
+              << ", directional " << f.directionalLights << ", luminaire " << f.luminaires;
+    if (f.hasSun) std::cout << ", sun 1";
     if (const auto off = std::count_if(scene.lights.begin(), scene.lights.end(), [](const Light& l) { return !l.on; }))
         std::cout << "; " << off << " switched off";
     std::cout << ")\n";
