@@ -29,6 +29,8 @@ public:
     // Integral of luminance(radiance) over all directions (W m^-2 per unit luminance weight):
     // times pi R^2, the power of the particles leaving a disc of radius R facing each direction.
     double integratedLuminance() const { return skyIntegral_ + sunIntegral_; }
+    // Whether it has a sky (or ground) to sample, beside the sun's disc.
+    bool hasSky() const { return !rows_.empty(); }
 
 private:
     bool insideSun(const V3f& w) const;

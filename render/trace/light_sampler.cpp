@@ -98,7 +98,8 @@ LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<De
                            std::vector<Portal> portals)
     : emitters_(std::move(emitters)), deltas_(std::move(deltas)), environment_(std::move(environment)),
       metersPerUnit_(metersPerUnit), sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
-    if (environment_ && !portals.empty() && portals.size() <= kMaxPortalTriangles) {
+    // Portals serve the sky: aimed at a pane, a sample finds the sun's tiny disc almost never.
+    if (environment_ && environment_->hasSky() && !portals.empty() && portals.size() <= kMaxPortalTriangles) {
         std::vector<double> areas;
         for (const Portal& p : portals) areas.push_back(p.area), portalArea_ += p.area;
         if (portalArea_ > 0) portals_ = std::move(portals), portalSelect_ = DiscreteDistribution(areas);
