@@ -27,9 +27,8 @@ Rgbd ResolvedSun::radiance() const {
     return colour * (illuminanceLux / (kLumensPerWatt * kPiD * s * s));
 }
 
-double ResolvedSky::luminance(const V3d& w) const {
-    if (w.y > 0) return zenithLuminance * relativeSkyLuminance(sky, w, towardSun);
-    return groundLuminance;
+double ResolvedSky::luminance(const V3d& w, const SkyDistribution& relative) const {
+    return w.y > 0 ? zenithLuminance * relative(w) : groundLuminance;
 }
 
 V3d sunDirection(const Scene& scene, const Light& sun) {
@@ -67,8 +66,10 @@ Daylight resolveDaylight(const Scene& scene) {
         if (!d.sun)
             for (const Light& l : scene.lights)
                 if (l.type == LightType::Sun) s.towardSun = sunDirection(scene, l);
-        s.zenithLuminance = zenithLuminance(s.sky, s.towardSun);
-        double eh = s.zenithLuminance * relativeHorizontalIlluminance(s.sky, s.towardSun);
+        // Eh / Lz once: it gives Lz from a horizontal illuminance and the ground's light.
+        const double relativeEh = relativeHorizontalIlluminance(s.sky, s.towardSun);
+        s.zenithLuminance = s.sky.zenithLuminance.value_or(relativeEh > 0 ? s.sky.horizontalIlluminance.value_or(0.0) / relativeEh : 0.0);
+        double eh = s.zenithLuminance * relativeEh;
         if (d.sun && d.sun->aboveHorizon) eh += d.sun->illuminanceLux * d.sun->towardSun.y;
         s.groundLuminance = s.sky.groundReflectance * eh / kPiD;
         d.sky = s;

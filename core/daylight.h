@@ -5,6 +5,7 @@
 // normalised to luminance 1.
 
 #include "core/scene.h"
+#include "core/sky_model.h"
 
 #include <optional>
 
@@ -34,8 +35,10 @@ struct ResolvedSky {
     double groundLuminance = 0;  // cd/m^2, below the horizon
 
     // Luminance (cd/m^2) seen looking along the unit world direction w: the sky above the
-    // horizon, the ground below (at w.y == 0: the ground).
-    double luminance(const V3d& w) const;
+    // horizon, the ground below (at w.y == 0: the ground). With `relative`, this sky's
+    // SkyDistribution made once by a caller that evaluates many directions.
+    double luminance(const V3d& w) const { return luminance(w, SkyDistribution(sky, towardSun)); }
+    double luminance(const V3d& w, const SkyDistribution& relative) const;
     // Radiance per channel, W sr^-1 m^-2 (white).
     double radiance(const V3d& w) const { return luminance(w) / kLumensPerWatt; }
 };

@@ -35,7 +35,6 @@ inline bool isFinite(const Rgb& c) { return std::isfinite(c.x) && std::isfinite(
 
 inline V3f toFloat(const V3d& v) { return V3f(float(v.x), float(v.y), float(v.z)); }
 inline Rgb toFloat(const Rgbd& c) { return Rgb(float(c.x), float(c.y), float(c.z)); }
-inline V3d toDouble(const V3f& v) { return V3d(v.x, v.y, v.z); }
 
 inline float radians(float deg) { return deg * (kPi / 180.0f); }
 inline double radians(double deg) { return deg * (std::numbers::pi / 180.0); }

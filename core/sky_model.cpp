@@ -40,18 +40,26 @@ double angleBetween(const V3d& a, const V3d& b) { return std::acos(std::clamp(a.
 
 }  // namespace
 
-double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun) {
+SkyDistribution::SkyDistribution(const Sky& sky, const V3d& towardSun) : model_(sky.model), towardSun_(towardSun) {
+    if (model_ != SkyModelType::CieGeneral) return;
+    cie_ = cieSkyParameters(sky.cieType);
+    const double zs = std::min(std::acos(std::clamp(towardSun.y, -1.0, 1.0)), kPiD / 2);
+    normalisation_ = 1.0 / (indicatrix(cie_, zs) * gradation(cie_, 1.0));
+}
+
+double SkyDistribution::operator()(const V3d& w) const {
     if (!(w.y > 0)) return 0.0;
-    switch (sky.model) {
+    switch (model_) {
     case SkyModelType::Uniform: return 1.0;
     case SkyModelType::CieOvercast: return (1.0 + 2.0 * w.y) / 3.0;
-    case SkyModelType::CieGeneral: {
-        const CieSkyParameters p = cieSkyParameters(sky.cieType);
-        const double zs = std::min(std::acos(std::clamp(towardSun.y, -1.0, 1.0)), kPiD / 2);
-        return indicatrix(p, angleBetween(w, towardSun)) * gradation(p, w.y) / (indicatrix(p, zs) * gradation(p, 1.0));
-    }
+    case SkyModelType::CieGeneral:
+        return indicatrix(cie_, angleBetween(w, towardSun_)) * gradation(cie_, w.y) * normalisation_;
     }
     return 0.0;
+}
+
+double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun) {
+    return SkyDistribution(sky, towardSun)(w);
 }
 
 double relativeHorizontalIlluminance(const Sky& sky, const V3d& towardSun, int resolution) {
@@ -62,13 +70,14 @@ double relativeHorizontalIlluminance(const Sky& sky, const V3d& towardSun, int r
     const int nz = std::max(resolution, 8), nphi = 4 * nz;
     const double dz = (kPiD / 2) / nz;
     const double dphi = 2 * kPiD / nphi;
+    const SkyDistribution relative(sky, towardSun);
     double sum = 0;
     for (int i = 0; i < nz; ++i) {
         const double z = (i + 0.5) * dz, sz = std::sin(z), cz = std::cos(z);
         double ring = 0;
         for (int j = 0; j < nphi; ++j) {
             const double phi = (j + 0.5) * dphi;
-            ring += relativeSkyLuminance(sky, V3d(sz * std::cos(phi), cz, sz * std::sin(phi)), towardSun);
+            ring += relative(V3d(sz * std::cos(phi), cz, sz * std::sin(phi)));
         }
         sum += ring * cz * sz;
     }

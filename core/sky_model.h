@@ -14,9 +14,26 @@ struct CieSkyParameters {
 };
 CieSkyParameters cieSkyParameters(int type);
 
-// L / Lz toward the unit direction w (up is +y), w above the horizon (w.y > 0); 0 at or below
-// it. towardSun: the unit direction toward the sun (only cie_general reads it; a sun at or below
-// the horizon counts as on it for the normalisation f(Zs), as SPEC.md says).
+// One sky's L / Lz with what does not depend on the direction worked out once (the CIE
+// parameters and the normalisation f(Zs) phi(0)), for callers that evaluate many directions.
+class SkyDistribution {
+public:
+    // towardSun: the unit direction toward the sun (only cie_general reads it; a sun at or below
+    // the horizon counts as on it for the normalisation f(Zs), as SPEC.md says).
+    SkyDistribution(const Sky& sky, const V3d& towardSun);
+    // L / Lz toward the unit direction w (up is +y) above the horizon (w.y > 0); 0 at or below it.
+    double operator()(const V3d& w) const;
+    // cie_general: 1 / (f(Zs) phi(0)); 1 for the other models.
+    double normalisation() const { return normalisation_; }
+
+private:
+    SkyModelType model_;
+    CieSkyParameters cie_{0, -1, 0, -1, 0};
+    V3d towardSun_;
+    double normalisation_ = 1;
+};
+
+// L / Lz of one direction: SkyDistribution(sky, towardSun)(w).
 double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun);
 
 // The horizontal illuminance of the sky over its zenith luminance, Eh / Lz = integral of

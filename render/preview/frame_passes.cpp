@@ -256,12 +256,8 @@ void setBackgroundUniforms(const Preview::State& st, const gl::Program& p, bool 
         ground = float(sky->groundLuminance / kLumensPerWatt);
         towardSun = toFloat(sky->towardSun);
         if (model == 3) {
-            // relativeSkyLuminance's denominator, f(Zs) phi(0), the sun at most on the horizon.
             cie = cieSkyParameters(sky->sky.cieType);
-            const double zs = std::min(std::acos(std::clamp(sky->towardSun.y, -1.0, 1.0)), 0.5 * double(kPi));
-            const double c = std::cos(zs);
-            const double f = 1.0 + cie.c * (std::exp(cie.d * zs) - std::exp(cie.d * 0.5 * double(kPi))) + cie.e * c * c;
-            normalisation = float(1.0 / (f * (1.0 + cie.a * std::exp(cie.b))));
+            normalisation = float(SkyDistribution(sky->sky, sky->towardSun).normalisation());
         }
     }
     setInt(p, "skyModel", model);

@@ -26,6 +26,7 @@ std::optional<EnvironmentLight> EnvironmentLight::fromDaylight(const Daylight& d
     }
     if (daylight.sky) {
         env.sky_ = daylight.sky;
+        env.skyRelative_.emplace(daylight.sky->sky, daylight.sky->towardSun);
         // Each cell's weight is its mean luminance over 4 x 4 points: positive wherever the sky
         // or the ground is, so that every direction that carries light can be sampled.
         constexpr int kSub = 4;
@@ -39,7 +40,7 @@ std::optional<EnvironmentLight> EnvironmentLight::fromDaylight(const Daylight& d
                     for (int j = 0; j < kSub; ++j) {
                         const double y = 1.0 - 2.0 * (r + (i + 0.5) / kSub) / kRows;
                         const double phi = 2.0 * std::numbers::pi * (c + (j + 0.5) / kSub) / kColumns;
-                        sum += daylight.sky->luminance(cellDirection(y, phi));
+                        sum += daylight.sky->luminance(cellDirection(y, phi), *env.skyRelative_);
                     }
                 weights[size_t(c)] = sum / (kSub * kSub);
                 rowWeights[size_t(r)] += weights[size_t(c)];
@@ -63,7 +64,7 @@ bool EnvironmentLight::insideSun(const V3f& w) const {
 
 Rgb EnvironmentLight::radiance(const V3f& w) const {
     Rgb L(0, 0, 0);
-    if (sky_) L += Rgb(float(sky_->radiance(toDouble(w))));
+    if (sky_) L += Rgb(float(sky_->luminance(V3d(w), *skyRelative_) / kLumensPerWatt));
     if (insideSun(w)) L += sunRadiance_;
     return L;
 }

@@ -37,6 +37,7 @@ private:
     float skyPdf(const V3f& w) const;
 
     std::optional<ResolvedSky> sky_;
+    std::optional<SkyDistribution> skyRelative_;  // sky_'s, made once: radiance() runs for every escaping ray
     // The sun's disc: its centre direction, 1 - cos and sin^2 of its half-angle (kept apart from
     // cos itself: for 0.53 degrees 1 - cos is 1.1e-5, below a float's resolution near 1).
     V3f towardSun_{0, 1, 0};

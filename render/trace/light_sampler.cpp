@@ -298,8 +298,7 @@ bool LightSampler::sampleEnvironment(float selectPdf, const SurfacePoint& ref, c
     }
     out.pdf = selectPdf * environmentDirectionPdf(out.wi, ref.p);
     out.isDelta = false;
-    // Somewhere up the ray, outside the scene (bidirectional connections need a place).
-    out.position = ref.p + out.wi * (2.0f * sceneRadius_ + (ref.p - sceneCenter_).length());
+    out.position = farAlong(ref.p, out.wi);  // bidirectional connections need a place
     out.shadowRay = Ray{ref.spawnOrigin(out.wi), out.wi};
     return out.pdf > 0.0f && std::isfinite(out.pdf);
 }

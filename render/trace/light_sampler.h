@@ -123,6 +123,11 @@ public:
     // The environment's number in LightSample::light's numbering (after every other light).
     uint32_t environmentIndex() const { return uint32_t(emitters_.size() + deltas_.size()); }
     bool isEnvironment(uint32_t light) const { return environment_ && light == environmentIndex(); }
+    // A point far up the unit direction dir from p, outside the scene: where bidirectional
+    // methods place a vertex of a light at infinity (directional, environment).
+    V3f farAlong(const V3f& p, const V3f& dir) const {
+        return p + dir * (2.0f * sceneRadius_ + (p - sceneCenter_).length());
+    }
 
     // A light sample for the shading point `ref`; false when the chosen light cannot reach it
     // (back of an emitter, outside a spot's cone, zero power). With the tree, directional lights

@@ -115,7 +115,7 @@ PathVertex BdptTracer::escapedVertex(const Ray& ray, const Rgb& beta, float pdfD
     PathVertex v;
     v.kind = VertexKind::EnvironmentLight;
     const V3f dir = ray.direction.normalized();
-    v.sp.p = farAlong(ray.origin, dir);
+    v.sp.p = scene_.lights().farAlong(ray.origin, dir);
     v.sp.pError = V3f(0, 0, 0);
     v.sp.ng = -dir;
     v.wo = -dir;
@@ -123,10 +123,6 @@ PathVertex BdptTracer::escapedVertex(const Ray& ray, const Rgb& beta, float pdfD
     v.pdfFwd = pdfDir;  // per unit solid angle (toArea leaves densities toward infinity so)
     v.light = scene_.lights().environmentIndex();
     return v;
-}
-
-V3f BdptTracer::farAlong(const V3f& p, const V3f& dir) const {
-    return p + dir * (2.0f * scene_.boundsRadius() + (p - scene_.boundsCenter()).length());
 }
 
 void BdptTracer::traceCameraSubpath(float x, float y, const std::optional<SurfacePoint>* primaryHit,
@@ -248,7 +244,7 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
                                                             : VertexKind::DirectionalLight;
             sampled.sp.ng = l.direction;
             if (l.type == LightType::Directional)  // somewhere up the light's beam, outside the scene
-                sampled.sp.p = pt.p() + ls.wi * (2.0f * scene_.boundsRadius() + (pt.p() - scene_.boundsCenter()).length());
+                sampled.sp.p = scene_.lights().farAlong(pt.p(), ls.wi);
         }
         sampledPtr = &sampled;
         L = pt.beta * densities_.bsdf(pt, ls.wi) * ls.value * (std::abs(pt.sp.ng.dot(ls.wi)) / ls.pdf);

@@ -93,8 +93,6 @@ private:
     // The vertex of a camera subpath that left the scene along `ray` (the environment's), with
     // the walk's throughput and the solid-angle density of its direction.
     PathVertex escapedVertex(const Ray& ray, const Rgb& beta, float pdfDir) const;
-    // A point far up the unit direction dir from p, outside the scene.
-    V3f farAlong(const V3f& p, const V3f& dir) const;
 
     const RenderScene& scene_;
     BdptSettings settings_;
