@@ -92,11 +92,18 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     in.text("the luminaire number");
     in.text("the file name");
     in.text("the date and user");
-    for (const char* what : {"the luminaire length", "the luminaire width", "the luminaire height",
-                             "the luminous area length", "the luminous area width", "the luminous area height C0",
-                             "the luminous area height C90", "the luminous area height C180",
-                             "the luminous area height C270", "the downward flux fraction"})
-        in.number(what);
+    for (const char* what : {"the luminaire length", "the luminaire width", "the luminaire height"}) in.number(what);
+    // The luminous area (mm): length or diameter along C0-C180, width along C90-C270 (0: round),
+    // and the heights of its sides facing C0, C90, C180, C270.
+    GoniometricDistribution::LuminousOpening opening;
+    const double areaLengthMm = in.number("the luminous area length");
+    const double areaWidthMm = in.number("the luminous area width");
+    opening.lengthM = std::max(0.0, areaLengthMm) / 1000;
+    opening.elliptical = areaWidthMm == 0;
+    opening.widthM = opening.elliptical ? opening.lengthM : std::max(0.0, areaWidthMm) / 1000;
+    for (int side = 0; side < 4; ++side)
+        opening.heightsM[side] = std::max(0.0, in.number("the luminous area height C" + std::to_string(90 * side))) / 1000;
+    in.number("the downward flux fraction");
     size_t here = in.line();
     const double lor = in.number("the light output ratio");
     if (!(lor > 0 && lor <= 100)) in.fail(here, "the light output ratio must be in (0, 100] percent, got " + shortestNumber(lor));
@@ -117,8 +124,18 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
         if (!(lampFlux <= FLT_MAX)) in.fail(here, "the lamps' total flux lies beyond single-precision range");
     }
     for (int i = 0; i < sets; ++i) in.text("the colour temperature");
-    for (int i = 0; i < sets; ++i) in.text("the colour rendering index");
-    for (int i = 0; i < sets; ++i) in.number("the wattage");
+    // Ra when the field is a number (some files give a group such as "1B": no Ra then).
+    std::optional<double> ra;
+    for (int i = 0; i < sets; ++i) {
+        std::string word = in.text("the colour rendering index");
+        std::replace(word.begin(), word.end(), ',', '.');
+        double x = 0;
+        const char* end = word.data() + word.size();
+        const auto r = std::from_chars(word.data(), end, x);
+        if (!word.empty() && r.ec == std::errc() && r.ptr == end && x > 0 && x <= 100) ra = std::min(ra.value_or(x), x);
+    }
+    double watts = 0;
+    for (int i = 0; i < sets; ++i) watts += std::max(0.0, in.number("the wattage"));
     for (int i = 0; i < 10; ++i) in.number("the direct ratios");
 
     here = in.line();
@@ -193,6 +210,9 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     GoniometricDistribution d = assembleDistribution(std::move(planes), std::move(gamma), columns, label);
     d.name = name;
     d.statedFluxLm = lampFlux * lor / 100.0;
+    d.luminous = opening;
+    if (watts > 0 && watts <= FLT_MAX) d.inputWatts = watts;
+    d.colourRenderingIndex = ra;
     if (!(d.integratedFlux() <= FLT_MAX))
         in.fail(cfliLine, "the intensities times the conversion factor " + shortestNumber(cfli) +
                               " (this line) integrate to a flux beyond single-precision range");

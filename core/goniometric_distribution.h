@@ -5,6 +5,7 @@
 // EULUMDAT files (core/ies_file.h, core/eulumdat_file.h); used by every backend through the
 // scene's "luminaire" lights (README).
 
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -28,6 +29,25 @@ struct GoniometricDistribution {
     double statedFluxLm = 0;
     // IES TILT=INCLUDE: multipliers against the lamp's tilt angle (degrees); empty = no tilt table.
     std::vector<double> tiltAngles, tiltMultipliers;
+
+    // The luminous opening the file states (IES: width, length, height; EULUMDAT: the luminous
+    // area's length or diameter, width and heights), what UGR's luminance is read against:
+    //   - lengthM along the C0-C180 axis, widthM along C90-C270, metres; both 0: none stated
+    //     (a point source, for which UGR needs the scene's `luminous_area`);
+    //   - elliptical: a disc (or an ellipse) of those diameters, else a rectangle;
+    //   - heightsM: the luminous sides facing C0, C90, C180 and C270 (metres, 0: a flat opening).
+    struct LuminousOpening {
+        double lengthM = 0, widthM = 0;
+        bool elliptical = false;
+        double heightsM[4] = {0, 0, 0, 0};
+        bool stated() const { return lengthM > 0 && widthM > 0; }
+    } luminous;
+    // The luminaire's electrical input the file states, W (IES input watts; EULUMDAT the lamp
+    // sets' wattage including ballast, summed); absent when the file gives 0 or less.
+    std::optional<double> inputWatts;
+    // The colour rendering index Ra the file states (EULUMDAT's lamp set field, when it is a
+    // number; the lowest of several sets); IES files state none.
+    std::optional<double> colourRenderingIndex;
 
     double at(size_t c, size_t g) const { return candela[c * gammaAngles.size() + g]; }
 

@@ -159,14 +159,18 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     const int type = t.integer("the photometric type", 1, 3);
     if (type != 1)
         t.fail(line, std::string("photometric type ") + (type == 2 ? "B" : "A") + " is not supported (only type C)");
-    t.integer("the units type", 1, 2);
-    for (const char* what : {"the luminaire width", "the luminaire length", "the luminaire height"}) t.number(what);
+    // The luminous opening: width along C90-C270, length along C0-C180, height; in feet (units
+    // type 1) or metres (2); LM-63-2002 marks round and elliptical openings by negative values.
+    const int units = t.integer("the units type", 1, 2);
+    const double toMetres = units == 1 ? 0.3048 : 1.0;
+    const double width = t.number("the luminaire width"), length = t.number("the luminaire length");
+    const double height = t.number("the luminaire height");
     line = t.line();
     const double ballast = t.number("the ballast factor");
     if (!(ballast > 0)) t.fail(line, "the ballast factor must be positive, got " + shortestNumber(ballast));
     const int ballastLine = line;
     t.number("the ballast-lamp factor (future use, or file generation type)");
-    t.number("the input watts");
+    const double inputWatts = t.number("the input watts");
 
     line = t.line();
     std::vector<double> vertical = t.numbers(size_t(nV), "vertical angles");
@@ -222,6 +226,11 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     full.tiltAngles = std::move(d.tiltAngles);
     full.tiltMultipliers = std::move(d.tiltMultipliers);
     full.statedFluxLm = lumensPerLamp > 0 ? lamps * lumensPerLamp * ballast : 0.0;
+    full.luminous.widthM = std::abs(width) * toMetres;
+    full.luminous.lengthM = std::abs(length) * toMetres;
+    full.luminous.elliptical = width < 0 || length < 0;
+    for (double& h : full.luminous.heightsM) h = std::abs(height) * toMetres;
+    if (inputWatts > 0 && inputWatts <= FLT_MAX) full.inputWatts = inputWatts;
     if (!(full.integratedFlux() <= FLT_MAX))
         t.fail(multiplierLine, "the candela values times the candela multiplier " + shortestNumber(multiplier) +
                                    " (this line) integrate to a flux beyond single-precision range");

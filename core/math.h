@@ -14,6 +14,7 @@
 namespace lucerna {
 
 using V2f = Imath::V2f;
+using V2d = Imath::V2d;
 using V3f = Imath::V3f;
 using V3d = Imath::V3d;
 using V3i = Imath::V3i;

@@ -17,4 +17,12 @@ std::string formatNumber(double v, int significantDigits) {
     return buf;
 }
 
+std::string fixedNumber(double v, int decimals) {
+    char buf[352];  // %f of DBL_MAX has 309 digits
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+    std::string s = buf;
+    if (s.size() > 1 && s[0] == '-' && s.find_first_not_of("-0.") == std::string::npos) s.erase(0, 1);
+    return s;
+}
+
 }  // namespace lucerna

@@ -13,4 +13,8 @@ std::string shortestNumber(double x);
 // %.Ng: "0.0123457" for N = 6.
 std::string formatNumber(double v, int significantDigits = 9);
 
+// %.Nf: a figure to a fixed number of decimal places, "512" for N = 0, "0.62" for N = 2; a
+// negative zero reads "0".
+std::string fixedNumber(double v, int decimals);
+
 }  // namespace lucerna

@@ -1,4 +1,5 @@
 #include "core/scene.h"
+#include "core/goniometric_distribution.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,6 +69,63 @@ SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene) {
     auto lit = std::make_shared<Scene>(*scene);
     std::erase_if(lit->lights, [](const Light& l) { return !l.on; });
     return lit;
+}
+
+double MaintenanceFactor::factor() const {
+    if (value) return *value;
+    return lampLumenMaintenance.value_or(1) * lampSurvival.value_or(1) * luminaireMaintenance.value_or(1) *
+           roomSurfaceMaintenance.value_or(1);
+}
+
+double maintenanceFactor(const Scene& scene, const Light& light) {
+    if (light.type == LightType::Sun || light.type == LightType::Directional) return 1;
+    if (light.maintenance) return light.maintenance->factor();
+    return scene.maintenance ? scene.maintenance->factor() : 1;
+}
+
+namespace {
+
+bool hasEmitterObjects(const Scene& scene) {
+    return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const Object& o) {
+        const Material* m = scene.findMaterial(o.material);
+        return m && m->type == MaterialType::Emitter;
+    });
+}
+
+}  // namespace
+
+MaintenanceRange maintenanceRange(const Scene& scene) {
+    std::vector<double> factors;
+    for (const Light& l : scene.lights)
+        if (l.on && l.type != LightType::Sun && l.type != LightType::Directional)
+            factors.push_back(maintenanceFactor(scene, l));
+    if (hasEmitterObjects(scene)) factors.push_back(scene.maintenance ? scene.maintenance->factor() : 1.0);
+    if (factors.empty()) return {};
+    const auto [lo, hi] = std::minmax_element(factors.begin(), factors.end());
+    return {*lo, *hi};
+}
+
+SceneSnapshot sceneAsRendered(SceneSnapshot scene) {
+    scene = withoutLightsSwitchedOff(std::move(scene));
+    if (!scene || !maintenanceRange(*scene).maintained()) return scene;
+    auto maintained = std::make_shared<Scene>(*scene);
+    for (Light& l : maintained->lights) {
+        const double mf = maintenanceFactor(*scene, l);
+        if (mf == 1) continue;
+        l.intensity *= mf;
+        if (l.luminaire && l.luminaire->distribution)
+            l.luminaire->lumens = l.luminaire->lumens.value_or(l.luminaire->distribution->integratedFlux()) * mf;
+    }
+    if (scene->maintenance)
+        for (Material& m : maintained->materials)
+            if (m.type == MaterialType::Emitter) m.radiance *= scene->maintenance->factor();
+    return maintained;
+}
+
+Scene withoutMaintenance(Scene scene) {
+    scene.maintenance.reset();
+    for (Light& l : scene.lights) l.maintenance.reset();
+    return scene;
 }
 
 SceneFeatures analyseFeatures(const Scene& scene) {

@@ -2,6 +2,7 @@
 // The scene of SPEC.md section 1 as plain values: what the file says, kept faithfully so that
 // save(load(file)) loses nothing, plus the resolved world-space triangle meshes that backends use.
 
+#include "core/calculation_grid.h"
 #include "core/math.h"
 #include "core/photometric_units.h"
 
@@ -106,6 +107,9 @@ struct LuminaireSpec {
     std::optional<double> lumens;        // rescale the distribution to this total flux
     std::optional<Rgbd> colour;          // normalised to luminance 1; white by default
     std::optional<double> temperatureK;  // a blackbody's colour instead
+    // An addition (README, "Glare"): the luminous area [width along C90-C270, length along
+    // C0-C180] in metres, flat and facing the nadir; overrides the file's luminous opening.
+    std::optional<V2d> luminousAreaM;
 
     // The file's distribution, read by the loader (resolveMeshes); shared between scene copies,
     // never mutated once set. Null until then (the light is then dark).
@@ -114,8 +118,19 @@ struct LuminaireSpec {
     // Equality compares what the scene file says, not the loaded distribution.
     bool operator==(const LuminaireSpec& o) const {
         return file == o.file && rotationDeg == o.rotationDeg && lumens == o.lumens && colour == o.colour &&
-               temperatureK == o.temperatureK;
+               temperatureK == o.temperatureK && luminousAreaM == o.luminousAreaM;
     }
+};
+
+// A maintenance factor (CIE 97:2005; an addition to the format, README "Maintained values"):
+// one number, or the product of its four factors, LLMF x LSF x LMF x RSMF, those absent
+// counting 1. Each in (0, 1].
+struct MaintenanceFactor {
+    std::optional<double> value;  // the one number
+    std::optional<double> lampLumenMaintenance, lampSurvival, luminaireMaintenance, roomSurfaceMaintenance;
+
+    double factor() const;
+    bool operator==(const MaintenanceFactor&) const = default;
 };
 
 // A sun's keys (SPEC.md section 5). Its direction is Light::direction unless `time` is given.
@@ -150,6 +165,9 @@ struct Light {
     // file but renders as if it were not there (withoutLightsSwitchedOff).
     std::string group;
     bool on = true;
+    // Point, spot, luminaire (README, "Maintained values"): this light's maintenance factor,
+    // which replaces the scene's for it. Absent: the scene's, or none.
+    std::optional<MaintenanceFactor> maintenance;
 
     bool operator==(const Light&) const = default;
 };
@@ -182,6 +200,34 @@ struct Sky {
     bool operator==(const Sky&) const = default;
 };
 
+// Who the design is for (README, "Reports"; an addition): the report's cover. All optional.
+struct ProjectInfo {
+    std::string name, client, designer, notes;
+    bool operator==(const ProjectInfo&) const = default;
+};
+
+// A glare observer (README, "Glare"): the eye and the direction it looks in (scene units).
+struct GlareObserver {
+    V3d position{0, 0, 0};
+    V3d view{0, 0, -1};  // non-zero, as written
+    bool operator==(const GlareObserver&) const = default;
+};
+
+// A task area (EN 12464-1:2021, 5.3; README, "Task areas"; an addition): a rectangle on the work
+// plane, as a calculation grid, with the activity whose requirements it is checked against (a
+// reference number of the bundled table, resources/standards/en12464-1.json; empty: none) and
+// the observers whose UGR is checked (none given: four, README).
+struct TaskArea {
+    CalculationGrid grid;   // grid.name is the area's name
+    std::string activity;
+    std::vector<GlareObserver> observers;
+    bool operator==(const TaskArea& o) const {
+        return grid.name == o.grid.name && grid.corner == o.grid.corner && grid.edgeU == o.grid.edgeU &&
+               grid.edgeV == o.grid.edgeV && grid.spacingMeters == o.grid.spacingMeters && activity == o.activity &&
+               observers == o.observers;
+    }
+};
+
 struct Scene {
     int version = 1;
     double metersPerUnit = 1.0;
@@ -192,6 +238,10 @@ struct Scene {
     std::vector<Light> lights;
     std::optional<Site> site;  // SPEC.md section 5
     std::optional<Sky> sky;
+    // Additions (README, "Maintained values", "Task areas", "Reports").
+    std::optional<MaintenanceFactor> maintenance;  // every electric light's without its own
+    std::vector<TaskArea> taskAreas;
+    std::optional<ProjectInfo> project;
     std::string baseDir;  // folder that relative mesh paths resolve against (absolute)
 
     const Material* findMaterial(const std::string& name) const;
@@ -200,7 +250,7 @@ struct Scene {
     bool operator==(const Scene& s) const {
         return version == s.version && metersPerUnit == s.metersPerUnit && camera == s.camera &&
                materials == s.materials && objects == s.objects && lights == s.lights && site == s.site &&
-               sky == s.sky;
+               sky == s.sky && maintenance == s.maintenance && taskAreas == s.taskAreas && project == s.project;
     }
 };
 
@@ -211,6 +261,26 @@ using SceneSnapshot = std::shared_ptr<const Scene>;
 // in their order. The same snapshot when every light is on (no copy). Every place that builds
 // what renders from a scene (the tracing backends, the preview, the grids) goes through it.
 SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene);
+
+// A light's maintenance factor (its own, else the scene's, else 1); daylight (sun, directional)
+// has none: 1. Emitter materials take the scene's.
+double maintenanceFactor(const Scene& scene, const Light& light);
+// The range of maintenance factors over the lights switched on and, when the scene has emitter
+// objects, the scene's own: {1, 1} when nothing is scaled (the new installation).
+struct MaintenanceRange {
+    double lowest = 1, highest = 1;
+    bool maintained() const { return lowest != 1 || highest != 1; }
+};
+MaintenanceRange maintenanceRange(const Scene& scene);
+
+// The scene as the renderers see it (every backend, the preview, the grids and the illuminance
+// layer): withoutLightsSwitchedOff, then each electric light's emission (point, spot,
+// luminaire, and every emitter material) scaled by its maintenance factor, so that what they
+// compute is the maintained value. The same snapshot when nothing changes.
+SceneSnapshot sceneAsRendered(SceneSnapshot scene);
+// The scene with every maintenance factor removed: the new installation (what UGR is
+// computed for, CIE 117).
+Scene withoutMaintenance(Scene scene);
 
 // What a scene calls for, so that backends model only what it needs (and `lucerna info` says so).
 // Lights switched off are not counted.

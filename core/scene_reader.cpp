@@ -4,6 +4,7 @@
 
 #include "core/json_reader.h"
 #include "core/json_string.h"
+#include "core/lighting_standards.h"
 #include "core/luminaire.h"
 #include "core/mesh_file.h"
 #include "core/number_format.h"
@@ -59,7 +60,8 @@ public:
         const Value& version = required(root, top, "lucerna");
         const double v = integer(version, "lucerna");
         if (v != 1) fail("lucerna", "unsupported format version " + shortestNumber(v) + " (this reader reads version 1)");
-        checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights", "site", "sky"});
+        checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights", "site", "sky",
+                             "maintenance_factor", "task_areas", "project"});
         scene.version = 1;
         if (const Value* mpu = root.find("meters_per_unit")) {
             scene.metersPerUnit = number(*mpu, "meters_per_unit");
@@ -81,6 +83,13 @@ public:
         if (const Value* site = root.find("site")) scene.site = parseSite(*site, "site");
         if (const Value* sky = root.find("sky")) scene.sky = parseSky(*sky, "sky");
         checkDaylight(scene);
+        if (const Value* mf = root.find("maintenance_factor")) scene.maintenance = parseMaintenance(*mf, "maintenance_factor");
+        if (const Value* areas = root.find("task_areas")) {
+            expectType(*areas, Type::Array, "task_areas");
+            for (size_t i = 0; i < areas->array.size(); ++i)
+                scene.taskAreas.push_back(parseTaskArea(areas->array[i], item("task_areas", i), scene.taskAreas));
+        }
+        if (const Value* project = root.find("project")) scene.project = parseProject(*project, "project");
         return scene;
     }
 
@@ -368,23 +377,26 @@ private:
         const std::string what = "a " + type + " light";
         if (type == "point") {
             l.type = LightType::Point;
-            checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature", "group", "on"}, what);
+            checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature", "group", "on",
+                                 "maintenance_factor"}, what);
         } else if (type == "spot") {
             l.type = LightType::Spot;
             checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start",
-                                 "lumens", "candela", "color", "temperature", "group", "on"}, what);
+                                 "lumens", "candela", "color", "temperature", "group", "on", "maintenance_factor"}, what);
         } else if (type == "directional") {
             l.type = LightType::Directional;
             checkKeys(v, place, {"name", "type", "direction", "irradiance", "group", "on"}, what);
         } else if (type == "luminaire") {
             l.type = LightType::Luminaire;
             checkKeys(v, place, {"name", "type", "file", "position", "direction", "rotation", "lumens", "color",
-                                 "temperature", "group", "on"}, what);
+                                 "temperature", "group", "on", "maintenance_factor", "luminous_area"}, what);
             l.name = parseName(v, place);
             l.position = vec3(required(v, place, "position"), member(place, "position"));
             l.direction = direction(required(v, place, "direction"), member(place, "direction"));
             l.luminaire = parseLuminaire(v, place);
             parseGroupAndSwitch(v, place, l);
+            if (const Value* mf = v.find("maintenance_factor"))
+                l.maintenance = parseMaintenance(*mf, member(place, "maintenance_factor"));
             return l;
         } else if (type == "sun") {
             l.type = LightType::Sun;
@@ -414,6 +426,8 @@ private:
                                              " degrees (at most cone_angle)");
         }
         parseGroupAndSwitch(v, place, l);
+        if (const Value* mf = v.find("maintenance_factor"))
+            l.maintenance = parseMaintenance(*mf, member(place, "maintenance_factor"));
         if (l.photometric)
             l.intensity = photometricIntensity(*l.photometric, l.type == LightType::Spot
                                                                    ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg)
@@ -458,6 +472,12 @@ private:
         }
         if (temperature)
             s.temperatureK = numberIn(*temperature, member(place, "temperature"), 1000, false, 40000, false, " kelvin");
+        if (const Value* area = v.find("luminous_area")) {
+            const std::string here = member(place, "luminous_area");
+            const Value& a = array(*area, here, 2, "numbers (width, length in metres)");
+            s.luminousAreaM = V2d(numberIn(a.array[0], item(here, 0), 0, true, 1000, false, " m"),
+                                  numberIn(a.array[1], item(here, 1), 0, true, 1000, false, " m"));
+        }
         return s;
     }
 
@@ -516,6 +536,79 @@ private:
             if (!(luminance(*s.colour) > 0)) fail(member(place, "color"), "must have a positive luminance");
         }
         return s;
+    }
+
+    // A maintenance factor (README, "Maintained values"): a number, or CIE 97's factors, each in
+    // (0, 1], at least one of them.
+    MaintenanceFactor parseMaintenance(const Value& v, const std::string& place) const {
+        MaintenanceFactor mf;
+        if (v.type == Type::Number) {
+            mf.value = numberIn(v, place, 0, true, 1, false);
+            return mf;
+        }
+        if (v.type != Type::Object) fail(place, std::string("expected a number or an object, got ") + json::describe(v.type));
+        checkKeys(v, place, {"llmf", "lsf", "lmf", "rsmf"});
+        if (v.object.empty()) fail(place, "give at least one of llmf, lsf, lmf, rsmf");
+        const auto factor = [&](const char* key, std::optional<double>& out) {
+            if (const Value* f = v.find(key)) out = numberIn(*f, member(place, key), 0, true, 1, false);
+        };
+        factor("llmf", mf.lampLumenMaintenance);
+        factor("lsf", mf.lampSurvival);
+        factor("lmf", mf.luminaireMaintenance);
+        factor("rsmf", mf.roomSurfaceMaintenance);
+        return mf;
+    }
+
+    // A task area (README, "Task areas"): a named rectangle as a calculation grid's, its activity
+    // and its glare observers.
+    TaskArea parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const {
+        checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "observers"});
+        TaskArea a;
+        const std::string namePlace = member(place, "name");
+        a.grid.name = text(required(v, place, "name"), namePlace);
+        if (a.grid.name.empty()) fail(namePlace, "task area name is empty");
+        if (a.grid.name.find('\0') != std::string::npos) fail(namePlace, "task area name contains a NUL character");
+        for (const TaskArea& e : earlier)
+            if (e.grid.name == a.grid.name) fail(namePlace, "another task area is already named " + quote(a.grid.name));
+        a.grid.corner = vec3(required(v, place, "corner"), member(place, "corner"));
+        a.grid.edgeU = direction(required(v, place, "u"), member(place, "u"));
+        a.grid.edgeV = direction(required(v, place, "v"), member(place, "v"));
+        const double cosine = a.grid.edgeU.dot(a.grid.edgeV) / (a.grid.edgeU.length() * a.grid.edgeV.length());
+        if (std::abs(cosine) > 1e-6) fail(member(place, "v"), "u and v must be perpendicular");
+        if (const Value* sp = v.find("spacing"))
+            a.grid.spacingMeters = numberIn(*sp, member(place, "spacing"), 0, true, 1e6, false, " m");
+        if (const Value* act = v.find("activity")) {
+            a.activity = text(*act, member(place, "activity"));
+            if (!findActivity(a.activity))
+                fail(member(place, "activity"), "unknown activity " + quote(a.activity) +
+                                                    " (expected a reference number of EN 12464-1's table: `lucerna standards` lists them)");
+        }
+        if (const Value* obs = v.find("observers")) {
+            const std::string here = member(place, "observers");
+            expectType(*obs, Type::Array, here);
+            for (size_t i = 0; i < obs->array.size(); ++i) {
+                const std::string o = item(here, i);
+                checkKeys(obs->array[i], o, {"position", "view"});
+                GlareObserver g;
+                g.position = vec3(required(obs->array[i], o, "position"), member(o, "position"));
+                g.view = direction(required(obs->array[i], o, "view"), member(o, "view"));
+                a.observers.push_back(g);
+            }
+        }
+        return a;
+    }
+
+    ProjectInfo parseProject(const Value& v, const std::string& place) const {
+        checkKeys(v, place, {"name", "client", "designer", "notes"});
+        ProjectInfo p;
+        const auto field = [&](const char* key, std::string& out) {
+            if (const Value* f = v.find(key)) out = text(*f, member(place, key));
+        };
+        field("name", p.name);
+        field("client", p.client);
+        field("designer", p.designer);
+        field("notes", p.notes);
+        return p;
     }
 
     Site parseSite(const Value& v, const std::string& place) const {

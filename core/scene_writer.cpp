@@ -128,6 +128,19 @@ std::string emission(const Light& l) {
     return "\"intensity\": " + rgb(l.intensity);
 }
 
+std::string maintenance(const MaintenanceFactor& mf) {
+    if (mf.value) return num(*mf.value);
+    std::string out;
+    const auto factor = [&](const char* key, const std::optional<double>& f) {
+        if (f) out += std::string(out.empty() ? "" : ", ") + "\"" + key + "\": " + num(*f);
+    };
+    factor("llmf", mf.lampLumenMaintenance);
+    factor("lsf", mf.lampSurvival);
+    factor("lmf", mf.luminaireMaintenance);
+    factor("rsmf", mf.roomSurfaceMaintenance);
+    return "{" + out + "}";
+}
+
 std::string light(const Light& l) {
     std::string out = "{\"name\": " + str(l.name) + ", \"type\": ";
     switch (l.type) {
@@ -150,6 +163,7 @@ std::string light(const Light& l) {
         if (s.lumens) out += ", \"lumens\": " + num(*s.lumens);
         if (s.colour) out += ", \"color\": " + rgb(*s.colour);
         if (s.temperatureK) out += ", \"temperature\": " + num(*s.temperatureK);
+        if (s.luminousAreaM) out += ", \"luminous_area\": [" + num(s.luminousAreaM->x) + ", " + num(s.luminousAreaM->y) + "]";
         break;
     }
     case LightType::Sun: {
@@ -165,6 +179,7 @@ std::string light(const Light& l) {
     }
     if (!l.group.empty()) out += ", \"group\": " + str(l.group);
     if (!l.on) out += ", \"on\": false";
+    if (l.maintenance) out += ", \"maintenance_factor\": " + maintenance(*l.maintenance);
     return out + "}";
 }
 
@@ -188,6 +203,34 @@ std::string sky(const Sky& s) {
     if (s.groundReflectanceGiven || s.groundReflectance != Sky().groundReflectance)
         out += ", \"ground_reflectance\": " + num(s.groundReflectance);
     return out + "}";
+}
+
+std::string taskArea(const TaskArea& a) {
+    const CalculationGrid& g = a.grid;
+    std::string out = "{\"name\": " + str(g.name) + ", \"corner\": " + vec(g.corner) + ", \"u\": " + vec(g.edgeU) +
+                      ", \"v\": " + vec(g.edgeV);
+    if (g.spacingMeters) out += ", \"spacing\": " + num(*g.spacingMeters);
+    if (!a.activity.empty()) out += ", \"activity\": " + str(a.activity);
+    if (!a.observers.empty()) {
+        out += ",\n     \"observers\": [";
+        for (size_t i = 0; i < a.observers.size(); ++i)
+            out += std::string(i ? ", " : "") + "{\"position\": " + vec(a.observers[i].position) +
+                   ", \"view\": " + vec(a.observers[i].view) + "}";
+        out += "]";
+    }
+    return out + "}";
+}
+
+std::string project(const ProjectInfo& p) {
+    std::string out;
+    const auto field = [&](const char* key, const std::string& value) {
+        if (!value.empty()) out += std::string(out.empty() ? "" : ", ") + "\"" + key + "\": " + str(value);
+    };
+    field("name", p.name);
+    field("client", p.client);
+    field("designer", p.designer);
+    field("notes", p.notes);
+    return "{" + out + "}";
 }
 
 }  // namespace
@@ -225,6 +268,13 @@ std::string saveSceneToString(const Scene& scene) {
     }
     if (scene.site) out += ",\n  \"site\": " + site(*scene.site);
     if (scene.sky) out += ",\n  \"sky\": " + sky(*scene.sky);
+    if (scene.maintenance) out += ",\n  \"maintenance_factor\": " + maintenance(*scene.maintenance);
+    if (!scene.taskAreas.empty()) {
+        out += ",\n  \"task_areas\": [";
+        for (size_t i = 0; i < scene.taskAreas.size(); ++i) out += (i ? ",\n    " : "\n    ") + taskArea(scene.taskAreas[i]);
+        out += "\n  ]";
+    }
+    if (scene.project) out += ",\n  \"project\": " + project(*scene.project);
     return out + "\n}\n";
 }
 
