@@ -528,6 +528,10 @@ void printUsage() {
                  "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
                  "               [--daylight-factor [--median-diffuse-illuminance LX]]   the daylight factor under\n"
                  "               the CIE overcast sky instead, with EN 17037's daylight provision\n"
+                 "  lucerna report SCENE.json -o OUT.pdf [--method M] [--error F] [--seed N] [--samples N]\n"
+                 "                 [--time SECONDS] [--spp N] [--threads N]\n"
+                 "                 the lighting design report: schedule, task areas (plan, figures, checks,\n"
+                 "                 UGR), renders and method; the grids as `grid` computes them\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";

@@ -4,6 +4,7 @@
 #include "app/cli.h"
 #include "app/grid_command.h"
 #include "app/import_command.h"
+#include "app/report_command.h"
 #include "app/mpi_session.h"
 #include "core/resources.h"
 #include "ui/autosave.h"
@@ -11,6 +12,7 @@
 
 #include <QApplication>
 #include <QCoreApplication>
+#include <QGuiApplication>
 
 #include <cstdio>
 #include <cstring>
@@ -47,6 +49,13 @@ int main(int argc, char** argv) {
             if (command == "bench") return lucerna::cli::bench(rest);
             if (command == "import") return lucerna::cli::importModelCommand(rest);
             return lucerna::cli::info(rest);
+        }
+        if (command == "report") {
+            // The PDF's fonts need a QGuiApplication; a report shows no window, so no display is
+            // needed either.
+            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+            QGuiApplication app(argc, argv);
+            return lucerna::cli::report(rest);
         }
         if (command == "-h" || command == "--help" || command == "help") {
             lucerna::cli::printUsage();
