@@ -13,7 +13,6 @@
 
 #include <QApplication>
 #include <QCoreApplication>
-#include <QGuiApplication>
 
 #include <cstdio>
 #include <cstring>
@@ -52,13 +51,8 @@ int main(int argc, char** argv) {
             if (command == "glare") return lucerna::cli::glare(rest);
             return lucerna::cli::info(rest);
         }
-        if (command == "report") {
-            // The PDF's fonts need a QGuiApplication; a report shows no window, so no display is
-            // needed either.
-            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
-            QGuiApplication app(argc, argv);
-            return lucerna::cli::report(rest);
-        }
+        // The PDF report makes its own QGuiApplication (its fonts need one) once its input is good.
+        if (command == "report") return lucerna::cli::report(rest, argc, argv);
         if (command == "-h" || command == "--help" || command == "help") {
             lucerna::cli::printUsage();
             return 0;

@@ -6,6 +6,8 @@
 #include "report/report_builder.h"
 #include "report/report_writer.h"
 
+#include <QGuiApplication>
+
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -67,7 +69,7 @@ ReportArgs parseReportArgs(const std::vector<std::string>& args) {
     return r;
 }
 
-int reportImpl(const std::vector<std::string>& args) {
+int reportImpl(const std::vector<std::string>& args, int& argc, char** argv) {
     // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
     exitOnInterrupt("report interrupted; no file written\n");
     const ReportArgs r = parseReportArgs(args);
@@ -98,6 +100,9 @@ int reportImpl(const std::vector<std::string>& args) {
         std::cerr << "report interrupted; no file written\n";
         return 130;
     }
+    // A report shows no window: no display needed.
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM")) qputenv("QT_QPA_PLATFORM", "offscreen");
+    const QGuiApplication app(argc, argv);
     int pages = 0;
     try {
         pages = writeReportPdf(*data, r.output);
@@ -121,6 +126,8 @@ int reportImpl(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int report(const std::vector<std::string>& args) { return runCommand(reportImpl, args); }
+int report(const std::vector<std::string>& args, int& argc, char** argv) {
+    return runCommand([&] { return reportImpl(args, argc, argv); });
+}
 
 }  // namespace lucerna::cli

@@ -92,7 +92,7 @@ void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
                 QStringLiteral("UGR"), QStringLiteral("\u00b1 (95%)"), QStringLiteral("Lb [cd/m\u00b2]")};
     t.weights = {0.9, 1.9, 1.2, 0.7, 0.8, 0.9};
     t.alignment = {Qt::AlignLeft, Qt::AlignLeft, Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight};
-    std::vector<std::string> notes;
+    std::vector<QString> notes;
     for (size_t i = 0; i < a.glare.size(); ++i) {
         const ObserverGlare& o = a.glare[i];
         const bool has = o.result.ugr.has_value();
@@ -100,8 +100,7 @@ void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
                           has ? QString::number(*o.result.ugr, 'f', 1) : QStringLiteral("-"),
                           has ? QString::number(o.result.ugrErrorBar, 'f', 1) : QStringLiteral("-"),
                           QString::number(o.result.backgroundLuminanceCdM2, 'f', 1)});
-        for (const std::string& n : o.result.notes)
-            if (std::find(notes.begin(), notes.end(), n) == notes.end()) notes.push_back(n);
+        for (const std::string& n : o.result.notes) notes.push_back(QStringLiteral("Observer %1: %2").arg(i + 1).arg(qs(n)));
     }
     flow.ensure(std::min(flow.subheadingHeight() + flow.tableHeight(t), flow.pageHeight()));
     flow.subheading(QStringLiteral("Glare: unified glare rating (UGR)"));
@@ -113,7 +112,7 @@ void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
                     .arg(QString::number(data.settings.eyeHeightM, 'f', 2));
     about += QStringLiteral("UGR of the new installation (CIE 117); Lb: the background luminance.");
     flow.paragraph(about, flow.fonts().small);
-    for (const std::string& n : notes) flow.paragraph(qs(n), flow.fonts().small);
+    for (const QString& n : notes) flow.paragraph(n, flow.fonts().small);
 }
 
 // The values as a matrix that reads like the plan (the plan's top row first), in blocks of

@@ -17,7 +17,9 @@ constexpr double kCellPadMm = 1.1;
 
 QFont font(double points, bool bold = false) {
     QFont f(QStringLiteral("DejaVu Sans"));
-    f.setStyleHint(QFont::SansSerif);
+    // No ligatures ("fi", "ffi"): text copied out of the PDF (a command line, a file name) reads
+    // as typed. Latin text needs no other shaping.
+    f.setStyleHint(QFont::SansSerif, QFont::PreferNoShaping);
     f.setPointSizeF(points);
     f.setBold(bold);
     return f;

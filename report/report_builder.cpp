@@ -172,7 +172,12 @@ std::vector<ReportArea> reportAreas(const Scene& scene) {
     if (!areas.empty()) return areas;
     const SceneBounds b = sceneBounds(scene);
     ReportArea plane;
-    plane.area.grid = workPlaneGrid(b.lo, b.hi, scene.metersPerUnit, kWorkPlaneM, kBorderM);
+    try {
+        plane.area.grid = workPlaneGrid(b.lo, b.hi, scene.metersPerUnit, kWorkPlaneM, kBorderM);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("the scene names no task areas, and its work plane (0.8 m up, less a "
+                                                "0.5 m border) is empty: ") + e.what());
+    }
     plane.area.grid.name = "Work plane";
     plane.defaultWorkPlane = true;
     areas.push_back(plane);
@@ -193,7 +198,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     ReportData data;
     data.scene = scene;
     data.settings = settings;
-    data.sceneFile = QFileInfo(QString::fromStdString(scenePath)).fileName().toStdString();
+    data.sceneFile = scenePath.empty() ? "untitled scene" : QFileInfo(QString::fromStdString(scenePath)).fileName().toStdString();
     if (scene->project) {
         data.projectName = scene->project->name;
         data.client = scene->project->client;
