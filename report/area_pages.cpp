@@ -45,7 +45,9 @@ QString gridText(const AreaReport& a, double mpu) {
                        .arg(a.layout.nv)
                        .arg(QString::number(a.layout.spacingUMeters, 'g', 3), QString::number(a.layout.spacingVMeters, 'g', 3));
     const V3d n = a.grid.normal();
-    if (std::abs(n.y) > 0.9) text += QStringLiteral(", at height %1 m").arg(metres(a.grid.corner.y, mpu));
+    if (n.y > 0.9) text += QStringLiteral(", at height %1 m, facing up").arg(metres(a.grid.corner.y, mpu));
+    else if (n.y < -0.9)  // u x v points down: a ceiling's grid, or edges given in the wrong order
+        text += QStringLiteral(", at height %1 m, facing down (the light from below)").arg(metres(a.grid.corner.y, mpu));
     else text += QStringLiteral(", facing %1").arg(direction(n));
     return text;
 }
@@ -110,7 +112,8 @@ void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
         about = QStringLiteral("The area names no observers: four seated observers (eyes %1 m above the floor) at the "
                                "middle of its edges, each looking across it. ")
                     .arg(QString::number(data.settings.eyeHeightM, 'f', 2));
-    about += QStringLiteral("UGR of the new installation (CIE 117); Lb: the background luminance.");
+    about += QStringLiteral("UGR of the new installation (CIE 117); Lb: the background luminance. The plan shows "
+                            "each observer by its number, with an arrow along its line of sight.");
     flow.paragraph(about, flow.fonts().small);
     for (const QString& n : notes) flow.paragraph(n, flow.fonts().small);
 }
@@ -129,27 +132,39 @@ void addValues(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     const double mpu = data.scene->metersPerUnit;
     const V3d u = a.grid.edgeU.normalized(), v = a.grid.edgeV.normalized();
     const bool plan = std::abs(a.grid.normal().y) > 0.9;
-    // Axis-aligned grids are labelled with world coordinates, others with the distance along
-    // their edges from the corner.
-    const bool axisAligned = plan && std::abs(u.x) > 0.999 && std::abs(v.z) > 0.999;
-    const bool vDown = plan ? v.z > 0 : false;  // the plan shows +z downwards; a wall's v goes up
-    const bool uRight = !plan || u.x > 0 || !axisAligned;
-    const auto columnLabel = [&](int i) {
-        if (axisAligned) return QStringLiteral("x %1").arg(metres(l.points[size_t(i)].x, mpu));
-        return QStringLiteral("u %1").arg(QString::number((i + 0.5) * l.spacingUMeters, 'f', 2));
+    // A horizontal grid whose edges run along x and z (in either order) reads like the plan:
+    // x to the right, z down, labelled with world coordinates. Others: u across, v up (a wall)
+    // or down, labelled with the distance along the edges from the corner.
+    const bool uAlongX = std::abs(u.x) > 0.999 && std::abs(v.z) > 0.999;
+    const bool uAlongZ = std::abs(u.z) > 0.999 && std::abs(v.x) > 0.999;
+    const bool world = plan && (uAlongX || uAlongZ);
+    const bool acrossU = !world || uAlongX;  // the table's columns step along u
+    const int across = acrossU ? l.nu : l.nv, down = acrossU ? l.nv : l.nu;
+    const V3d acrossEdge = acrossU ? u : v, downEdge = acrossU ? v : u;
+    const bool acrossForward = !world || acrossEdge.x > 0;
+    const bool downForward = world ? downEdge.z > 0 : plan;  // a wall's v goes up: its last row first
+    const auto pointAt = [&](int c, int r) {  // c, r: grid indices along the across and down edges
+        const int i = acrossU ? c : r, j = acrossU ? r : c;
+        return size_t(j) * size_t(l.nu) + size_t(i);
     };
-    const auto rowLabel = [&](int j) {
-        if (axisAligned) return QStringLiteral("z %1").arg(metres(l.points[size_t(j) * size_t(l.nu)].z, mpu));
-        return QStringLiteral("v %1").arg(QString::number((j + 0.5) * l.spacingVMeters, 'f', 2));
+    const double acrossSpacing = acrossU ? l.spacingUMeters : l.spacingVMeters;
+    const double downSpacing = acrossU ? l.spacingVMeters : l.spacingUMeters;
+    const auto columnLabel = [&](int c) {
+        if (world) return QStringLiteral("x %1").arg(metres(l.points[pointAt(c, 0)].x, mpu));
+        return QStringLiteral("%1 %2").arg(acrossU ? "u" : "v").arg(QString::number((c + 0.5) * acrossSpacing, 'f', 2));
+    };
+    const auto rowLabel = [&](int r) {
+        if (world) return QStringLiteral("z %1").arg(metres(l.points[pointAt(0, r)].z, mpu));
+        return QStringLiteral("%1 %2").arg(acrossU ? "v" : "u").arg(QString::number((r + 0.5) * downSpacing, 'f', 2));
     };
     std::vector<int> columns, rows;
-    for (int i = 0; i < l.nu; ++i) columns.push_back(uRight ? i : l.nu - 1 - i);
-    for (int j = 0; j < l.nv; ++j) rows.push_back(vDown ? j : l.nv - 1 - j);
+    for (int c = 0; c < across; ++c) columns.push_back(acrossForward ? c : across - 1 - c);
+    for (int r = 0; r < down; ++r) rows.push_back(downForward ? r : down - 1 - r);
     bool anyInside = false;
-    const int blocks = (l.nu + kColumnsPerBlock - 1) / kColumnsPerBlock;
+    const int blocks = (across + kColumnsPerBlock - 1) / kColumnsPerBlock;
     std::vector<ReportTable> tables;
     for (int b = 0; b < blocks; ++b) {
-        const int c0 = b * kColumnsPerBlock, c1 = std::min(l.nu, c0 + kColumnsPerBlock);
+        const int c0 = b * kColumnsPerBlock, c1 = std::min(across, c0 + kColumnsPerBlock);
         ReportTable t;
         t.compact = true;
         t.header << QStringLiteral("[m]");
@@ -161,10 +176,10 @@ void addValues(PageFlow& flow, const ReportData& data, const AreaReport& a) {
             t.alignment.push_back(Qt::AlignRight);
         }
         for (int c = c1; c < c0 + kColumnsPerBlock && blocks > 1; ++c) t.weights.push_back(1.0);  // same widths
-        for (int j : rows) {
-            QStringList row{rowLabel(j)};
+        for (int r : rows) {
+            QStringList row{rowLabel(r)};
             for (int c = c0; c < c1; ++c) {
-                const size_t k = size_t(j) * size_t(l.nu) + size_t(columns[size_t(c)]);
+                const size_t k = pointAt(columns[size_t(c)], r);
                 const bool inside = k < a.result.insideGeometry.size() && a.result.insideGeometry[k];
                 anyInside = anyInside || inside;
                 row << (inside ? QStringLiteral("inside") : lux(a.result.lux[k]));
@@ -182,14 +197,15 @@ void addValues(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     flow.subheading(QStringLiteral("Illuminance at the grid points [lx]"));
     for (int b = 0; b < blocks; ++b) {
         if (blocks > 1) {
-            const int c0 = b * kColumnsPerBlock, c1 = std::min(l.nu, c0 + kColumnsPerBlock);
+            const int c0 = b * kColumnsPerBlock, c1 = std::min(across, c0 + kColumnsPerBlock);
             flow.ensure(std::min(flow.lineHeight(flow.fonts().small) + flow.tableHeight(tables[size_t(b)]), flow.pageHeight()));
-            flow.paragraph(QStringLiteral("Columns %1 to %2 of %3").arg(c0 + 1).arg(c1).arg(l.nu), flow.fonts().small);
+            flow.paragraph(QStringLiteral("Columns %1 to %2 of %3").arg(c0 + 1).arg(c1).arg(across), flow.fonts().small);
         }
         flow.table(tables[size_t(b)]);
     }
-    QString note = plan ? QStringLiteral("Rows and columns as the plan shows them (seen from above).")
-                        : QStringLiteral("Rows from the top of the area (v up), columns along u.");
+    QString note = world  ? QStringLiteral("Rows and columns as the plan shows them (seen from above).")
+                   : plan ? QStringLiteral("Columns along u, rows along v, from the area's corner.")
+                          : QStringLiteral("Rows from the top of the area (v up), columns along u.");
     if (anyInside) note += QStringLiteral(" \"inside\": a point inside geometry, left out of Eavg, Emin, Emax and U0.");
     flow.paragraph(note, flow.fonts().small);
 }
@@ -216,6 +232,7 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     plan.values = a.result.lux;
     plan.insideGeometry = a.result.insideGeometry;
     plan.statistics = a.statistics;
+    for (const ObserverGlare& o : a.glare) plan.observers.push_back(o.observer);
     addPlan(flow, data, a, std::move(plan), flow.mm(125));
 
     flow.subheading(QStringLiteral("Results"));

@@ -21,6 +21,7 @@ namespace {
 constexpr double kRoomRasterDpmm = 8; // the room's raster, about 200 dpi
 const QColor kWall(55, 55, 60);
 const QColor kGlass(70, 150, 230);
+const QColor kObserver(110, 20, 140);
 const QColor kIsoLine(0, 0, 0);
 const QColor kLuminaire(20, 30, 110);
 
@@ -234,6 +235,34 @@ void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QStr
     }
 }
 
+// The glare observers: an eye (a ring with its number) and an arrow along its line of sight.
+void paintObservers(QPainter& p, const QRectF& view, const PlanFrame& frame, const std::vector<GlareObserver>& observers,
+                    const QFont& font, double dpmm) {
+    const double r = 1.9 * dpmm;
+    for (size_t i = 0; i < observers.size(); ++i) {
+        const GlareObserver& o = observers[i];
+        const QPointF c = frame.at(o.position);
+        if (!view.contains(c)) continue;
+        const QPointF d = frame.at(o.position + o.view.normalized()) - c;
+        const double len = std::hypot(d.x(), d.y());
+        p.setPen(QPen(kObserver, 0.35 * dpmm));
+        if (len > 0) {
+            const QPointF dir = d / len, side(-dir.y(), dir.x());
+            const QPointF tip = c + dir * (r + 4 * dpmm);
+            p.drawLine(c + dir * r, tip);
+            QPolygonF head;
+            head << tip << tip - dir * 1.4 * dpmm + side * 0.8 * dpmm << tip - dir * 1.4 * dpmm - side * 0.8 * dpmm;
+            p.setBrush(kObserver);
+            p.drawPolygon(head);
+        }
+        p.setBrush(Qt::white);
+        p.drawEllipse(c, r, r);
+        p.setFont(font);
+        const QString n = QString::number(i + 1);
+        p.drawText(QRectF(c - QPointF(r, r), QSizeF(2 * r, 2 * r)), Qt::AlignCenter, n);
+    }
+}
+
 // A bar of a round length in metres at the bottom left of the plan.
 void paintScaleBar(QPainter& p, const QRectF& plan, const PlanFrame& frame, double metersPerUnit, const QFont& font,
                    double dpmm) {
@@ -407,6 +436,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
             p.drawLine(c - QPointF(r, r), c + QPointF(r, r));
             p.drawLine(c - QPointF(r, -r), c + QPointF(r, -r));
         }
+        paintObservers(p, view, frame, plan.observers, font, dpmm);
         paintScaleBar(p, view, frame, scene.metersPerUnit, font, dpmm);
         if (scene.site && scene.site->northGiven) paintNorthArrow(p, view, frame, *scene.site, font, dpmm);
     }

@@ -24,6 +24,7 @@ struct PlanValues {
     std::vector<uint8_t> insideGeometry;  // non-zero: hatched, left out (empty: none)
     GridStatistics statistics;
     QString quantity = QStringLiteral("E [lx]");
+    std::vector<GlareObserver> observers;  // drawn numbered from 1, looking along their view
 };
 
 // `dpmm`: device pixels per millimetre, for line widths and the raster of the room.

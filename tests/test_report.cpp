@@ -169,8 +169,8 @@ QString writeProjectScene(const QTemporaryDir& dir) {
   "project": {"name": "Refit of the second floor", "client": "Acme Insurance Ltd", "designer": "J. Doe, Lichtplanung",
               "notes": "Design for the refit of the open office and the meeting room. Luminaires as the schedule; ceiling height 3.00 m; reflectances ceiling 0.8, walls 0.6, floor 0.3. A long note wraps over several lines of the cover and never runs off the page, however long its words: averyveryveryveryveryveryveryveryveryveryveryveryveryveryveryveryverylongword."},
   "task_areas": [
-    {"name": "Desks", "corner": [0.5, 0.75, 0.5], "u": [2.5, 0, 0], "v": [0, 0, 3], "activity": "5.26.2"},
-    {"name": "Meeting table", "corner": [3.3, 0.75, 0.6], "u": [2.2, 0, 0], "v": [0, 0, 2.8], "spacing": 0.08,
+    {"name": "Desks", "corner": [0.5, 0.75, 0.5], "u": [0, 0, 3], "v": [2.5, 0, 0], "activity": "5.26.2"},
+    {"name": "Meeting table", "corner": [3.3, 0.75, 0.6], "u": [0, 0, 2.8], "v": [2.2, 0, 0], "spacing": 0.08,
      "activity": "5.26.5", "observers": [{"position": [3.2, 1.2, 2.0], "view": [1, 0, 0]}]}
   ]
 })")
@@ -258,8 +258,8 @@ void TestReport::projectSceneReport() {
         QVERIFY2(text.contains(s), s);
     const QStringList figures = figureLines(text);
     QCOMPARE(figures.size(), 2);
-    QCOMPARE(figures[0], gridLine({scene, "--corner", "0.5,0.75,0.5", "--u", "2.5,0,0", "--v", "0,0,3"}));
-    QCOMPARE(figures[1], gridLine({scene, "--corner", "3.3,0.75,0.6", "--u", "2.2,0,0", "--v", "0,0,2.8", "--spacing", "0.08"}));
+    QCOMPARE(figures[0], gridLine({scene, "--corner", "0.5,0.75,0.5", "--u", "0,0,3", "--v", "2.5,0,0"}));
+    QCOMPARE(figures[1], gridLine({scene, "--corner", "3.3,0.75,0.6", "--u", "0,0,2.8", "--v", "2.2,0,0", "--spacing", "0.08"}));
     // The meeting table's 28 x 35 values: three blocks of columns, the header row repeated on
     // each page a block runs onto.
     QVERIFY(text.contains("Columns 25 to 28 of 28"));
@@ -341,7 +341,7 @@ void TestReport::exportReportFromWindow() {
     QVERIFY(!w.reportExport()->progressDialog()->isVisible());
     const QString text = pdfText(pdf + ".pdf");
     QVERIFY(text.contains("Refit of the second floor"));
-    QCOMPARE(figureLines(text).front(), gridLine({scene, "--corner", "0.5,0.75,0.5", "--u", "2.5,0,0", "--v", "0,0,3"}));
+    QCOMPARE(figureLines(text).front(), gridLine({scene, "--corner", "0.5,0.75,0.5", "--u", "0,0,3", "--v", "2.5,0,0"}));
     QVERIFY(!w.document()->undoStack()->canUndo());  // the document is untouched
 }
 
