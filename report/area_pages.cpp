@@ -83,9 +83,12 @@ ReportTable checksTable(const AreaReport& a) {
 }
 
 void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
-    if (!data.settings.glare) {
+    if (!data.settings.glare || a.glare.empty()) {
         flow.subheading(QStringLiteral("Glare: unified glare rating (UGR)"));
-        flow.paragraph(QStringLiteral("Not computed for this report."));
+        flow.paragraph(data.schedule.luminaires == 0
+                           ? QStringLiteral("No electric lighting is switched on: UGR, which rates electric lighting "
+                                            "(CIE 117), does not apply.")
+                           : QStringLiteral("Not computed for this report."));
         return;
     }
     const double mpu = data.scene->metersPerUnit;
@@ -101,9 +104,18 @@ void addGlare(PageFlow& flow, const ReportData& data, const AreaReport& a) {
         t.rows.push_back({QString::number(i + 1), point(o.observer.position, mpu), direction(o.observer.view),
                           has ? QString::number(*o.result.ugr, 'f', 1) : QStringLiteral("-"),
                           has ? QString::number(o.result.ugrErrorBar, 'f', 1) : QStringLiteral("-"),
-                          QString::number(o.result.backgroundLuminanceCdM2, 'f', 1)});
-        for (const std::string& n : o.result.notes) notes.push_back(QStringLiteral("Observer %1: %2").arg(i + 1).arg(qs(n)));
+                          has ? QString::number(o.result.backgroundLuminanceCdM2, 'f', 1) : QStringLiteral("-")});
     }
+    // What was left out, once for all observers when all say it.
+    for (size_t i = 0; i < a.glare.size(); ++i)
+        for (const std::string& n : a.glare[i].result.notes) {
+            const bool everyone = std::all_of(a.glare.begin(), a.glare.end(), [&](const ObserverGlare& o) {
+                return std::find(o.result.notes.begin(), o.result.notes.end(), n) != o.result.notes.end();
+            });
+            const QString line = everyone ? QStringLiteral("All observers: %1").arg(qs(n))
+                                          : QStringLiteral("Observer %1: %2").arg(i + 1).arg(qs(n));
+            if (std::find(notes.begin(), notes.end(), line) == notes.end()) notes.push_back(line);
+        }
     flow.ensure(std::min(flow.subheadingHeight() + flow.tableHeight(t), flow.pageHeight()));
     flow.subheading(QStringLiteral("Glare: unified glare rating (UGR)"));
     if (!t.rows.empty()) flow.table(t);

@@ -207,12 +207,12 @@ void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QStr
     const QFontMetricsF fm(font, p.device());
     const double unitWidth = fm.horizontalAdvance(unit) + 3 * dpmm;
     const QRectF ramp(band.left() + unitWidth, band.top() + 2 * dpmm, band.width() - unitWidth - 8 * dpmm, 4 * dpmm);
-    const Legend legend{s.lo, s.hi, false, QStringLiteral("lx")};
+    const Legend legend{s.lo, s.hi, s.logScale, QStringLiteral("lx")};
     const int steps = 200;
     for (int i = 0; i < steps; ++i) {
         const double t0 = double(i) / steps, t1 = double(i + 1) / steps;
         const QRectF cell(ramp.left() + t0 * ramp.width(), ramp.top(), (t1 - t0) * ramp.width() + 0.5, ramp.height());
-        p.fillRect(cell, legendColour(legend, s.lo + (t0 + t1) / 2 * (s.hi - s.lo)));
+        p.fillRect(cell, falseColourRamp((t0 + t1) / 2));
     }
     p.setPen(QPen(Qt::black, 0.15 * dpmm));
     p.setBrush(Qt::NoBrush);
@@ -311,6 +311,21 @@ void paintNorthArrow(QPainter& p, const QRectF& plan, const PlanFrame& frame, co
 
 PlanScale planScale(const GridStatistics& s) {
     PlanScale out;
+    if (s.minimum > 0 && s.maximum > 10 * s.minimum) {
+        out.logScale = true;
+        const double decade = std::pow(10.0, std::floor(std::log10(s.minimum)));
+        out.lo = decade;
+        for (double m : {2.0, 5.0})
+            if (m * decade <= s.minimum) out.lo = m * decade;
+        out.hi = out.lo;
+        for (double d = decade; out.hi < s.maximum; d *= 10)
+            for (double m : {1.0, 2.0, 5.0}) {
+                const double level = m * d;
+                if (level > s.minimum && level < s.maximum) out.levels.push_back(level);
+                if (level >= s.maximum && out.hi < s.maximum) out.hi = level;
+            }
+        return out;
+    }
     const std::vector<double> levels = isoLevels(s.minimum, s.maximum);
     if (levels.size() >= 2) {
         const double step = levels[1] - levels[0];
@@ -349,7 +364,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
 
     // The grid: each point's value over its cell.
     const PlanScale scale = planScale(plan.statistics);
-    const Legend legend{scale.lo, scale.hi, false, QStringLiteral("lx")};
+    const Legend legend{scale.lo, scale.hi, scale.logScale, QStringLiteral("lx")};
     const int nu = layout.nu, nv = layout.nv;
     if (nu > 0 && nv > 0 && plan.values.size() == layout.points.size()) {
         const V3d du = g.edgeU / nu, dv = g.edgeV / nv;
@@ -409,6 +424,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
         }
         p.setFont(font);
         const QFontMetricsF fm(font, p.device());
+        std::vector<QRectF> placed;
         for (size_t li = 0; li < scale.levels.size(); ++li) {
             if (labelAt[li].first < 0) continue;
             const QString text = levelText(scale.levels[li]);
@@ -416,6 +432,9 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
             QRectF box(labelAt[li].second - QPointF(size.width() / 2, size.height() / 2), size);
             box.moveLeft(std::clamp(box.left(), view.left(), view.right() - box.width()));
             box.moveTop(std::clamp(box.top(), view.top(), view.bottom() - box.height()));
+            // Lines bunched together (the edge of a sun patch) keep the first label only.
+            if (std::any_of(placed.begin(), placed.end(), [&](const QRectF& r) { return r.intersects(box); })) continue;
+            placed.push_back(box);
             p.fillRect(box, QColor(255, 255, 255, 225));
             p.setPen(Qt::black);
             p.drawText(box, Qt::AlignCenter, text);

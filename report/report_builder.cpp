@@ -246,7 +246,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
         }
         if (ctx.isCancelled()) return data;
         r.statistics = gridStatistics(r.result.lux, r.result.insideGeometry);
-        if (settings.glare) {
+        if (settings.glare && data.schedule.luminaires > 0) {  // UGR rates electric lighting
             auto s = stage(glareShare);
             computeGlare(*scene, areas[i].area, settings, r, s->context());
             if (ctx.isCancelled()) return data;

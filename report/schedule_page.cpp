@@ -67,6 +67,9 @@ void addSchedulePage(PageFlow& flow, const ReportData& data) {
     } else if (s.luminaires > 0) {
         load.emplace_back(QStringLiteral("Connected load"), QStringLiteral("not stated (no file states its power)"));
     }
+    if (s.totalWatts && s.withoutWatts == 0 && *s.totalWatts > 0)
+        load.emplace_back(QStringLiteral("Luminaire efficacy"),
+                          QString::number(s.totalLumens / *s.totalWatts, 'f', 1) + QStringLiteral(" lm/W"));
     load.emplace_back(QStringLiteral("Floor area"), QString::number(s.floorAreaM2, 'f', 1) +
                                                        QStringLiteral(" m\u00b2 (the geometry's extent in plan)"));
     if (s.wattsPerM2)

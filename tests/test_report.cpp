@@ -335,6 +335,8 @@ void TestReport::exportReportFromWindow() {
     test::trigger(w, "actionExportReport");
     QVERIFY(w.reportExport()->isRunning());
     QVERIFY(w.reportExport()->progressDialog() && w.reportExport()->progressDialog()->isVisible());
+    QVERIFY(w.grab().save("report_export_window.png"));  // the window with the progress dialog over it
+    QVERIFY(w.reportExport()->progressDialog()->grab().save("report_export_progress.png"));
     QVERIFY(done.wait(120000));
     QCOMPARE(done.front().at(0).toBool(), true);
     QVERIFY2(w.statusBar()->currentMessage().startsWith("Wrote from-window.pdf"), qPrintable(w.statusBar()->currentMessage()));
