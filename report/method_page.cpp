@@ -1,6 +1,8 @@
 #include "report/report_pages.h"
 #include "report/report_text.h"
 
+#include <algorithm>
+
 namespace lucerna {
 
 namespace {
@@ -82,7 +84,7 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                    flow.fonts().small);
     for (const AreaReport& a : data.areas) flow.paragraph(gridCommand(data, a), flow.fonts().figure, flow.mm(4));
 
-    if (s.glare) {
+    if (std::any_of(data.areas.begin(), data.areas.end(), [](const AreaReport& a) { return !a.glare.empty(); })) {
         flow.subheading(QStringLiteral("Glare"));
         flow.paragraph(QStringLiteral(
             "UGR = 8 log10(0.25 / Lb x sum of L\u00b2 \u03c9 / p\u00b2) (CIE 117): for each observer, every luminaire "

@@ -46,8 +46,8 @@ ReportTable scheduleTable(const Schedule& s) {
 
 void addSchedulePage(PageFlow& flow, const ReportData& data) {
     flow.newPage();
-    flow.heading(QStringLiteral("Luminaire schedule"));
     const Schedule& s = data.schedule;
+    flow.heading(s.daylight.empty() ? QStringLiteral("Luminaire schedule") : QStringLiteral("Luminaire schedule and daylight"));
     if (s.entries.empty()) {
         flow.paragraph(QStringLiteral("No electric lighting is switched on in this scene."));
     } else {

@@ -197,18 +197,23 @@ private slots:
     void exportReportCancelAndError();
 };
 
-// The bundled office floor: no task areas, so the work plane at 0.8 m, as `grid --work-plane 0.8`.
+// The bundled office floor: its two task areas (the desks and the meeting zone), each as `grid`
+// computes its rectangle.
 void TestReport::officeFloorReport() {
     REQUIRE_POPPLER();
     QTemporaryDir dir;
     const QString pdf = dir.filePath("office.pdf");
-    const Run r = runLucerna(QStringList{"report", kScenes + "office_floor.json", "-o", pdf, "--spp", "2"} + kSmall);
+    const QString scene = kScenes + "office_floor.json";
+    const Run r = runLucerna(QStringList{"report", scene, "-o", pdf, "--spp", "2"} + kSmall);
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const QString text = pdfText(pdf);
     const QStringList figures = figureLines(text);
-    QCOMPARE(figures.size(), 1);
-    QCOMPARE(figures.front(), gridLine({kScenes + "office_floor.json", "--work-plane", "0.8"}));
-    QVERIFY(figureLines(r.out).contains(figures.front()));  // the command prints them too
+    QCOMPARE(figures.size(), 2);
+    QCOMPARE(figures[0], gridLine({scene, "--corner", "1.5,0.75,1.2", "--u", "0,0,12.2", "--v", "33,0,0", "--spacing", "1"}));
+    QCOMPARE(figures[1], gridLine({scene, "--corner", "2.5,0.75,16.9", "--u", "0,0,2.2", "--v", "19,0,0", "--spacing", "0.5"}));
+    QCOMPARE(figureLines(r.out), figures);  // the command prints them too
+    QVERIFY(text.contains("Open-plan office floor (bundled example)"));
+    QVERIFY(text.contains("Task area: Open-plan desks") && text.contains("Task area: Meeting zone"));
     // The schedule: 84 panels and 24 pendants, their power and the load per square metre.
     QVERIFY2(text.contains("Luminaire schedule") && text.contains("108") && text.contains("3288.0") &&
                  text.contains("W/m\u00b2"),
@@ -222,7 +227,9 @@ void TestReport::officeFloorReport() {
     checkWordsInsidePage(pdf);
 }
 
-// The daylit office: the illuminance and the daylight factor as `grid` and `grid --daylight-factor`.
+// The daylit office: on its reference plane, the illuminance and the daylight factor as `grid`
+// and `grid --daylight-factor`; the bundled interior, which names no task areas: the work plane at
+// 0.8 m, as `grid --work-plane 0.8`.
 void TestReport::daylitOfficeReport() {
     REQUIRE_POPPLER();
     QTemporaryDir dir;
@@ -231,14 +238,25 @@ void TestReport::daylitOfficeReport() {
     const Run r = runLucerna(QStringList{"report", scene, "-o", pdf, "--spp", "2"} + kSmall);
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     const QString text = pdfText(pdf);
-    QCOMPARE(figureLines(text), QStringList{gridLine({scene, "--work-plane", "0.8"})});
-    QCOMPARE(dfLines(text), QStringList{gridLine({scene, "--work-plane", "0.8", "--daylight-factor"}, true)});
+    const QStringList plane = {scene, "--corner", "0.5,0.85,0.5", "--u", "0,0,3.5", "--v", "5,0,0"};
+    QCOMPARE(figureLines(text), QStringList{gridLine(plane)});
+    QCOMPARE(dfLines(text), QStringList{gridLine(plane + QStringList{"--daylight-factor"}, true)});
+    QVERIFY(text.contains("UGR, which rates electric lighting (CIE 117), does not apply"));
     QVERIFY(text.contains("Sun: 70000 lx direct normal"));
     QVERIFY(text.contains("CIE general sky type 12"));
     QVERIFY(text.contains("EN 17037 level"));
     const int pages = pageCount(pdf);
     checkPagesHaveContent(pdf, pages);
     checkWordsInsidePage(pdf);
+
+    const QString interior = dir.filePath("interior.pdf");
+    const Run ri = runLucerna(QStringList{"report", kScenes + "interior.json", "-o", interior, "--spp", "2"} + kSmall);
+    QVERIFY2(ri.exitCode == 0, qPrintable(ri.err));
+    const QString interiorText = pdfText(interior);
+    QVERIFY(interiorText.contains("Task area: Work plane"));
+    QCOMPARE(figureLines(interiorText), QStringList{gridLine({kScenes + "interior.json", "--work-plane", "0.8"})});
+    checkPagesHaveContent(interior, pageCount(interior));
+    checkWordsInsidePage(interior);
 }
 
 // A project with task areas: the cover, the checks against EN 12464-1, the maintained values,
