@@ -27,7 +27,7 @@ int main(int argc, char** argv) {
         const std::string command = argv[1];
         const std::vector<std::string> rest(argv + 2, argv + argc);
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
-            command == "bench" || command == "grid" || command == "import") {
+            command == "bench" || command == "grid" || command == "import" || command == "standards") {
             // Started by mpirun: render and grid share their work among the ranks (MPI set up
             // before Qt, finalised after it).
             std::unique_ptr<lucerna::ProcessGroup> processes;
@@ -46,6 +46,7 @@ int main(int argc, char** argv) {
             if (command == "convert") return lucerna::cli::convert(rest);
             if (command == "bench") return lucerna::cli::bench(rest);
             if (command == "import") return lucerna::cli::importModelCommand(rest);
+            if (command == "standards") return lucerna::cli::standards(rest);
             return lucerna::cli::info(rest);
         }
         if (command == "-h" || command == "--help" || command == "help") {

@@ -1,5 +1,6 @@
 #include "core/scene.h"
 #include "core/goniometric_distribution.h"
+#include "core/number_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -103,6 +104,13 @@ MaintenanceRange maintenanceRange(const Scene& scene) {
     if (factors.empty()) return {};
     const auto [lo, hi] = std::minmax_element(factors.begin(), factors.end());
     return {*lo, *hi};
+}
+
+std::string describeMaintenance(const MaintenanceRange& range) {
+    if (!range.maintained()) return "values of the new installation (no maintenance factor)";
+    if (range.lowest == range.highest) return "maintained values (maintenance factor " + fixedNumber(range.lowest, 2) + ")";
+    return "maintained values (maintenance factors " + fixedNumber(range.lowest, 2) + " to " +
+           fixedNumber(range.highest, 2) + ")";
 }
 
 SceneSnapshot sceneAsRendered(SceneSnapshot scene) {

@@ -272,6 +272,9 @@ struct MaintenanceRange {
     bool maintained() const { return lowest != 1 || highest != 1; }
 };
 MaintenanceRange maintenanceRange(const Scene& scene);
+// Which values a figure is: "maintained values (maintenance factor 0.80)", "... (maintenance
+// factors 0.72 to 0.80)" or "values of the new installation (no maintenance factor)".
+std::string describeMaintenance(const MaintenanceRange& range);
 
 // The scene as the renderers see it (every backend, the preview, the grids and the illuminance
 // layer): withoutLightsSwitchedOff, then each electric light's emission (point, spot,

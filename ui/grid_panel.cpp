@@ -151,6 +151,7 @@ void GridPanel::compute() {
     cancel();
     SceneSnapshot scene = doc_->snapshot();
     dfPerLux_.reset();
+    maintenance_ = QString::fromStdString(describeMaintenance(maintenanceRange(*scene)));
     if (quantity_->currentIndex() == 1) {
         const Scene& s = *scene;
         medianGiven_ = s.site && s.site->medianDiffuseIlluminance;
@@ -190,7 +191,7 @@ void GridPanel::compute() {
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
                           latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
-        const RenderScene renderScene(withoutLightsSwitchedOff(scene), 8, 8);  // the camera is unused
+        const RenderScene renderScene(sceneAsRendered(scene), 8, 8);  // the camera is unused
         computeGridIlluminance(renderScene, points, normal, settings, ctx, [&](const GridResult& r) {
             latest->publish(std::make_shared<const GridResult>(r));
         });
@@ -278,6 +279,7 @@ void GridPanel::showResult() {
                      .arg(s.minimum, 0, 'f', 1)
                      .arg(s.maximum, 0, 'f', 1)
                      .arg(s.uniformity, 0, 'f', 2);
+        lines << maintenance_;
     }
     if (s.excluded > 0)
         lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());
