@@ -76,6 +76,11 @@ scene = {
     "lights": [{"name": "sun", "type": "sun", "illuminance": 70000, "time": "2026-03-21T11:00"}],
     "site": {"latitude": 48.857, "longitude": 2.352, "utc_offset": 1},
     "sky": {"model": "cie_general", "cie_type": 12, "horizontal_illuminance": 12000, "ground_reflectance": 0.2},
+    # What the report checks (README, "Task areas"): each desk top, just above it.
+    "task_areas": [{"name": "desk %d" % (i + 1), "corner": [x0, 0.76, round(z0 + 0.8, 3)], "u": [1.6, 0, 0], "v": [0, 0, -0.8],
+                    "activity": "5.26.2"} for i, (x0, z0) in enumerate([(0.9, 2.6), (3.5, 2.6)])],
+    "project": {"name": "Daylit office", "client": "Lucerna example", "designer": "Lucerna",
+                "notes": "6 x 4.5 m office, two south windows, 21 March 11:00 in Paris (bench/make_daylit_office.py)."},
 }
 out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "resources/scenes/daylit_office.json")
 out.write_text(json.dumps(scene, indent=1) + "\n")

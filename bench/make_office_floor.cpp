@@ -301,7 +301,17 @@ std::string luminaireScene(const std::vector<Part>& parts) {
           << (m.panel ? "" : ", \"rotation\": 90") << ", \"lumens\": " << num(m.panel ? kPanelLumens : kLinearLumens, 0)
           << ", \"temperature\": " << num(kTemperatureK, 0) << "}" << (i + 1 < ms.size() ? ",\n" : "\n");
     }
-    s << "  ]\n}\n";
+    // What the report checks (README, "Task areas"): two desk clusters and a meeting table at
+    // the height of their tops, with EN 12464-1's activities; observers by default.
+    s << "  ],\n  \"task_areas\": [\n"
+         "    {\"name\": \"desk cluster by the west wall\", \"corner\": [2, 0.75, 3.315], \"u\": [3.2, 0, 0], "
+         "\"v\": [0, 0, -1.63], \"activity\": \"5.26.2\"},\n"
+         "    {\"name\": \"desk cluster in the middle\", \"corner\": [16.4, 0.75, 9.715], \"u\": [3.2, 0, 0], "
+         "\"v\": [0, 0, -1.63], \"activity\": \"5.26.2\"},\n"
+         "    {\"name\": \"meeting table 1\", \"corner\": [3, 0.76, 18.6], \"u\": [3.6, 0, 0], \"v\": [0, 0, -1.2], "
+         "\"activity\": \"5.26.5\"}\n"
+         "  ],\n  \"project\": {\"name\": \"Office floor, level 3\", \"client\": \"Lucerna example\", "
+         "\"designer\": \"Lucerna\", \"notes\": \"Open-plan office, 36 x 21.6 m, 108 luminaires (bench/make_office_floor.cpp).\"}\n}\n";
     return s.str();
 }
 

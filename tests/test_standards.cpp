@@ -192,6 +192,10 @@ void TestStandards::maintenanceFactorScalesElectricLightOnly() {
     QCOMPARE(rendered->findMaterial("panel")->radiance.x, 1.6);  // emitters take the scene's
     QCOMPARE(rendered->findMaterial("grey")->albedo.x, 0.5);
     QCOMPARE(maintenanceFactor(maintained, maintained.lights[2]), 1.0);
+    Scene daylit = parse(sceneJson());
+    for (Light& l : daylit.lights) l.on = l.type == LightType::Sun;
+    daylit.objects.pop_back();  // the emitter panel
+    QCOMPARE(describeMaintenance(maintenanceRange(daylit)), std::string("daylight only (no electric light to maintain)"));
     // UGR's scene: the new installation.
     QVERIFY(!maintenanceRange(withoutMaintenance(maintained)).maintained());
 }
