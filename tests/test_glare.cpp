@@ -133,6 +133,18 @@ std::string roomScene(double X, double Y, double H, const UgrReflectances& rho, 
     return s.str();
 }
 
+// Wide in the C0-C180 plane, narrow in C90-C270, a 1.2 x 0.2 m opening (length along C0):
+// crosswise and endwise differ.
+void writeLinearLuminaire(const QString& path) {
+    const Intensity I = [](double c, double g) {
+        const double across = std::abs(std::cos(c * kDeg));
+        return g <= 90 ? 300 * std::pow(std::cos(g * kDeg), 0.5 + 1.5 * (1 - across)) : 0.0;
+    };
+    std::vector<double> horizontal;
+    for (int c = 0; c <= 360; c += 15) horizontal.push_back(c);
+    writeText(path, iesText(I, 0.2, 1.2, 0, horizontal));
+}
+
 struct CommandOutput {
     int status = -1;
     QString out, err;
@@ -317,15 +329,7 @@ private slots:
     // at eye level, the luminaires H above it, the eye at the middle of one wall looking along
     // the room), crosswise and endwise, within 1 UGR unit.
     void tabularAgainstObserverInTheRoom() {
-        // Wide across C0-C180, narrow across C90-C270, a 1.2 x 0.2 m opening (length along C0):
-        // crosswise and endwise differ.
-        const Intensity I = [](double c, double g) {
-            const double across = std::abs(std::cos(c * kDeg));
-            return g <= 90 ? 300 * std::pow(std::cos(g * kDeg), 0.5 + 1.5 * (1 - across)) : 0.0;
-        };
-        std::vector<double> horizontal;
-        for (int c = 0; c <= 360; c += 15) horizontal.push_back(c);
-        writeText(dir_.filePath("linear.ies"), iesText(I, 0.2, 1.2, 0, horizontal));
+        writeLinearLuminaire(dir_.filePath("linear.ies"));
         const GoniometricDistribution d = loadLuminaireFile(dir_.filePath("linear.ies").toStdString());
         UgrLuminaire luminaire;
         luminaire.distribution = &d;
@@ -409,6 +413,88 @@ private slots:
         const CommandOutput badFile = runLucerna({"glare", "--table", dir_.filePath("one.json")});
         QCOMPARE(badFile.status, 2);
         QVERIFY(badFile.err.contains("not a luminaire file") && badFile.err.count('\n') == 1);
+    }
+
+    // The dock's UGR grid on a room of 16 luminaires: the observers over the grid's points at
+    // the seated eye height, looking along -v (+z), each cell the UGR evaluateGlare gives at that
+    // eye (within the two error bars) in its colour; the CSV; Cancel.
+    void ugrGridThroughTheDock() {
+        const QString path = dir_.filePath("dock.json");
+        writeLinearLuminaire(dir_.filePath("linear.ies"));
+        writeText(path, roomScene(8, 8, 3, kUgrReflectanceSets[0], 2, "linear.ies", 270, 3000));
+        MainWindow w(path);
+        w.resize(1400, 900);
+        w.show();
+        GridPanel* panel = w.gridPanel();
+        w.findChild<QDockWidget*>("gridDock")->raise();
+        child<QDoubleSpinBox>(*panel, "gridBorder")->setValue(1.0);
+        child<QDoubleSpinBox>(*panel, "gridSpacing")->setValue(2.0);
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(3.0);
+        auto* quantity = child<QComboBox>(*panel, "gridQuantity");
+        QCOMPARE(quantity->count(), 3);
+        QVERIFY(!child<QComboBox>(*panel, "gridEyeHeight")->isEnabled());
+        quantity->setCurrentIndex(2);
+        QVERIFY(child<QComboBox>(*panel, "gridEyeHeight")->isEnabled());
+        QVERIFY(!child<QDoubleSpinBox>(*panel, "gridHeight")->isEnabled());
+        child<QComboBox>(*panel, "gridView")->setCurrentIndex(3);  // -v: +z in a work plane
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        const auto result = panel->glareResult();
+        QVERIFY(result && result->converged);
+        const GridLayout& layout = panel->layout();
+        QCOMPARE(layout.nu * layout.nv, 9);  // 6 x 6 m at 2 m
+        QCOMPARE(result->observers.size(), size_t(9));
+        QCOMPARE(panel->observerView().normalized(), V3d(0, 0, 1));
+        const Scene scene = loadScene(path.toStdString());
+        auto* table = child<QTableWidget>(*panel, "gridTable");
+        int rated = 0;
+        for (int j = 0; j < layout.nv; ++j)
+            for (int i = 0; i < layout.nu; ++i) {
+                const size_t k = size_t(j * layout.nu + i);
+                const V3d eye = panel->observers()[k];
+                QVERIFY(std::abs(eye.y - 1.2) < 1e-12);
+                QVERIFY(std::abs(eye.x - layout.points[k].x) < 1e-12 && std::abs(eye.z - layout.points[k].z) < 1e-12);
+                const GlareResult& shown = result->observers[k];
+                QTableWidgetItem* item = table->item(layout.nv - 1 - j, i);
+                QVERIFY(item);
+                if (!shown.ugr) {
+                    QCOMPARE(item->text(), QString("-"));
+                    continue;
+                }
+                ++rated;
+                QCOMPARE(item->text(), QString::number(*shown.ugr, 'f', 1));
+                QCOMPARE(item->background().color(), ugrColour(*shown.ugr));
+                if (k != 4) continue;  // the middle one, checked on its own
+                TaskContext ctx{CancellationToken()};
+                GlareSettings settings;
+                settings.seed = 7;
+                const GlareResult alone = evaluateGlare(scene, GlareObserver{eye, V3d(0, 0, 1)}, settings, ctx);
+                QVERIFY(alone.ugr);
+                const double bars = 2 * std::hypot(alone.ugrErrorBar, shown.ugrErrorBar) + 0.05;
+                QVERIFY2(std::abs(*alone.ugr - *shown.ugr) < bars,
+                         qPrintable(QString("dock %1, alone %2").arg(*shown.ugr).arg(*alone.ugr)));
+            }
+        QVERIFY(rated >= 6);  // those near the far wall may see none
+        QVERIFY(child<QLabel>(*panel, "gridFigures")->text().contains("UGR max"));
+        const QString csv = dir_.filePath("ugr.csv");
+        panel->exportCsv(csv);
+        QFile f(csv);
+        QVERIFY(f.open(QIODevice::ReadOnly));
+        const QStringList lines = QString::fromUtf8(f.readAll()).split('\n', Qt::SkipEmptyParts);
+        QCOMPARE(lines.size(), 10);
+        QCOMPARE(lines[0], QString("i,j,x,y,z,ugr,error,background_cd_m2"));
+        QTest::qWait(100);
+        w.grab().save(dir_.filePath("ugr_dock.png"));
+        if (qEnvironmentVariableIsSet("LUCERNA_GLARE_SCREENSHOT")) w.grab().save(qEnvironmentVariable("LUCERNA_GLARE_SCREENSHOT"));
+
+        // Cancel: a target it cannot reach soon, stopped through the button.
+        child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(0.1);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+        QVERIFY(panel->isComputing());
+        QTRY_VERIFY_WITH_TIMEOUT(panel->glareResult() != nullptr, kTimeout);
+        QTest::mouseClick(child<QPushButton>(*panel, "gridCancel"), Qt::LeftButton);
+        QVERIFY(!panel->isComputing());
+        QVERIFY(child<QLabel>(*panel, "gridStatus")->text().startsWith("Cancelled"));
     }
 
 private:
