@@ -308,6 +308,26 @@ private slots:
         QVERIFY(back.sources.empty());
     }
 
+    // A task area without observers: four at the midpoints of its sides, at eye height above
+    // the floor, looking horizontally at its centre.
+    void defaultObserversOfATaskArea() {
+        TaskArea area;
+        area.grid.corner = V3d(1000, 750, 0);  // millimetres
+        area.grid.edgeU = V3d(4000, 0, 0);
+        area.grid.edgeV = V3d(0, 0, -2000);
+        const std::vector<GlareObserver> o = defaultObservers(area, 100, 0.001);
+        QCOMPARE(o.size(), size_t(4));
+        const V3d expected[4][2] = {{V3d(3000, 1300, 0), V3d(0, 0, -1)},
+                                    {V3d(5000, 1300, -1000), V3d(-1, 0, 0)},
+                                    {V3d(3000, 1300, -2000), V3d(0, 0, 1)},
+                                    {V3d(1000, 1300, -1000), V3d(1, 0, 0)}};
+        for (size_t i = 0; i < 4; ++i) {
+            QVERIFY2((o[i].position - expected[i][0]).length() < 1e-9, qPrintable(QString::number(i)));
+            QVERIFY((o[i].view - expected[i][1]).length() < 1e-12);
+        }
+        QCOMPARE(defaultObservers(area, 100, 0.001, 1.7)[0].position.y, 1800.0);
+    }
+
     // The box-room background model against its view factors' closed forms.
     void roomModelViewFactors() {
         QVERIFY(std::abs(opposedRectanglesViewFactor(1, 1, 1) - 0.19982) < 1e-5);  // unit squares 1 apart
