@@ -42,8 +42,9 @@ struct GlarePlacement {
     bool inField() const;
 };
 
-// The placement of a point seen from an eye looking along `lineOfSight` (any vector with a
-// horizontal part; only that part counts), both points in scene units scaled by metersPerUnit.
+// The placement of a point seen from an eye looking along `lineOfSight` (only its horizontal part
+// counts; check it has one with horizontalLineOfSight, a vertical one is taken as -z), both
+// points in scene units scaled by metersPerUnit.
 GlarePlacement placeInView(const V3d& eye, const V3d& lineOfSight, const V3d& point, double metersPerUnit);
 // The unit horizontal line of sight of a view direction (y up); nothing when it has no horizontal
 // part (looking straight up or down, or zero).
