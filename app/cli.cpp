@@ -558,6 +558,10 @@ void printUsage() {
                  "               the CIE overcast sky instead, with EN 17037's daylight provision\n"
                  "               [--task-area NAME]   the scene's task area, checked against its EN 12464-1 activity\n"
                  "  lucerna standards                         the bundled EN 12464-1 activities\n"
+                 "  lucerna glare SCENE.json --observer X,Y,Z --view X,Y,Z [--method M] [--error F] [--time SECONDS]\n"
+                 "                [--seed N] [--threads N]   discomfort glare (UGR, CIE 117) at an eye, per luminaire\n"
+                 "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"
+                 "                the luminaire's UGR table by the tabular method (CIE 190's layout)\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";

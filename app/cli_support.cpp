@@ -55,6 +55,18 @@ void catchInterrupts() {
 bool interrupted() { return gInterrupted != 0; }
 int interruptCount() { return int(gInterrupted); }
 
+Imath::V3d parseVector(const std::string& option, const std::string& text) {
+    Imath::V3d v;
+    size_t begin = 0;
+    for (int i = 0; i < 3; ++i) {
+        const size_t end = i < 2 ? text.find(',', begin) : text.size();
+        if (end == std::string::npos) throw UsageError(option + ": expected X,Y,Z, got '" + text + "'");
+        v[i] = parseNumber<double>(option, text.substr(begin, end - begin), -1e30, 1e30);
+        begin = end + 1;
+    }
+    return v;
+}
+
 std::string formatSeconds(double s) {
     char buf[32];
     if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);

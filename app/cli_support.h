@@ -2,6 +2,8 @@
 // What the headless commands share: the one-line usage error (exit status 2), number parsing
 // for options, the Ctrl-C flag, and the wrapper that turns exceptions into exit statuses.
 
+#include <Imath/ImathVec.h>
+
 #include <charconv>
 #include <exception>
 #include <functional>
@@ -49,6 +51,9 @@ void exitOnInterrupt(const char* message);
 // Refuses (UsageError, exit 2) an output path that cannot be written, before any work is done:
 // its folder missing, not a folder or not writable, or the path itself a folder.
 void checkOutputPath(const std::string& path);
+
+// "X,Y,Z" as three numbers; UsageError naming `option` otherwise.
+Imath::V3d parseVector(const std::string& option, const std::string& text);
 
 // "12.3 s" or "4 min 05 s".
 std::string formatSeconds(double seconds);

@@ -37,18 +37,6 @@ struct GridArgs {
     std::string taskArea;                           // the scene's task area (README, "Task areas")
 };
 
-V3d parseVector(const std::string& option, const std::string& text) {
-    V3d v;
-    size_t begin = 0;
-    for (int i = 0; i < 3; ++i) {
-        const size_t end = i < 2 ? text.find(',', begin) : text.size();
-        if (end == std::string::npos) throw UsageError(option + ": expected X,Y,Z, got '" + text + "'");
-        v[i] = parseNumber<double>(option, text.substr(begin, end - begin), -1e30, 1e30);
-        begin = end + 1;
-    }
-    return v;
-}
-
 GridArgs parseGridArgs(const std::vector<std::string>& args) {
     GridArgs g;
     for (size_t i = 0; i < args.size(); ++i) {

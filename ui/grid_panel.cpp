@@ -26,6 +26,7 @@ namespace lucerna {
 
 namespace {
 constexpr int kAutoMethod = -1;  // the estimator box's item for auto
+enum Quantity { kIlluminance = 0, kDaylightFactor = 1, kUgr = 2 };  // the quantity box's items
 
 QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
     auto* box = new QDoubleSpinBox(parent);
@@ -58,6 +59,20 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     quantity_->setItemData(1, tr("Under the CIE overcast sky alone, sun and electric lights off (SPEC.md section 5), "
                                  "with EN 17037's daylight provision"),
                            Qt::ToolTipRole);
+    quantity_->addItem(tr("UGR (discomfort glare)"));
+    quantity_->setItemData(kUgr, tr("An observer over each point at eye height, looking along the grid (CIE 117), "
+                                    "for the new installation"),
+                           Qt::ToolTipRole);
+    eyeHeight_ = new QComboBox(this);
+    eyeHeight_->setObjectName("gridEyeHeight");
+    eyeHeight_->addItem(tr("Seated, 1.2 m"), 1.2);
+    eyeHeight_->addItem(tr("Standing, 1.7 m"), 1.7);
+    viewAlong_ = new QComboBox(this);
+    viewAlong_->setObjectName("gridView");
+    viewAlong_->addItem(tr("+u (along the grid's first edge)"), int(GridViewDirection::PlusU));
+    viewAlong_->addItem(tr("-u"), int(GridViewDirection::MinusU));
+    viewAlong_->addItem(tr("+v (along its second edge)"), int(GridViewDirection::PlusV));
+    viewAlong_->addItem(tr("-v"), int(GridViewDirection::MinusV));
     compute_ = new QPushButton(tr("Compute"), this);
     compute_->setObjectName("gridCompute");
     cancel_ = new QPushButton(tr("Cancel"), this);
@@ -102,6 +117,8 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     form->addRow(tr("Error bar (95%)"), target_);
     form->addRow(tr("Estimator"), method_);
     form->addRow(tr("Quantity"), quantity_);
+    form->addRow(tr("UGR observers' eyes"), eyeHeight_);
+    form->addRow(tr("UGR observers look"), viewAlong_);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(compute_);
     buttons->addWidget(cancel_);
@@ -120,8 +137,10 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     connect(draw_, &QPushButton::clicked, this, &GridPanel::drawRequested);
     connect(wholeRoom_, &QPushButton::clicked, this, &GridPanel::useWholeRoom);
     useWholeRoom();
+    connect(quantity_, &QComboBox::currentIndexChanged, this, &GridPanel::quantityChanged);
+    quantityChanged();
     connect(doc_, &Document::changed, this, [this] {
-        if (shown_ && !stale_) {
+        if ((shown_ || shownGlare_) && !stale_) {
             stale_ = true;
             status_->setText(tr("The scene changed since this result: Compute again to update it."));
         }
@@ -131,6 +150,13 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
 }
 
 GridPanel::~GridPanel() { cancel(); }
+
+void GridPanel::quantityChanged() {
+    const bool ugr = quantity_->currentIndex() == kUgr;
+    eyeHeight_->setEnabled(ugr);
+    viewAlong_->setEnabled(ugr);
+    height_->setEnabled(!ugr);  // the eyes stand at their own height above the floor
+}
 
 void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
     drawn_ = Drawn{a, normal, b};
@@ -152,7 +178,7 @@ void GridPanel::compute() {
     SceneSnapshot scene = doc_->snapshot();
     dfPerLux_.reset();
     maintenance_ = QString::fromStdString(describeMaintenance(maintenanceRange(*scene)));
-    if (quantity_->currentIndex() == 1) {
+    if (quantity_->currentIndex() == kDaylightFactor) {
         const Scene& s = *scene;
         medianGiven_ = s.site && s.site->medianDiffuseIlluminance;
         medianDiffuseIlluminance_ = medianGiven_ ? *s.site->medianDiffuseIlluminance : kDefaultMedianDiffuseIlluminance;
@@ -179,13 +205,20 @@ void GridPanel::compute() {
         status_->setText(QString::fromStdString(e.what()));
         return;
     }
+    shown_.reset();
+    shownGlare_.reset();
+    latest_.reset();
+    latestGlare_.reset();
+    if (quantity_->currentIndex() == kUgr) {
+        computeUgr(scene, grid);
+        return;
+    }
     GridSettings settings;
     const int method = method_->currentData().toInt();
     settings.autoMethod = method == kAutoMethod;
     if (!settings.autoMethod) settings.method = GridMethod(method);
     settings.targetRelativeError = target_->value() / 100.0;
     latest_ = std::make_shared<Latest<GridResult>>();
-    shown_.reset();
     shownVersion_ = 0;
     stale_ = false;
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
@@ -203,6 +236,42 @@ void GridPanel::compute() {
     poll_.start();
 }
 
+void GridPanel::computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid) {
+    if (std::abs(grid.normal().y) < 0.7) {
+        status_->setText(tr("UGR needs a horizontal grid (the observers stand over it): draw it on a floor or a table"));
+        return;
+    }
+    eyeHeightM_ = eyeHeight_->currentData().toDouble();
+    eyes_ = observerPositions(layout_, sceneBounds(*scene).lo.y, scene->metersPerUnit, eyeHeightM_);
+    const auto along = GridViewDirection(viewAlong_->currentData().toInt());
+    view_ = gridViewDirection(grid, along);
+    viewLabel_ = along == GridViewDirection::PlusU    ? tr("along +u")
+                 : along == GridViewDirection::MinusU ? tr("along -u")
+                 : along == GridViewDirection::PlusV  ? tr("along +v")
+                                                      : tr("along -v");
+    const V3d toward = view_.normalized();
+    viewLabel_ += tr(", toward (%1, %2, %3)").arg(toward.x, 0, 'g', 3).arg(toward.y, 0, 'g', 3).arg(toward.z, 0, 'g', 3);
+    GlareSettings settings;
+    const int method = method_->currentData().toInt();
+    if (method != kAutoMethod) settings.backgroundMethod = GridMethod(method);  // auto: path
+    settings.targetRelativeError = target_->value() / 100.0;
+    latestGlare_ = std::make_shared<Latest<GlareGridResult>>();
+    shownVersion_ = 0;
+    stale_ = false;
+    job_ = tasks_.submit([scene, eyes = eyes_, view = view_, settings, latest = latestGlare_,
+                          gate = gate_.counter()](TaskContext& ctx) {
+        const YieldGate::Scope hold(gate);
+        evaluateGlareGrid(*scene, eyes, view, settings, ctx, [&](const GlareGridResult& r) {
+            latest->publish(std::make_shared<const GlareGridResult>(r));
+        });
+    });
+    compute_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setValue(0);
+    status_->setText(tr("Computing UGR for %1 x %2 observers...").arg(layout_.nu).arg(layout_.nv));
+    poll_.start();
+}
+
 void GridPanel::cancel() {
     if (!job_) return;
     job_->cancel();
@@ -211,7 +280,8 @@ void GridPanel::cancel() {
     poll_.stop();
     compute_->setEnabled(true);
     cancel_->setEnabled(false);
-    if (shown_ && !shown_->converged) status_->setText(tr("Cancelled: the figures are those of the last pass."));
+    if ((shown_ && !shown_->converged) || (shownGlare_ && !shownGlare_->converged))
+        status_->setText(tr("Cancelled: the figures are those of the last pass."));
 }
 
 void GridPanel::poll() {
@@ -221,10 +291,15 @@ void GridPanel::poll() {
     // before it finishes, so a job seen finished has nothing left to publish (read the other way
     // round, a pass published in between would never be shown).
     const bool jobDone = job_->isFinished();
-    if (latest_->version() != shownVersion_) {
+    if (latest_ && latest_->version() != shownVersion_) {
         shownVersion_ = latest_->version();
         shown_ = latest_->get();
         showResult();
+    }
+    if (latestGlare_ && latestGlare_->version() != shownVersion_) {
+        shownVersion_ = latestGlare_->version();
+        shownGlare_ = latestGlare_->get();
+        showGlareResult();
     }
     if (!jobDone) return;
     poll_.stop();
@@ -239,6 +314,11 @@ void GridPanel::poll() {
     cancel_->setEnabled(false);
     progress_->setValue(1000);
     if (!error.isEmpty()) status_->setText(tr("The calculation failed: %1").arg(error));
+    else if (shownGlare_)
+        status_->setText(tr("Done: %1 passes of the background, %2 s%3.")
+                             .arg(shownGlare_->passes)
+                             .arg(shownGlare_->seconds, 0, 'f', 1)
+                             .arg(shownGlare_->converged ? QString() : tr(" (error target not reached)")));
     else if (shown_)
         status_->setText(tr("Done: %1 passes, %2 samples per point, %3 s.")
                              .arg(shown_->passes)
@@ -326,7 +406,19 @@ void GridPanel::showResult() {
     emit resultChanged();
 }
 
+void GridPanel::showGlareResult() {
+    if (!shownGlare_ || shownGlare_->observers.size() != layout_.points.size()) return;
+    figures_->setText(ugrFigures(*shownGlare_, layout_, eyeHeightM_, viewLabel_).join('\n'));
+    fillUgrTable(*table_, layout_, *shownGlare_);
+    export_->setEnabled(true);
+    emit resultChanged();
+}
+
 void GridPanel::exportCsv(const QString& path) const {
+    if (shownGlare_) {
+        writeTextAtomically(path.toStdString(), ugrCsv(layout_, eyes_, *shownGlare_));
+        return;
+    }
     if (!shown_) throw std::runtime_error("no grid result to export");
     writeTextAtomically(path.toStdString(),
                         gridCsv(layout_, shown_->lux, shown_->errorLux, shown_->insideGeometry, shown_->errorBarUnknown,

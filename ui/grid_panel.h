@@ -8,11 +8,15 @@
 // again on the current scene. The calculation is a foreground request: it runs in a task arena of
 // its own (in the converging render's, whose job never ends, it could wait behind the render's
 // passes indefinitely) and holds the yield gate, so the render waits until it is done.
+// The quantity UGR puts an observer over each point, at eye height above the floor (seated 1.2 m
+// or standing 1.7 m), all looking along one edge of the grid, and shows each one's UGR
+// (render/photometry/glare_evaluation.h, ui/ugr_grid.h).
 
 #include "core/calculation_grid.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/document.h"
+#include "ui/ugr_grid.h"
 #include "ui/yield_gate.h"
 
 #include <QTimer>
@@ -53,6 +57,11 @@ public:
     // With the quantity "Daylight factor", 100 / Eh,sky of the newest calculation (SPEC.md
     // section 5: it ran on the daylight-factor scene, and the result's lux times this is DF in %).
     std::optional<double> daylightFactorPerLux() const { return dfPerLux_; }
+    // With the quantity "UGR": the newest result (null before the first pass), the eyes and the
+    // view of the newest calculation.
+    std::shared_ptr<const GlareGridResult> glareResult() const { return shownGlare_; }
+    const std::vector<V3d>& observers() const { return eyes_; }
+    const V3d& observerView() const { return view_; }
 
 signals:
     // The user asked to draw the rectangle in the viewport (two clicks there).
@@ -63,12 +72,16 @@ signals:
 private:
     void poll();
     void showResult();
+    void showGlareResult();
+    void quantityChanged();
+    // The UGR grid's calculation over `grid` of `scene` (compute() with the quantity UGR).
+    void computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid);
     void exportClicked();
 
     Document* doc_;
     YieldGate gate_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
-    QComboBox *method_, *quantity_;
+    QComboBox *method_, *quantity_, *eyeHeight_, *viewAlong_;
     QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
     QProgressBar* progress_;
     QLabel *area_, *figures_, *status_;
@@ -91,6 +104,13 @@ private:
     QString maintenance_;  // which illuminance the result is: maintained or the new installation's
     double medianDiffuseIlluminance_ = 0;  // lx, for EN 17037's check (the site's, or the usual value)
     bool medianGiven_ = false;
+    // The UGR grid.
+    std::shared_ptr<Latest<GlareGridResult>> latestGlare_;
+    std::shared_ptr<const GlareGridResult> shownGlare_;
+    std::vector<V3d> eyes_;
+    V3d view_{1, 0, 0};
+    double eyeHeightM_ = 1.2;
+    QString viewLabel_;
 };
 
 }  // namespace lucerna
