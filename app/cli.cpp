@@ -562,6 +562,10 @@ void printUsage() {
                  "                [--seed N] [--threads N]   discomfort glare (UGR, CIE 117) at an eye, per luminaire\n"
                  "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"
                  "                the luminaire's UGR table by the tabular method (CIE 190's layout)\n"
+                 "  lucerna report SCENE.json -o OUT.pdf [--method M] [--error F] [--seed N] [--samples N]\n"
+                 "                 [--time SECONDS] [--spp N] [--threads N]\n"
+                 "                 the lighting design report: schedule, task areas (plan, figures, checks,\n"
+                 "                 UGR), renders and method; the grids as `grid` computes them\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";

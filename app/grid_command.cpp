@@ -266,10 +266,8 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     TaskSystem tasks(g.threads);
     std::optional<GridResult> result;
     auto job = tasks.submit([&](TaskContext& ctx) {
-        const RenderScene renderScene(sceneAsRendered(scene), 16, 16, nullptr,
-                                      g.settings.lightSelection);  // the camera is unused
-        if (ctx.isCancelled() && !processes) return;  // distributed, every rank goes to the exchanges
-        GridResult r = computeGridIlluminance(renderScene, layout.points, g.grid.normal(), g.settings, ctx);
+        // The report's path too (report/report_builder.cpp), so that their figures agree.
+        GridResult r = computeSceneGrid(scene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);
     });
     failure = nullptr;

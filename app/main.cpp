@@ -5,6 +5,7 @@
 #include "app/glare_command.h"
 #include "app/grid_command.h"
 #include "app/import_command.h"
+#include "app/report_command.h"
 #include "app/mpi_session.h"
 #include "core/resources.h"
 #include "ui/autosave.h"
@@ -52,6 +53,8 @@ int main(int argc, char** argv) {
             if (command == "glare") return lucerna::cli::glare(rest);
             return lucerna::cli::info(rest);
         }
+        // The PDF report makes its own QGuiApplication (its fonts need one) once its input is good.
+        if (command == "report") return lucerna::cli::report(rest, argc, argv);
         if (command == "-h" || command == "--help" || command == "help") {
             lucerna::cli::printUsage();
             return 0;

@@ -2,7 +2,8 @@
 """Writes resources/scenes/daylit_office.json: a 6 x 4.5 x 3 m office with two glazed windows in
 its south wall (+z; north is -z), desks, a cabinet and a shelf, under a CIE general clear sky
 (type 12) with the sun of 21 March at 11:00 in Paris. Walls are single surfaces (zero thickness);
-the window wall is cut around the openings; each opening holds one glazing pane."""
+the window wall is cut around the openings; each opening holds one glazing pane. With the project
+and EN 17037's reference plane as a task area, for the report."""
 import json, sys, pathlib
 
 W, D, H = 6.0, 4.5, 3.0            # x, z, y (m)
@@ -76,11 +77,12 @@ scene = {
     "lights": [{"name": "sun", "type": "sun", "illuminance": 70000, "time": "2026-03-21T11:00"}],
     "site": {"latitude": 48.857, "longitude": 2.352, "utc_offset": 1},
     "sky": {"model": "cie_general", "cie_type": 12, "horizontal_illuminance": 12000, "ground_reflectance": 0.2},
-    # What the report checks (README, "Task areas"): each desk top, just above it.
-    "task_areas": [{"name": "desk %d" % (i + 1), "corner": [x0, 0.76, round(z0 + 0.8, 3)], "u": [1.6, 0, 0], "v": [0, 0, -0.8],
-                    "activity": "5.26.2"} for i, (x0, z0) in enumerate([(0.9, 2.6), (3.5, 2.6)])],
-    "project": {"name": "Daylit office", "client": "Lucerna example", "designer": "Lucerna",
-                "notes": "6 x 4.5 m office, two south windows, 21 March 11:00 in Paris (bench/make_daylit_office.py)."},
+    # The report's cover and its task area (README, "Reports"): EN 17037's reference plane, 0.85 m
+    # above the floor less a 0.5 m band along the walls (u along z, v along x: it faces up).
+    "project": {"name": "Daylit office (bundled example)",
+                "notes": "6.0 x 4.5 m, ceiling 3.0 m; two glazed windows in the south wall (sill 0.9 m, head "
+                         "2.4 m, transmittance 0.7); Paris, 21 March 11:00, CIE clear sky type 12 with the sun."},
+    "task_areas": [{"name": "Reference plane", "corner": [0.5, 0.85, 0.5], "u": [0, 0, 3.5], "v": [5.0, 0, 0]}],
 }
 out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "resources/scenes/daylit_office.json")
 out.write_text(json.dumps(scene, indent=1) + "\n")

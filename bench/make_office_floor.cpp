@@ -7,7 +7,7 @@
 // - meshes/office/*.obj: one file per material (floor, ceiling, walls, columns, desks,
 //   partitions, meeting tables, cabinets), shared by both scenes;
 // - office_floor.json: 84 panels over the open-plan desks and 24 linear pendants over the meeting
-//   zone (108 luminaires, 4000 K);
+//   zone (108 luminaires, 4000 K), the project and two task areas for its report;
 // - office_floor_points.json: the same geometry with an isotropic point light of the same flux and
 //   colour in place of each luminaire, given as `intensity` only (what ../shared/tools/cycles_ref.sh
 //   converts), hung 0.4 m below the ceiling so that their upward half washes the ceiling instead
@@ -289,6 +289,22 @@ std::vector<Mount> mounts() {
     return m;
 }
 
+// The report's cover and task areas (README, "Reports"): the desks' zone and the meeting zone at
+// the desks' height, each with its EN 12464-1 activity; u along z and v along x, so that the
+// grids face up.
+std::string reportKeys() {
+    return "  \"project\": {\"name\": \"Open-plan office floor (bundled example)\",\n"
+           "              \"notes\": \"36.0 x 21.6 m, ceiling 3.0 m; reflectances ceiling 0.8, walls 0.6, floor 0.2. "
+           "84 recessed panels over the desks, 24 direct/indirect pendants over the meeting zone, 4000 K. "
+           "The photometric files are written by bench/make_office_floor.cpp: they are not measured products.\"},\n"
+           "  \"task_areas\": [\n"
+           "    {\"name\": \"Open-plan desks\", \"corner\": [1.5, 0.75, 1.2], \"u\": [0, 0, 12.2], \"v\": [33, 0, 0],\n"
+           "     \"spacing\": 1, \"activity\": \"5.26.2\"},\n"
+           "    {\"name\": \"Meeting zone\", \"corner\": [2.5, 0.75, 16.9], \"u\": [0, 0, 2.2], \"v\": [19, 0, 0],\n"
+           "     \"spacing\": 0.5, \"activity\": \"5.26.5\"}\n"
+           "  ]\n";
+}
+
 std::string luminaireScene(const std::vector<Part>& parts) {
     std::ostringstream s;
     s << sceneHead(parts);
@@ -301,17 +317,7 @@ std::string luminaireScene(const std::vector<Part>& parts) {
           << (m.panel ? "" : ", \"rotation\": 90") << ", \"lumens\": " << num(m.panel ? kPanelLumens : kLinearLumens, 0)
           << ", \"temperature\": " << num(kTemperatureK, 0) << "}" << (i + 1 < ms.size() ? ",\n" : "\n");
     }
-    // What the report checks (README, "Task areas"): two desk clusters and a meeting table at
-    // the height of their tops, with EN 12464-1's activities; observers by default.
-    s << "  ],\n  \"task_areas\": [\n"
-         "    {\"name\": \"desk cluster by the west wall\", \"corner\": [2, 0.75, 3.315], \"u\": [3.2, 0, 0], "
-         "\"v\": [0, 0, -1.63], \"activity\": \"5.26.2\"},\n"
-         "    {\"name\": \"desk cluster in the middle\", \"corner\": [16.4, 0.75, 9.715], \"u\": [3.2, 0, 0], "
-         "\"v\": [0, 0, -1.63], \"activity\": \"5.26.2\"},\n"
-         "    {\"name\": \"meeting table 1\", \"corner\": [3, 0.76, 18.6], \"u\": [3.6, 0, 0], \"v\": [0, 0, -1.2], "
-         "\"activity\": \"5.26.5\"}\n"
-         "  ],\n  \"project\": {\"name\": \"Office floor, level 3\", \"client\": \"Lucerna example\", "
-         "\"designer\": \"Lucerna\", \"notes\": \"Open-plan office, 36 x 21.6 m, 108 luminaires (bench/make_office_floor.cpp).\"}\n}\n";
+    s << "  ],\n" << reportKeys() << "}\n";
     return s.str();
 }
 

@@ -20,7 +20,7 @@ SceneBounds sceneBounds(const Scene& scene) {
         if (o.worldMesh)
             for (const V3d& v : o.worldMesh->vertices) add(v);
     for (const Light& l : scene.lights)
-        if (l.type != LightType::Directional) add(l.position);
+        if (l.type != LightType::Directional && l.type != LightType::Sun) add(l.position);  // at infinity
     SceneBounds b;
     if (!any) return b;
     b.lo = lo;

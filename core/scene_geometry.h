@@ -14,7 +14,8 @@ struct SceneBounds {
     V3d lo{0, 0, 0}, hi{1, 1, 1}, center{0.5, 0.5, 0.5};
     double radius = 1;
 };
-// Bounds of all world meshes (and light positions); a unit box when the scene is empty.
+// Bounds of all world meshes and the positions of lights that have one (not directional lights
+// or suns, at infinity); a unit box when the scene is empty.
 SceneBounds sceneBounds(const Scene& scene);
 
 // The object that owns triangle `tri` in RenderScene's numbering (objects in order, those without

@@ -5,7 +5,7 @@ SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO=sudo; fi
 packages=(cmake make g++ pkg-config qt6-base-dev libqt6opengl6-dev libembree-dev libtbb-dev
           libopenmesh-dev libopenexr-dev openexr libassimp-dev libegl1-mesa-dev libgl1-mesa-dri xvfb xauth
-          libopenmpi-dev openmpi-bin)
+          libopenmpi-dev openmpi-bin poppler-utils)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

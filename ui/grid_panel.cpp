@@ -224,8 +224,8 @@ void GridPanel::compute() {
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
                           latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
-        const RenderScene renderScene(sceneAsRendered(scene), 8, 8);  // the camera is unused
-        computeGridIlluminance(renderScene, points, normal, settings, ctx, [&](const GridResult& r) {
+        // As `lucerna grid` and the report compute it (the maintained values among others).
+        computeSceneGrid(scene, points, normal, settings, ctx, [&](const GridResult& r) {
             latest->publish(std::make_shared<const GridResult>(r));
         });
     });

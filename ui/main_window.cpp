@@ -19,6 +19,7 @@
 #include "ui/file_dialogs.h"
 #include "ui/grid_panel.h"
 #include "ui/image_export.h"
+#include "ui/report_export.h"
 #include "ui/layout_state.h"
 #include "ui/light_properties.h"
 #include "ui/light_set_properties.h"
@@ -75,6 +76,10 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     viewArea_->setObjectName("viewArea");
     setCentralWidget(viewArea_);
     createDocks();
+    report_ = std::make_unique<ReportExport>(tasks_, gate_, this);
+    connect(report_.get(), &ReportExport::finished, this, [this](bool, const QString& message) {
+        statusBar()->showMessage(message, 8000);
+    });
     createMenus();
     previewInfo_ = new QLabel(this);
     statusBar()->addPermanentWidget(previewInfo_);
@@ -109,6 +114,7 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
 
 MainWindow::~MainWindow() {
     // The jobs first, while everything they report to is still there.
+    report_.reset();
     render_.reset();
     preview_.reset();
 }
@@ -276,6 +282,13 @@ void MainWindow::createMenus() {
     add(file, tr("Export P&NG..."), "actionExportPng", QKeySequence(tr("Ctrl+Shift+E")), [this] {
         const QString path = dialogs_->save(tr("Export the converged image as a picture"), tr("PNG (*.png)"));
         if (!path.isEmpty() && !exportPng(path)) QMessageBox::warning(this, tr("Export PNG"), lastError_);
+    });
+    add(file, tr("Export &Report..."), "actionExportReport", QKeySequence(tr("Ctrl+Shift+R")), [this] {
+        QString path = dialogs_->save(tr("Export the lighting design report"), tr("PDF (*.pdf)"));
+        if (path.isEmpty()) return;
+        if (!path.endsWith(QStringLiteral(".pdf"), Qt::CaseInsensitive)) path += QStringLiteral(".pdf");
+        if (!report_->start(doc_->snapshot(), QString::fromStdString(doc_->path()), path))
+            statusBar()->showMessage(tr("A report is being computed already"), 5000);
     });
     add(file, tr("&Import Mesh..."), "actionImportMesh", QKeySequence(tr("Ctrl+I")), [this] {
         const QString path = dialogs_->open(tr("Import a mesh"), tr("Meshes (*.obj *.ply *.off *.stl)"));

@@ -38,6 +38,7 @@ class PlanView;
 class PropertiesPanel;
 class RecentFilesMenu;
 class RenderPanel;
+class ReportExport;
 class ViewArea;
 class Viewport;
 
@@ -120,6 +121,7 @@ public:
     ViewArea* viewArea() const { return viewArea_; }
     CameraPanel* cameraPanel() const { return cameraPanel_; }
     DaylightPanel* daylightPanel() const { return daylightPanel_; }
+    ReportExport* reportExport() const { return report_.get(); }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -139,6 +141,7 @@ private:
     // After tasks_: their jobs run in its arena and end before it goes.
     std::unique_ptr<ConvergingRender> render_;
     std::unique_ptr<LivePreview> preview_;
+    std::unique_ptr<ReportExport> report_;  // File > Export Report
     Viewport* viewport_ = nullptr;
     PlanView* plan_ = nullptr;
     ViewArea* viewArea_ = nullptr;  // the viewport or the plan view

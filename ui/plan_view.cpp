@@ -4,8 +4,8 @@
 #include "core/scene_geometry.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
+#include "render/display/iso_lines.h"
 #include "ui/commands/light_commands.h"
-#include "ui/iso_lines.h"
 #include "ui/viewport.h"
 
 #include <QCheckBox>

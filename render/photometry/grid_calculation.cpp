@@ -90,4 +90,13 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     return computeGridByEstimator(scene, points, normal, settings, ctx, onPass, std::move(start));
 }
 
+GridResult computeSceneGrid(const SceneSnapshot& scene, const std::vector<V3d>& points, const V3d& normal,
+                            const GridSettings& settings, TaskContext& ctx,
+                            const std::function<void(const GridResult&)>& onPass) {
+    // The camera is unused: a small film.
+    const RenderScene renderScene(sceneAsRendered(scene), 16, 16, nullptr, settings.lightSelection);
+    if (ctx.isCancelled() && !settings.processes) return {};
+    return computeGridIlluminance(renderScene, points, normal, settings, ctx, onPass);
+}
+
 }  // namespace lucerna

@@ -94,4 +94,13 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
                                   const GridSettings& settings, TaskContext& ctx,
                                   const std::function<void(const GridResult&)>& onPass = {});
 
+// The grid of a scene as `lucerna grid` and the report compute it, so that their numbers agree
+// for the same settings: the scene as rendered (core/scene.h, sceneAsRendered: the lights
+// switched off left out, maintenance factors applied), compiled with settings.lightSelection,
+// then computeGridIlluminance. Cancelled before the calculation starts (and not distributed, where
+// every process goes on to the exchanges): an empty result.
+GridResult computeSceneGrid(const SceneSnapshot& scene, const std::vector<V3d>& points, const V3d& normal,
+                            const GridSettings& settings, TaskContext& ctx,
+                            const std::function<void(const GridResult&)>& onPass = {});
+
 }  // namespace lucerna

@@ -1,4 +1,4 @@
-#include "ui/iso_lines.h"
+#include "render/display/iso_lines.h"
 
 #include <cmath>
 

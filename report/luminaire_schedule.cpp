@@ -1,0 +1,143 @@
+#include "report/luminaire_schedule.h"
+
+#include "core/daylight.h"
+#include "core/goniometric_distribution.h"
+#include "core/light_output.h"
+#include "core/luminaire.h"
+#include "core/number_format.h"
+#include "core/photometric_units.h"
+#include "core/scene_geometry.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace lucerna {
+
+namespace {
+
+ScheduleEntry entryOf(const Scene& scene, const Light& l) {
+    ScheduleEntry e;
+    e.count = 1;
+    e.maintenanceFactor = maintenanceFactor(scene, l);
+    if (l.type == LightType::Luminaire && l.luminaire) {
+        e.kind = "Luminaire";
+        e.file = l.luminaire->file;
+        e.lumensEach = luminaireFlux(l);
+        e.temperatureK = l.luminaire->temperatureK;
+        if (const auto& d = l.luminaire->distribution) {
+            e.product = d->name;
+            e.wattsEach = d->inputWatts;
+            e.colourRenderingIndex = d->colourRenderingIndex;
+        }
+    } else {
+        e.kind = l.type == LightType::Spot ? "Spot light" : "Point light";
+        e.lumensEach = luminousFluxLm(l);
+        if (l.photometric) e.temperatureK = l.photometric->temperatureK;
+    }
+    return e;
+}
+
+// Alike: the same kind, file, stated figures and (to a tenth of a lumen) flux.
+bool alike(const ScheduleEntry& a, const ScheduleEntry& b) {
+    return a.kind == b.kind && a.file == b.file && a.product == b.product && a.wattsEach == b.wattsEach &&
+           a.colourRenderingIndex == b.colourRenderingIndex && a.temperatureK == b.temperatureK &&
+           a.maintenanceFactor == b.maintenanceFactor && std::abs(a.lumensEach - b.lumensEach) < 0.05;
+}
+
+double triangleArea(const TriangleMesh& m, const V3i& t) {
+    const V3d& a = m.vertices[size_t(t.x)];
+    return 0.5 * (m.vertices[size_t(t.y)] - a).cross(m.vertices[size_t(t.z)] - a).length();
+}
+
+std::string sunLine(const Scene& scene, const Light& l) {
+    const SunSpec s = l.sun.value_or(SunSpec());
+    const V3d toward = sunDirection(scene, l);
+    const double elevation = std::asin(std::clamp(toward.y, -1.0, 1.0)) * 180 / std::numbers::pi;
+    std::string line = "Sun: " + formatNumber(s.illuminanceLux, 6) + " lx direct normal, elevation " +
+                       fixedNumber(elevation, 1) + " deg";
+    if (s.time) line += ", " + *s.time + " local time";
+    if (scene.site)
+        line += " at " + fixedNumber(scene.site->latitudeDeg, 3) + " N, " + fixedNumber(scene.site->longitudeDeg, 3) + " E";
+    if (toward.y <= 0) line += " (below the horizon: no light)";
+    return line;
+}
+
+std::string skyLine(const Scene& scene) {
+    const Daylight d = resolveDaylight(scene);
+    const Sky& sky = *scene.sky;
+    std::string line = sky.model == SkyModelType::Uniform       ? "Sky: uniform"
+                       : sky.model == SkyModelType::CieOvercast ? "Sky: CIE overcast"
+                                                                : "Sky: CIE general sky type " + std::to_string(sky.cieType);
+    if (d.sky) {
+        const double eh = d.sky->zenithLuminance * relativeHorizontalIlluminance(d.sky->sky, d.sky->towardSun);
+        line += ", horizontal illuminance " + formatNumber(eh, 6) + " lx, zenith luminance " +
+                formatNumber(d.sky->zenithLuminance, 6) + " cd/m\u00b2";
+    }
+    return line + ", ground reflectance " + formatNumber(sky.groundReflectance, 3);
+}
+
+}  // namespace
+
+Schedule luminaireSchedule(const Scene& scene) {
+    Schedule s;
+    double watts = 0;
+    int withWatts = 0;
+    for (const Light& l : scene.lights) {
+        if (!l.on) {
+            ++s.switchedOff;
+            continue;
+        }
+        if (l.type == LightType::Sun) {
+            s.daylight.push_back(sunLine(scene, l));
+            continue;
+        }
+        if (l.type == LightType::Directional) {
+            s.daylight.push_back("Directional light '" + l.name + "': " + formatNumber(illuminanceLx(l), 6) +
+                                 " lx on a surface facing it");
+            continue;
+        }
+        const ScheduleEntry e = entryOf(scene, l);
+        ++s.luminaires;
+        s.totalLumens += e.lumensEach;
+        if (e.wattsEach) watts += *e.wattsEach, ++withWatts;
+        else ++s.withoutWatts;
+        const auto same = std::find_if(s.entries.begin(), s.entries.end(), [&](const ScheduleEntry& x) { return alike(x, e); });
+        if (same != s.entries.end()) ++same->count, same->names.push_back(l.name);
+        else s.entries.push_back(e), s.entries.back().names.push_back(l.name);
+    }
+    // Emitting objects, one line per material: pi A L, one-sided Lambertian (A in m^2).
+    const double m2 = scene.metersPerUnit * scene.metersPerUnit;
+    for (const Object& o : scene.objects) {
+        const Material* m = scene.findMaterial(o.material);
+        if (!m || m->type != MaterialType::Emitter || !o.worldMesh) continue;
+        double area = 0;
+        for (const V3i& t : o.worldMesh->triangles) area += triangleArea(*o.worldMesh, t);
+        ScheduleEntry e;
+        e.kind = "Emitter";
+        e.product = "material '" + m->name + "'";
+        e.names.push_back(o.name);
+        e.count = 1;
+        e.lumensEach = std::numbers::pi * area * m2 * luminance(m->radiance) * kLumensPerWatt;
+        e.maintenanceFactor = scene.maintenance ? scene.maintenance->factor() : 1.0;
+        ++s.luminaires;
+        ++s.withoutWatts;
+        s.totalLumens += e.lumensEach;
+        s.entries.push_back(e);
+    }
+    if (scene.sky) s.daylight.push_back(skyLine(scene));
+    if (withWatts > 0) s.totalWatts = watts;
+    const SceneBounds b = sceneBounds(scene);
+    s.floorAreaM2 = (b.hi.x - b.lo.x) * (b.hi.z - b.lo.z) * m2;
+    if (s.totalWatts && s.withoutWatts == 0 && s.floorAreaM2 > 0) s.wattsPerM2 = *s.totalWatts / s.floorAreaM2;
+    return s;
+}
+
+std::string maintenanceStatement(const Scene& scene) {
+    const MaintenanceRange r = maintenanceRange(scene);
+    if (!r.maintained()) return "new installation (no maintenance factor)";
+    if (r.lowest == r.highest) return "maintained values, MF " + fixedNumber(r.lowest, 2);
+    return "maintained values, MF " + fixedNumber(r.lowest, 2) + " to " + fixedNumber(r.highest, 2);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,49 @@
+#pragma once
+// The plan of a task area as a report draws it (a DIALux-style result plan): the room around the
+// area seen from above (the faces below three quarters of the scene's height in a grey of their
+// material's reflectance, walls and partitions seen edge-on as dark lines), the area's grid in
+// false colour (points inside geometry hatched), iso-lux lines labelled with their level, the
+// luminaires and lamps as symbols, a scale bar and, when the site gives north, a north arrow;
+// a horizontal legend in lux below. A grid that is not horizontal (on a wall) is drawn in its own
+// frame, u to the right and v up, without the room.
+
+#include "report/report_data.h"
+
+#include <QFont>
+#include <QString>
+
+class QPainter;
+class QRectF;
+
+namespace lucerna {
+
+// What the plan shows on the grid: a value per point (row-major, as the layout's points) in
+// the legend's quantity.
+struct PlanValues {
+    std::vector<double> values;
+    std::vector<uint8_t> insideGeometry;  // non-zero: hatched, left out (empty: none)
+    GridStatistics statistics;
+    QString quantity = QStringLiteral("E [lx]");
+    std::vector<GlareObserver> observers;  // drawn numbered from 1, looking along their view
+};
+
+// `dpmm`: device pixels per millimetre, for line widths and the raster of the room.
+void paintPlanFigure(QPainter& painter, const QRectF& rect, const Scene& scene, const CalculationGrid& grid,
+                     const GridLayout& layout, const PlanValues& values, const QFont& font, double dpmm);
+// The plan's height over its width (the legend's band not included).
+double planAspect(const Scene& scene, const CalculationGrid& grid);
+// The legend's band under the plan, mm.
+inline constexpr double kPlanLegendMm = 15;
+
+// The legend's range and the levels of the iso-lux lines for an area's values: linear, from a
+// round number at or below Emin to one at or above Emax, in steps of the iso levels'; or, where
+// Emax is more than ten times Emin (a sun patch, a spotlit table), logarithmic, with levels at 1,
+// 2 and 5 times the powers of ten between them, so that the dim part of the area reads too.
+struct PlanScale {
+    double lo = 0, hi = 1;
+    bool logScale = false;
+    std::vector<double> levels;
+};
+PlanScale planScale(const GridStatistics& statistics);
+
+}  // namespace lucerna

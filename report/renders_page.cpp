@@ -1,0 +1,90 @@
+#include "report/report_pages.h"
+#include "report/report_text.h"
+
+#include "render/display/display.h"
+#include "render/display/false_colour.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+
+#include <cmath>
+
+namespace lucerna {
+
+namespace {
+
+// The lux view's legend: a log ramp from lo to hi with labels at round numbers (1, 2, 5 per decade).
+void paintLuxLegend(QPainter& p, const QRectF& band, double lo, double hi, const QFont& font, double dpmm) {
+    const QFontMetricsF fm(font, p.device());
+    const QString unit = QStringLiteral("E [lx]");
+    const double unitWidth = fm.horizontalAdvance(unit) + 3 * dpmm;
+    const QRectF ramp(band.left() + unitWidth, band.top() + 1 * dpmm, band.width() - unitWidth - 8 * dpmm, 4 * dpmm);
+    const Legend legend{lo, hi, true, QStringLiteral("lx")};
+    const int steps = 200;
+    for (int i = 0; i < steps; ++i) {
+        const double t0 = double(i) / steps, t1 = double(i + 1) / steps;
+        p.fillRect(QRectF(ramp.left() + t0 * ramp.width(), ramp.top(), (t1 - t0) * ramp.width() + 0.5, ramp.height()),
+                   falseColourRamp((t0 + t1) / 2));
+    }
+    p.setPen(QPen(Qt::black, 0.15 * dpmm));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(ramp);
+    p.setFont(font);
+    p.drawText(QPointF(band.left(), ramp.center().y() + fm.ascent() / 2 - fm.descent() / 2), unit);
+    double lastRight = -1e300;
+    for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi * 1.0001; decade *= 10)
+        for (double m : {1.0, 2.0, 5.0}) {
+            const double v = m * decade;
+            if (v < lo * 0.9999 || v > hi * 1.0001) continue;
+            const double x = ramp.left() + legendPosition(legend, v) * ramp.width();
+            p.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + 1.2 * dpmm));
+            const QString text = QString::number(v, 'g', 6);
+            const double w = fm.horizontalAdvance(text);
+            const double left = std::clamp(x - w / 2, band.left(), band.right() - w);
+            if (left < lastRight + 1.5 * dpmm) continue;
+            p.drawText(QPointF(left, ramp.bottom() + 1.6 * dpmm + fm.ascent()), text);
+            lastRight = left + w;
+        }
+}
+
+}  // namespace
+
+void addRendersPage(PageFlow& flow, const ReportData& data) {
+    if (!data.renders) return;
+    const ReportRenders& r = *data.renders;
+    flow.newPage();
+    flow.heading(QStringLiteral("Renders"));
+    flow.subheading(QStringLiteral("The camera's view"));
+    addPicture(flow, toDisplayImage(r.converged, r.exposureStops), flow.mm(88));
+    flow.paragraph(QStringLiteral("Rendered by %1 (%2), %3 samples per pixel in %4, estimated relative error (relMSE) "
+                                  "%5; %6 x %7 pixels; %8. Exposure %9 stops, metered on the image's log-average "
+                                  "luminance.")
+                       .arg(qs(r.backend), qs(r.autoReason), QString::number(r.samplesPerPixel, 'f', 0), seconds(r.seconds),
+                            QString::number(r.estimatedRelmse, 'g', 3))
+                       .arg(r.converged.width)
+                       .arg(r.converged.height)
+                       .arg(qs(data.maintenance), QString::asprintf("%+.1f", r.exposureStops)),
+                   flow.fonts().small);
+    if (!(r.luxHi > r.luxLo)) return;
+    flow.subheading(QStringLiteral("Lux view: illuminance on the surfaces seen"));
+    DisplaySettings lux;
+    lux.falseColour = true;
+    lux.quantity = FalseColourQuantity::Illuminance;
+    lux.falseMin = r.luxLo;
+    lux.falseMax = r.luxHi;
+    addPicture(flow, toDisplayImage(r.converged, lux), flow.mm(88));
+    const QFont font = flow.fonts().figure;
+    const double dpmm = flow.mm(1), lo = r.luxLo, hi = r.luxHi;
+    flow.figure(flow.mm(10), [lo, hi, font, dpmm](QPainter& p, const QRectF& band) {
+        paintLuxLegend(p, band, lo, hi, font, dpmm);
+    });
+    flow.paragraph(QStringLiteral("Illuminance at the first diffuse or glossy surface each pixel sees, on the side "
+                                  "seen, by the %1 estimator, %2 estimates per pixel; log scale from %3 to %4 lx (the "
+                                  "view's 2nd and 98th percentiles, rounded). Glass and mirrors are seen through.")
+                       .arg(qs(r.illuminanceMethod))
+                       .arg(r.illuminanceSpp)
+                       .arg(QString::number(r.luxLo, 'g', 6), QString::number(r.luxHi, 'g', 6)),
+                   flow.fonts().small);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,285 @@
+#include "report/report_builder.h"
+
+#include "core/daylight.h"
+#include "core/glare.h"
+#include "core/scene_geometry.h"
+#include "render/backend/pass_loop.h"
+#include "render/display/false_colour.h"
+#include "render/engine/backend_table.h"
+#include "render/photometry/illuminance_layer.h"
+#include "report/luminaire_schedule.h"
+
+#include <QDate>
+#include <QFileInfo>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <mutex>
+#include <stdexcept>
+#include <thread>
+
+namespace lucerna {
+
+namespace {
+
+constexpr double kWorkPlaneM = 0.8, kBorderM = 0.5;  // EN 12464-1's usual work plane
+
+// A stage of the report as a share of its progress: a context of its own (the parent's token,
+// so that a cancel reaches it) whose progress is copied into [base, base + share] of the
+// parent's while the stage runs, by a thread that looks every 50 ms (the grid, the pass loop and
+// the lux view each set their own context's progress, and not all of them call back).
+class Stage {
+public:
+    Stage(TaskContext& parent, double base, double share)
+        : parent_(parent), own_(parent.token()), base_(base), share_(share), watcher_([this] { watch(); }) {}
+    ~Stage() {
+        {
+            std::lock_guard lock(mutex_);
+            done_ = true;
+        }
+        wake_.notify_all();
+        watcher_.join();
+        parent_.setProgress(base_ + share_);
+    }
+    TaskContext& context() { return own_; }
+
+private:
+    void watch() {
+        std::unique_lock lock(mutex_);
+        while (!wake_.wait_for(lock, std::chrono::milliseconds(50), [this] { return done_; }))
+            parent_.setProgress(base_ + share_ * std::clamp(own_.progress(), 0.0, 1.0));
+    }
+
+    TaskContext& parent_;
+    TaskContext own_;
+    double base_, share_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    bool done_ = false;
+    std::thread watcher_;
+};
+
+// The lowest Ra the luminaires' files state; nothing when one of them states none (or there
+// are no luminaires: point lights and daylight state no Ra).
+std::optional<double> lowestColourRendering(const Scene& scene) {
+    std::optional<double> lowest;
+    for (const Light& l : scene.lights) {
+        if (!l.on || l.type != LightType::Luminaire) continue;
+        const auto& d = l.luminaire ? l.luminaire->distribution : nullptr;
+        if (!d || !d->colourRenderingIndex) return std::nullopt;
+        lowest = std::min(lowest.value_or(*d->colourRenderingIndex), *d->colourRenderingIndex);
+    }
+    return lowest;
+}
+
+void computeGlare(const Scene& scene, const TaskArea& area, const ReportSettings& settings, AreaReport& out,
+                  TaskContext& ctx) {
+    std::vector<GlareObserver> observers = area.observers;
+    const bool defaults = observers.empty();
+    if (defaults)
+        observers = defaultObservers(area, sceneBounds(scene).lo.y, scene.metersPerUnit, settings.eyeHeightM);
+    GlareSettings glare;
+    glare.backgroundMethod = settings.grid.autoMethod ? GridMethod::Path : settings.grid.method;
+    glare.targetRelativeError = std::max(settings.grid.targetRelativeError, GlareSettings().targetRelativeError);
+    glare.timeLimitSeconds = settings.grid.timeLimitSeconds;
+    glare.seed = settings.grid.seed;
+    glare.samplesPerPass = settings.grid.samplesPerPass;
+    for (size_t i = 0; i < observers.size() && !ctx.isCancelled(); ++i) {
+        ObserverGlare o{observers[i], defaults, evaluateGlare(scene, observers[i], glare, ctx)};
+        ctx.setProgress(double(i + 1) / double(observers.size()));
+        if (o.result.ugr) out.worstUgr = std::max(out.worstUgr.value_or(*o.result.ugr), *o.result.ugr);
+        out.glare.push_back(std::move(o));
+    }
+    // The worst UGR only when every observer has one: a missing one might be the worst.
+    for (const ObserverGlare& o : out.glare)
+        if (!o.result.ugr) out.worstUgr.reset();
+}
+
+// The daylight factor on an area: its grid in the daylight-factor scene, by the same settings.
+DaylightFactorReport computeDaylightFactor(const Scene& scene, const AreaReport& area, const ReportSettings& settings,
+                                           TaskContext& ctx) {
+    DaylightFactorReport df;
+    DaylightFactorScene dfScene = daylightFactorScene(scene);
+    df.skyHorizontalIlluminance = dfScene.skyHorizontalIlluminance;
+    if (scene.site && scene.site->medianDiffuseIlluminance)
+        df.medianDiffuseIlluminance = *scene.site->medianDiffuseIlluminance, df.medianGiven = true;
+    const SceneSnapshot snapshot = std::make_shared<const Scene>(std::move(dfScene.scene));
+    df.result = computeSceneGrid(snapshot, area.layout.points, area.grid.normal(), settings.grid, ctx);
+    if (ctx.isCancelled() || !(df.skyHorizontalIlluminance > 0)) return df;
+    df.percent.resize(df.result.lux.size());
+    for (size_t i = 0; i < df.percent.size(); ++i) df.percent[i] = df.result.lux[i] * 100.0 / df.skyHorizontalIlluminance;
+    df.statistics = gridStatistics(df.percent, df.result.insideGeometry);
+    if (df.statistics.counted > 0)
+        df.provision = checkDaylightProvision(df.percent, df.result.insideGeometry, df.medianDiffuseIlluminance);
+    return df;
+}
+
+// The exposure (stops) that takes the image's log-average luminance to mid grey (0.18), as a
+// photographer's meter would, within +-6 stops: an office at 500 lx and a sunlit room both read.
+float meteredExposure(const Image& image) {
+    double sum = 0;
+    size_t n = 0;
+    for (const Rgb& p : image.pixels) {
+        const double y = luminance(p);
+        if (std::isfinite(y) && y > 0) sum += std::log(y), ++n;
+    }
+    if (n == 0) return 0;
+    return float(std::clamp(std::log2(0.18 / std::exp(sum / double(n))), -6.0, 6.0));
+}
+
+// The converged render of the camera by auto's backend, of the scene as rendered.
+ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& settings, TaskContext& ctx) {
+    ReportRenders r;
+    const AutoChoice choice = chooseAutoBackend(*scene);
+    const BackendInfo* info = findBackend(choice.backend);
+    if (!info) throw std::invalid_argument("no backend named " + choice.backend);
+    r.backend = choice.backend;
+    r.autoReason = choice.reason;
+    RenderSettings rs;
+    rs.spp = settings.renderSpp;
+    rs.seed = settings.grid.seed;
+    const std::unique_ptr<ProgressiveBackend> backend = info->make(sceneAsRendered(scene), rs);
+    backend->prepare(ctx);
+    if (ctx.isCancelled()) return r;
+    RenderFrame frame = runProgressive(*backend, r.backend, rs, ctx);
+    r.samplesPerPixel = frame.samplesPerPixel;
+    r.seconds = frame.seconds;
+    r.estimatedRelmse = frame.estimatedRelmse;
+    r.converged = std::move(frame.image);
+    r.exposureStops = meteredExposure(r.converged);
+    return r;
+}
+
+// Its lux view (the illuminance.Y layer) by the grid's method, and the false-colour range.
+void addLuxView(const SceneSnapshot& scene, const ReportSettings& settings, ReportRenders& r, TaskContext& ctx) {
+    const GridMethod method = settings.grid.autoMethod ? GridMethod::Path : settings.grid.method;
+    r.illuminanceMethod = gridMethodName(method);
+    r.illuminanceSpp = settings.illuminanceSpp;
+    const RenderScene compiled(sceneAsRendered(scene), r.converged.width, r.converged.height);
+    std::vector<float> lux = traceIlluminanceLayer(compiled, method, settings.illuminanceSpp, settings.grid.seed, ctx);
+    if (ctx.isCancelled()) return;
+    r.converged.channels["illuminance.Y"] = std::move(lux);
+    if (const auto range = illuminanceRange(r.converged)) r.luxLo = range->lo, r.luxHi = range->hi;
+}
+
+}  // namespace
+
+std::vector<ReportArea> reportAreas(const Scene& scene) {
+    std::vector<ReportArea> areas;
+    for (const TaskArea& a : scene.taskAreas) areas.push_back({a, false});
+    if (!areas.empty()) return areas;
+    const SceneBounds b = sceneBounds(scene);
+    ReportArea plane;
+    try {
+        plane.area.grid = workPlaneGrid(b.lo, b.hi, scene.metersPerUnit, kWorkPlaneM, kBorderM);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(std::string("the scene names no task areas, and its work plane (0.8 m up, less a "
+                                                "0.5 m border) is empty: ") + e.what());
+    }
+    plane.area.grid.name = "Work plane";
+    plane.defaultWorkPlane = true;
+    areas.push_back(plane);
+    return areas;
+}
+
+void checkReportInput(const Scene& scene, const ReportSettings&) {
+    for (const ReportArea& a : reportAreas(scene)) {
+        layoutGrid(a.area.grid, scene.metersPerUnit);
+        if (!a.area.activity.empty() && !findActivity(a.area.activity))
+            throw std::invalid_argument("task area '" + a.area.grid.name + "': unknown activity " + a.area.activity);
+    }
+}
+
+ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath, const ReportSettings& settings,
+                       TaskContext& ctx) {
+    const auto start = std::chrono::steady_clock::now();
+    ReportData data;
+    data.scene = scene;
+    data.settings = settings;
+    data.sceneFile = scenePath.empty() ? "untitled scene" : QFileInfo(QString::fromStdString(scenePath)).fileName().toStdString();
+    if (scene->project) {
+        data.projectName = scene->project->name;
+        data.client = scene->project->client;
+        data.designer = scene->project->designer;
+        data.notes = scene->project->notes;
+    }
+    if (data.projectName.empty()) data.projectName = QFileInfo(QString::fromStdString(scenePath)).completeBaseName().toStdString();
+    if (data.projectName.empty()) data.projectName = "Untitled";
+    data.date = QDate::currentDate().toString(Qt::ISODate).toStdString();
+    data.software = "Lucerna " LUCERNA_VERSION;
+    data.maintenance = maintenanceStatement(*scene);
+    data.schedule = luminaireSchedule(*scene);
+
+    // Everything that can fail on bad input, before any work.
+    checkReportInput(*scene, settings);
+    const std::vector<ReportArea> areas = reportAreas(*scene);
+    for (const ReportArea& a : areas) {
+        AreaReport r;
+        r.name = a.area.grid.name;
+        r.defaultWorkPlane = a.defaultWorkPlane;
+        r.grid = a.area.grid;
+        r.layout = layoutGrid(a.area.grid, scene->metersPerUnit);
+        if (!a.area.activity.empty()) r.requirement = findActivity(a.area.activity);
+        r.colourRendering = lowestColourRendering(*scene);
+        data.areas.push_back(std::move(r));
+    }
+
+    // Shares of the progress: a grid 1, an area's glare 0.5, its daylight factor 1, the render
+    // and the lux view 1 each.
+    const bool daylightFactor = settings.daylightFactor && analyseFeatures(*scene).hasDaylight();
+    const double glareShare = settings.glare ? 0.5 : 0.0, dfShare = daylightFactor ? 1.0 : 0.0;
+    const double renderShare = settings.renders ? 2.0 : 0.0;
+    const double total = double(areas.size()) * (1 + glareShare + dfShare) + renderShare;
+    double done = 0;
+    const auto stage = [&](double share) {
+        const double base = done / total;
+        done += share;
+        return std::make_unique<Stage>(ctx, base, share / total);
+    };
+    for (size_t i = 0; i < areas.size(); ++i) {
+        AreaReport& r = data.areas[i];
+        {
+            auto s = stage(1.0);
+            r.result = computeSceneGrid(scene, r.layout.points, r.grid.normal(), settings.grid, s->context());
+        }
+        if (ctx.isCancelled()) return data;
+        r.statistics = gridStatistics(r.result.lux, r.result.insideGeometry);
+        if (settings.glare && data.schedule.luminaires > 0) {  // UGR rates electric lighting
+            auto s = stage(glareShare);
+            computeGlare(*scene, areas[i].area, settings, r, s->context());
+            if (ctx.isCancelled()) return data;
+        }
+        if (r.requirement)
+            r.checks = checkRequirements(*r.requirement, TaskAreaFigures{r.statistics, r.worstUgr, r.colourRendering});
+        if (daylightFactor) {
+            DaylightFactorReport df;
+            {
+                auto s = stage(dfShare);
+                df = computeDaylightFactor(*scene, r, settings, s->context());
+            }
+            if (ctx.isCancelled()) return data;
+            r.daylightFactor = std::move(df);
+        }
+    }
+    if (settings.renders) {
+        ReportRenders renders;
+        {
+            auto s = stage(1.0);
+            renders = renderCamera(scene, settings, s->context());
+        }
+        if (ctx.isCancelled()) return data;
+        {
+            auto s = stage(1.0);
+            addLuxView(scene, settings, renders, s->context());
+        }
+        if (ctx.isCancelled()) return data;
+        data.renders = std::move(renders);
+    }
+    data.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ctx.setProgress(1);
+    return data;
+}
+
+}  // namespace lucerna

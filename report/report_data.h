@@ -1,0 +1,121 @@
+#pragma once
+// What a lighting design report states (README, "Reports"), as plain values: computed from a
+// scene by report_builder.h, laid out on pages by report_writer.h. Every figure here is the one
+// printed, so that a test can read the PDF back against it.
+
+#include "core/calculation_grid.h"
+#include "core/daylight_provision.h"
+#include "core/glare.h"
+#include "core/image.h"
+#include "core/lighting_standards.h"
+#include "core/scene.h"
+#include "render/photometry/glare_evaluation.h"
+#include "render/photometry/grid_calculation.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+// How the report computes its figures. The grids take `lucerna grid`'s settings (method, error
+// target, seed, samples per pass, time limit), so that the same settings give the same numbers.
+struct ReportSettings {
+    GridSettings grid;            // every task area's grid
+    int renderSpp = 64;           // the converged render: passes of the auto backend
+    int illuminanceSpp = 16;      // the lux view: estimates per pixel (the command line: renderSpp / 4)
+    bool renders = true;          // leave the renders page out (false)
+    bool glare = true;            // compute UGR for the task areas' observers
+    bool daylightFactor = true;   // of a scene with daylight: each area's daylight factor too
+    double eyeHeightM = 1.2;      // the default observers' eyes above the floor (seated)
+};
+
+// One line of the luminaire schedule: the lights of one kind that are alike (same file, same
+// flux as installed, same stated watts).
+struct ScheduleEntry {
+    std::string kind;            // "Luminaire", "Spot light", "Point light", "Emitter"
+    std::string file;            // the photometric file as the scene names it; empty for others
+    std::string product;         // the luminaire's name as its file gives it
+    std::vector<std::string> names;  // the lights' names in the scene
+    int count = 0;
+    double lumensEach = 0;       // luminous flux as installed (new, no maintenance factor), lm
+    std::optional<double> wattsEach;           // the file's input watts
+    std::optional<double> colourRenderingIndex;// the file's Ra
+    std::optional<double> temperatureK;        // the scene's colour temperature, when given
+    double maintenanceFactor = 1;
+};
+
+struct Schedule {
+    std::vector<ScheduleEntry> entries;
+    int luminaires = 0;              // lights counted (point, spot, luminaire)
+    int switchedOff = 0;             // lights switched off, not counted
+    int withoutWatts = 0;            // lights whose power no file states
+    double totalLumens = 0;
+    std::optional<double> totalWatts;  // of the lights that state it; absent when none does
+    double floorAreaM2 = 0;          // the geometry's extent in plan
+    std::optional<double> wattsPerM2;  // only when every light states its power
+    std::vector<std::string> daylight;  // one line per daylight source (sun, sky), in words
+};
+
+// One glare observer of a task area and what it sees.
+struct ObserverGlare {
+    GlareObserver observer;       // scene units
+    bool defaultObserver = false; // one of the four placed at the area's edges (core/glare.h)
+    GlareResult result;
+};
+
+// The daylight factor on a task area, as `lucerna grid --daylight-factor` computes it (SPEC.md
+// section 5: the CIE overcast sky alone), with EN 17037's daylight provision.
+struct DaylightFactorReport {
+    GridResult result;                // illuminance under that sky, lx
+    std::vector<double> percent;      // DF per point, %
+    GridStatistics statistics;        // of the DF
+    DaylightProvision provision;
+    double skyHorizontalIlluminance = 0;  // Eh,sky, lx
+    double medianDiffuseIlluminance = kDefaultMedianDiffuseIlluminance;
+    bool medianGiven = false;         // by the site (else EN 17037's usual value)
+};
+
+struct AreaReport {
+    std::string name;
+    bool defaultWorkPlane = false;  // the scene has no task areas: the work plane at 0.8 m
+    CalculationGrid grid;
+    GridLayout layout;
+    GridResult result;
+    GridStatistics statistics;
+    const ActivityRequirement* requirement = nullptr;  // the activity (null: none given)
+    std::optional<double> worstUgr;
+    std::optional<double> colourRendering;  // the lowest Ra of the luminaires (absent: not stated)
+    std::vector<RequirementCheck> checks;   // with an activity
+    std::vector<ObserverGlare> glare;
+    std::optional<DaylightFactorReport> daylightFactor;  // scenes with daylight
+};
+
+// The renders page: the camera's view, converged, and its lux view (false colour).
+struct ReportRenders {
+    Image converged;             // linear radiance, with the illuminance.Y layer for the lux view
+    std::string backend;         // the backend that rendered it (auto's choice)
+    std::string autoReason;
+    double samplesPerPixel = 0, seconds = 0, estimatedRelmse = 0;
+    float exposureStops = 0;     // the picture's exposure: the log-average luminance to mid grey
+    int illuminanceSpp = 0;
+    std::string illuminanceMethod;
+    double luxLo = 0, luxHi = 0;  // the lux view's false-colour range (log scale)
+};
+
+struct ReportData {
+    // The cover (Scene::project; the name falls back to the scene file's name).
+    std::string projectName, client, designer, notes;
+    std::string sceneFile;       // its file name
+    std::string date;            // the day the report was made, YYYY-MM-DD
+    std::string software;        // "Lucerna 0.1.0"
+    std::string maintenance;     // "maintained values, MF 0.80", or the new installation
+    SceneSnapshot scene;         // as loaded, for the plans
+    Schedule schedule;
+    std::vector<AreaReport> areas;
+    std::optional<ReportRenders> renders;
+    ReportSettings settings;
+    double seconds = 0;          // the whole calculation
+};
+
+}  // namespace lucerna

@@ -1,0 +1,25 @@
+#pragma once
+// The kinds of page a report has, each laid out on the flow from the report's data: the cover
+// (project, summary), the luminaire schedule, a task area's results (plan, figures, checks, UGR,
+// table of values), the renders, and the calculation's method and error bars.
+
+#include "report/page_flow.h"
+#include "report/plan_figure.h"
+#include "report/report_data.h"
+
+namespace lucerna {
+
+void addCoverPage(PageFlow& flow, const ReportData& data);
+void addSchedulePage(PageFlow& flow, const ReportData& data);
+void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& area);
+// Parts of an area's pages: its plan with `values` (at most maxHeight tall with the legend), and
+// the daylight factor.
+void addPlan(PageFlow& flow, const ReportData& data, const AreaReport& area, PlanValues values, double maxHeight);
+void addDaylightFactor(PageFlow& flow, const ReportData& data, const AreaReport& area);
+void addRendersPage(PageFlow& flow, const ReportData& data);
+void addMethodPage(PageFlow& flow, const ReportData& data);
+
+// A picture across the content width at its aspect ratio, at most `maxHeight` tall, centred.
+void addPicture(PageFlow& flow, const QImage& picture, double maxHeight);
+
+}  // namespace lucerna
