@@ -4,6 +4,7 @@
 #include "core/daylight.h"
 #include "core/exr_io.h"
 #include "core/image_metrics.h"
+#include "core/lighting_standards.h"
 #include "core/luminaire.h"
 #include "core/number_format.h"
 #include "core/scene_io.h"
@@ -261,7 +262,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);
             // By the render's own backend's machinery (illuminance_layer.h); rows dealt to ranks.
-            const RenderScene compiled(withoutLightsSwitchedOff(s.scene), frame.image.width, frame.image.height);
+            const RenderScene compiled(sceneAsRendered(s.scene), frame.image.width, frame.image.height);
             illuminance = traceIlluminanceLayer(compiled, *s.illuminanceMethod, r.illuminanceSpp, r.settings.seed, ctx,
                                                 r.settings.options, RowShare{rank, sizeOf(processes)});
             if (ctx.isCancelled()) return;
@@ -376,6 +377,16 @@ void printLuminaire(const Light& l) {
     else std::cout << "no flux (absolute photometry)";
     std::cout << ", distribution integrates to " << formatLumens(integrated) << " lm, max "
               << formatLumens(d.maxIntensity()) << " cd; in the scene " << formatLumens(luminaireFlux(l)) << " lm\n";
+    // What UGR and the report read (README, "Glare", "Reports").
+    std::cout << "    luminous area ";
+    if (s.luminousAreaM) std::cout << s.luminousAreaM->x << " x " << s.luminousAreaM->y << " m (luminous_area)";
+    else if (d.luminous.stated())
+        std::cout << d.luminous.widthM << " x " << d.luminous.lengthM << " m" << (d.luminous.elliptical ? " (round)" : "")
+                  << " (file)";
+    else std::cout << "not stated";
+    std::cout << "; input " << (d.inputWatts ? formatNumber(*d.inputWatts, 6) + " W" : std::string("not stated"))
+              << "; Ra " << (d.colourRenderingIndex ? formatNumber(*d.colourRenderingIndex, 3) : std::string("not stated"))
+              << "\n";
     if (d.statedFluxLm > 0 && std::abs(integrated - d.statedFluxLm) > 0.02 * d.statedFluxLm) {
         char pct[32];
         std::snprintf(pct, sizeof pct, "%+.0f%%", 100.0 * (integrated - d.statedFluxLm) / d.statedFluxLm);
@@ -469,6 +480,13 @@ int infoImpl(const std::vector<std::string>& args) {
         std::cout << "; " << off << " switched off";
     std::cout << ")\n";
     printPhotometry(scene);
+    if (maintenanceRange(scene).maintained()) std::cout << "maintenance: " << describeMaintenance(maintenanceRange(scene)) << "\n";
+    for (const TaskArea& a : scene.taskAreas) {
+        std::cout << "task area '" << a.grid.name << "': ";
+        if (const ActivityRequirement* r = findActivity(a.activity)) std::cout << describeRequirement(*r);
+        else std::cout << "no activity";
+        std::cout << "\n";
+    }
     std::string needs;
     if (f.hasDiffuse) needs += " diffuse";
     if (f.hasGlossy) needs += " glossy";
@@ -480,6 +498,15 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasGlazing) needs += " glazing";
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
     std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";
+    return 0;
+}
+
+int standardsImpl(const std::vector<std::string>& args) {
+    if (!args.empty()) throw UsageError("usage: lucerna standards");
+    std::cout << "EN 12464-1:2011 (a selection): reference, area: activity; Em lx, UGR_L, U0, Ra\n";
+    for (const ActivityRequirement& a : en12464Activities())
+        std::cout << a.reference << "  " << a.area << ": " << a.activity << "; Em " << a.maintainedLux << ", UGR_L "
+                  << a.ugrLimit << ", U0 " << fixedNumber(a.uniformity, 2) << ", Ra " << a.colourRendering << "\n";
     return 0;
 }
 
@@ -506,6 +533,7 @@ int render(const std::vector<std::string>& args, ProcessGroup* processes) {
 int compare(const std::vector<std::string>& args) { return runCommand(compareImpl, args); }
 int info(const std::vector<std::string>& args) { return runCommand(infoImpl, args); }
 int convert(const std::vector<std::string>& args) { return runCommand(convertImpl, args); }
+int standards(const std::vector<std::string>& args) { return runCommand(standardsImpl, args); }
 
 void printUsage() {
     std::cout << "usage:\n"
@@ -528,6 +556,8 @@ void printUsage() {
                  "               illuminance on a calculation grid: Eavg, Emin, Emax, U0 (EN 12464-1)\n"
                  "               [--daylight-factor [--median-diffuse-illuminance LX]]   the daylight factor under\n"
                  "               the CIE overcast sky instead, with EN 17037's daylight provision\n"
+                 "               [--task-area NAME]   the scene's task area, checked against its EN 12464-1 activity\n"
+                 "  lucerna standards                         the bundled EN 12464-1 activities\n"
                  "  lucerna glare SCENE.json --observer X,Y,Z --view X,Y,Z [--method M] [--error F] [--time SECONDS]\n"
                  "                [--seed N] [--threads N]   discomfort glare (UGR, CIE 117) at an eye, per luminaire\n"
                  "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"

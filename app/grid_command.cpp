@@ -5,6 +5,7 @@
 #include "core/calculation_grid.h"
 #include "core/daylight.h"
 #include "core/daylight_provision.h"
+#include "core/lighting_standards.h"
 #include "core/process_group.h"
 #include "core/scene_geometry.h"
 #include "core/scene_io.h"
@@ -12,6 +13,7 @@
 #include "render/engine/backend_table.h"
 #include "render/photometry/grid_calculation.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -32,6 +34,7 @@ struct GridArgs {
     int threads = 0;
     bool daylightFactor = false;                    // SPEC.md section 5's DF instead of lux
     std::optional<double> medianDiffuseIlluminance; // lx, EN 17037's site value
+    std::string taskArea;                           // the scene's task area (README, "Task areas")
 };
 
 GridArgs parseGridArgs(const std::vector<std::string>& args) {
@@ -69,6 +72,10 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--csv") g.csv = value();
         else if (a == "--daylight-factor") g.daylightFactor = true;
+        else if (a == "--task-area") {
+            g.taskArea = value();
+            if (g.taskArea.empty()) throw UsageError("--task-area: the name is empty");
+        }
         else if (a == "--median-diffuse-illuminance")
             g.medianDiffuseIlluminance = parseNumber<double>(a, value(), 1.0, 200000.0);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
@@ -77,8 +84,10 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     }
     if (g.scene.empty()) throw UsageError("grid: no scene file given");
     const bool rectangle = g.corner || g.u || g.v;
-    if (rectangle == g.workPlaneM.has_value())
-        throw UsageError("grid: give either --work-plane HEIGHT or --corner, --u and --v");
+    if (int(rectangle) + int(g.workPlaneM.has_value()) + int(!g.taskArea.empty()) != 1)
+        throw UsageError("grid: give one of --work-plane HEIGHT, --corner, --u and --v, or --task-area NAME");
+    if (!g.taskArea.empty() && g.daylightFactor)
+        throw UsageError("--task-area: not with --daylight-factor (a task area is checked in lux; give its rectangle)");
     if (rectangle && !(g.corner && g.u && g.v)) throw UsageError("grid: --corner, --u and --v go together");
     if (g.medianDiffuseIlluminance && !g.daylightFactor)
         throw UsageError("--median-diffuse-illuminance: only with --daylight-factor");
@@ -106,6 +115,7 @@ struct GridSetup {
     double skyHorizontalIlluminance = 0;  // --daylight-factor: Eh,sky, lx
     double medianDiffuseIlluminance = kDefaultMedianDiffuseIlluminance;
     bool medianGiven = false;        // by the option or the site (else EN 17037's usual value)
+    const ActivityRequirement* requirement = nullptr;  // --task-area with an activity
 };
 
 // Everything that can fail on bad input before any work; of a distributed grid, every rank does
@@ -133,6 +143,21 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         loaded = std::move(df.scene);
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(std::move(loaded));
+    const ActivityRequirement* requirement = nullptr;
+    if (!g.taskArea.empty()) {
+        const auto area = std::find_if(scene->taskAreas.begin(), scene->taskAreas.end(),
+                                       [&](const TaskArea& a) { return a.grid.name == g.taskArea; });
+        if (area == scene->taskAreas.end()) {
+            std::string names;
+            for (const TaskArea& a : scene->taskAreas) names += (names.empty() ? "" : ", ") + a.grid.name;
+            throw UsageError("--task-area: the scene has no task area '" + g.taskArea + "'" +
+                             (names.empty() ? std::string(" (it has none)") : " (it has: " + names + ")"));
+        }
+        const auto spacing = g.grid.spacingMeters;
+        g.grid = area->grid;
+        if (spacing) g.grid.spacingMeters = spacing;
+        requirement = findActivity(area->activity);
+    }
     if (g.workPlaneM) {
         const SceneBounds b = sceneBounds(*scene);
         const std::string name = g.grid.name;
@@ -180,7 +205,7 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
                          " takes no backend options but light_sampler (path and ir are set with --samples and --vpl-paths)");
     }
-    return {std::move(g), scene, std::move(layout), skyEh, median, medianGiven};
+    return {std::move(g), scene, std::move(layout), skyEh, median, medianGiven, requirement};
 }
 
 // --daylight-factor: DF = 100 E / Eh,sky per point (SPEC.md section 5), its average, minimum and
@@ -270,6 +295,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(), layout.nu,
                 layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
                 g.settings.autoMethod ? " (auto)" : "");
+    std::printf("%s\n", describeMaintenance(maintenanceRange(*scene)).c_str());
     if (s.excluded > 0)
         std::printf("%d of %zu points inside geometry, excluded from Eavg, Emin, Emax and U0\n", s.excluded,
                     layout.points.size());
@@ -284,6 +310,14 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per point, %s%s\n",
                     100.0 * r.maxRelativeError, r.passes, r.samplesPerPoint, formatSeconds(r.seconds).c_str(),
                     r.converged ? "" : " (target not reached)");
+    }
+    if (setup->requirement && s.counted > 0) {
+        std::printf("%s\n", describeRequirement(*setup->requirement).c_str());
+        TaskAreaFigures figures{s, std::nullopt, statedColourRendering(*scene)};
+        for (const RequirementCheck& c : checkRequirements(*setup->requirement, figures))
+            std::printf("  %s\n", c.describe().c_str());
+    } else if (!g.taskArea.empty()) {
+        std::printf("task area '%s' names no activity: nothing to check\n", g.taskArea.c_str());
     }
     printTable(layout, r);
     if (!g.csv.empty()) {

@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
         const std::string command = argv[1];
         const std::vector<std::string> rest(argv + 2, argv + argc);
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
-            command == "bench" || command == "grid" || command == "import" || command == "glare") {
+            command == "bench" || command == "grid" || command == "import" || command == "standards" ||
+            command == "glare") {
             // Started by mpirun: render and grid share their work among the ranks (MPI set up
             // before Qt, finalised after it).
             std::unique_ptr<lucerna::ProcessGroup> processes;
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
             if (command == "convert") return lucerna::cli::convert(rest);
             if (command == "bench") return lucerna::cli::bench(rest);
             if (command == "import") return lucerna::cli::importModelCommand(rest);
+            if (command == "standards") return lucerna::cli::standards(rest);
             if (command == "glare") return lucerna::cli::glare(rest);
             return lucerna::cli::info(rest);
         }

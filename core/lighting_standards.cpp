@@ -1,6 +1,9 @@
 #include "core/lighting_standards.h"
 
+#include "core/goniometric_distribution.h"
 #include "core/number_format.h"
+
+#include <algorithm>
 
 #include <cmath>
 #include <cstring>
@@ -85,6 +88,27 @@ std::string RequirementCheck::describe() const {
     if (quantity == "Em" && required > 0)
         line += ", " + std::string(margin >= 0 ? "+" : "") + fixedNumber(100 * margin / required, 1) + "%";
     return line + ")";
+}
+
+std::optional<double> statedColourRendering(const Scene& scene) {
+    std::optional<double> lowest;
+    for (const Light& l : scene.lights) {
+        if (!l.on || l.type == LightType::Sun || l.type == LightType::Directional) continue;
+        const auto& d = l.luminaire ? l.luminaire->distribution : nullptr;
+        if (!d || !d->colourRenderingIndex) return std::nullopt;
+        lowest = std::min(lowest.value_or(*d->colourRenderingIndex), *d->colourRenderingIndex);
+    }
+    for (const Object& o : scene.objects) {
+        const Material* m = scene.findMaterial(o.material);
+        if (m && m->type == MaterialType::Emitter) return std::nullopt;
+    }
+    return lowest;
+}
+
+std::string describeRequirement(const ActivityRequirement& r) {
+    return std::string("EN 12464-1:2011 ") + r.reference + ", " + r.area + ": " + r.activity + ": Em " +
+           fixedNumber(r.maintainedLux, 0) + " lx, U0 " + fixedNumber(r.uniformity, 2) + ", UGR_L " +
+           fixedNumber(r.ugrLimit, 0) + ", Ra " + fixedNumber(r.colourRendering, 0);
 }
 
 std::vector<RequirementCheck> checkRequirements(const ActivityRequirement& requirement, const TaskAreaFigures& figures) {

@@ -9,6 +9,7 @@
 // values for some contexts; a design for it should be checked against the edition in force.
 
 #include "core/calculation_grid.h"
+#include "core/scene.h"
 
 #include <optional>
 #include <span>
@@ -56,6 +57,15 @@ struct TaskAreaFigures {
     std::optional<double> worstUgr;
     std::optional<double> colourRendering;
 };
+
+// The Ra of the installation: the lowest Ra the files of the scene's luminaires (switched on)
+// state; absent when any electric light states none (a point or spot light, an IES file, an
+// emitter object) or there is none.
+std::optional<double> statedColourRendering(const Scene& scene);
+
+// The task area's requirement line: "EN 12464-1:2011 5.26.2, Offices: Writing, typing, ...:
+// Em 500 lx, U0 0.60, UGR_L 19, Ra 80".
+std::string describeRequirement(const ActivityRequirement& requirement);
 
 // Em, U0, UGR and Ra in that order.
 std::vector<RequirementCheck> checkRequirements(const ActivityRequirement& requirement, const TaskAreaFigures& figures);

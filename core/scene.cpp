@@ -1,5 +1,6 @@
 #include "core/scene.h"
 #include "core/goniometric_distribution.h"
+#include "core/number_format.h"
 
 #include <algorithm>
 #include <cmath>
@@ -102,7 +103,15 @@ MaintenanceRange maintenanceRange(const Scene& scene) {
     if (hasEmitterObjects(scene)) factors.push_back(scene.maintenance ? scene.maintenance->factor() : 1.0);
     if (factors.empty()) return {};
     const auto [lo, hi] = std::minmax_element(factors.begin(), factors.end());
-    return {*lo, *hi};
+    return {*lo, *hi, true};
+}
+
+std::string describeMaintenance(const MaintenanceRange& range) {
+    if (!range.electric) return "daylight only (no electric light to maintain)";
+    if (!range.maintained()) return "values of the new installation (no maintenance factor)";
+    if (range.lowest == range.highest) return "maintained values (maintenance factor " + fixedNumber(range.lowest, 2) + ")";
+    return "maintained values (maintenance factors " + fixedNumber(range.lowest, 2) + " to " +
+           fixedNumber(range.highest, 2) + ")";
 }
 
 SceneSnapshot sceneAsRendered(SceneSnapshot scene) {

@@ -269,9 +269,14 @@ double maintenanceFactor(const Scene& scene, const Light& light);
 // objects, the scene's own: {1, 1} when nothing is scaled (the new installation).
 struct MaintenanceRange {
     double lowest = 1, highest = 1;
+    bool electric = false;  // whether the scene has any electric light switched on
     bool maintained() const { return lowest != 1 || highest != 1; }
 };
 MaintenanceRange maintenanceRange(const Scene& scene);
+// Which values a figure is: "maintained values (maintenance factor 0.80)", "... (maintenance
+// factors 0.72 to 0.80)", "values of the new installation (no maintenance factor)" or, with no
+// electric light, "daylight only (no electric light to maintain)".
+std::string describeMaintenance(const MaintenanceRange& range);
 
 // The scene as the renderers see it (every backend, the preview, the grids and the illuminance
 // layer): withoutLightsSwitchedOff, then each electric light's emission (point, spot,

@@ -111,6 +111,12 @@ void CompareView::setDisplaySettings(const DisplaySettings& requested) {
     emit displaySettingsChanged(display_);
 }
 
+void CompareView::setIlluminanceNote(const QString& note) {
+    DisplaySettings s = display_;
+    s.illuminanceNote = note;
+    setDisplaySettings(s);
+}
+
 void CompareView::showEvent(QShowEvent*) {
     if (stale_) refresh();
 }

@@ -40,6 +40,8 @@ public:
     Mode mode() const { return mode_; }
     void setDisplaySettings(const DisplaySettings& settings);  // may fit the lux range (above)
     DisplaySettings displaySettings() const { return display_; }
+    // What the lux legend says of the values (DisplaySettings::illuminanceNote).
+    void setIlluminanceNote(const QString& note);
 
     // The relmse of the preview against the converged image; nothing until both exist.
     std::optional<double> relmse() const { return relmse_; }

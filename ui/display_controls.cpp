@@ -93,6 +93,7 @@ void DisplayControls::setSettings(const DisplaySettings& s) {
 
 void DisplayControls::read() {
     DisplaySettings s;
+    s.illuminanceNote = settings_.illuminanceNote;
     s.exposureStops = float(exposure_->value());
     s.curve = mode_->currentIndex() == Filmic ? ToneCurve::Filmic : ToneCurve::LinearSrgb;
     s.falseColour = mode_->currentIndex() == FalseColour || mode_->currentIndex() == FalseColourLux;

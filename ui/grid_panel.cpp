@@ -177,6 +177,7 @@ void GridPanel::compute() {
     cancel();
     SceneSnapshot scene = doc_->snapshot();
     dfPerLux_.reset();
+    maintenance_ = QString::fromStdString(describeMaintenance(maintenanceRange(*scene)));
     if (quantity_->currentIndex() == kDaylightFactor) {
         const Scene& s = *scene;
         medianGiven_ = s.site && s.site->medianDiffuseIlluminance;
@@ -358,6 +359,7 @@ void GridPanel::showResult() {
                      .arg(s.minimum, 0, 'f', 1)
                      .arg(s.maximum, 0, 'f', 1)
                      .arg(s.uniformity, 0, 'f', 2);
+        lines << maintenance_;
     }
     if (s.excluded > 0)
         lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());

@@ -101,6 +101,7 @@ private:
     uint64_t shownVersion_ = 0;
     bool stale_ = false;
     std::optional<double> dfPerLux_;
+    QString maintenance_;  // which illuminance the result is: maintained or the new installation's
     double medianDiffuseIlluminance_ = 0;  // lx, for EN 17037's check (the site's, or the usual value)
     bool medianGiven_ = false;
     // The UGR grid.

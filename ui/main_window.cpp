@@ -90,6 +90,12 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     connect(doc_.get(), &Document::changed, this, [this] {
         preview_->setScene(doc_->snapshot());
         render_->setScene(doc_->snapshot());
+        const MaintenanceRange mf = maintenanceRange(*doc_->snapshot());
+        compare_->setIlluminanceNote(!mf.electric       ? QString()
+                                     : !mf.maintained() ? tr("new")
+                                     : mf.lowest == mf.highest
+                                         ? tr("MF %1").arg(mf.lowest, 0, 'f', 2)
+                                         : tr("MF %1-%2").arg(mf.lowest, 0, 'f', 2).arg(mf.highest, 0, 'f', 2));
     });
     connect(doc_->undoStack(), &QUndoStack::cleanChanged, this, &MainWindow::updateTitle);
     connect(doc_.get(), &Document::pathChanged, this, &MainWindow::updateTitle);

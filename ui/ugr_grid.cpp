@@ -82,7 +82,7 @@ QStringList ugrFigures(const GlareGridResult& result, const GridLayout& layout, 
         return QObject::tr("(column %1, row %2)").arg(int(k) % layout.nu + 1).arg(layout.nv - int(k) / layout.nu);
     };
     QStringList lines;
-    lines << QObject::tr("UGR of %1 observers, eyes %2 m above the floor, looking %3")
+    lines << QObject::tr("UGR of %1 observers (the new installation), eyes %2 m above the floor, looking %3")
                  .arg(result.observers.size())
                  .arg(eyeHeightM, 0, 'f', 1)
                  .arg(view);

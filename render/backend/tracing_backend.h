@@ -26,7 +26,7 @@ protected:
     // light_sampler (backend_options.h).
     TracingBackend(SceneSnapshot scene, const RenderSettings& settings,
                    std::optional<LightSelection> lightSelection = std::nullopt)
-        : snapshot_(withoutLightsSwitchedOff(std::move(scene))), settings_(settings),
+        : snapshot_(sceneAsRendered(std::move(scene))), settings_(settings),
           lightSelection_(lightSelection ? *lightSelection : lightSelectionOption(settings)) {}
 
     // Builds scene_ and film_; a backend that prepares more calls it first.

@@ -29,6 +29,9 @@ struct DisplaySettings {
     FalseColourQuantity quantity = FalseColourQuantity::Luminance;
     // False-colour range (cd/m^2 or lx), mapped on a log scale.
     double falseMin = 0.1, falseMax = 1000.0;
+    // Follows "lx" in the legend: which illuminance it is, "MF 0.80" (maintained) or "new"
+    // (README, "Maintained values"); set from the scene, not by the display controls.
+    QString illuminanceNote;
     bool operator==(const DisplaySettings&) const = default;
 };
 

@@ -12,8 +12,10 @@ namespace lucerna {
 
 std::optional<Legend> luminanceLegend(const DisplaySettings& s) {
     if (!s.falseColour) return std::nullopt;
-    return Legend{s.falseMin, s.falseMax, true,
-                  s.quantity == FalseColourQuantity::Illuminance ? QStringLiteral("lx") : QStringLiteral("cd/m\u00b2")};
+    if (s.quantity == FalseColourQuantity::Illuminance)
+        return Legend{s.falseMin, s.falseMax, true,
+                      s.illuminanceNote.isEmpty() ? QStringLiteral("lx") : QStringLiteral("lx, ") + s.illuminanceNote};
+    return Legend{s.falseMin, s.falseMax, true, QStringLiteral("cd/m\u00b2")};
 }
 
 namespace {

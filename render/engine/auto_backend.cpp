@@ -68,7 +68,7 @@ AutoChoice chooseAutoBackend(const Scene& scene) {
     const SceneFeatures f = analyseFeatures(scene);
     // A small image of the scene's own view (its aspect kept): only the probe's rays are traced.
     const int width = 64, height = std::max(1, int(std::lround(64.0 * scene.camera.height / scene.camera.width)));
-    const RenderScene render(withoutLightsSwitchedOff(std::make_shared<const Scene>(scene)), width, height);
+    const RenderScene render(sceneAsRendered(std::make_shared<const Scene>(scene)), width, height);
     if (render.lights().empty()) return {"path", "path: the scene has no light, the image is black whatever renders it"};
     const CameraProbe probe = probeCamera(render);
     const std::string lit = percent(probe.directlyLit, probe.seen) + " of the surfaces the camera sees are lit directly";

@@ -89,8 +89,9 @@ void Preview::setSettings(const PreviewSettings& s) {
 }
 
 void Preview::update(SceneSnapshot scene, int width, int height) {
-    // Lights switched off are left out (so switching one changes the set of lights).
-    scene = withoutLightsSwitchedOff(std::move(scene));
+    // Lights switched off are left out (so switching one changes the set of lights), the
+    // others at their maintained output.
+    scene = sceneAsRendered(std::move(scene));
     const State& st = *state_;
     if (current_ && st.scene) {
         const SceneChange change = diff(*current_, *scene);
@@ -143,7 +144,7 @@ void uploadShadowProxy(Preview::State& st, const std::vector<float>& positions, 
 }  // namespace
 
 void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
-    snapshot = withoutLightsSwitchedOff(std::move(snapshot));
+    snapshot = sceneAsRendered(std::move(snapshot));
     State& st = *state_;
     current_ = snapshot;
     st.snapshot = snapshot;
