@@ -60,9 +60,6 @@ ReportArgs parseReportArgs(const std::vector<std::string>& args) {
         else if (r.scene.empty()) r.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
     }
-    // The lux view costs about as much per estimate as the render per sample pass: a quarter of
-    // the render's samples, within [1, 16] (16 for the default 64).
-    r.settings.illuminanceSpp = std::clamp(r.settings.renderSpp / 4, 1, 16);
     if (r.scene.empty()) throw UsageError("report: no scene file given");
     if (r.output.empty()) throw UsageError("report: no output file given (-o OUT.pdf)");
     if (!endsWithPdf(r.output)) throw UsageError(r.output + ": a report is a PDF (-o NAME.pdf)");

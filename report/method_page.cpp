@@ -95,10 +95,10 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
         flow.subheading(QStringLiteral("Renders"));
         flow.paragraph(QStringLiteral("The camera's view is rendered by %1 (chosen by auto: %2) with %3 samples per "
                                       "pixel; its estimated relative error comes from the film's two half-buffers "
-                                      "and reads noise, not bias. The lux view is computed by the %4 estimator.")
+                                      "and reads noise, not bias. The lux view divides that render's luminance by "
+                                      "the reflectance of the surface each pixel sees.")
                            .arg(qs(data.renders->backend), qs(data.renders->autoReason))
-                           .arg(data.settings.renderSpp)
-                           .arg(qs(data.renders->illuminanceMethod)));
+                           .arg(data.settings.renderSpp));
     }
     flow.paragraph(QStringLiteral("Calculated by %1 on %2 in %3.").arg(qs(data.software), qs(data.date), seconds(data.seconds)),
                    flow.fonts().small);

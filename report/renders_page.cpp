@@ -78,11 +78,12 @@ void addRendersPage(PageFlow& flow, const ReportData& data) {
     flow.figure(flow.mm(10), [lo, hi, font, dpmm](QPainter& p, const QRectF& band) {
         paintLuxLegend(p, band, lo, hi, font, dpmm);
     });
-    flow.paragraph(QStringLiteral("Illuminance at the first diffuse or glossy surface each pixel sees, on the side "
-                                  "seen, by the %1 estimator, %2 estimates per pixel; log scale from %3 to %4 lx (the "
-                                  "view's 2nd and 98th percentiles, rounded). Glass and mirrors are seen through.")
-                       .arg(qs(r.illuminanceMethod))
-                       .arg(r.illuminanceSpp)
+    flow.paragraph(QStringLiteral("Illuminance at the surface each pixel sees, E = \u03c0 L / \u03c1 from the render's "
+                                  "luminance L and the surface's reflectance \u03c1 (exact on matte surfaces under "
+                                  "white light, approximate under coloured light on coloured or glossy surfaces; "
+                                  "none where nothing reflects: the sky, lamps). Log scale from %1 to %2 lx (the "
+                                  "view's 2nd and 98th percentiles, rounded). The task areas' figures are the "
+                                  "grids', computed on their own.")
                        .arg(QString::number(r.luxLo, 'g', 6), QString::number(r.luxHi, 'g', 6)),
                    flow.fonts().small);
 }

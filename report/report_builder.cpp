@@ -6,7 +6,7 @@
 #include "render/backend/pass_loop.h"
 #include "render/display/false_colour.h"
 #include "render/engine/backend_table.h"
-#include "render/photometry/illuminance_layer.h"
+#include "render/trace/surface_layers.h"
 #include "report/luminaire_schedule.h"
 
 #include <QDate>
@@ -152,15 +152,13 @@ ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& set
     return r;
 }
 
-// Its lux view (the illuminance.Y layer) by the grid's method, and the false-colour range.
-void addLuxView(const SceneSnapshot& scene, const ReportSettings& settings, ReportRenders& r, TaskContext& ctx) {
-    const GridMethod method = settings.grid.autoMethod ? GridMethod::Path : settings.grid.method;
-    r.illuminanceMethod = gridMethodName(method);
-    r.illuminanceSpp = settings.illuminanceSpp;
-    const RenderScene compiled(sceneAsRendered(scene), r.converged.width, r.converged.height);
-    std::vector<float> lux = traceIlluminanceLayer(compiled, method, settings.illuminanceSpp, settings.grid.seed, ctx);
-    if (ctx.isCancelled()) return;
-    r.converged.channels["illuminance.Y"] = std::move(lux);
+// Its lux view: E = pi L / albedo at the first surface each pixel sees, from the converged
+// render's radiance and the albedo layer (render/display/display.h, pixelIlluminance), as the
+// window's lux view reads a render: as smooth as the render itself (a per-pixel illuminance
+// estimate at a sixteenth of the render's work is grainy), exact on matte surfaces under white
+// light, approximate under coloured light on coloured surfaces; and the false-colour range.
+void addLuxView(const SceneSnapshot& scene, ReportRenders& r) {
+    addSurfaceLayers(r.converged, sceneAsRendered(scene), kAlbedoLayer);
     if (const auto range = illuminanceRange(r.converged)) r.luxLo = range->lo, r.luxHi = range->hi;
 }
 
@@ -226,8 +224,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
         data.areas.push_back(std::move(r));
     }
 
-    // Shares of the progress: a grid 1, an area's glare 0.5, its daylight factor 1, the render
-    // and the lux view 1 each.
+    // Shares of the progress: a grid 1, an area's glare 0.5, its daylight factor 1, the render 2.
     const bool daylightFactor = settings.daylightFactor && analyseFeatures(*scene).hasDaylight();
     const double glareShare = settings.glare ? 0.5 : 0.0, dfShare = daylightFactor ? 1.0 : 0.0;
     const double renderShare = settings.renders ? 2.0 : 0.0;
@@ -266,15 +263,11 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     if (settings.renders) {
         ReportRenders renders;
         {
-            auto s = stage(1.0);
+            auto s = stage(renderShare);
             renders = renderCamera(scene, settings, s->context());
         }
         if (ctx.isCancelled()) return data;
-        {
-            auto s = stage(1.0);
-            addLuxView(scene, settings, renders, s->context());
-        }
-        if (ctx.isCancelled()) return data;
+        addLuxView(scene, renders);
         data.renders = std::move(renders);
     }
     data.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -22,8 +22,9 @@ namespace lucerna {
 // target, seed, samples per pass, time limit), so that the same settings give the same numbers.
 struct ReportSettings {
     GridSettings grid;            // every task area's grid
-    int renderSpp = 64;           // the converged render: passes of the auto backend
-    int illuminanceSpp = 16;      // the lux view: estimates per pixel (the command line: renderSpp / 4)
+    // The converged render: passes of the auto backend. 64 leave a sunlit room grainy; 256 read
+    // as a picture to hand in.
+    int renderSpp = 256;
     bool renders = true;          // leave the renders page out (false)
     bool glare = true;            // compute UGR for the task areas' observers
     bool daylightFactor = true;   // of a scene with daylight: each area's daylight factor too
@@ -93,13 +94,11 @@ struct AreaReport {
 
 // The renders page: the camera's view, converged, and its lux view (false colour).
 struct ReportRenders {
-    Image converged;             // linear radiance, with the illuminance.Y layer for the lux view
+    Image converged;             // linear radiance, with the albedo layer for the lux view
     std::string backend;         // the backend that rendered it (auto's choice)
     std::string autoReason;
     double samplesPerPixel = 0, seconds = 0, estimatedRelmse = 0;
     float exposureStops = 0;     // the picture's exposure: the log-average luminance to mid grey
-    int illuminanceSpp = 0;
-    std::string illuminanceMethod;
     double luxLo = 0, luxHi = 0;  // the lux view's false-colour range (log scale)
 };
 

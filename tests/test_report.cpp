@@ -334,7 +334,6 @@ ReportSettings smallSettings() {
     s.grid.seed = 7;
     s.grid.samplesPerPass = 8;
     s.renderSpp = 2;
-    s.illuminanceSpp = 1;
     return s;
 }
 

@@ -16,8 +16,6 @@ namespace lucerna {
 
 ReportExport::ReportExport(TaskSystem& tasks, const YieldGate& gate, QWidget* window)
     : tasks_(tasks), gate_(gate), parent_(window) {
-    // The command line's defaults: a quarter of the render's samples for the lux view.
-    settings_.illuminanceSpp = std::clamp(settings_.renderSpp / 4, 1, 16);
     poll_.setInterval(100);
     connect(&poll_, &QTimer::timeout, this, &ReportExport::poll);
 }
