@@ -133,11 +133,6 @@ Schedule luminaireSchedule(const Scene& scene) {
     return s;
 }
 
-std::string maintenanceStatement(const Scene& scene) {
-    const MaintenanceRange r = maintenanceRange(scene);
-    if (!r.maintained()) return "new installation (no maintenance factor)";
-    if (r.lowest == r.highest) return "maintained values, MF " + fixedNumber(r.lowest, 2);
-    return "maintained values, MF " + fixedNumber(r.lowest, 2) + " to " + fixedNumber(r.highest, 2);
-}
+std::string maintenanceStatement(const Scene& scene) { return describeMaintenance(maintenanceRange(scene)); }
 
 }  // namespace lucerna

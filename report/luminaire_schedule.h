@@ -11,8 +11,9 @@ namespace lucerna {
 // maintenance factor); the floor area is the geometry's extent in plan (x by z, y up).
 Schedule luminaireSchedule(const Scene& scene);
 
-// "maintained values, MF 0.80" (or "MF 0.72 to 0.80"), or "new installation (no maintenance
-// factor)": what the report's figures are.
+// What the report's figures are, as `lucerna grid` and the grid dock say it (core/scene.h,
+// describeMaintenance): "maintained values (maintenance factor 0.80)", "values of the new
+// installation (no maintenance factor)" or "daylight only (no electric light to maintain)".
 std::string maintenanceStatement(const Scene& scene);
 
 }  // namespace lucerna

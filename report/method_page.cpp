@@ -7,10 +7,6 @@ namespace lucerna {
 
 namespace {
 
-QString vectorArg(const V3d& v) {
-    return QStringLiteral("%1,%2,%3").arg(QString::number(v.x, 'g', 9), QString::number(v.y, 'g', 9), QString::number(v.z, 'g', 9));
-}
-
 // The settings as `lucerna grid` takes them.
 QString gridOptions(const ReportSettings& s) {
     const GridSettings& g = s.grid;
@@ -26,12 +22,8 @@ QString gridOptions(const ReportSettings& s) {
 // The command that computes an area's grid alone, with the same figures.
 QString gridCommand(const ReportData& data, const AreaReport& a) {
     const QString scene = qs(data.sceneFile);
-    QString where;
-    if (a.defaultWorkPlane) where = QStringLiteral(" --work-plane 0.8");
-    else {
-        where = QStringLiteral(" --corner %1 --u %2 --v %3").arg(vectorArg(a.grid.corner), vectorArg(a.grid.edgeU), vectorArg(a.grid.edgeV));
-        if (a.grid.spacingMeters) where += QStringLiteral(" --spacing %1").arg(QString::number(*a.grid.spacingMeters, 'g', 9));
-    }
+    const QString where = a.defaultWorkPlane ? QStringLiteral(" --work-plane 0.8")
+                                             : QStringLiteral(" --task-area \"%1\"").arg(qs(a.name));
     return QStringLiteral("lucerna grid %1%2%3").arg(scene, where, gridOptions(data.settings));
 }
 

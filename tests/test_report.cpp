@@ -212,6 +212,9 @@ void TestReport::officeFloorReport() {
     QCOMPARE(figures[0], gridLine({scene, "--corner", "1.5,0.75,1.2", "--u", "0,0,12.2", "--v", "33,0,0", "--spacing", "1"}));
     QCOMPARE(figures[1], gridLine({scene, "--corner", "2.5,0.75,16.9", "--u", "0,0,2.2", "--v", "19,0,0", "--spacing", "0.5"}));
     QCOMPARE(figureLines(r.out), figures);  // the command prints them too
+    // The method page names the command that gives an area's figures: --task-area NAME.
+    QVERIFY(text.contains("--task-area \"Meeting zone\" --method path --error 0.15 --seed 7 --samples 8"));
+    QCOMPARE(figures[1], gridLine({scene, "--task-area", "Meeting zone"}));
     QVERIFY(text.contains("Open-plan office floor (bundled example)"));
     QVERIFY(text.contains("Task area: Open-plan desks") && text.contains("Task area: Meeting zone"));
     // The schedule: 84 panels and 24 pendants, their power and the load per square metre.
@@ -219,7 +222,7 @@ void TestReport::officeFloorReport() {
                  text.contains("W/m\u00b2"),
              qPrintable(text.left(3000)));
     QVERIFY(text.contains("UGR"));
-    QVERIFY(text.contains("new installation (no maintenance factor)"));
+    QVERIFY(text.contains("values of the new installation (no maintenance factor)"));
     const int pages = pageCount(pdf);
     QVERIFY(pages >= 5);
     QVERIFY(text.contains(QString("Page %1 of %1").arg(pages)));
@@ -271,7 +274,7 @@ void TestReport::projectSceneReport() {
     const QString text = pdfText(pdf);
     for (const char* s : {"Refit of the second floor", "Acme Insurance Ltd", "J. Doe, Lichtplanung", "Task area: Desks",
                           "Task area: Meeting table", "5.26.2 Offices: Writing, typing, reading, data processing",
-                          "maintained values, MF 0.80", "Em (maintained, Eavg)", "UGR (worst observer)",
+                          "maintained values (maintenance factor 0.80)", "Em (maintained, Eavg)", "UGR (worst observer)",
                           "Ra (lowest luminaire)", "not stated"})
         QVERIFY2(text.contains(s), s);
     const QStringList figures = figureLines(text);
