@@ -141,4 +141,12 @@ int runCommand(const std::function<int()>& impl) {
     }
 }
 
+std::optional<GridMethod> parseGridMethod(const std::string& text, bool allowAuto) {
+    const auto method = gridMethodFromName(text);
+    if (method || (allowAuto && text == "auto")) return method;
+    std::string names;
+    for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
+    throw UsageError("--method: expected one of " + names + (allowAuto ? ", auto" : "") + ", got '" + text + "'");
+}
+
 }  // namespace lucerna::cli

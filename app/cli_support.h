@@ -2,6 +2,8 @@
 // What the headless commands share: the one-line usage error (exit status 2), number parsing
 // for options, the Ctrl-C flag, and the wrapper that turns exceptions into exit statuses.
 
+#include "render/photometry/grid_calculation.h"
+
 #include <Imath/ImathVec.h>
 
 #include <charconv>
@@ -29,6 +31,10 @@ T parseNumber(const std::string& option, const std::string& text, T lo, T hi) {
                          "], got '" + text + "'");
     return value;
 }
+
+// --method's value: a grid method, or nothing for "auto" where allowAuto; UsageError listing the
+// names otherwise.
+std::optional<GridMethod> parseGridMethod(const std::string& text, bool allowAuto);
 
 // Adds "name=value" (an --option's value) to `options`; UsageError, naming `where`, when it has
 // no name or '='.

@@ -45,14 +45,7 @@ GlareArgs parseGlareArgs(const std::vector<std::string>& args) {
             g.luminousArea = V2d(parseNumber<double>(a, text.substr(0, comma), 1e-6, 1e3),
                                  parseNumber<double>(a, text.substr(comma + 1), 1e-6, 1e3));
         } else if (a == "--method") {
-            const std::string& m = value();
-            const auto method = gridMethodFromName(m);
-            if (!method) {
-                std::string names;
-                for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
-                throw UsageError("--method: expected one of " + names + ", got '" + m + "'");
-            }
-            g.settings.backgroundMethod = *method;
+            g.settings.backgroundMethod = *parseGridMethod(value(), false);
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);
         else if (a == "--time") g.settings.timeLimitSeconds = parseNumber<double>(a, value(), 1e-3, 1e7);
         else if (a == "--seed") g.settings.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);

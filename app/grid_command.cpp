@@ -53,13 +53,7 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--spacing") g.grid.spacingMeters = parseNumber<double>(a, value(), 1e-6, 1e6);
         else if (a == "--name") g.grid.name = value();
         else if (a == "--method") {
-            const std::string& m = value();
-            const auto method = gridMethodFromName(m);
-            if (!method && m != "auto") {
-                std::string names;
-                for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
-                throw UsageError("--method: expected one of " + names + ", auto, got '" + m + "'");
-            }
+            const auto method = parseGridMethod(value(), true);
             g.settings.autoMethod = !method;
             if (method) g.settings.method = *method;
         } else if (a == "--error") g.settings.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);

@@ -41,13 +41,7 @@ ReportArgs parseReportArgs(const std::vector<std::string>& args) {
         GridSettings& g = r.settings.grid;
         if (a == "-o" || a == "--output") r.output = value();
         else if (a == "--method") {
-            const std::string& m = value();
-            const auto method = gridMethodFromName(m);
-            if (!method && m != "auto") {
-                std::string names;
-                for (GridMethod known : kGridMethods) names += std::string(names.empty() ? "" : ", ") + gridMethodName(known);
-                throw UsageError("--method: expected one of " + names + ", auto, got '" + m + "'");
-            }
+            const auto method = parseGridMethod(value(), true);
             g.autoMethod = !method;
             if (method) g.method = *method;
         } else if (a == "--error") g.targetRelativeError = parseNumber<double>(a, value(), 1e-6, 1.0);

@@ -61,19 +61,6 @@ private:
     std::thread watcher_;
 };
 
-// The lowest Ra the luminaires' files state; nothing when one of them states none (or there
-// are no luminaires: point lights and daylight state no Ra).
-std::optional<double> lowestColourRendering(const Scene& scene) {
-    std::optional<double> lowest;
-    for (const Light& l : scene.lights) {
-        if (!l.on || l.type != LightType::Luminaire) continue;
-        const auto& d = l.luminaire ? l.luminaire->distribution : nullptr;
-        if (!d || !d->colourRenderingIndex) return std::nullopt;
-        lowest = std::min(lowest.value_or(*d->colourRenderingIndex), *d->colourRenderingIndex);
-    }
-    return lowest;
-}
-
 void computeGlare(const Scene& scene, const TaskArea& area, const ReportSettings& settings, AreaReport& out,
                   TaskContext& ctx) {
     std::vector<GlareObserver> observers = area.observers;
@@ -220,7 +207,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
         r.grid = a.area.grid;
         r.layout = layoutGrid(a.area.grid, scene->metersPerUnit);
         if (!a.area.activity.empty()) r.requirement = findActivity(a.area.activity);
-        r.colourRendering = lowestColourRendering(*scene);
+        r.colourRendering = statedColourRendering(*scene);
         data.areas.push_back(std::move(r));
     }
 

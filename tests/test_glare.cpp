@@ -106,7 +106,7 @@ double guthByHand(double H, double T, double R) {
                     (21 + 0.26667 * tau - 0.002963 * tau * tau) * 1e-5 * sigma * sigma);
 }
 
-// A closed box room, floor at y = 0 (reflectances of the ceiling, walls and floor), lit by an
+// A closed box room X x Y x H (metres), floor at y = 0 (reflectances of the ceiling, walls and floor), lit by an
 // array of `file` luminaires at cell centres of side spacingM, hanging 1 mm under the ceiling.
 std::string roomScene(double X, double Y, double H, const UgrReflectances& rho, double spacingM, const std::string& file,
                       double rotationDeg, double lumens) {
@@ -345,9 +345,10 @@ private slots:
         QVERIFY(std::abs(e - fCeiling * 0.7 * flux / (X * Y)) < 1e-9 * e);
     }
 
-    // The tabular method against UGR at the observer in the same room built as a scene (floor
-    // at eye level, the luminaires H above it, the eye at the middle of one wall looking along
-    // the room), crosswise and endwise, within 1 UGR unit.
+    // The tabular method against UGR at the observer in the same room built as a scene: the
+    // luminaires H = 2 m above a seated eye (1.2 m) at the middle of one wall looking along the
+    // room, the real floor (0.2) and walls (0.5) below the eye where the table has its floor
+    // cavity; crosswise and endwise, and for luminaires bright toward C0 or C180, within 1 unit.
     void tabularAgainstObserverInTheRoom() {
         writeLinearLuminaire(dir_.filePath("linear.ies"));
         const GoniometricDistribution d = loadLuminaireFile(dir_.filePath("linear.ies").toStdString());
@@ -355,7 +356,7 @@ private slots:
         luminaire.distribution = &d;
         luminaire.fluxLm = 3000;
 
-        const double Hm = 2.0;
+        const double Hm = 2.0, kEye = 1.2;  // the luminaires 2 m above a seated eye
         const UgrRoom room{4, 6};
         const UgrReflectances rho = kUgrReflectanceSets[0];
         const double X = room.x * Hm, Y = room.y * Hm;
@@ -366,11 +367,11 @@ private slots:
             // The scene looks along +z: crosswise turns C0 onto it (rotation 270), endwise C90 (180).
             const bool cross = viewing == UgrViewing::Crosswise;
             const QString path = dir_.filePath(cross ? "cross.json" : "end.json");
-            writeText(path, roomScene(X, Y, Hm, rho, Hm, "linear.ies", cross ? 270 : 180, 3000));
+            writeText(path, roomScene(X, Y, kEye + Hm, rho, Hm, "linear.ies", cross ? 270 : 180, 3000));
             const Scene scene = loadScene(path.toStdString());
             TaskContext ctx{CancellationToken()};
             GlareSettings settings;
-            const GlareResult r = evaluateGlare(scene, GlareObserver{V3d(X / 2, 0.01, 0.01), V3d(0, 0, 1)}, settings, ctx);
+            const GlareResult r = evaluateGlare(scene, GlareObserver{V3d(X / 2, kEye, 0.01), V3d(0, 0, 1)}, settings, ctx);
             QVERIFY(r.ugr);
             qInfo("%s: tabular %.2f, at the observer %.2f +- %.2f (Lb %.2f cd/m^2, %zu sources)", cross ? "crosswise" : "endwise",
                   *tabular, *r.ugr, r.ugrErrorBar, r.backgroundLuminanceCdM2, r.sources.size());
@@ -378,6 +379,31 @@ private slots:
             if (cross) crossTable = *tabular;
             else QVERIFY2(crossTable > *tabular + 0.5, "seen across its length, the luminaire glares more");
         }
+        // Crosswise the observer looks toward C0: the luminaires ahead show their C180 side, so
+        // a luminaire bright toward C180 glares more than its mirror image bright toward C0.
+        std::vector<double> circle;
+        for (int c = 0; c <= 360; c += 15) circle.push_back(c);
+        for (int sign : {1, -1})
+            writeText(dir_.filePath(sign > 0 ? "towardC0.ies" : "towardC180.ies"),
+                      iesText([&](double c, double g) {
+                          return g <= 90 ? 300 * std::sqrt(std::cos(g * kDeg)) * (1 + 0.9 * sign * std::cos(c * kDeg)) : 0.0;
+                      }, 0.6, 0.6, 0, circle));
+        const GoniometricDistribution c0 = loadLuminaireFile(dir_.filePath("towardC0.ies").toStdString());
+        const GoniometricDistribution c180 = loadLuminaireFile(dir_.filePath("towardC180.ies").toStdString());
+        const double ugrC0 = *tabularUgr({&c0, 3000, {}}, 1.0, room, UgrViewing::Crosswise, rho);
+        const double ugrC180 = *tabularUgr({&c180, 3000, {}}, 1.0, room, UgrViewing::Crosswise, rho);
+        QVERIFY2(ugrC180 > ugrC0 + 1, qPrintable(QString("toward C180 %1, toward C0 %2").arg(ugrC180).arg(ugrC0)));
+        // And the scene agrees on which way that is.
+        for (const char* file : {"towardC0.ies", "towardC180.ies"}) {
+            writeText(dir_.filePath("asym.json"), roomScene(X, Y, kEye + Hm, rho, Hm, file, 270, 3000));
+            TaskContext ctx{CancellationToken()};
+            const GlareResult r = evaluateGlare(loadScene(dir_.filePath("asym.json").toStdString()),
+                                                GlareObserver{V3d(X / 2, kEye, 0.01), V3d(0, 0, 1)}, GlareSettings{}, ctx);
+            const double tabular = std::string(file) == "towardC0.ies" ? ugrC0 : ugrC180;
+            qInfo("crosswise, bright %s: tabular %.2f, at the observer %.2f", file, tabular, r.ugr.value_or(0));
+            QVERIFY2(r.ugr && std::abs(*r.ugr - tabular) < 1.0, qPrintable(QString("%1: %2 against %3").arg(file).arg(r.ugr.value_or(0)).arg(tabular)));
+        }
+
         // The table's rows and columns are the ones laid out, each the single value's.
         const UgrTable table = ugrTable(luminaire, 1.0);
         QCOMPARE(table.values.size(), kUgrRooms.size());

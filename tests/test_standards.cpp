@@ -7,6 +7,7 @@
 #include "core/lighting_standards.h"
 #include "core/luminaire.h"
 #include "core/scene_io.h"
+#include "render/display/false_colour.h"
 #include "render/photometry/grid_calculation.h"
 
 #include <QDir>
@@ -196,6 +197,14 @@ void TestStandards::maintenanceFactorScalesElectricLightOnly() {
     for (Light& l : daylit.lights) l.on = l.type == LightType::Sun;
     daylit.objects.pop_back();  // the emitter panel
     QCOMPARE(describeMaintenance(maintenanceRange(daylit)), std::string("daylight only (no electric light to maintain)"));
+    // The lux view's legend says which values it shows; luminance has no such note.
+    DisplaySettings lux;
+    lux.falseColour = true;
+    lux.quantity = FalseColourQuantity::Illuminance;
+    lux.illuminanceNote = "MF 0.80";
+    QCOMPARE(luminanceLegend(lux)->unit, QString("lx, MF 0.80"));
+    lux.quantity = FalseColourQuantity::Luminance;
+    QCOMPARE(luminanceLegend(lux)->unit, QString("cd/m\u00b2"));
     // UGR's scene: the new installation.
     QVERIFY(!maintenanceRange(withoutMaintenance(maintained)).maintained());
 }
