@@ -3,6 +3,7 @@
 // sky's luminance over the opening (computed here), and EN 17037's provision figures against the
 // factors the CSV holds.
 
+#include "process_run.h"
 #include "daylight_scenes.h"
 #include "csv_table.h"
 
@@ -18,17 +19,6 @@ using namespace lucerna::test;
 
 namespace {
 
-struct Run {
-    int exitCode = -1;
-    QString out, err;
-};
-
-Run runLucerna(const QStringList& args) {
-    QProcess p;
-    p.start(LUCERNA_BINARY, args);
-    p.waitForFinished(300000);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(), p.readAllStandardError()};
-}
 
 // DF (%) at x (normal up) of the traditional overcast sky seen through the opening (the box is
 // black): 100 / (7 pi / 9) times the integral of (1 + 2 cos Z) / 3 cos theta over the opening's

@@ -4,6 +4,7 @@
 // UGR at the observer in the same room built as a scene, the glare command's bad-input lines, and
 // the calculation dock's UGR grid.
 
+#include "process_run.h"
 #include "closed_form_scenes.h"
 #include "core/glare.h"
 #include "core/luminaire.h"
@@ -145,17 +146,6 @@ void writeLinearLuminaire(const QString& path) {
     writeText(path, iesText(I, 0.2, 1.2, 0, horizontal));
 }
 
-struct CommandOutput {
-    int status = -1;
-    QString out, err;
-};
-
-CommandOutput runLucerna(const QStringList& args) {
-    QProcess p;
-    p.start(LUCERNA_BINARY, args);
-    p.waitForFinished(120000);
-    return {p.exitCode(), QString::fromUtf8(p.readAllStandardOutput()), QString::fromUtf8(p.readAllStandardError())};
-}
 
 }  // namespace
 
@@ -415,12 +405,12 @@ private slots:
     void glareCommand() {
         const QString scene = dir_.filePath("one.json");  // written by ugrOfOneLuminaireByHand
         QVERIFY(QFile::exists(scene));
-        const CommandOutput ok = runLucerna({"glare", scene, "--observer", "0,1.2,0", "--view", "0,0,1", "--error", "0.05"});
-        QCOMPARE(ok.status, 0);
+        const Run ok = runLucerna({"glare", scene, "--observer", "0,1.2,0", "--view", "0,0,1", "--error", "0.05"});
+        QCOMPARE(ok.exitCode, 0);
         QVERIFY2(ok.out.contains(QRegularExpression("UGR \\d+\\.\\d \\+- \\d+\\.\\d \\(95%\\)")), qPrintable(ok.out));
         QVERIFY(ok.out.contains("panel") && ok.out.contains("100.0%"));
-        const CommandOutput table = runLucerna({"glare", "--table", dir_.filePath("flat.ies"), "--lumens", "3000"});
-        QCOMPARE(table.status, 0);
+        const Run table = runLucerna({"glare", "--table", dir_.filePath("flat.ies"), "--lumens", "3000"});
+        QCOMPARE(table.exitCode, 0);
         QVERIFY2(table.out.contains("spacing-to-height 1.00") && table.out.contains("spacing-to-height 0.25") &&
                      table.out.contains(" 12H x  8H"),
                  qPrintable(table.out));
@@ -447,17 +437,17 @@ private slots:
             {{"glare", scene, "--lumens", "100"}, "lucerna: glare: --lumens and --luminous-area go with --table FILE"},
         };
         for (const auto& c : cases) {
-            const CommandOutput r = runLucerna(c.args);
-            QCOMPARE(r.status, 2);
+            const Run r = runLucerna(c.args);
+            QCOMPARE(r.exitCode, 2);
             QCOMPARE(r.out, QString());
             QCOMPARE(r.err, c.line + "\n");
         }
         // A scene that cannot be read: one line naming it.
-        const CommandOutput gone = runLucerna({"glare", missing, "--observer", "1,2,3", "--view", "0,0,1"});
-        QCOMPARE(gone.status, 2);
+        const Run gone = runLucerna({"glare", missing, "--observer", "1,2,3", "--view", "0,0,1"});
+        QCOMPARE(gone.exitCode, 2);
         QVERIFY(gone.err.startsWith("lucerna: ") && gone.err.contains("missing.json") && gone.err.count('\n') == 1);
-        const CommandOutput badFile = runLucerna({"glare", "--table", dir_.filePath("one.json")});
-        QCOMPARE(badFile.status, 2);
+        const Run badFile = runLucerna({"glare", "--table", dir_.filePath("one.json")});
+        QCOMPARE(badFile.exitCode, 2);
         QVERIFY(badFile.err.contains("not a luminaire file") && badFile.err.count('\n') == 1);
     }
 

@@ -5,6 +5,7 @@
 // ones `lucerna grid` prints for the same seed, samples and error target, no word lies outside
 // the page's margins; bad input, Ctrl-C; and File > Export Report driven in the window.
 
+#include "process_run.h"
 #include "ui/file_dialogs.h"
 #include "ui/main_window.h"
 #include "ui/report_export.h"
@@ -24,30 +25,27 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <charconv>
+#include <cmath>
 #include <csignal>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 namespace {
+
+// A number the output prints ("512.3"), read back in the C locale as it was written.
+double decimal(const QString& text) {
+    const std::string s = text.toStdString();
+    double x = std::nan("");
+    std::from_chars(s.data(), s.data() + s.size(), x);
+    return x;
+}
 
 const QString kScenes = QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/");
 // Small settings: a coarse error target and few samples, so that a report takes a second or two.
 const QStringList kSmall = {"--error", "0.15", "--seed", "7", "--samples", "8"};
 
-struct Run {
-    int exitCode = -1;
-    QString out, err;
-};
-
-Run run(const QString& program, const QStringList& args, int timeoutMs = 120000) {
-    QProcess p;
-    p.start(program, args);
-    p.waitForFinished(timeoutMs);
-    return {p.exitStatus() == QProcess::NormalExit ? p.exitCode() : -1, p.readAllStandardOutput(),
-            p.readAllStandardError()};
-}
-
-Run runLucerna(const QStringList& args) { return run(LUCERNA_BINARY, args); }
 
 // poppler-utils are the test's eyes: without them it cannot read the PDF, and says how to get them.
 bool havePoppler() {
@@ -58,7 +56,7 @@ bool havePoppler() {
         QFAIL("pdftotext and pdftoppm (poppler-utils) are missing: packaging/install-deps.sh installs them")
 
 QString pdfText(const QString& pdf) {
-    const Run r = run("pdftotext", {pdf, "-"});
+    const Run r = runProgram("pdftotext", {pdf, "-"});
     return r.out;
 }
 
@@ -89,7 +87,7 @@ QString gridLine(const QStringList& args, bool daylightFactor = false) {
 // some non-white pixels in the band where the flow writes.
 void checkPagesHaveContent(const QString& pdf, int expectedPages) {
     QTemporaryDir dir;
-    const Run r = run("pdftoppm", {"-r", "30", "-png", pdf, dir.filePath("page")});
+    const Run r = runProgram("pdftoppm", {"-r", "30", "-png", pdf, dir.filePath("page")});
     QCOMPARE(r.exitCode, 0);
     const QStringList pages = QDir(dir.path()).entryList({"page*.png"}, QDir::Files, QDir::Name);
     QCOMPARE(int(pages.size()), expectedPages);
@@ -109,21 +107,21 @@ void checkPagesHaveContent(const QString& pdf, int expectedPages) {
 // pdftotext -bbox: every word lies within the page less 8 mm all round (the margins are 15 to
 // 20 mm; the header and footer 11 and 12 mm from the edges).
 void checkWordsInsidePage(const QString& pdf) {
-    const Run r = run("pdftotext", {"-bbox", pdf, "-"});
+    const Run r = runProgram("pdftotext", {"-bbox", pdf, "-"});
     QCOMPARE(r.exitCode, 0);
     static const QRegularExpression page(R"re(<page width="([0-9.]+)" height="([0-9.]+)">)re");
     static const QRegularExpression word(
         R"re(<word xMin="([0-9.-]+)" yMin="([0-9.-]+)" xMax="([0-9.-]+)" yMax="([0-9.-]+)">([^<]*)</word>)re");
     const auto size = page.match(r.out);
     QVERIFY(size.hasMatch());
-    const double width = size.captured(1).toDouble(), height = size.captured(2).toDouble();
+    const double width = decimal(size.captured(1)), height = decimal(size.captured(2));
     QVERIFY(std::abs(width - 595) < 2 && std::abs(height - 842) < 2);  // A4 portrait, in points
     const double margin = 8 / 25.4 * 72;
     int words = 0;
     for (auto it = word.globalMatch(r.out); it.hasNext(); ++words) {
         const auto m = it.next();
-        const double x0 = m.captured(1).toDouble(), y0 = m.captured(2).toDouble();
-        const double x1 = m.captured(3).toDouble(), y1 = m.captured(4).toDouble();
+        const double x0 = decimal(m.captured(1)), y0 = decimal(m.captured(2));
+        const double x1 = decimal(m.captured(3)), y1 = decimal(m.captured(4));
         QVERIFY2(x0 >= margin && y0 >= margin && x1 <= width - margin && y1 <= height - margin,
                  qPrintable(QString("'%1' at %2, %3 to %4, %5").arg(m.captured(5)).arg(x0).arg(y0).arg(x1).arg(y1)));
     }
@@ -131,7 +129,7 @@ void checkWordsInsidePage(const QString& pdf) {
 }
 
 int pageCount(const QString& pdf) {
-    const Run r = run("pdfinfo", {pdf});
+    const Run r = runProgram("pdfinfo", {pdf});
     static const QRegularExpression pages(R"re(Pages:\s+(\d+))re");
     const auto m = pages.match(r.out);
     return m.hasMatch() ? m.captured(1).toInt() : -1;

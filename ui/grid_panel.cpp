@@ -241,7 +241,7 @@ void GridPanel::computeUgr(const SceneSnapshot& scene, const CalculationGrid& gr
         status_->setText(tr("UGR needs a horizontal grid (the observers stand over it): draw it on a floor or a table"));
         return;
     }
-    eyeHeightM_ = eyeHeight_->currentData().toDouble();
+    eyeHeightM_ = eyeHeight_->currentData().value<double>();
     eyes_ = observerPositions(layout_, sceneBounds(*scene).lo.y, scene->metersPerUnit, eyeHeightM_);
     const auto along = GridViewDirection(viewAlong_->currentData().toInt());
     view_ = gridViewDirection(grid, along);
