@@ -3,10 +3,10 @@
 
 #include "app/bench_plot.h"
 #include "core/atomic_file.h"
-#include "core/exr_io.h"
-#include "core/image_metrics.h"
+#include "core/image/exr_io.h"
+#include "core/image/image_metrics.h"
 #include "core/number_format.h"
-#include "core/scene_io.h"
+#include "core/scene/scene_io.h"
 #include "core/task_system.h"
 #include "render/backend/pass_loop.h"
 #include "render/engine/backend_table.h"
@@ -125,7 +125,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
     // Arena slots run from 0 to the arena's concurrency (one more for a master thread).
     RayRecorder rays(std::max(tasks.threadCount(), int(std::thread::hardware_concurrency())) + 1, /*countOnly=*/true);
     settings.rayRecorder = &rays;
-    std::unique_ptr<ProgressiveBackend> backend;
+    std::unique_ptr<Backend> backend;
     try {
         backend = findBackend(run.backend)->make(scene, settings);
     } catch (const std::invalid_argument& e) {
@@ -138,7 +138,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
         rays.resetCounts();  // the passes' rays only, as the time is the passes' only
         PassLoopOptions everyPass;
         everyPass.publishSeconds = 0;
-        runProgressive(*backend, run.backend, settings, ctx, &latest, everyPass);
+        runPasses(*backend, run.backend, settings, ctx, &latest, everyPass);
     });
 
     std::vector<BenchSample> samples;

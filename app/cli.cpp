@@ -1,14 +1,14 @@
 #include "app/cli.h"
 #include "app/cli_support.h"
 
-#include "core/daylight.h"
-#include "core/exr_io.h"
-#include "core/image_metrics.h"
-#include "core/lighting_standards.h"
-#include "core/luminaire.h"
+#include "core/daylight/daylight.h"
+#include "core/image/exr_io.h"
+#include "core/image/image_metrics.h"
+#include "core/photometry/lighting_standards.h"
+#include "core/photometry/luminaire.h"
 #include "core/number_format.h"
-#include "core/scene_io.h"
-#include "core/sky_model.h"
+#include "core/scene/scene_io.h"
+#include "core/daylight/sky_model.h"
 #include "core/task_system.h"
 #include "render/backend/film.h"
 #include "render/backend/light_layers/layered_backend.h"
@@ -128,7 +128,7 @@ struct RenderSetup {
     SceneSnapshot scene;
     std::string backendName;
     const BackendInfo* info = nullptr;
-    std::unique_ptr<ProgressiveBackend> backend;
+    std::unique_ptr<Backend> backend;
     int width = 0, height = 0;
     std::optional<GridMethod> illuminanceMethod;
 };
@@ -186,7 +186,7 @@ RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup
     return s;
 }
 
-// A test's fault (tests/test_mpi.cpp): with LUCERNA_TEST_ABORT_RANK=N in the environment, rank N
+// A test's fault (tests/app/test_mpi.cpp): with LUCERNA_TEST_ABORT_RANK=N in the environment, rank N
 // of a distributed render aborts after its first pass, as a node that dies would.
 std::function<void(int)> testFault(const ProcessGroup* processes) {
     const char* rank = std::getenv("LUCERNA_TEST_ABORT_RANK");
@@ -257,7 +257,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     auto job = tasks.submit([&](TaskContext& ctx) {
         s.backend->prepare(ctx);
         if (ctx.isCancelled()) return;
-        RenderFrame frame = runProgressive(*s.backend, backendName, r.settings, ctx, nullptr, loop);
+        RenderFrame frame = runPasses(*s.backend, backendName, r.settings, ctx, nullptr, loop);
         if (ctx.isCancelled() || (frame.passes == 0 && interrupted() && !processes)) return;  // nothing converged to save
         if (r.layers & kIlluminanceLayer) {
             ctx.setProgress(0);

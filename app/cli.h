@@ -18,7 +18,7 @@ int compare(const std::vector<std::string>& args);
 int info(const std::vector<std::string>& args);
 // convert IN.exr OUT.png [--exposure STOPS]: what the screen would show (sRGB).
 int convert(const std::vector<std::string>& args);
-// `lucerna standards`: the bundled EN 12464-1 table (core/lighting_standards.h), one activity a line.
+// `lucerna standards`: the bundled EN 12464-1 table (core/photometry/lighting_standards.h), one activity a line.
 int standards(const std::vector<std::string>& args);
 void printUsage();
 

@@ -1,10 +1,10 @@
 #include "app/glare_command.h"
 #include "app/cli_support.h"
 
-#include "core/glare.h"
-#include "core/luminaire.h"
-#include "core/scene_io.h"
-#include "core/ugr_table.h"
+#include "core/photometry/glare.h"
+#include "core/photometry/luminaire.h"
+#include "core/scene/scene_io.h"
+#include "core/photometry/ugr_table.h"
 #include "render/photometry/glare_evaluation.h"
 
 #include <cmath>

@@ -1,7 +1,7 @@
 #pragma once
 // `lucerna glare`: discomfort glare (UGR, CIE 117) at an observer in a scene
 // (render/photometry/glare_evaluation.h), or a luminaire file's UGR table by the tabular method
-// (core/ugr_table.h).
+// (core/photometry/ugr_table.h).
 
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// `lucerna grid`: illuminance on a calculation grid (core/calculation_grid.h) with the figures of
+// `lucerna grid`: illuminance on a calculation grid (core/photometry/calculation_grid.h) with the figures of
 // EN 12464-1 (Eavg, Emin, Emax, U0) and a Monte Carlo error bar per point.
 
 #include <string>

@@ -1,9 +1,9 @@
 #include "app/import_command.h"
 
 #include "app/cli_support.h"
-#include "core/mesh_file.h"
-#include "core/model_import.h"
-#include "core/scene_io.h"
+#include "core/mesh/mesh_file.h"
+#include "core/mesh/model_import.h"
+#include "core/scene/scene_io.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,5 +1,5 @@
 #pragma once
-// `lucerna import`: a model file (core/model_import.h) written out as a SPEC.md scene with a
+// `lucerna import`: a model file (core/mesh/model_import.h) written out as a SPEC.md scene with a
 // camera that looks at it, and the import report printed.
 
 #include <string>

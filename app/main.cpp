@@ -8,8 +8,8 @@
 #include "app/report_command.h"
 #include "app/mpi_session.h"
 #include "core/resources.h"
-#include "ui/autosave.h"
-#include "ui/main_window.h"
+#include "ui/document/autosave.h"
+#include "ui/window/main_window.h"
 
 #include <QApplication>
 #include <QCoreApplication>

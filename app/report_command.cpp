@@ -1,7 +1,7 @@
 #include "app/report_command.h"
 #include "app/cli_support.h"
 
-#include "core/scene_io.h"
+#include "core/scene/scene_io.h"
 #include "core/task_system.h"
 #include "report/report_builder.h"
 #include "report/report_writer.h"

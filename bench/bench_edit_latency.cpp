@@ -8,9 +8,9 @@
 // prints the time the edit itself holds the window (the document, outliner, panels, preview
 // updates) and the time until the converging render shows its first frame of the edited scene.
 
-#include "ui/converging_render.h"
-#include "ui/document.h"
-#include "ui/main_window.h"
+#include "ui/rendering/converging_render.h"
+#include "ui/document/document.h"
+#include "ui/window/main_window.h"
 
 #include <QApplication>
 #include <QElapsedTimer>

@@ -8,9 +8,9 @@
 // and the alternatives compared (each averaged over the seeds), so that a change of estimator is
 // decided on figures, not on one scene.
 
-#include "core/exr_io.h"
-#include "core/image_metrics.h"
-#include "core/scene_io.h"
+#include "core/image/exr_io.h"
+#include "core/image/image_metrics.h"
+#include "core/scene/scene_io.h"
 #include "core/task_system.h"
 #include "render/backend/film.h"
 #include "render/engine/backend_table.h"

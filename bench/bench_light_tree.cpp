@@ -7,7 +7,7 @@
 //                                          10,000 point lights over a plane, the field growing
 //                                          with the count (the lamps 1 m apart, the camera's view
 //                                          the same), against the closed form (sum of I cos / r^2;
-//                                          tests/closed_form_scenes.h), mean over SEEDS seeds;
+//                                          tests/support/closed_form_scenes.h), mean over SEEDS seeds;
 //                                          also rays per second of each
 //
 // Run from a Release build, on an otherwise idle machine for the times.
@@ -15,7 +15,7 @@
 #include "closed_form_scenes.h"
 #include "render_helpers.h"
 
-#include "core/image_metrics.h"
+#include "core/image/image_metrics.h"
 #include "render/trace/light_tree.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"

@@ -16,9 +16,9 @@
 // --target: only the llvmpipe budget, the defaults at 640x480 (256 VPLs, 4x4), per pass,
 //           with each split mode (fused, one pass, two passes) in turns.
 
-#include "core/exr_io.h"
-#include "core/image_metrics.h"
-#include "core/scene_io.h"
+#include "core/image/exr_io.h"
+#include "core/image/image_metrics.h"
+#include "core/scene/scene_io.h"
 #include "render/preview/preview.h"
 
 #include <chrono>

@@ -8,7 +8,7 @@
 // usage: bench_rays SCENE.json [--spp N] [--threads N] [--million]
 //   --million adds a tessellated bumpy sphere of about a million triangles to the scene.
 
-#include "core/scene_io.h"
+#include "core/scene/scene_io.h"
 #include "core/task_system.h"
 #include "render/backend/film.h"
 #include "render/progressive/path/path_backend.h"

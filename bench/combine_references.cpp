@@ -5,8 +5,8 @@
 // references (bdpt and cmlt, bench/families.sh).
 //   bench_combine_references OUT.exr IN.exr IN.exr...
 
-#include "core/exr_io.h"
-#include "core/image_metrics.h"
+#include "core/image/exr_io.h"
+#include "core/image/image_metrics.h"
 
 #include <cstdio>
 #include <exception>

@@ -2,7 +2,7 @@
 // --expect V its relative error against V: the closed forms of the sphere family (bench/families.sh).
 //   bench_image_mean [--expect V] FILE.exr...
 
-#include "core/exr_io.h"
+#include "core/image/exr_io.h"
 
 #include <cstdio>
 #include <cstring>

@@ -14,9 +14,9 @@
 //   of burning a spot into it.
 // The files are written deterministically: running this again reproduces them byte for byte.
 
-#include "core/eulumdat_file.h"
-#include "core/ies_file.h"
-#include "core/photometric_units.h"
+#include "core/photometry/eulumdat_file.h"
+#include "core/photometry/ies_file.h"
+#include "core/photometry/photometric_units.h"
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-// Writes the preview's scene families (tests/scene_families.h, tests/closed_form_scenes.h) at the
+// Writes the preview's scene families (tests/support/scene_families.h, tests/support/closed_form_scenes.h) at the
 // sizes the preview issue names, for bench_preview and the command line:
 //   bench_make_scenes DIR
 // office-135 (15 x 9 ceiling lights), office-100 (10 x 10), lights-1000 (40 x 25 in a 60 x 36 m
@@ -12,7 +12,7 @@
 #include "closed_form_scenes.h"
 #include "scene_families.h"
 
-#include "core/exr_io.h"
+#include "core/image/exr_io.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,12 +1,12 @@
 #include "report/luminaire_schedule.h"
 
-#include "core/daylight.h"
-#include "core/goniometric_distribution.h"
-#include "core/light_output.h"
-#include "core/luminaire.h"
+#include "core/daylight/daylight.h"
+#include "core/photometry/goniometric_distribution.h"
+#include "core/photometry/light_output.h"
+#include "core/photometry/luminaire.h"
 #include "core/number_format.h"
-#include "core/photometric_units.h"
-#include "core/scene_geometry.h"
+#include "core/photometry/photometric_units.h"
+#include "core/scene/scene_geometry.h"
 
 #include <algorithm>
 #include <cmath>

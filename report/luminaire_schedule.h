@@ -11,7 +11,7 @@ namespace lucerna {
 // maintenance factor); the floor area is the geometry's extent in plan (x by z, y up).
 Schedule luminaireSchedule(const Scene& scene);
 
-// What the report's figures are, as `lucerna grid` and the grid dock say it (core/scene.h,
+// What the report's figures are, as `lucerna grid` and the grid dock say it (core/scene/scene.h,
 // describeMaintenance): "maintained values (maintenance factor 0.80)", "values of the new
 // installation (no maintenance factor)" or "daylight only (no electric light to maintain)".
 std::string maintenanceStatement(const Scene& scene);

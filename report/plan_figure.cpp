@@ -1,6 +1,6 @@
 #include "report/plan_figure.h"
 
-#include "core/scene_geometry.h"
+#include "core/scene/scene_geometry.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"

@@ -1,8 +1,8 @@
 #include "report/report_builder.h"
 
-#include "core/daylight.h"
-#include "core/glare.h"
-#include "core/scene_geometry.h"
+#include "core/daylight/daylight.h"
+#include "core/photometry/glare.h"
+#include "core/scene/scene_geometry.h"
 #include "render/backend/pass_loop.h"
 #include "render/display/false_colour.h"
 #include "render/engine/backend_table.h"
@@ -127,10 +127,10 @@ ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& set
     RenderSettings rs;
     rs.spp = settings.renderSpp;
     rs.seed = settings.grid.seed;
-    const std::unique_ptr<ProgressiveBackend> backend = info->make(sceneAsRendered(scene), rs);
+    const std::unique_ptr<Backend> backend = info->make(sceneAsRendered(scene), rs);
     backend->prepare(ctx);
     if (ctx.isCancelled()) return r;
-    RenderFrame frame = runProgressive(*backend, r.backend, rs, ctx);
+    RenderFrame frame = runPasses(*backend, r.backend, rs, ctx);
     r.samplesPerPixel = frame.samplesPerPixel;
     r.seconds = frame.seconds;
     r.estimatedRelmse = frame.estimatedRelmse;

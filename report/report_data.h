@@ -3,12 +3,12 @@
 // scene by report_builder.h, laid out on pages by report_writer.h. Every figure here is the one
 // printed, so that a test can read the PDF back against it.
 
-#include "core/calculation_grid.h"
-#include "core/daylight_provision.h"
-#include "core/glare.h"
-#include "core/image.h"
-#include "core/lighting_standards.h"
-#include "core/scene.h"
+#include "core/photometry/calculation_grid.h"
+#include "core/daylight/daylight_provision.h"
+#include "core/photometry/glare.h"
+#include "core/image/image.h"
+#include "core/photometry/lighting_standards.h"
+#include "core/scene/scene.h"
 #include "render/photometry/glare_evaluation.h"
 #include "render/photometry/grid_calculation.h"
 
@@ -61,7 +61,7 @@ struct Schedule {
 // One glare observer of a task area and what it sees.
 struct ObserverGlare {
     GlareObserver observer;       // scene units
-    bool defaultObserver = false; // one of the four placed at the area's edges (core/glare.h)
+    bool defaultObserver = false; // one of the four placed at the area's edges (core/photometry/glare.h)
     GlareResult result;
 };
 

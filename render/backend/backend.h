@@ -3,8 +3,8 @@
 // backend owns its film; the pass loop (pass_loop.h) schedules its passes and publishes frames.
 // The table that names the backends is a layer above (render/engine/backend_table.h).
 
-#include "core/image.h"
-#include "core/scene.h"
+#include "core/image/image.h"
+#include "core/scene/scene.h"
 #include "core/task_system.h"
 #include "render/backend/film.h"
 #include "render/trace/sensor.h"
@@ -33,9 +33,9 @@ struct RenderSettings {
     std::map<std::string, std::string> options;
 };
 
-class ProgressiveBackend {
+class Backend {
 public:
-    virtual ~ProgressiveBackend() = default;
+    virtual ~Backend() = default;
 
     // Builds what rendering needs (acceleration structure, light tables). Not part of a --time
     // budget. May throw std::runtime_error.
@@ -58,6 +58,6 @@ public:
 };
 
 // Makes a backend for a scene; the backend prepares nothing until prepare().
-using BackendFactory = std::unique_ptr<ProgressiveBackend> (*)(SceneSnapshot, const RenderSettings&);
+using BackendFactory = std::unique_ptr<Backend> (*)(SceneSnapshot, const RenderSettings&);
 
 }  // namespace lucerna

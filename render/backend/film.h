@@ -3,7 +3,7 @@
 // one from the odd passes; their difference estimates the error of the combined image without a
 // reference (DESIGN.md, "Speed against error").
 
-#include "core/image.h"
+#include "core/image/image.h"
 
 #include <array>
 #include <functional>

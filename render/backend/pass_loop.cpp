@@ -12,7 +12,7 @@
 
 namespace lucerna {
 
-RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view backendName,
+RenderFrame makeRenderFrame(const Backend& backend, std::string_view backendName,
                             const RenderSettings& settings, double seconds, int passes) {
     RenderFrame f;
     f.image = backend.film().image();
@@ -30,7 +30,7 @@ RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view 
     return f;
 }
 
-RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
+RenderFrame runPasses(Backend& backend, std::string_view backendName, const RenderSettings& settings,
                            TaskContext& ctx, Latest<RenderFrame>* latest, const PassLoopOptions& options) {
     using Clock = std::chrono::steady_clock;
     const int renderPasses =

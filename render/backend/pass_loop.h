@@ -21,7 +21,7 @@ struct RenderFrame {
 
 // The frame of a backend's film now: the combined image with SPEC.md's header attributes, the
 // backend's diagnostics and its image layers (per-light layers).
-RenderFrame makeRenderFrame(const ProgressiveBackend& backend, std::string_view backendName,
+RenderFrame makeRenderFrame(const Backend& backend, std::string_view backendName,
                             const RenderSettings& settings, double seconds, int passes);
 
 // How the loop runs beyond the settings' spp and seconds.
@@ -59,7 +59,7 @@ struct PassLoopOptions {
 // which a share (options.shareIndex) runs here.
 // Render time is the wall-clock time since the call less the held time. Sets the context's
 // progress. Returns the final frame (complete passes only; empty when open-ended).
-RenderFrame runProgressive(ProgressiveBackend& backend, std::string_view backendName, const RenderSettings& settings,
+RenderFrame runPasses(Backend& backend, std::string_view backendName, const RenderSettings& settings,
                            TaskContext& ctx, Latest<RenderFrame>* latest = nullptr, const PassLoopOptions& options = {});
 
 }  // namespace lucerna

@@ -4,7 +4,7 @@
 
 namespace lucerna {
 
-void poolFilms(ProgressiveBackend& backend, ProcessGroup& group) {
+void poolFilms(Backend& backend, ProcessGroup& group) {
     // Blocks of 4 Mi values (32 MB): the film is pooled in place, never copied whole.
     constexpr size_t kBlock = size_t(1) << 22;
     backend.rewriteFilms([&](Film& film) {

@@ -12,9 +12,9 @@
 namespace lucerna {
 
 // Collective: every process calls it once its passes are done. On rank 0 the backend's films are
-// then the pooled ones (ProgressiveBackend::rewriteFilms), so that its frame is the whole run's;
+// then the pooled ones (Backend::rewriteFilms), so that its frame is the whole run's;
 // the other processes' films stay their own (with unit half scales).
-void poolFilms(ProgressiveBackend& backend, ProcessGroup& group);
+void poolFilms(Backend& backend, ProcessGroup& group);
 
 // The seed of a process's own Metropolis chains: the render's seed on rank 0 (so that one rank
 // renders what one process does), a seed derived from it elsewhere.

@@ -4,7 +4,7 @@
 // difference of two images in false colour. All views and the PNG export use these, so what is
 // exported is what the screen shows.
 
-#include "core/image.h"
+#include "core/image/image.h"
 
 #include <QImage>
 #include <QString>

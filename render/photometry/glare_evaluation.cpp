@@ -1,7 +1,7 @@
 #include "render/photometry/glare_evaluation.h"
 
-#include "core/glare.h"
-#include "core/luminaire.h"
+#include "core/photometry/glare.h"
+#include "core/photometry/luminaire.h"
 #include "render/photometry/grid_diagnosis.h"
 #include "render/photometry/irradiance_estimator.h"
 #include "render/trace/render_scene.h"

@@ -1,12 +1,12 @@
 #pragma once
 // UGR at an observer in a scene (CIE 117-1995; README, "Glare (UGR)"): the sum over the
-// luminaires the eye sees of L^2 omega / p^2 (core/glare.h) against the background luminance Lb,
+// luminaires the eye sees of L^2 omega / p^2 (core/photometry/glare.h) against the background luminance Lb,
 // the indirect illuminance at the eye over pi.
 //
 // What is evaluated: the scene without maintenance factors (UGR is rated for the new
 // installation, CIE 117) and without the lights switched off; daylight (the sky, suns and
 // directional lights) is left out, since UGR rates the electric lighting.
-//   - Sources: luminaires whose centre lies in the field of view of core/glare.h, with their
+//   - Sources: luminaires whose centre lies in the field of view of core/photometry/glare.h, with their
 //     luminance from their photometric data and luminous area (the "luminous_area" key, or the
 //     file's opening), each seen along one ray from the eye to its centre: an opaque surface on
 //     the way hides it (one within 1 cm of the luminaire, its own ceiling, does not), glazing
@@ -21,7 +21,7 @@
 // The line of sight is the view direction made horizontal (CIE 117 assumes a horizontal line of
 // sight); a view straight up or down is refused (std::invalid_argument).
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// Illuminance on the points of a calculation grid (core/calculation_grid.h), progressively, by
+// Illuminance on the points of a calculation grid (core/photometry/calculation_grid.h), progressively, by
 // one of three kinds of method:
 //   - path, ir: the irradiance estimators of those backends (irradiance_estimator.h). Each pass
 //     adds independent estimates at every point, and the error bar of a point comes from the
@@ -95,7 +95,7 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
                                   const std::function<void(const GridResult&)>& onPass = {});
 
 // The grid of a scene as `lucerna grid` and the report compute it, so that their numbers agree
-// for the same settings: the scene as rendered (core/scene.h, sceneAsRendered: the lights
+// for the same settings: the scene as rendered (core/scene/scene.h, sceneAsRendered: the lights
 // switched off left out, maintenance factors applied), compiled with settings.lightSelection,
 // then computeGridIlluminance. Cancelled before the calculation starts (and not distributed, where
 // every process goes on to the exchanges): an empty result.

@@ -1,7 +1,7 @@
 #pragma once
 // What a calculation grid checks about its points before it trusts a method's figures:
 //   - points inside closed geometry (in a cabinet, a partition, a desk top), where no work is done
-//     and whose 0 lx would pull Emin and U0 to 0: left out of the figures (core/calculation_grid.h);
+//     and whose 0 lx would pull Emin and U0 to 0: left out of the figures (core/photometry/calculation_grid.h);
 //   - points that a delta light (point, spot, luminaire, sun) reaches only through glass: no random
 //     path reaches them (a delta light behind a delta interface), so a method whose direct light is
 //     a shadow ray (path, ir, preview) reads 0 there with a 0 error bar it cannot back. The sensor

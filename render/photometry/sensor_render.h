@@ -43,7 +43,7 @@ public:
 private:
     std::shared_ptr<const Sensor> sensor_;
     std::vector<double> deltaLux_;
-    std::unique_ptr<ProgressiveBackend> backend_;
+    std::unique_ptr<Backend> backend_;
 };
 
 }  // namespace lucerna

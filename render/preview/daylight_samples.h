@@ -6,7 +6,7 @@
 // carrying its share of the irradiance, so that for any receiver and any occluder the sum is an
 // unbiased estimate of the sky's light (frames with fresh directions average to it).
 
-#include "core/daylight.h"
+#include "core/daylight/daylight.h"
 #include "core/math.h"
 
 #include <optional>

@@ -2,7 +2,7 @@
 // split (with the discontinuity buffer), interleaved VPL shading, gather with the horizontal
 // blur, vertical blur with the direct light and the blend.
 
-#include "core/sky_model.h"
+#include "core/daylight/sky_model.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/luminaire_textures.h"
 #include "render/trace/rng.h"

@@ -2,7 +2,7 @@
 // Private to the preview's sources (preview.cpp: scene and VPLs; frame_passes.cpp: the passes):
 // the GL objects and CPU-side data behind Preview, and the GPU buffer layouts the shaders mirror.
 
-#include "core/daylight.h"
+#include "core/daylight/daylight.h"
 #include "render/preview/gl_objects.h"
 #include "render/preview/per_light_vpls.h"
 #include "render/preview/shadow_maps.h"

@@ -48,7 +48,7 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
 
 namespace {
 
-class PreviewBackend final : public ProgressiveBackend {
+class PreviewBackend final : public Backend {
 public:
     PreviewBackend(SceneSnapshot scene, const RenderSettings& settings)
         : snapshot_(std::move(scene)), settings_(settings), previewSettings_(previewSettingsFromOptions(settings)) {}
@@ -107,7 +107,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makePreviewBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makePreviewBackend(SceneSnapshot scene, const RenderSettings& settings) {
     return std::make_unique<PreviewBackend>(std::move(scene), settings);
 }
 

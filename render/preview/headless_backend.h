@@ -15,6 +15,6 @@ namespace lucerna {
 // Reads the options above into preview settings; throws std::invalid_argument on a bad value.
 PreviewSettings previewSettingsFromOptions(const RenderSettings& settings);
 
-std::unique_ptr<ProgressiveBackend> makePreviewBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makePreviewBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

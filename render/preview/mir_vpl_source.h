@@ -12,7 +12,7 @@
 // the RenderScene's, so that a light edit needs no new RenderScene; and the camera is the
 // preview's current one.
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "render/trace/light_sampler.h"
 #include "render/trace/render_scene.h"
 #include "render/vpl/vpl.h"

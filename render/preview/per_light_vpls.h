@@ -8,7 +8,7 @@
 // traceLightPath); this file only drives it per light from the preview's own copy of the lights,
 // so that an edited light needs no new RenderScene (no BVH rebuild).
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "render/trace/light_sampler.h"
 #include "render/trace/render_scene.h"
 #include "render/vpl/vpl.h"

@@ -1,6 +1,6 @@
 #include "render/preview/preview.h"
 
-#include "core/scene_change.h"
+#include "core/scene/scene_change.h"
 
 #include "render/preview/daylight_samples.h"
 #include "render/preview/gpu_state.h"

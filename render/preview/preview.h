@@ -11,8 +11,8 @@
 // Threading: the object may be used from any one thread at a time; each call makes the context
 // current and releases it, so task threads can take turns.
 
-#include "core/image.h"
-#include "core/scene.h"
+#include "core/image/image.h"
+#include "core/scene/scene.h"
 #include "render/preview/egl_context.h"
 #include "render/vpl/vpl.h"
 
@@ -126,7 +126,7 @@ public:
     // width/height override the camera's resolution (0: keep).
     void setScene(SceneSnapshot scene, int width = 0, int height = 0);
     // Takes the newest version of the scene and redraws only what changed since the one before
-    // (core/scene_change.h): the camera, the lights that differ (a light whose power alone
+    // (core/scene/scene_change.h): the camera, the lights that differ (a light whose power alone
     // changed keeps its VPLs, scaled), or everything (setScene) when geometry, materials, the
     // number of lights or the size changed. width/height as for setScene.
     void update(SceneSnapshot scene, int width = 0, int height = 0);

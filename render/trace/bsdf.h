@@ -13,7 +13,7 @@
 // and the pdf, so throughput *= weight is all a path tracer does.
 
 #include "core/math.h"
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 namespace lucerna {
 

@@ -2,7 +2,7 @@
 // The pinhole camera of SPEC.md section 1: raster (x, y) in [0, W] x [0, H], y down, looks along
 // f + (2x/W - 1)(W/H) t r + (1 - 2y/H) t u with t = tan(fov_y / 2).
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "render/trace/embree_scene.h"
 
 namespace lucerna {

@@ -5,7 +5,7 @@
 // (cos theta, phi) about +y) mixed with uniform sampling of the sun's cone, in proportion to
 // their power; pdf() is the mixture's density, for MIS with BSDF sampling.
 
-#include "core/daylight.h"
+#include "core/daylight/daylight.h"
 #include "render/trace/discrete_distribution.h"
 
 #include <optional>

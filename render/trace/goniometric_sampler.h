@@ -5,7 +5,7 @@
 // uniformly in C and cos(gamma) (uniform in solid angle), so the density is piecewise constant:
 // P(cell) / (solid angle of the cell).
 
-#include "core/goniometric_distribution.h"
+#include "core/photometry/goniometric_distribution.h"
 #include "core/math.h"
 #include "render/trace/discrete_distribution.h"
 

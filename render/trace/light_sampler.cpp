@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/luminaire.h"
+#include "core/photometry/luminaire.h"
 #include "render/trace/warp.h"
 
 namespace lucerna {

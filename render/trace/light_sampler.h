@@ -5,7 +5,7 @@
 // at infinity that rays leaving the scene see. A scene with a single emitter skips the
 // selection table.
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/environment_light.h"
@@ -25,7 +25,7 @@ struct DeltaLight {
     V3f direction;    // unit: the spot's axis, the luminaire's nadir, or the direction a directional light travels
     Rgb intensity;    // point, spot: W/sr (on axis); luminaire: W/sr per candela of its table; directional: irradiance, W/m^2
     float cosCone = -1.0f, cosFalloffStart = -1.0f;  // spot only
-    V3f c0{1, 0, 0}, c90{0, 0, 1};                   // luminaire: its C0 and C90 directions (core/luminaire.h)
+    V3f c0{1, 0, 0}, c90{0, 0, 1};                   // luminaire: its C0 and C90 directions (core/photometry/luminaire.h)
     std::shared_ptr<const GoniometricSampler> goniometric;  // luminaire: its distribution
 
     // Spot: SPEC.md's smoothstep(cos(cone), cos(falloff_start), cos theta), 1 inside a hard cone.

@@ -3,7 +3,7 @@
 // normal, shading materials, the camera at the requested resolution, lights and the Embree BVH.
 // Built once per snapshot; immutable and shared by all threads of a backend afterwards.
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 #include "render/trace/bsdf.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/light_sampler.h"

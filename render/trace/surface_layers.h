@@ -4,7 +4,7 @@
 // filter as for radiance: an average of normals or depths across an edge would describe no
 // surface at all).
 
-#include "core/image.h"
+#include "core/image/image.h"
 #include "render/trace/render_scene.h"
 
 #include <optional>

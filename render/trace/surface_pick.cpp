@@ -1,6 +1,6 @@
 #include "render/trace/surface_pick.h"
 
-#include "core/scene_change.h"
+#include "core/scene/scene_change.h"
 #include "render/trace/embree_scene.h"
 
 #include <limits>

@@ -5,7 +5,7 @@
 // A picker holds the geometry of one scene; lights and the camera are not part of it, so one
 // picker serves every snapshot whose world meshes are the same (sameGeometry()).
 
-#include "core/scene.h"
+#include "core/scene/scene.h"
 
 #include <memory>
 #include <optional>
@@ -37,7 +37,7 @@ public:
     SurfacePicker& operator=(const SurfacePicker&) = delete;
 
     // True when `scene` has exactly the world meshes this picker was built over (the same
-    // shared mesh data, in the same objects: no geometry change by core/scene_change.h), so that
+    // shared mesh data, in the same objects: no geometry change by core/scene/scene_change.h), so that
     // its answers hold for that scene too.
     bool sameGeometry(const Scene& scene) const;
 

@@ -1,6 +1,6 @@
 #include "render/vpl/instant_radiosity.h"
 
-#include "core/luminaire.h"
+#include "core/photometry/luminaire.h"
 #include "render/trace/rng.h"
 
 namespace lucerna {

@@ -2,7 +2,7 @@
 // throws ImageError with one line; what it allocates is bounded by what the file holds (run with
 // -rss_limit_mb to see that).
 
-#include "core/exr_io.h"
+#include "core/image/exr_io.h"
 #include "fuzz_input_file.h"
 
 #include <cstdint>

@@ -1,8 +1,8 @@
 // libFuzzer: IES and EULUMDAT text either parses into a distribution with finite flux and peak,
 // or throws LuminaireFileError with one line; nothing else escapes, nothing crashes.
 
-#include "core/eulumdat_file.h"
-#include "core/ies_file.h"
+#include "core/photometry/eulumdat_file.h"
+#include "core/photometry/ies_file.h"
 
 #include <cmath>
 #include <cstdint>

@@ -3,7 +3,7 @@
 // std::runtime_error with one line; memory and time grow with the file, never with its claims
 // (run with -rss_limit_mb and -timeout to see that).
 
-#include "core/mesh_file.h"
+#include "core/mesh/mesh_file.h"
 #include "fuzz_input_file.h"
 
 #include <cmath>

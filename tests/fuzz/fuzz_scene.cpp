@@ -1,7 +1,7 @@
 // libFuzzer: parseScene on any bytes either returns a scene or throws SceneError (one line);
 // nothing else escapes, nothing crashes, and what parses survives a save and a reload.
 
-#include "core/scene_io.h"
+#include "core/scene/scene_io.h"
 
 #include <cstdint>
 #include <cstdlib>

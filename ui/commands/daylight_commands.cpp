@@ -1,6 +1,6 @@
 #include "ui/commands/daylight_commands.h"
 
-#include "core/daylight.h"
+#include "core/daylight/daylight.h"
 
 #include <cmath>
 #include <numbers>

@@ -3,7 +3,7 @@
 // light and is edited with the light commands; the suns made here are what those commands take.
 // Consecutive edits with the same merge key fold into one step (a run of arrow steps in a field).
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -2,7 +2,7 @@
 // Undo command for File > Import Model: the materials, objects and lights of one model added
 // together, one undo step.
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -1,7 +1,7 @@
 #include "ui/commands/light_commands.h"
 
-#include "core/light_output.h"
-#include "core/scene_geometry.h"
+#include "core/photometry/light_output.h"
+#include "core/scene/scene_geometry.h"
 
 namespace lucerna {
 

@@ -3,7 +3,7 @@
 // (move, aim, rename, colour, power, cone). Consecutive edits of one light with the same merge
 // key fold into one command, so a gizmo drag or a slider drag is a single undo step.
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -3,7 +3,7 @@
 // lights, and a change of the list of lights (a field of luminaires added, a group deleted). Each
 // is one undo step however many lights it touches, and applies as one copy of the scene.
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -3,7 +3,7 @@
 // refraction, radiance). Consecutive edits of one material with the same merge key (one per
 // slider drag or per field) fold into one undo step, as light edits do.
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

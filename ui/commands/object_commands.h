@@ -3,7 +3,7 @@
 // of its own when given) and delete. Consecutive edits of one object with the same merge key (one
 // per drag or per field) fold into one undo step.
 
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -4,7 +4,7 @@
 
 #include "ui/commands/material_commands.h"
 #include "ui/commands/object_commands.h"
-#include "ui/document.h"
+#include "ui/document/document.h"
 
 #include <QUndoCommand>
 

@@ -9,7 +9,7 @@ namespace lucerna {
 
 namespace {
 
-class LayeredBackend final : public ProgressiveBackend {
+class LayeredBackend final : public Backend {
 public:
     LayeredBackend(BackendFactory base, SceneSnapshot scene, const RenderSettings& settings)
         : groups_(lightGroups(*scene)), combined_(0, 0) {
@@ -70,13 +70,13 @@ private:
     }
 
     std::vector<LightGroup> groups_;
-    std::vector<std::unique_ptr<ProgressiveBackend>> layers_;
+    std::vector<std::unique_ptr<Backend>> layers_;
     Film combined_;
 };
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makeLayeredBackend(BackendFactory base, SceneSnapshot scene,
+std::unique_ptr<Backend> makeLayeredBackend(BackendFactory base, SceneSnapshot scene,
                                                        const RenderSettings& settings) {
     return std::make_unique<LayeredBackend>(base, std::move(scene), settings);
 }

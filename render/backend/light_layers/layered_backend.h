@@ -16,7 +16,7 @@ namespace lucerna {
 // The backend `base` wrapped in per-light layers. A scene without lights renders as `base`
 // alone would (one layer of nothing). Throws std::invalid_argument as `base` does for bad
 // settings, and with lightLayerLimitMessage() for a scene of more than kMaxLightLayers layers.
-std::unique_ptr<ProgressiveBackend> makeLayeredBackend(BackendFactory base, SceneSnapshot scene,
+std::unique_ptr<Backend> makeLayeredBackend(BackendFactory base, SceneSnapshot scene,
                                                        const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -1,7 +1,7 @@
 #include "render/backend/light_layers/light_groups.h"
 
-#include "core/luminaire.h"
-#include "core/scene_change.h"
+#include "core/photometry/luminaire.h"
+#include "core/scene/scene_change.h"
 
 #include <algorithm>
 #include <cmath>

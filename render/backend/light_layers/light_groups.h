@@ -6,8 +6,8 @@
 // scene's groups together (the lights' "group" key, issue 19), or one emissive object. Lights
 // switched off have no layer.
 
-#include "core/image.h"
-#include "core/scene.h"
+#include "core/image/image.h"
+#include "core/scene/scene.h"
 
 #include <optional>
 #include <string>

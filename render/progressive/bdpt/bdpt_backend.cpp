@@ -1,7 +1,7 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 
 #include "render/backend/backend_options.h"
-#include "render/backend/tracing_backend.h"
+#include "render/progressive/tracing_backend.h"
 #include "render/progressive/bdpt/bdpt_tracer.h"
 #include "render/trace/sobol_sampler.h"
 
@@ -102,7 +102,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makeBdptBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makeBdptBackend(SceneSnapshot scene, const RenderSettings& settings) {
     return std::make_unique<BdptBackend>(std::move(scene), settings);
 }
 

@@ -46,6 +46,6 @@ CameraPower cameraPower(const Film& film);
 CameraPower estimateCameraPower(const RenderScene& scene, const BdptSettings& settings, uint64_t seed, int passes,
                                 TaskContext& ctx);
 
-std::unique_ptr<ProgressiveBackend> makeBdptBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makeBdptBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -43,7 +43,7 @@ void addCmltDiagnostics(const std::map<std::string, long long>& counts, std::map
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makeCmltBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makeCmltBackend(SceneSnapshot scene, const RenderSettings& settings) {
     const CmltSettings cmlt = CmltSettings::fromOptions(settings);
     return makeMetropolisBackend(
         std::move(scene), settings, cmlt.mlt,

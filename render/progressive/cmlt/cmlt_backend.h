@@ -6,6 +6,6 @@
 
 namespace lucerna {
 
-std::unique_ptr<ProgressiveBackend> makeCmltBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makeCmltBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -1,6 +1,6 @@
 #include "render/progressive/ir/ir_backend.h"
 
-#include "render/backend/tracing_backend.h"
+#include "render/progressive/tracing_backend.h"
 #include "render/progressive/ir/ir_settings.h"
 #include "render/vpl/tile_scheduler.h"
 #include "render/vpl/vpl_gatherer.h"
@@ -78,7 +78,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makeIrBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makeIrBackend(SceneSnapshot scene, const RenderSettings& settings) {
     return std::make_unique<IrBackend>(std::move(scene), settings);
 }
 

@@ -9,6 +9,6 @@
 
 namespace lucerna {
 
-std::unique_ptr<ProgressiveBackend> makeIrBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makeIrBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -1,7 +1,7 @@
 #include "render/progressive/mir/mir_backend.h"
 
 #include "core/number_format.h"
-#include "render/backend/tracing_backend.h"
+#include "render/progressive/tracing_backend.h"
 #include "render/progressive/mir/mir_settings.h"
 #include "render/vpl/tile_scheduler.h"
 
@@ -78,7 +78,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makeMirBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makeMirBackend(SceneSnapshot scene, const RenderSettings& settings) {
     return std::make_unique<MirBackend>(std::move(scene), settings);
 }
 

@@ -21,6 +21,6 @@
 
 namespace lucerna {
 
-std::unique_ptr<ProgressiveBackend> makeMirBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makeMirBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

@@ -3,7 +3,7 @@
 #include "core/number_format.h"
 #include "render/backend/backend_options.h"
 #include "render/backend/film.h"
-#include "render/backend/tracing_backend.h"
+#include "render/progressive/tracing_backend.h"
 #include "render/progressive/mlt/mlt_chain.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/render_scene.h"
@@ -158,14 +158,14 @@ MltSettings MltSettings::fromOptions(const RenderSettings& settings, MltSettings
     return s;
 }
 
-std::unique_ptr<ProgressiveBackend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
+std::unique_ptr<Backend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
                                                           const MltSettings& mlt, ChainFactory makeChain,
                                                           VariantDiagnostics variantDiagnostics) {
     return std::make_unique<MetropolisBackend>(std::move(scene), settings, mlt, std::move(makeChain),
                                                std::move(variantDiagnostics));
 }
 
-std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings) {
     const MltSettings mlt = MltSettings::fromOptions(settings);
     return makeMetropolisBackend(std::move(scene), settings, mlt, [mlt](const RenderScene& s, uint64_t seed) {
         return std::make_unique<MltChain>(s, mlt, seed);

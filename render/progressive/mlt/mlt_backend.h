@@ -30,10 +30,10 @@ using ChainFactory = std::function<std::unique_ptr<MltChain>(const RenderScene& 
 using VariantDiagnostics = std::function<void(const std::map<std::string, long long>& counts,
                                               std::map<std::string, std::string>& diagnostics)>;
 
-std::unique_ptr<ProgressiveBackend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
+std::unique_ptr<Backend> makeMetropolisBackend(SceneSnapshot scene, const RenderSettings& settings,
                                                           const MltSettings& mlt, ChainFactory makeChain,
                                                           VariantDiagnostics variantDiagnostics = {});
 
-std::unique_ptr<ProgressiveBackend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makeMltBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

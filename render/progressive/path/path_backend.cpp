@@ -1,7 +1,7 @@
 #include "render/progressive/path/path_backend.h"
 
 #include "render/backend/backend_options.h"
-#include "render/backend/tracing_backend.h"
+#include "render/progressive/tracing_backend.h"
 #include "render/trace/path_tracer.h"
 #include "render/trace/sobol_sampler.h"
 
@@ -62,7 +62,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<ProgressiveBackend> makePathBackend(SceneSnapshot scene, const RenderSettings& settings) {
+std::unique_ptr<Backend> makePathBackend(SceneSnapshot scene, const RenderSettings& settings) {
     return std::make_unique<PathBackend>(std::move(scene), settings);
 }
 

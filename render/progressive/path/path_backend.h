@@ -19,6 +19,6 @@ PathSettings pathSettingsFromOptions(const RenderSettings& settings);
 void renderPathPass(const RenderScene& scene, const PathSettings& settings, uint64_t seed, int pass, Film& film,
                     TaskContext& ctx);
 
-std::unique_ptr<ProgressiveBackend> makePathBackend(SceneSnapshot scene, const RenderSettings& settings);
+std::unique_ptr<Backend> makePathBackend(SceneSnapshot scene, const RenderSettings& settings);
 
 }  // namespace lucerna

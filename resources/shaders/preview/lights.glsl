@@ -43,7 +43,7 @@ struct SkyLight { vec4 towardLayer; vec4 irradiance; mat4 shadow; };
 layout(binding = 13) uniform sampler2DArray luminaireTables;
 uniform ivec2 luminaireTableSize;
 
-// The table's candela toward unit w (leaving the luminaire); C90 = C0 x nadir (core/luminaire.h).
+// The table's candela toward unit w (leaving the luminaire); C90 = C0 x nadir (core/photometry/luminaire.h).
 float luminaireCandela(vec3 w, vec3 nadir, vec3 c0, float layer) {
     const vec3 c90 = cross(c0, nadir);
     const float gammaDeg = degrees(acos(clamp(dot(w, nadir), -1.0, 1.0)));

@@ -1,5 +1,5 @@
 // What a pixel that sees no surface shows (SPEC.md section 5): the sky above the horizon, the
-// ground below, white (radiance = luminance / 683), as core/sky_model.cpp computes them, and the
+// ground below, white (radiance = luminance / 683), as core/daylight/sky_model.cpp computes them, and the
 // sun's disc where the pixel's ray falls inside it. Needs brdf.glsl (PI) before it.
 uniform int skyModel;                 // 0 no sky, 1 uniform, 2 cie_overcast, 3 cie_general
 uniform float skyZenithRadiance;      // Lz / 683, W sr^-1 m^-2

@@ -1,0 +1,23 @@
+#pragma once
+// OBJ, PLY, OFF and STL files: positions and faces only (SPEC.md ignores normals, UVs, colours
+// and materials); polygons fan-triangulated from their first vertex in file order. OBJ and STL
+// through OpenMesh, PLY and OFF by mesh_file_formats.h (OpenMesh's readers trust their counts).
+
+#include "core/scene/scene.h"
+
+#include <string>
+
+namespace lucerna {
+
+// Throws std::runtime_error with a one-line reason if the file is missing, unreadable or not a
+// mesh OpenMesh understands.
+TriangleMesh readMeshFile(const std::string& absolutePath);
+
+// Writes `mesh` as a binary little-endian PLY file (double vertices, int triangles) that
+// readMeshFile reads back with every triangle in order, non-manifold ones included (which
+// OpenMesh's own writer, building half-edges first, would drop), and the vertices to float
+// precision (OpenMesh's PLY reader goes through floats; the renderer traces in floats too). Whole or not at all
+// (atomic_file.h); throws std::runtime_error with a one-line reason.
+void writePlyFile(const std::string& path, const TriangleMesh& mesh);
+
+}  // namespace lucerna

@@ -1,0 +1,48 @@
+#pragma once
+// The common part of the backends that trace rays on the CPU (path, bdpt, ir, mir, mlt and
+// cmlt): the scene snapshot and settings they are made with, and what every one of them prepares
+// first: the render scene (Embree's BVH, light tables) at the requested resolution or for the
+// requested sensors, counting rays into the settings' recorder, and a film of its size.
+
+#include "render/backend/backend.h"
+#include "render/backend/backend_options.h"
+#include "render/backend/film.h"
+#include "render/trace/render_scene.h"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace lucerna {
+
+class TracingBackend : public Backend {
+public:
+    const Film& film() const override { return *film_; }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
+
+protected:
+    // Lights switched off are left out here, so that no tracing backend ever sees them.
+    // lightSelection: how next-event estimation chooses lights; by default the option
+    // light_sampler (backend_options.h).
+    TracingBackend(SceneSnapshot scene, const RenderSettings& settings,
+                   std::optional<LightSelection> lightSelection = std::nullopt)
+        : snapshot_(sceneAsRendered(std::move(scene))), settings_(settings),
+          lightSelection_(lightSelection ? *lightSelection : lightSelectionOption(settings)) {}
+
+    // Builds scene_ and film_; a backend that prepares more calls it first.
+    void prepareSceneAndFilm() {
+        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get(),
+                                               lightSelection_);
+        scene_->setRayRecorder(settings_.rayRecorder);
+        film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
+    }
+
+    SceneSnapshot snapshot_;
+    RenderSettings settings_;
+    // How next-event estimation chooses lights (option light_sampler).
+    LightSelection lightSelection_;
+    std::unique_ptr<RenderScene> scene_;
+    std::unique_ptr<Film> film_;
+};
+
+}  // namespace lucerna

@@ -1,0 +1,65 @@
+#pragma once
+// Driving the application's window from tests as a user would: the bundled scene, menu actions,
+// typed values, mouse events and named child widgets.
+
+#include "ui/window/main_window.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QDoubleSpinBox>
+#include <QMouseEvent>
+#include <QSettings>
+#include <QStandardPaths>
+#include <QString>
+#include <QtTest>
+
+namespace lucerna::test {
+
+// QSettings, autosaves and the like go to a test location under this application name, never
+// to the user's, and every run starts from the first-start layout.
+inline void useTestSettings(const char* applicationName) {
+    QStandardPaths::setTestModeEnabled(true);
+    QCoreApplication::setOrganizationName("LucernaTest");
+    QCoreApplication::setApplicationName(applicationName);
+    QSettings().clear();
+}
+
+inline QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
+
+// Triggers the window's action of that object name; fails the test when it is missing or disabled.
+inline void trigger(MainWindow& w, const char* name) {
+    auto* action = w.findChild<QAction*>(name);
+    QVERIFY2(action, name);
+    QVERIFY2(action->isEnabled(), name);
+    action->trigger();
+}
+
+// Types a value into a spin box and presses Enter.
+inline void typeInto(QDoubleSpinBox* spin, double value) {
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, QString::number(value));
+    QTest::keyClick(spin, Qt::Key_Return);
+}
+
+inline void sendMouse(QWidget* w, QEvent::Type type, QPointF pos, Qt::MouseButton button, Qt::MouseButtons buttons,
+                      Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    QMouseEvent e(type, pos, w->mapToGlobal(pos), button, buttons, modifiers);
+    QApplication::sendEvent(w, &e);
+}
+
+// A left click (press and release, no move) at a widget position.
+inline void click(QWidget* w, QPointF pos, Qt::KeyboardModifiers modifiers = Qt::NoModifier) {
+    sendMouse(w, QEvent::MouseButtonPress, pos, Qt::LeftButton, Qt::LeftButton, modifiers);
+    sendMouse(w, QEvent::MouseButtonRelease, pos, Qt::LeftButton, Qt::NoButton, modifiers);
+}
+
+// The child widget of that object name; aborts the test run when there is none.
+template <class T>
+T* child(QObject& parent, const char* name) {
+    T* w = parent.findChild<T*>(name);
+    if (!w) qFatal("no widget %s", name);
+    return w;
+}
+
+}  // namespace lucerna::test

@@ -1,0 +1,438 @@
+#include "ui/calculation/grid_panel.h"
+
+#include "core/daylight/daylight.h"
+#include "core/daylight/daylight_provision.h"
+
+#include "core/atomic_file.h"
+#include "core/scene/scene_geometry.h"
+#include "render/display/display.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QMessageBox>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace lucerna {
+
+namespace {
+constexpr int kAutoMethod = -1;  // the estimator box's item for auto
+enum Quantity { kIlluminance = 0, kDaylightFactor = 1, kUgr = 2 };  // the quantity box's items
+
+QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(name);
+    box->setRange(lo, hi);
+    box->setDecimals(2);
+    box->setSingleStep(0.05);
+    box->setValue(value);
+    box->setSuffix(suffix);
+    return box;
+}
+}  // namespace
+
+GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QWidget(parent), doc_(doc), gate_(gate) {
+    height_ = lengthField(this, "gridHeight", 0.8, -1000, 1000, tr(" m"));
+    border_ = lengthField(this, "gridBorder", 0.5, 0, 1000, tr(" m"));
+    spacing_ = lengthField(this, "gridSpacing", 0, 0, 1000, tr(" m"));
+    spacing_->setSpecialValueText(tr("EN 12464-1"));  // 0: the standard's rule
+    target_ = lengthField(this, "gridTarget", 2, 0.1, 50, tr(" %"));
+    method_ = new QComboBox(this);
+    method_->setObjectName("gridMethod");
+    for (GridMethod m : kGridMethods) method_->addItem(QString::fromLatin1(gridMethodName(m)), int(m));
+    method_->addItem(tr("auto"), kAutoMethod);
+    method_->setItemData(method_->count() - 1, tr("bdpt where a lamp reaches points only through glass, else path"),
+                         Qt::ToolTipRole);
+    quantity_ = new QComboBox(this);
+    quantity_->setObjectName("gridQuantity");
+    quantity_->addItem(tr("Illuminance (lx)"));
+    quantity_->addItem(tr("Daylight factor (%)"));
+    quantity_->setItemData(1, tr("Under the CIE overcast sky alone, sun and electric lights off (SPEC.md section 5), "
+                                 "with EN 17037's daylight provision"),
+                           Qt::ToolTipRole);
+    quantity_->addItem(tr("UGR (discomfort glare)"));
+    quantity_->setItemData(kUgr, tr("An observer over each point at eye height, looking along the grid (CIE 117), "
+                                    "for the new installation"),
+                           Qt::ToolTipRole);
+    eyeHeight_ = new QComboBox(this);
+    eyeHeight_->setObjectName("gridEyeHeight");
+    eyeHeight_->addItem(tr("Seated, 1.2 m"), 1.2);
+    eyeHeight_->addItem(tr("Standing, 1.7 m"), 1.7);
+    viewAlong_ = new QComboBox(this);
+    viewAlong_->setObjectName("gridView");
+    viewAlong_->addItem(tr("+u (along the grid's first edge)"), int(GridViewDirection::PlusU));
+    viewAlong_->addItem(tr("-u"), int(GridViewDirection::MinusU));
+    viewAlong_->addItem(tr("+v (along its second edge)"), int(GridViewDirection::PlusV));
+    viewAlong_->addItem(tr("-v"), int(GridViewDirection::MinusV));
+    compute_ = new QPushButton(tr("Compute"), this);
+    compute_->setObjectName("gridCompute");
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setObjectName("gridCancel");
+    cancel_->setEnabled(false);
+    export_ = new QPushButton(tr("Export CSV..."), this);
+    export_->setObjectName("gridExport");
+    export_->setEnabled(false);
+    draw_ = new QPushButton(tr("Draw in viewport"), this);
+    draw_->setObjectName("gridDraw");
+    draw_->setToolTip(tr("Click two corners on a floor, a table or a wall in the viewport"));
+    wholeRoom_ = new QPushButton(tr("Whole room"), this);
+    wholeRoom_->setObjectName("gridWholeRoom");
+    area_ = new QLabel(this);
+    area_->setObjectName("gridArea");
+    area_->setWordWrap(true);
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    progress_->setTextVisible(false);
+    figures_ = new QLabel(this);
+    figures_->setObjectName("gridFigures");
+    figures_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    figures_->setWordWrap(true);  // the glass warning is long: wrapped, not a wider dock
+    status_ = new QLabel(this);
+    status_->setObjectName("gridStatus");
+    status_->setWordWrap(true);
+    table_ = new QTableWidget(this);
+    table_->setObjectName("gridTable");
+    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
+    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    table_->verticalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+
+    auto* areaButtons = new QHBoxLayout;
+    areaButtons->addWidget(draw_);
+    areaButtons->addWidget(wholeRoom_);
+    auto* form = new QFormLayout;
+    form->addRow(tr("Area"), area_);
+    form->addRow(QString(), areaButtons);
+    form->addRow(tr("Height above the surface"), height_);
+    form->addRow(tr("Border (whole room)"), border_);
+    form->addRow(tr("Spacing"), spacing_);
+    form->addRow(tr("Error bar (95%)"), target_);
+    form->addRow(tr("Estimator"), method_);
+    form->addRow(tr("Quantity"), quantity_);
+    form->addRow(tr("UGR observers' eyes"), eyeHeight_);
+    form->addRow(tr("UGR observers look"), viewAlong_);
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(compute_);
+    buttons->addWidget(cancel_);
+    buttons->addWidget(export_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addLayout(buttons);
+    layout->addWidget(progress_);
+    layout->addWidget(figures_);
+    layout->addWidget(status_);
+    layout->addWidget(table_, 1);
+
+    connect(compute_, &QPushButton::clicked, this, &GridPanel::compute);
+    connect(cancel_, &QPushButton::clicked, this, &GridPanel::cancel);
+    connect(export_, &QPushButton::clicked, this, &GridPanel::exportClicked);
+    connect(draw_, &QPushButton::clicked, this, &GridPanel::drawRequested);
+    connect(wholeRoom_, &QPushButton::clicked, this, &GridPanel::useWholeRoom);
+    useWholeRoom();
+    connect(quantity_, &QComboBox::currentIndexChanged, this, &GridPanel::quantityChanged);
+    quantityChanged();
+    connect(doc_, &Document::changed, this, [this] {
+        if ((shown_ || shownGlare_) && !stale_) {
+            stale_ = true;
+            status_->setText(tr("The scene changed since this result: Compute again to update it."));
+        }
+    });
+    poll_.setInterval(100);
+    connect(&poll_, &QTimer::timeout, this, &GridPanel::poll);
+}
+
+GridPanel::~GridPanel() { cancel(); }
+
+void GridPanel::quantityChanged() {
+    const bool ugr = quantity_->currentIndex() == kUgr;
+    eyeHeight_->setEnabled(ugr);
+    viewAlong_->setEnabled(ugr);
+    height_->setEnabled(!ugr);  // the eyes stand at their own height above the floor
+}
+
+void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
+    drawn_ = Drawn{a, normal, b};
+    const bool horizontal = std::abs(normal.y) >= 0.7;
+    area_->setText(horizontal ? tr("Rectangle drawn on a horizontal surface") : tr("Rectangle drawn on a wall"));
+    wholeRoom_->setEnabled(true);
+    border_->setEnabled(false);
+}
+
+void GridPanel::useWholeRoom() {
+    drawn_.reset();
+    area_->setText(tr("Work plane over the whole room"));
+    wholeRoom_->setEnabled(false);
+    border_->setEnabled(true);
+}
+
+void GridPanel::compute() {
+    cancel();
+    SceneSnapshot scene = doc_->snapshot();
+    dfPerLux_.reset();
+    maintenance_ = QString::fromStdString(describeMaintenance(maintenanceRange(*scene)));
+    if (quantity_->currentIndex() == kDaylightFactor) {
+        const Scene& s = *scene;
+        medianGiven_ = s.site && s.site->medianDiffuseIlluminance;
+        medianDiffuseIlluminance_ = medianGiven_ ? *s.site->medianDiffuseIlluminance : kDefaultMedianDiffuseIlluminance;
+        DaylightFactorScene df = daylightFactorScene(s);
+        if (!(df.skyHorizontalIlluminance > 0)) {
+            status_->setText(tr("The sky gives no light: no daylight factor"));
+            return;
+        }
+        dfPerLux_ = 100.0 / df.skyHorizontalIlluminance;
+        scene = std::make_shared<const Scene>(std::move(df.scene));
+    }
+    CalculationGrid grid;
+    try {
+        if (drawn_) {
+            grid = gridFromCorners(drawn_->a, drawn_->normal, drawn_->b, scene->metersPerUnit, height_->value());
+        } else {
+            const SceneBounds b = sceneBounds(*scene);
+            grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), border_->value());
+        }
+        if (spacing_->value() > 0) grid.spacingMeters = spacing_->value();
+        layout_ = layoutGrid(grid, scene->metersPerUnit);
+        grid_ = grid;
+    } catch (const std::invalid_argument& e) {
+        status_->setText(QString::fromStdString(e.what()));
+        return;
+    }
+    shown_.reset();
+    shownGlare_.reset();
+    latest_.reset();
+    latestGlare_.reset();
+    if (quantity_->currentIndex() == kUgr) {
+        computeUgr(scene, grid);
+        return;
+    }
+    GridSettings settings;
+    const int method = method_->currentData().toInt();
+    settings.autoMethod = method == kAutoMethod;
+    if (!settings.autoMethod) settings.method = GridMethod(method);
+    settings.targetRelativeError = target_->value() / 100.0;
+    latest_ = std::make_shared<Latest<GridResult>>();
+    shownVersion_ = 0;
+    stale_ = false;
+    job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
+                          latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
+        const YieldGate::Scope hold(gate);
+        // As `lucerna grid` and the report compute it (the maintained values among others).
+        computeSceneGrid(scene, points, normal, settings, ctx, [&](const GridResult& r) {
+            latest->publish(std::make_shared<const GridResult>(r));
+        });
+    });
+    compute_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setValue(0);
+    status_->setText(tr("Computing %1 x %2 points...").arg(layout_.nu).arg(layout_.nv));
+    poll_.start();
+}
+
+void GridPanel::computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid) {
+    if (std::abs(grid.normal().y) < 0.7) {
+        status_->setText(tr("UGR needs a horizontal grid (the observers stand over it): draw it on a floor or a table"));
+        return;
+    }
+    eyeHeightM_ = eyeHeight_->currentData().value<double>();
+    eyes_ = observerPositions(layout_, sceneBounds(*scene).lo.y, scene->metersPerUnit, eyeHeightM_);
+    const auto along = GridViewDirection(viewAlong_->currentData().toInt());
+    view_ = gridViewDirection(grid, along);
+    viewLabel_ = along == GridViewDirection::PlusU    ? tr("along +u")
+                 : along == GridViewDirection::MinusU ? tr("along -u")
+                 : along == GridViewDirection::PlusV  ? tr("along +v")
+                                                      : tr("along -v");
+    const V3d toward = view_.normalized();
+    viewLabel_ += tr(", toward (%1, %2, %3)").arg(toward.x, 0, 'g', 3).arg(toward.y, 0, 'g', 3).arg(toward.z, 0, 'g', 3);
+    GlareSettings settings;
+    const int method = method_->currentData().toInt();
+    if (method != kAutoMethod) settings.backgroundMethod = GridMethod(method);  // auto: path
+    settings.targetRelativeError = target_->value() / 100.0;
+    latestGlare_ = std::make_shared<Latest<GlareGridResult>>();
+    shownVersion_ = 0;
+    stale_ = false;
+    job_ = tasks_.submit([scene, eyes = eyes_, view = view_, settings, latest = latestGlare_,
+                          gate = gate_.counter()](TaskContext& ctx) {
+        const YieldGate::Scope hold(gate);
+        evaluateGlareGrid(*scene, eyes, view, settings, ctx, [&](const GlareGridResult& r) {
+            latest->publish(std::make_shared<const GlareGridResult>(r));
+        });
+    });
+    compute_->setEnabled(false);
+    cancel_->setEnabled(true);
+    progress_->setValue(0);
+    status_->setText(tr("Computing UGR for %1 x %2 observers...").arg(layout_.nu).arg(layout_.nv));
+    poll_.start();
+}
+
+void GridPanel::cancel() {
+    if (!job_) return;
+    job_->cancel();
+    job_->wait();
+    job_.reset();
+    poll_.stop();
+    compute_->setEnabled(true);
+    cancel_->setEnabled(false);
+    if ((shown_ && !shown_->converged) || (shownGlare_ && !shownGlare_->converged))
+        status_->setText(tr("Cancelled: the figures are those of the last pass."));
+}
+
+void GridPanel::poll() {
+    if (!job_) return;
+    progress_->setValue(int(std::lround(1000 * job_->progress())));
+    // Whether it finished, before the newest result is read: the job publishes its last pass
+    // before it finishes, so a job seen finished has nothing left to publish (read the other way
+    // round, a pass published in between would never be shown).
+    const bool jobDone = job_->isFinished();
+    if (latest_ && latest_->version() != shownVersion_) {
+        shownVersion_ = latest_->version();
+        shown_ = latest_->get();
+        showResult();
+    }
+    if (latestGlare_ && latestGlare_->version() != shownVersion_) {
+        shownVersion_ = latestGlare_->version();
+        shownGlare_ = latestGlare_->get();
+        showGlareResult();
+    }
+    if (!jobDone) return;
+    poll_.stop();
+    QString error;
+    try {
+        job_->rethrowIfFailed();
+    } catch (const std::exception& e) {
+        error = QString::fromStdString(e.what());
+    }
+    job_.reset();
+    compute_->setEnabled(true);
+    cancel_->setEnabled(false);
+    progress_->setValue(1000);
+    if (!error.isEmpty()) status_->setText(tr("The calculation failed: %1").arg(error));
+    else if (shownGlare_)
+        status_->setText(tr("Done: %1 passes of the background, %2 s%3.")
+                             .arg(shownGlare_->passes)
+                             .arg(shownGlare_->seconds, 0, 'f', 1)
+                             .arg(shownGlare_->converged ? QString() : tr(" (error target not reached)")));
+    else if (shown_)
+        status_->setText(tr("Done: %1 passes, %2 samples per point, %3 s.")
+                             .arg(shown_->passes)
+                             .arg(shown_->samplesPerPoint)
+                             .arg(shown_->seconds, 0, 'f', 1));
+    emit finished();
+}
+
+void GridPanel::showResult() {
+    if (!shown_) return;
+    // Daylight factor: every value is lux times 100 / Eh,sky, in %.
+    const double scale = dfPerLux_.value_or(1.0);
+    std::vector<double> values = shown_->lux;
+    for (double& v : values) v *= scale;
+    const GridStatistics s = gridStatistics(values, shown_->insideGeometry);
+    QStringList lines;
+    if (dfPerLux_) {
+        lines << tr("DFavg %1%   DFmin %2%   DFmax %3%   DFmin/DFavg %4")
+                     .arg(s.average, 0, 'f', 2)
+                     .arg(s.minimum, 0, 'f', 2)
+                     .arg(s.maximum, 0, 'f', 2)
+                     .arg(s.uniformity, 0, 'f', 2);
+        const DaylightProvision p = checkDaylightProvision(values, shown_->insideGeometry, medianDiffuseIlluminance_);
+        lines << tr("EN 17037 (E v,d,med %1 lx%2):").arg(medianDiffuseIlluminance_, 0, 'f', 0)
+                                                   .arg(medianGiven_ ? QString() : tr(", the usual value"));
+        for (const ProvisionLevel& l : p.levels)
+            lines << tr("  %1 level: %2 (half the plane %3% for %4%, margin %5; 95% %6% for %7%, margin %8)")
+                         .arg(QString::fromLatin1(l.name), l.met ? tr("met") : tr("not met"))
+                         .arg(p.dfHalf, 0, 'f', 2)
+                         .arg(l.targetDf, 0, 'f', 2)
+                         .arg(l.targetMargin, 0, 'f', 2)
+                         .arg(p.df95, 0, 'f', 2)
+                         .arg(l.minimumTargetDf, 0, 'f', 2)
+                         .arg(l.minimumMargin, 0, 'f', 2);
+    } else {
+        lines << tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4")
+                     .arg(s.average, 0, 'f', 1)
+                     .arg(s.minimum, 0, 'f', 1)
+                     .arg(s.maximum, 0, 'f', 1)
+                     .arg(s.uniformity, 0, 'f', 2);
+        lines << maintenance_;
+    }
+    if (s.excluded > 0)
+        lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());
+    const QString method = QString::fromLatin1(gridMethodName(shown_->method));
+    if (shown_->errorBarUnknown)
+        lines << tr("%1 cannot carry light through glass to %2 of %3 points: use bdpt (or auto); error bar unknown")
+                     .arg(method)
+                     .arg(shown_->litThroughGlass)
+                     .arg(s.counted);
+    else
+        lines << tr("error bar at most %1% (95%), %2").arg(100.0 * shown_->maxRelativeError, 0, 'f', 2).arg(method);
+    figures_->setText(lines.join('\n'));
+    // Rows from the far side (largest j) down, as the plane is seen from above with u to the right.
+    table_->setRowCount(layout_.nv);
+    table_->setColumnCount(layout_.nu);
+    const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
+    for (int j = 0; j < layout_.nv; ++j)
+        for (int i = 0; i < layout_.nu; ++i) {
+            const size_t k = size_t(j) * size_t(layout_.nu) + size_t(i);
+            const double e = values[k];
+            if (shown_->insideGeometry[k]) {
+                // Not a reading: grey, hatched, no number that could be taken for one.
+                auto* item = new QTableWidgetItem(tr("inside"));
+                item->setTextAlignment(Qt::AlignCenter);
+                item->setBackground(QBrush(QColor(150, 150, 150), Qt::BDiagPattern));
+                item->setForeground(QColor(90, 90, 90));
+                item->setToolTip(tr("Inside geometry: excluded from Eavg, Emin, Emax and U0"));
+                table_->setItem(layout_.nv - 1 - j, i, item);
+                continue;
+            }
+            auto* item = new QTableWidgetItem(QString::number(e, 'f', dfPerLux_ ? 2 : 0));
+            item->setTextAlignment(Qt::AlignCenter);
+            const double t = e > 0 ? std::log(e / lo) / std::log(hi / lo) : 0.0;
+            const QColor c = falseColourRamp(std::clamp(t, 0.0, 1.0));
+            item->setBackground(c);
+            item->setForeground(c.lightnessF() > 0.55 ? Qt::black : Qt::white);
+            const QString unit = dfPerLux_ ? tr("%") : tr(" lx");
+            item->setToolTip(shown_->errorBarUnknown
+                                 ? tr("%1%2, error bar unknown (light through glass missing)").arg(e, 0, 'f', 2).arg(unit)
+                                 : tr("%1%3 +- %2%3").arg(e, 0, 'f', 2).arg(shown_->errorLux[k] * scale, 0, 'f', 2).arg(unit));
+            table_->setItem(layout_.nv - 1 - j, i, item);
+        }
+    export_->setEnabled(true);
+    emit resultChanged();
+}
+
+void GridPanel::showGlareResult() {
+    if (!shownGlare_ || shownGlare_->observers.size() != layout_.points.size()) return;
+    figures_->setText(ugrFigures(*shownGlare_, layout_, eyeHeightM_, viewLabel_).join('\n'));
+    fillUgrTable(*table_, layout_, *shownGlare_);
+    export_->setEnabled(true);
+    emit resultChanged();
+}
+
+void GridPanel::exportCsv(const QString& path) const {
+    if (shownGlare_) {
+        writeTextAtomically(path.toStdString(), ugrCsv(layout_, eyes_, *shownGlare_));
+        return;
+    }
+    if (!shown_) throw std::runtime_error("no grid result to export");
+    writeTextAtomically(path.toStdString(),
+                        gridCsv(layout_, shown_->lux, shown_->errorLux, shown_->insideGeometry, shown_->errorBarUnknown,
+                                dfPerLux_));
+}
+
+void GridPanel::exportClicked() {
+    const QString path = QFileDialog::getSaveFileName(this, tr("Export grid"), QString(), tr("CSV files (*.csv)"));
+    if (path.isEmpty()) return;
+    try {
+        exportCsv(path);
+    } catch (const std::exception& e) {
+        QMessageBox::warning(this, tr("Export grid"), QString::fromStdString(e.what()));
+    }
+}
+
+}  // namespace lucerna

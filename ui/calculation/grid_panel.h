@@ -1,0 +1,116 @@
+#pragma once
+// The calculation-grid dock: a work plane over the room (height, border, spacing by EN 12464-1
+// unless set) or a rectangle drawn in the viewport on a floor, a table or a wall (two corner
+// clicks; core/photometry/calculation_grid.h, gridFromCorners), its illuminance computed in the background with a Monte Carlo error bar per point
+// (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
+// Emax and U0 (points inside geometry grey, hatched and left out; a method that cannot carry
+// light through glass flagged: render/photometry/grid_diagnosis.h), and exported as CSV. A scene edit marks the result as out of date; Compute runs
+// again on the current scene. The calculation is a foreground request: it runs in a task arena of
+// its own (in the converging render's, whose job never ends, it could wait behind the render's
+// passes indefinitely) and holds the yield gate, so the render waits until it is done.
+// The quantity UGR puts an observer over each point, at eye height above the floor (seated 1.2 m
+// or standing 1.7 m), all looking along one edge of the grid, and shows each one's UGR
+// (render/photometry/glare_evaluation.h, ui/calculation/ugr_grid.h).
+
+#include "core/photometry/calculation_grid.h"
+#include "core/task_system.h"
+#include "render/photometry/grid_calculation.h"
+#include "ui/document/document.h"
+#include "ui/calculation/ugr_grid.h"
+#include "ui/rendering/yield_gate.h"
+
+#include <QTimer>
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+
+namespace lucerna {
+
+class GridPanel : public QWidget {
+    Q_OBJECT
+public:
+    GridPanel(Document* doc, const YieldGate& gate, QWidget* parent = nullptr);
+    ~GridPanel() override;
+
+    void compute();   // starts on the document's current scene (cancels a running calculation)
+    void cancel();
+    // The grid becomes the rectangle drawn with corners a (on a surface of unit normal `normal`,
+    // facing the viewer) and b, lifted by the height field; "Whole room" goes back to the work plane.
+    void setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b);
+    void useWholeRoom();
+    bool isComputing() const { return job_ != nullptr; }
+    // The newest result and its layout (null before the first pass of a calculation).
+    std::shared_ptr<const GridResult> result() const { return shown_; }
+    const GridLayout& layout() const { return layout_; }
+    // The rectangle of the newest calculation (its normal says which views can show it).
+    const CalculationGrid& grid() const { return grid_; }
+    // Writes the shown result as CSV (core/photometry/calculation_grid.h); throws std::runtime_error.
+    void exportCsv(const QString& path) const;
+    // With the quantity "Daylight factor", 100 / Eh,sky of the newest calculation (SPEC.md
+    // section 5: it ran on the daylight-factor scene, and the result's lux times this is DF in %).
+    std::optional<double> daylightFactorPerLux() const { return dfPerLux_; }
+    // With the quantity "UGR": the newest result (null before the first pass), the eyes and the
+    // view of the newest calculation.
+    std::shared_ptr<const GlareGridResult> glareResult() const { return shownGlare_; }
+    const std::vector<V3d>& observers() const { return eyes_; }
+    const V3d& observerView() const { return view_; }
+
+signals:
+    // The user asked to draw the rectangle in the viewport (two clicks there).
+    void drawRequested();
+    void resultChanged();
+    void finished();
+
+private:
+    void poll();
+    void showResult();
+    void showGlareResult();
+    void quantityChanged();
+    // The UGR grid's calculation over `grid` of `scene` (compute() with the quantity UGR).
+    void computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid);
+    void exportClicked();
+
+    Document* doc_;
+    YieldGate gate_;
+    QDoubleSpinBox *height_, *border_, *spacing_, *target_;
+    QComboBox *method_, *quantity_, *eyeHeight_, *viewAlong_;
+    QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
+    QProgressBar* progress_;
+    QLabel *area_, *figures_, *status_;
+    QTableWidget* table_;
+    QTimer poll_;
+
+    struct Drawn {
+        V3d a, normal, b;
+    };
+    std::optional<Drawn> drawn_;  // nothing: the work plane over the whole room
+    CalculationGrid grid_;
+    GridLayout layout_;
+    std::shared_ptr<Latest<GridResult>> latest_;
+    TaskSystem tasks_;  // before job_: the job ends before its arena goes
+    std::shared_ptr<TaskHandle> job_;
+    std::shared_ptr<const GridResult> shown_;
+    uint64_t shownVersion_ = 0;
+    bool stale_ = false;
+    std::optional<double> dfPerLux_;
+    QString maintenance_;  // which illuminance the result is: maintained or the new installation's
+    double medianDiffuseIlluminance_ = 0;  // lx, for EN 17037's check (the site's, or the usual value)
+    bool medianGiven_ = false;
+    // The UGR grid.
+    std::shared_ptr<Latest<GlareGridResult>> latestGlare_;
+    std::shared_ptr<const GlareGridResult> shownGlare_;
+    std::vector<V3d> eyes_;
+    V3d view_{1, 0, 0};
+    double eyeHeightM_ = 1.2;
+    QString viewLabel_;
+};
+
+}  // namespace lucerna

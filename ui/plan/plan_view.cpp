@@ -1,0 +1,681 @@
+#include "ui/plan/plan_view.h"
+
+#include "core/scene/scene_change.h"
+#include "core/scene/scene_geometry.h"
+#include "render/display/display.h"
+#include "render/display/false_colour.h"
+#include "render/display/iso_lines.h"
+#include "ui/commands/light_commands.h"
+#include "ui/viewport/viewport.h"
+
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QToolButton>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace lucerna {
+
+namespace {
+constexpr double kClickSlop = 3.0;  // widget pixels: a press that moves less is a click
+constexpr double kSymbolRadius = 7.0;
+const QColor kBackground(246, 246, 242);
+const QColor kWallColour(60, 60, 64);
+const QColor kSelectionColour(30, 110, 230);
+constexpr int kMaxRings = 50;  // selections larger than this show as blue symbols
+
+// Display sRGB of a linear value in [0, 1].
+double srgb(double linear) {
+    const double c = std::clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
+}
+
+// A light shade of what a material looks like, so that the plan reads as a drawing.
+QColor materialShade(const Material* m) {
+    Rgbd c(0.7, 0.7, 0.7);
+    if (m) switch (m->type) {
+        case MaterialType::Diffuse:
+        case MaterialType::Glossy: c = m->albedo; break;
+        case MaterialType::Mirror: c = m->reflectance; break;
+        case MaterialType::Dielectric:
+        case MaterialType::Glazing: c = Rgbd(0.6, 0.8, 0.95); break;
+        case MaterialType::Emitter: c = Rgbd(1.0, 0.95, 0.6); break;
+        }
+    const auto channel = [](double v) { return int(std::lround(255 * (0.45 + 0.5 * srgb(v)))); };
+    return QColor(channel(c.x), channel(c.y), channel(c.z));
+}
+
+QString nameOf(const Light& light) { return QString::fromStdString(light.name); }
+}  // namespace
+
+struct PlanView::Face {
+    QPointF a, b, c;  // plan coordinates
+    double depth;     // toward the viewer: larger is nearer
+    QColor fill;
+    bool edgeOn;      // a wall seen edge-on: drawn as a line, not filled
+};
+
+PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
+    : QWidget(parent), doc_(doc), gate_(gate), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
+      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)) {
+    setMouseTracking(false);
+    setFocusPolicy(Qt::ClickFocus);
+    setAutoFillBackground(false);
+    snap_->setObjectName("planSnap");
+    snap_->setChecked(true);
+    snap_->setToolTip(tr("Snap moved lights to a grid of this step"));
+    snapStep_->setObjectName("planSnapStep");
+    snapStep_->setRange(0.01, 10);
+    snapStep_->setDecimals(2);
+    snapStep_->setSingleStep(0.05);
+    snapStep_->setValue(0.25);
+    snapStep_->setSuffix(tr(" m"));
+    auto* bar = new QHBoxLayout;
+    bar->addWidget(title_);
+    bar->addSpacing(16);
+    bar->addWidget(snap_);
+    bar->addWidget(snapStep_);
+    bar->addSpacing(16);
+    drawField_->setObjectName("planDrawField");
+    drawField_->setText(tr("Draw Field"));
+    drawField_->setCheckable(true);
+    drawField_->setToolTip(tr("Drag a rectangle in the plan for a field of luminaires (Edit > Arrange Lights)"));
+    bar->addWidget(drawField_);
+    bar->addStretch(1);
+    auto* layout = new QVBoxLayout(this);
+    layout->setContentsMargins(8, 6, 8, 6);
+    layout->addLayout(bar);
+    layout->addStretch(1);
+    setProjection(Projection::Top);
+    connect(drawField_, &QToolButton::toggled, this, [this](bool on) {
+        if (on) emit message(tr("Drag the field's rectangle in the plan (Esc cancels)"));
+        update();
+    });
+    connect(snap_, &QCheckBox::toggled, this, [this] { update(); });
+    connect(snapStep_, &QDoubleSpinBox::valueChanged, this, [this] { update(); });
+    connect(doc_, &Document::changed, this, [this] { update(); });
+    connect(doc_, &Document::replaced, this, [this] {
+        fitted_ = false;
+        result_.reset();
+        levels_.clear();
+        selected_ = -1;
+        selectedSet_.clear();
+        selectedCount_ = 0;
+    });
+}
+
+PlanView::~PlanView() = default;
+
+void PlanView::setProjection(Projection projection) {
+    projection_ = projection;
+    fitted_ = false;
+    title_->setText(projection == Projection::Top     ? tr("Plan")
+                    : projection == Projection::Front ? tr("Front elevation")
+                                                      : tr("Side elevation"));
+    title_->setToolTip(projection == Projection::Top     ? tr("Seen from above: x to the right, z down")
+                       : projection == Projection::Front ? tr("Seen from +z, looking along -z: x to the right, y up")
+                                                         : tr("Seen from +x, looking along -x: z to the left, y up"));
+    title_->setMinimumWidth(title_->fontMetrics().horizontalAdvance(tr("Front elevation")) + 8);
+    // A field lies on the ceiling: it is drawn in the plan only.
+    drawField_->setEnabled(projection == Projection::Top);
+    if (projection != Projection::Top) drawField_->setChecked(false);
+    update();
+}
+
+void PlanView::setSelectedLights(const std::vector<int>& lights) {
+    selectedSet_.assign(doc_->scene().lights.size(), 0);
+    selectedCount_ = 0;
+    for (int i : lights)
+        if (i >= 0 && size_t(i) < selectedSet_.size()) selectedSet_[size_t(i)] = 1, ++selectedCount_;
+    update();
+}
+
+void PlanView::setDrawingField(bool on) { drawField_->setChecked(on && projection_ == Projection::Top); }
+
+void PlanView::setSelectedLight(int index) {
+    selected_ = index;
+    update();
+}
+
+void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result) {
+    grid_ = grid;
+    layout_ = layout;
+    result_ = std::move(result);
+    resultScene_ = doc_->snapshot();
+    levels_.clear();
+    if (result_ && !result_->lux.empty()) {
+        const GridStatistics s = gridStatistics(result_->lux);
+        levels_ = isoLevels(s.minimum, s.maximum);
+    }
+    update();
+}
+
+double PlanView::snapMeters() const { return snap_->isChecked() ? snapStep_->value() : 0.0; }
+
+void PlanView::setSnapMeters(double meters) {
+    snap_->setChecked(meters > 0);
+    if (meters > 0) snapStep_->setValue(meters);
+}
+
+QColor PlanView::lightColour() { return QColor(230, 120, 0); }
+QColor PlanView::isoLineColour() { return QColor(0, 0, 0); }
+QColor PlanView::cameraColour() { return QColor(140, 40, 200); }
+
+// ---- projection ----
+
+QPointF PlanView::planOf(const V3d& p) const {
+    switch (projection_) {
+    case Projection::Top: return {p.x, p.z};
+    case Projection::Front: return {p.x, -p.y};
+    case Projection::Side: return {-p.z, -p.y};
+    }
+    return {};
+}
+
+V3d PlanView::worldDelta(const QPointF& d) const {
+    switch (projection_) {
+    case Projection::Top: return V3d(d.x(), 0, d.y());
+    case Projection::Front: return V3d(d.x(), -d.y(), 0);
+    case Projection::Side: return V3d(0, -d.y(), -d.x());
+    }
+    return V3d(0, 0, 0);
+}
+
+QPointF PlanView::widgetOfPlan(const QPointF& plan) const { return offset_ + plan * scale_; }
+QPointF PlanView::planOfWidget(const QPointF& widget) const { return (widget - offset_) / scale_; }
+QPointF PlanView::widgetOf(const V3d& world) const { return widgetOfPlan(planOf(world)); }
+
+std::optional<QPointF> PlanView::lightSymbol(int index) const {
+    const auto& lights = doc_->scene().lights;
+    if (index < 0 || size_t(index) >= lights.size() || lights[size_t(index)].type == LightType::Directional ||
+        lights[size_t(index)].type == LightType::Sun)
+        return std::nullopt;
+    return widgetOf(lights[size_t(index)].position);
+}
+
+std::optional<Legend> PlanView::gridLegend() const {
+    if (!result_ || result_->lux.empty() || layout_.points.size() != result_->lux.size()) return std::nullopt;
+    const V3d axis = projection_ == Projection::Top ? V3d(0, 1, 0) : projection_ == Projection::Front ? V3d(0, 0, 1) : V3d(1, 0, 0);
+    if (std::abs(grid_.normal().dot(axis)) < 0.9) return std::nullopt;  // the grid is not on a plane of this view
+    // As the grid panel's table colours it: a log scale from the lowest to the highest value.
+    const GridStatistics s = gridStatistics(result_->lux);
+    const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
+    return Legend{lo, hi, true, tr("lx")};
+}
+
+bool PlanView::gridOutOfDate() const {
+    if (!result_ || !resultScene_) return false;
+    const SceneChange change = diff(*resultScene_, doc_->scene());
+    return change.geometry || change.materials || change.lightSet || !change.lights.empty() || change.daylight;
+}
+
+void PlanView::fitToScene() {
+    const Scene& scene = doc_->scene();
+    const SceneBounds b = sceneBounds(scene);
+    double u0 = 1e300, u1 = -1e300, w0 = 1e300, w1 = -1e300;
+    for (int k = 0; k < 8; ++k) {
+        const QPointF p = planOf(V3d(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z));
+        u0 = std::min(u0, p.x()), u1 = std::max(u1, p.x()), w0 = std::min(w0, p.y()), w1 = std::max(w1, p.y());
+    }
+    const double du = std::max(u1 - u0, 1e-9), dw = std::max(w1 - w0, 1e-9);
+    const double top = 40;  // the bar's band
+    const double availW = std::max(width() - 140.0, 50.0), availH = std::max(height() - top - 30.0, 50.0);
+    scale_ = std::min(availW / du, availH / dw);
+    const QPointF centre((u0 + u1) / 2, (w0 + w1) / 2);
+    offset_ = QPointF(20 + availW / 2, top + availH / 2) - centre * scale_;
+    fitted_ = true;
+    update();
+}
+
+// ---- geometry ----
+
+void PlanView::rebuildFaces() {
+    const Scene& scene = doc_->scene();
+    // Built again only when the geometry, the materials' shades or the projection change (not
+    // when a light or the camera moves: a drag redraws at every step).
+    std::vector<std::shared_ptr<const TriangleMesh>> meshes;
+    std::vector<std::string> materialOf;
+    for (const Object& o : scene.objects) meshes.push_back(o.worldMesh), materialOf.push_back(o.material);
+    if (meshes == facesOf_ && materialOf == facesMaterialOf_ && scene.materials == facesMaterials_ &&
+        facesProjection_ == projection_ && !faces_.empty())
+        return;
+    facesOf_ = meshes;
+    facesMaterialOf_ = materialOf;
+    facesMaterials_ = scene.materials;
+    facesProjection_ = projection_;
+    faces_.clear();
+
+    const SceneBounds b = sceneBounds(scene);
+    const int axis = projection_ == Projection::Top ? 1 : projection_ == Projection::Front ? 2 : 0;
+    const auto depthOf = [axis](const V3d& p) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; };
+    // The plan leaves out what lies wholly above three quarters of the height (ceilings, the
+    // luminaires' bodies); an elevation is a section through the middle.
+    const double cut = axis == 1 ? b.lo.y + 0.75 * (b.hi.y - b.lo.y) : depthOf(b.center);
+    V3d view(0, 0, 0);
+    view[axis] = 1;
+    for (const Object& o : scene.objects) {
+        if (!o.worldMesh) continue;
+        const QColor shade = materialShade(scene.findMaterial(o.material));
+        const TriangleMesh& m = *o.worldMesh;
+        for (const V3i& t : m.triangles) {
+            const V3d &a = m.vertices[size_t(t.x)], &bb = m.vertices[size_t(t.y)], &c = m.vertices[size_t(t.z)];
+            if (std::min({depthOf(a), depthOf(bb), depthOf(c)}) > cut) continue;
+            const V3d n = (bb - a).cross(c - a);
+            const double len = n.length();
+            if (len <= 0) continue;
+            const double facing = std::abs(n.dot(view)) / len;
+            Face f{planOf(a), planOf(bb), planOf(c), (depthOf(a) + depthOf(bb) + depthOf(c)) / 3, shade, facing < 0.2};
+            if (!f.edgeOn) f.fill = shade.darker(int(100 + 25 * (1 - facing)));
+            faces_.push_back(f);
+        }
+    }
+    std::stable_sort(faces_.begin(), faces_.end(), [](const Face& x, const Face& y) { return x.depth < y.depth; });
+}
+
+void PlanView::paintFaces(QPainter& painter) {
+    rebuildFaces();
+    const QRectF bounds = rect();
+    painter.setPen(Qt::NoPen);
+    for (const Face& f : faces_) {
+        if (f.edgeOn) continue;
+        const QPointF p[3] = {widgetOfPlan(f.a), widgetOfPlan(f.b), widgetOfPlan(f.c)};
+        // (Not QRectF::united: it drops empty rectangles, and a triangle's box may be a line.)
+        const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()}), x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
+        const double y0 = std::min({p[0].y(), p[1].y(), p[2].y()}), y1 = std::max({p[0].y(), p[1].y(), p[2].y()});
+        if (x1 < bounds.left() || x0 > bounds.right() || y1 < bounds.top() || y0 > bounds.bottom()) continue;
+        painter.setBrush(f.fill);
+        // A hairline of the fill closes the seams between neighbouring triangles.
+        painter.setPen(QPen(f.fill, 0));
+        painter.drawConvexPolygon(p, 3);
+    }
+}
+
+void PlanView::paintEdges(QPainter& painter) const {
+    painter.setPen(QPen(kWallColour, 1.6));
+    for (const Face& f : faces_) {
+        if (!f.edgeOn) continue;
+        const QPointF p[3] = {widgetOfPlan(f.a), widgetOfPlan(f.b), widgetOfPlan(f.c)};
+        // Edge-on, the triangle is a sliver: its longest side is the wall's line.
+        double best = -1;
+        int k0 = 0;
+        for (int k = 0; k < 3; ++k) {
+            const QPointF d = p[(k + 1) % 3] - p[k];
+            const double l = QPointF::dotProduct(d, d);
+            if (l > best) best = l, k0 = k;
+        }
+        painter.drawLine(p[k0], p[(k0 + 1) % 3]);
+    }
+}
+
+void PlanView::paintSnapGrid(QPainter& painter) const {
+    const double step = snapMeters() / doc_->scene().metersPerUnit;  // scene units
+    if (step <= 0 || step * scale_ < 8) return;  // too dense to help
+    painter.setPen(QPen(QColor(0, 0, 0, 22), 0));
+    const QPointF lo = planOfWidget(QPointF(0, 0)), hi = planOfWidget(QPointF(width(), height()));
+    for (double u = std::ceil(lo.x() / step) * step; u <= hi.x(); u += step) {
+        const double x = widgetOfPlan(QPointF(u, 0)).x();
+        painter.drawLine(QPointF(x, 0), QPointF(x, height()));
+    }
+    for (double w = std::ceil(lo.y() / step) * step; w <= hi.y(); w += step) {
+        const double y = widgetOfPlan(QPointF(0, w)).y();
+        painter.drawLine(QPointF(0, y), QPointF(width(), y));
+    }
+}
+
+void PlanView::paintCalculationGrid(QPainter& painter) const {
+    const std::optional<Legend> legend = gridLegend();
+    if (!legend) return;
+    const int nu = layout_.nu, nv = layout_.nv;
+    const V3d du = grid_.edgeU / nu, dv = grid_.edgeV / nv;  // one cell, scene units
+    // Cells: each point's value over its cell.
+    for (int j = 0; j < nv; ++j)
+        for (int i = 0; i < nu; ++i) {
+            const size_t k = size_t(j) * size_t(nu) + size_t(i);
+            const V3d c = layout_.points[k];
+            const QPointF p[4] = {widgetOf(c - du * 0.5 - dv * 0.5), widgetOf(c + du * 0.5 - dv * 0.5),
+                                  widgetOf(c + du * 0.5 + dv * 0.5), widgetOf(c - du * 0.5 + dv * 0.5)};
+            const QColor colour = legendColour(*legend, result_->lux[k]);
+            painter.setPen(QPen(colour, 0));
+            painter.setBrush(colour);
+            painter.drawConvexPolygon(p, 4);
+        }
+    // Iso-lux lines between the points, each level labelled once on its longest piece.
+    const V3d origin = layout_.points[0];
+    const auto lattice = [&](double i, double j) { return widgetOf(origin + du * i + dv * j); };
+    const std::vector<IsoSegment> segments = isoSegments(result_->lux, nu, nv, levels_);
+    painter.setPen(QPen(isoLineColour(), 1.5));
+    std::vector<std::pair<double, QPointF>> labelAt(levels_.size(), {-1.0, QPointF()});
+    for (const IsoSegment& s : segments) {
+        const QPointF a = lattice(s.i0, s.j0), b = lattice(s.i1, s.j1);
+        painter.drawLine(a, b);
+        const size_t li = size_t(std::find(levels_.begin(), levels_.end(), s.level) - levels_.begin());
+        const double len = QLineF(a, b).length();
+        if (li < labelAt.size() && len > labelAt[li].first) labelAt[li] = {len, (a + b) / 2};
+    }
+    QFont small = painter.font();
+    small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.85));
+    painter.setFont(small);
+    for (size_t li = 0; li < levels_.size(); ++li) {
+        if (labelAt[li].first < 0) continue;
+        const QString text = QString::number(levels_[li], 'g', 6);
+        const QRectF box = painter.fontMetrics().boundingRect(text).adjusted(-2, 0, 2, 0);
+        const QRectF at(labelAt[li].second - QPointF(box.width() / 2, box.height() / 2), box.size());
+        painter.fillRect(at, QColor(255, 255, 255, 210));
+        painter.drawText(at, Qt::AlignCenter, text);
+    }
+    painter.setFont(font());
+    paintLegend(painter, rect(), *legend);
+    if (gridOutOfDate()) {
+        const QString text = tr("Grid out of date (the scene changed): compute it again.");
+        const double lineHeight = painter.fontMetrics().height();
+        const QRectF band(0, height() - 3 * lineHeight - 34, width(), 2 * lineHeight + 8);
+        painter.fillRect(band, QColor(255, 236, 170));
+        painter.setPen(Qt::black);
+        painter.drawText(band.adjusted(6, 0, -6, 0), Qt::AlignCenter | Qt::TextWordWrap, text);
+    }
+}
+
+void PlanView::paintLights(QPainter& painter) const {
+    const Scene& scene = doc_->scene();
+    std::vector<QRectF> labels;
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        if (l.type == LightType::Directional || l.type == LightType::Sun) continue;  // at infinity
+        const QPointF c = widgetOf(l.position);
+        const double r = kSymbolRadius;
+        // Selected: a ring; in a large selection (a dense field) the symbol itself turns blue,
+        // where rings would cover the field.
+        const bool inSet = i < selectedSet_.size() && selectedSet_[i];
+        if (int(i) == selected_ || (inSet && selectedCount_ <= kMaxRings)) {
+            painter.setPen(QPen(kSelectionColour, 2.5));
+            painter.setBrush(Qt::NoBrush);
+            painter.drawEllipse(c, r + 5, r + 5);
+        }
+        // A light switched off is drawn grey.
+        const QColor symbol = !l.on ? QColor(150, 150, 150) : inSet && selectedCount_ > kMaxRings ? kSelectionColour : lightColour();
+        painter.setPen(QPen(symbol, 2));
+        painter.setBrush(QColor(255, 255, 255, 200));
+        if (l.type == LightType::Luminaire) painter.drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
+        else painter.drawEllipse(c, r, r);
+        painter.drawLine(c - QPointF(r, 0), c + QPointF(r, 0));
+        painter.drawLine(c - QPointF(0, r), c + QPointF(0, r));
+        if (l.type == LightType::Spot || l.type == LightType::Luminaire) {
+            // The axis's direction in this view, as a wedge of the cone's half-angle.
+            const QPointF d = planOf(l.position + l.direction.normalized()) - planOf(l.position);
+            const double len = std::hypot(d.x(), d.y());
+            if (len > 0.05) {
+                const double angle = std::atan2(d.y(), d.x());
+                const double half = l.type == LightType::Spot ? l.coneAngleDeg * M_PI / 180 : M_PI / 6;
+                const double reach = r + 6 + 14 * len;
+                QPolygonF wedge;
+                wedge << c << c + reach * QPointF(std::cos(angle - half), std::sin(angle - half))
+                      << c + reach * QPointF(std::cos(angle + half), std::sin(angle + half));
+                painter.setBrush(Qt::NoBrush);
+                painter.drawPolygon(wedge);
+            }
+        }
+        if (!l.group.empty()) continue;  // named once for its group (paintGroups)
+        painter.setPen(Qt::black);
+        const QString name = nameOf(l);
+        const QRectF box = painter.fontMetrics().boundingRect(name).adjusted(-2, 0, 2, 0);
+        QRectF at(c + QPointF(r + 4, -r - 4 - box.height()), box.size());
+        // Lights one above another in this view: their names stack instead of overwriting.
+        for (bool moved = true; moved;) {
+            moved = false;
+            for (const QRectF& other : labels)
+                if (other.intersects(at)) {
+                    at.moveTop(other.bottom() + 1);
+                    moved = true;
+                }
+        }
+        labels.push_back(at);
+        painter.fillRect(at, QColor(255, 255, 255));
+        painter.drawText(at, Qt::AlignCenter, name);
+    }
+}
+
+void PlanView::paintGroups(QPainter& painter) const {
+    // Each group's box around its lights, dashed, with its name and count once above it.
+    struct Box {
+        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+        int count = 0;
+    };
+    std::map<std::string, Box> boxes;
+    for (const Light& l : doc_->scene().lights) {
+        if (l.group.empty() || l.type == LightType::Directional || l.type == LightType::Sun) continue;
+        const QPointF c = widgetOf(l.position);
+        Box& b = boxes[l.group];
+        b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x());
+        b.y0 = std::min(b.y0, c.y()), b.y1 = std::max(b.y1, c.y());
+        ++b.count;
+    }
+    const double pad = kSymbolRadius + 5;
+    for (const auto& [name, b] : boxes) {
+        const QRectF r = QRectF(QPointF(b.x0, b.y0), QPointF(b.x1, b.y1)).adjusted(-pad, -pad, pad, pad);
+        painter.setPen(QPen(lightColour().darker(130), 1, Qt::DashLine));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawRect(r);
+        const QString text = tr("%1 (%2)").arg(QString::fromStdString(name)).arg(b.count);
+        const QRectF box = painter.fontMetrics().boundingRect(text).adjusted(-3, 0, 3, 0);
+        const QRectF at(r.topLeft() - QPointF(0, box.height() + 1), box.size());
+        painter.fillRect(at, QColor(255, 255, 255));
+        painter.setPen(Qt::black);
+        painter.drawText(at, Qt::AlignCenter, text);
+    }
+}
+
+void PlanView::paintField(QPainter& painter) const {
+    if (drag_ != Drag::Field) return;
+    const QRectF r = QRectF(widgetOfPlan(fieldStart_), widgetOfPlan(fieldEnd_)).normalized();
+    painter.setPen(QPen(kSelectionColour, 1.5, Qt::DashLine));
+    QColor fill(30, 110, 230, 30);
+    painter.setBrush(fill);
+    painter.drawRect(r);
+    const double mpu = doc_->scene().metersPerUnit;
+    const QString size = tr("%1 x %2 m")
+                             .arg(std::abs(fieldEnd_.x() - fieldStart_.x()) * mpu, 0, 'g', 4)
+                             .arg(std::abs(fieldEnd_.y() - fieldStart_.y()) * mpu, 0, 'g', 4);
+    painter.setPen(Qt::black);
+    painter.drawText(r.bottomRight() + QPointF(6, 14), size);
+}
+
+QPointF PlanView::snappedPlan(const QPointF& widget) const {
+    QPointF p = planOfWidget(widget);
+    const double step = snapMeters() / doc_->scene().metersPerUnit;
+    if (step > 0) p = QPointF(std::round(p.x() / step) * step, std::round(p.y() / step) * step);
+    return p;
+}
+
+void PlanView::paintCamera(QPainter& painter) const {
+    // The scene camera as a dot with its field of view opening toward the target, so that a
+    // camera outside the walls, or looking at one, is seen at once.
+    const Camera& c = doc_->scene().camera;
+    const QPointF at = widgetOf(c.position), toward = widgetOf(c.target) - at;
+    const double len = std::hypot(toward.x(), toward.y());
+    painter.setPen(QPen(cameraColour(), 2));
+    painter.setBrush(cameraColour());
+    painter.drawEllipse(at, 4, 4);
+    if (len < 2) return;  // looking straight along the view's axis
+    const double angle = std::atan2(toward.y(), toward.x());
+    const double half = std::atan(std::tan(c.fovYDeg * M_PI / 360) * double(c.width) / std::max(c.height, 1));  // horizontal
+    const double reach = 40;
+    QPolygonF cone;
+    cone << at << at + reach * QPointF(std::cos(angle - half), std::sin(angle - half))
+         << at + reach * QPointF(std::cos(angle + half), std::sin(angle + half));
+    QColor fill = cameraColour();
+    fill.setAlpha(50);
+    painter.setBrush(fill);
+    painter.drawPolygon(cone);
+}
+
+void PlanView::paintScaleBar(QPainter& painter) const {
+    // A bar of a round length in metres, at most a fifth of the width.
+    const double mpu = doc_->scene().metersPerUnit;
+    const double pxPerMeter = scale_ / mpu;
+    if (pxPerMeter <= 0) return;
+    double meters = std::pow(10.0, std::floor(std::log10(width() / 5.0 / pxPerMeter)));
+    for (double m : {5.0, 2.0})
+        if (meters * m * pxPerMeter <= width() / 5.0) {
+            meters *= m;
+            break;
+        }
+    const double len = meters * pxPerMeter;
+    const QPointF a(16, height() - 16), b(16 + len, height() - 16);
+    painter.setPen(QPen(Qt::black, 2));
+    painter.drawLine(a, b);
+    painter.drawLine(a, a - QPointF(0, 5));
+    painter.drawLine(b, b - QPointF(0, 5));
+    painter.drawText(QPointF(b.x() + 6, b.y() + 4), tr("%1 m").arg(meters, 0, 'g', 6));
+}
+
+void PlanView::paintEvent(QPaintEvent*) {
+    if (!fitted_) fitToScene();
+    QPainter painter(this);
+    painter.fillRect(rect(), kBackground);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    paintSnapGrid(painter);
+    paintFaces(painter);
+    paintCalculationGrid(painter);
+    paintEdges(painter);  // walls and furniture sides stay visible over the grid
+    paintCamera(painter);
+    paintLights(painter);
+    paintGroups(painter);
+    paintField(painter);
+    paintScaleBar(painter);
+}
+
+void PlanView::resizeEvent(QResizeEvent* event) {
+    QWidget::resizeEvent(event);
+    fitted_ = false;
+}
+
+// ---- mouse ----
+
+int PlanView::lightAt(const QPointF& pos) const {
+    int best = -1;
+    double bestDistance = kSymbolRadius + 4;
+    for (int i = 0; i < int(doc_->scene().lights.size()); ++i)
+        if (const auto c = lightSymbol(i)) {
+            const double d = QLineF(*c, pos).length();
+            if (d <= bestDistance) best = i, bestDistance = d;
+        }
+    return best;
+}
+
+void PlanView::mousePressEvent(QMouseEvent* event) {
+    if (drag_ != Drag::None) return;
+    pressed_ = last_ = event->position();
+    moved_ = false;
+    fitted_ = true;  // the user frames the view from now on
+    if (event->button() == Qt::LeftButton && drawField_->isChecked() && projection_ == Projection::Top) {
+        drag_ = Drag::Field;
+        fieldStart_ = fieldEnd_ = snappedPlan(pressed_);
+        hold_ = std::make_unique<YieldGate::Scope>(gate_.counter());
+        update();
+        return;
+    }
+    const int light = event->button() == Qt::LeftButton ? lightAt(pressed_) : -1;
+    if (light >= 0) {
+        drag_ = Drag::MoveLight;
+        dragLight_ = light;
+        dragStart_ = doc_->scene().lights[size_t(light)];
+        mergeKey_ = nextMergeKey();
+        emit lightClicked(light);
+    } else {
+        drag_ = Drag::Pan;
+    }
+    hold_ = std::make_unique<YieldGate::Scope>(gate_.counter());
+}
+
+void PlanView::moveDraggedLight(const QPointF& pos) {
+    const auto& lights = doc_->scene().lights;
+    if (dragLight_ < 0 || size_t(dragLight_) >= lights.size()) return;
+    const V3d delta = worldDelta((pos - pressed_) / scale_);
+    Light light = lights[size_t(dragLight_)];
+    V3d p = dragStart_.position + delta;
+    const double step = snapMeters() / doc_->scene().metersPerUnit;
+    if (step > 0)
+        for (int axis = 0; axis < 3; ++axis)
+            if (delta[axis] != 0) p[axis] = std::round(p[axis] / step) * step;
+    if (p == light.position) return;
+    light.position = p;
+    doc_->undoStack()->push(new EditLightCommand(doc_, dragLight_, light, mergeKey_, tr("Move %1").arg(nameOf(light))));
+}
+
+void PlanView::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF pos = event->position();
+    if (drag_ == Drag::None) return;
+    if (!moved_ && QLineF(pos, pressed_).length() < kClickSlop) return;
+    moved_ = true;
+    if (drag_ == Drag::Field) {
+        fieldEnd_ = snappedPlan(pos);
+        update();
+    } else if (drag_ == Drag::Pan) {
+        offset_ += pos - last_;
+        update();
+    } else {
+        moveDraggedLight(pos);
+    }
+    last_ = pos;
+}
+
+void PlanView::mouseReleaseEvent(QMouseEvent* event) {
+    if (drag_ == Drag::Field) {
+        fieldEnd_ = snappedPlan(event->position());
+        drag_ = Drag::None;
+        hold_.reset();
+        drawField_->setChecked(false);
+        update();
+        if (fieldStart_.x() != fieldEnd_.x() && fieldStart_.y() != fieldEnd_.y())
+            emit fieldDrawn(fieldStart_.x(), fieldStart_.y(), fieldEnd_.x(), fieldEnd_.y());
+        else
+            emit message(tr("The field's rectangle has no area: drag from one corner to the opposite one"));
+        return;
+    }
+    if (drag_ == Drag::MoveLight && moved_) moveDraggedLight(event->position());
+    if (drag_ == Drag::MoveLight && moved_ && size_t(dragLight_) < doc_->scene().lights.size()) {
+        const V3d p = doc_->scene().lights[size_t(dragLight_)].position;
+        emit message(tr("Moved %1 to (%2, %3, %4)")
+                         .arg(nameOf(dragStart_))
+                         .arg(p.x, 0, 'g', 6)
+                         .arg(p.y, 0, 'g', 6)
+                         .arg(p.z, 0, 'g', 6));
+    }
+    drag_ = Drag::None;
+    dragLight_ = -1;
+    hold_.reset();
+}
+
+void PlanView::wheelEvent(QWheelEvent* event) {
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps == 0) return;
+    const QPointF at = event->position();
+    const QPointF plan = planOfWidget(at);
+    scale_ *= std::pow(1.2, steps);
+    offset_ = at - plan * scale_;  // the point under the cursor stays there
+    fitted_ = true;
+    update();
+}
+
+void PlanView::keyPressEvent(QKeyEvent* event) {
+    if (event->key() == Qt::Key_Escape && (drawField_->isChecked() || drag_ == Drag::Field)) {
+        if (drag_ == Drag::Field) {
+            drag_ = Drag::None;
+            hold_.reset();
+        }
+        drawField_->setChecked(false);
+        update();
+        return;
+    }
+    QWidget::keyPressEvent(event);
+}
+
+}  // namespace lucerna

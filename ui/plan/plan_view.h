@@ -1,0 +1,159 @@
+#pragma once
+// The plan view: the scene seen orthographically from above (the plan) or from the front or the
+// side (elevations), drawn with QPainter, as DIALux users place luminaires. The geometry is cut
+// (in the plan above three quarters of the scene's height, so ceilings do not hide the room; in
+// the elevations at the middle of the depth, a section) and drawn farthest first, faces filled in
+// a light shade of their material and walls seen edge-on as dark lines. Lights are symbols with
+// their names: a circle with a cross for a point light, a circle with a wedge along its axis for
+// a spot, a square with a cross for a luminaire (directional lights have no position); the scene
+// camera is a dot with its field of view.
+// The newest calculation grid facing the view is drawn on its plane in false colour, with
+// iso-lux lines at round levels and a legend.
+// - Left drag on a light moves it in the view's plane (the plan: x and z, y unchanged), its
+//   moved coordinates snapped to the snap step (a grid in metres, drawn faintly); one undo step
+//   per drag. A click selects it.
+// - Left drag elsewhere, or a right or middle drag, pans; the wheel zooms about the cursor.
+// - Draw field (the bar's button, the plan only): a left drag draws the rectangle of a field of
+//   luminaires (snapped like a move), which the window's arrangement dialog then fills.
+// Lights of a group carry no name each: the group's name stands once by the box around them,
+// so a field of thousands draws as a field.
+
+#include "core/photometry/calculation_grid.h"
+#include "render/photometry/grid_calculation.h"
+#include "ui/document/document.h"
+#include "ui/rendering/yield_gate.h"
+
+#include <QWidget>
+
+#include <memory>
+#include <optional>
+
+class QCheckBox;
+class QDoubleSpinBox;
+class QLabel;
+class QToolButton;
+
+namespace lucerna {
+
+struct Legend;
+
+class PlanView : public QWidget {
+    Q_OBJECT
+public:
+    // Which way the view looks: down -y (plan), along -z (front elevation), along -x (side).
+    enum class Projection { Top, Front, Side };
+
+    PlanView(Document* doc, const YieldGate& gate, QWidget* parent = nullptr);
+    ~PlanView() override;
+
+    Projection projection() const { return projection_; }
+    void setProjection(Projection projection);
+    void setSelectedLight(int index);
+    // Lights shown selected together (a group or a multi-selection), besides the one above.
+    void setSelectedLights(const std::vector<int>& lights);
+
+    // The field tool: the next left drag in the plan draws a field's rectangle.
+    QToolButton* drawFieldButton() const { return drawField_; }
+    void setDrawingField(bool on);
+    // The calculation grid to draw (its rectangle, layout and newest result; null: none).
+    void setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result);
+
+    // Snapping of moved lights: a step in metres, 0 for none.
+    double snapMeters() const;
+    void setSnapMeters(double meters);
+
+    // Frames the geometry and the lights.
+    void fitToScene();
+
+    // Widget position of a world point in the current view.
+    QPointF widgetOf(const V3d& world) const;
+    // The widget position of a light's symbol (nothing for directional lights).
+    std::optional<QPointF> lightSymbol(int index) const;
+    // The false-colour legend of the grid drawn now (nothing without a grid shown).
+    std::optional<Legend> gridLegend() const;
+    // The scene changed since the grid's result was computed in a way that changes its values
+    // (lights, geometry, materials): the plan says so over the grid.
+    bool gridOutOfDate() const;
+    // The iso-lux levels drawn now.
+    const std::vector<double>& isoLevelsShown() const { return levels_; }
+    // The colours the view draws lights and iso-lux lines in (for tests reading pixels back).
+    static QColor lightColour();
+    static QColor isoLineColour();
+    static QColor cameraColour();
+
+signals:
+    void lightClicked(int index);
+    // A field's rectangle drawn in the plan: corners (x0, z0) and (x1, z1), scene units.
+    void fieldDrawn(double x0, double z0, double x1, double z1);
+    void message(const QString& text);
+
+protected:
+    void paintEvent(QPaintEvent*) override;
+    void resizeEvent(QResizeEvent*) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    struct Face;  // a projected triangle
+    enum class Drag { None, Pan, MoveLight, Field };
+
+    // Plan coordinates (u right, w down on the screen, scene units) of a world point, and back
+    // for a displacement.
+    QPointF planOf(const V3d& world) const;
+    V3d worldDelta(const QPointF& planDelta) const;
+    QPointF widgetOfPlan(const QPointF& plan) const;
+    QPointF planOfWidget(const QPointF& widget) const;
+    void rebuildFaces();
+    void paintFaces(QPainter& painter);
+    void paintEdges(QPainter& painter) const;
+    void paintSnapGrid(QPainter& painter) const;
+    void paintCalculationGrid(QPainter& painter) const;
+    void paintLights(QPainter& painter) const;
+    void paintGroups(QPainter& painter) const;
+    void paintField(QPainter& painter) const;
+    QPointF snappedPlan(const QPointF& widget) const;
+    void paintCamera(QPainter& painter) const;
+    void paintScaleBar(QPainter& painter) const;
+    int lightAt(const QPointF& pos) const;
+    void moveDraggedLight(const QPointF& pos);
+
+    Document* doc_;
+    YieldGate gate_;
+    Projection projection_ = Projection::Top;
+    QLabel* title_;
+    QCheckBox* snap_;
+    QDoubleSpinBox* snapStep_;
+    QToolButton* drawField_;
+
+    std::vector<Face> faces_;          // of the geometry below, for the projection
+    std::vector<std::shared_ptr<const TriangleMesh>> facesOf_;  // the meshes faces_ were built from
+    std::vector<std::string> facesMaterialOf_;  // and each object's material
+    std::vector<Material> facesMaterials_;
+    Projection facesProjection_ = Projection::Top;
+    double scale_ = 100;               // pixels per scene unit
+    QPointF offset_;                   // widget position of plan point (0, 0)
+    bool fitted_ = false;
+    int selected_ = -1;
+    std::vector<char> selectedSet_;  // by light index
+    int selectedCount_ = 0;
+
+    CalculationGrid grid_;
+    GridLayout layout_;
+    std::shared_ptr<const GridResult> result_;
+    SceneSnapshot resultScene_;  // the scene when the result arrived
+    std::vector<double> levels_;
+
+    Drag drag_ = Drag::None;
+    int dragLight_ = -1;
+    Light dragStart_;
+    QPointF pressed_, last_;
+    QPointF fieldStart_, fieldEnd_;  // plan coordinates of the field being drawn
+    bool moved_ = false;
+    int mergeKey_ = 0;
+    std::unique_ptr<YieldGate::Scope> hold_;
+};
+
+}  // namespace lucerna

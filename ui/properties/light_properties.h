@@ -1,0 +1,87 @@
+#pragma once
+// The property panel of the selected light, in the units a designer works in: a point or spot
+// light's luminous flux (lm) or on-axis intensity (cd) and its colour temperature (K) or colour,
+// written into the light's photometric keys so that the file keeps what was typed; a spot's cone
+// and falloff half-angles; a directional light's illuminance (lx) on a surface facing it; a
+// luminaire's file, rotation, flux, colour and its distribution as a polar plot. The radiometric
+// values (W/sr, W/m²) are an advanced view behind a toggle. A sun shows its name, group and (when
+// placed by direction) its direction; the rest of it is the daylight panel's. Lengths are in the scene's unit.
+// Every edit of a field is one EditLightCommand holding the whole light before and after; the
+// arrow steps of one field merge into it until the field's editing finishes.
+
+#include "ui/document/document.h"
+#include "ui/properties/property_rows.h"
+
+#include <QWidget>
+
+#include <array>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QToolButton;
+class QVBoxLayout;
+
+namespace lucerna {
+
+class LightColourEdit;
+class LuminairePolarPlot;
+
+class LightProperties : public QWidget {
+    Q_OBJECT
+public:
+    explicit LightProperties(Document* doc, QWidget* parent = nullptr);
+
+    // -1: no light (the panel says so).
+    void setLight(int index);
+    int light() const { return index_; }
+
+    // The fields, for tests and for focus.
+    QLineEdit* nameField() const { return name_; }
+    // The group the light belongs to (empty: none); typing a name moves it there.
+    QLineEdit* groupField() const { return group_; }
+    const std::array<QDoubleSpinBox*, 3>& positionFields() const { return position_; }
+    const std::array<QDoubleSpinBox*, 3>& directionFields() const { return direction_; }
+    // Point and spot: the flux or candela value, its unit (0 lm, 1 cd).
+    QDoubleSpinBox* outputField() const { return output_; }
+    QComboBox* outputUnitField() const { return outputUnit_; }
+    QDoubleSpinBox* illuminanceField() const { return illuminance_; }
+    LightColourEdit* colourField() const { return colour_; }
+    // The advanced view: radiant intensity (W/sr) or irradiance (W/m²) per channel.
+    QToolButton* advancedToggle() const { return advanced_; }
+    const std::array<QDoubleSpinBox*, 3>& powerFields() const { return power_; }
+    QDoubleSpinBox* coneField() const { return cone_; }
+    QDoubleSpinBox* falloffField() const { return falloff_; }
+    QDoubleSpinBox* rotationField() const { return rotation_; }
+    QDoubleSpinBox* lumensField() const { return lumens_; }
+    LuminairePolarPlot* polarPlot() const { return polar_; }
+
+private:
+    enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens };
+    std::array<QDoubleSpinBox*, 3> makeTriple(Field field);
+    QDoubleSpinBox* makeSpin(Field field, double lo, double hi, int decimals);
+    void refresh();
+    void apply(Field field, const void* sender);
+    void renameLight();
+    void regroupLight();
+
+    Document* doc_;
+    int index_ = -1;
+    QLabel *empty_, *type_, *outputOther_, *file_, *sunNote_;
+    QWidget* fields_;
+    QVBoxLayout* rows_;
+    QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
+    QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_;
+    QLineEdit* name_;
+    QLineEdit* group_;
+    std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
+    QDoubleSpinBox *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
+    QComboBox* outputUnit_;
+    LightColourEdit* colour_;
+    QToolButton* advanced_;
+    LuminairePolarPlot* polar_;
+    MergeTracker merge_;
+};
+
+}  // namespace lucerna

@@ -1,0 +1,113 @@
+#include "ui/rendering/render_panel.h"
+
+#include "render/display/display.h"
+#include "render/display/false_colour.h"
+#include "render/engine/backend_table.h"
+#include "ui/rendering/error_plot.h"
+#include "ui/viewport/image_view.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QPushButton>
+#include <QVBoxLayout>
+
+#include <cmath>
+
+namespace lucerna {
+
+RenderPanel::RenderPanel(ConvergingRender* render, QWidget* parent) : QWidget(parent), render_(render) {
+    view_ = new ImageView(this);
+    view_->setObjectName("convergingView");
+    view_->setPlaceholder(tr("The converging render appears here."));
+    start_ = new QPushButton(tr("Start"), this);
+    start_->setObjectName("renderStart");
+    pause_ = new QPushButton(tr("Pause"), this);
+    pause_->setObjectName("renderPause");
+    pause_->setCheckable(true);
+    restart_ = new QPushButton(tr("Restart"), this);
+    restart_->setObjectName("renderRestart");
+    backend_ = new QComboBox(this);
+    backend_->setObjectName("renderBackend");
+    backend_->addItem(tr("auto"), QStringLiteral("auto"));
+    for (const BackendInfo& b : backendTable())
+        backend_->addItem(QString::fromUtf8(b.name.data(), int(b.name.size())),
+                          QString::fromUtf8(b.name.data(), int(b.name.size())));
+    lightLayers_ = new QCheckBox(tr("Per-light layers"), this);
+    lightLayers_->setObjectName("renderLightLayers");
+    lightLayers_->setToolTip(tr("Render one layer per light: dimming, switching off or recolouring a light then "
+                                "updates this image at once, without restarting (each pass costs one pass per light)."));
+    reason_ = new QLabel(this);
+    reason_->setObjectName("renderReason");
+    reason_->setWordWrap(true);
+    figures_ = new QLabel(this);
+    figures_->setObjectName("renderFigures");
+    plot_ = new ErrorPlot(this);
+
+    auto* buttons = new QHBoxLayout;
+    buttons->addWidget(start_);
+    buttons->addWidget(pause_);
+    buttons->addWidget(restart_);
+    // The backend on a row of its own, so that the dock stays narrow enough for the viewport to
+    // keep half the window.
+    auto* method = new QHBoxLayout;
+    method->addWidget(backend_, 1);
+    method->addWidget(lightLayers_);
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(view_, 1);
+    layout->addLayout(buttons);
+    layout->addLayout(method);
+    layout->addWidget(reason_);
+    layout->addWidget(figures_);
+    layout->addWidget(plot_);
+
+    connect(start_, &QPushButton::clicked, render_, &ConvergingRender::start);
+    connect(pause_, &QPushButton::toggled, render_, &ConvergingRender::setPaused);
+    connect(restart_, &QPushButton::clicked, render_, &ConvergingRender::restart);
+    connect(backend_, &QComboBox::currentIndexChanged, this,
+            [this] { render_->setBackend(backend_->currentData().toString().toStdString()); });
+    connect(lightLayers_, &QCheckBox::toggled, render_, &ConvergingRender::setLightLayers);
+    connect(render_, &ConvergingRender::frameReady, this, &RenderPanel::showFrame);
+    connect(render_, &ConvergingRender::stateChanged, this, &RenderPanel::showState);
+    showState();
+}
+
+void RenderPanel::setDisplaySettings(const DisplaySettings& settings) {
+    display_ = settings;
+    view_->setLegend(luminanceLegend(settings));
+    showFrame();
+}
+
+void RenderPanel::showFrame() {
+    const auto frame = render_->frame();
+    if (!frame) return;
+    view_->setImage(toDisplayImage(frame->image, display_));
+    const double err = frame->estimatedRelmse;
+    figures_->setText(tr("%1 s   %2 spp   estimated relmse %3")
+                          .arg(frame->seconds, 0, 'f', 1)
+                          .arg(frame->samplesPerPixel, 0, 'g', 4)
+                          .arg(std::isfinite(err) ? QString::number(err, 'g', 3) : tr("(after two passes)")));
+    plot_->setPoints(render_->history());
+}
+
+void RenderPanel::showState() {
+    const bool running = render_->isRunning();
+    start_->setEnabled(!running || render_->isPaused());
+    pause_->setEnabled(running);
+    {
+        const QSignalBlocker block(pause_);
+        pause_->setChecked(render_->isPaused());
+    }
+    QString text;
+    if (!render_->error().isEmpty())
+        text = tr("Error: %1").arg(render_->error());
+    else if (!render_->backendInUse().empty())
+        text = render_->autoReason().empty()
+                   ? tr("Backend: %1").arg(QString::fromStdString(render_->backendInUse()))
+                   : tr("auto: %1").arg(QString::fromStdString(render_->autoReason()));
+    if (running && render_->isPaused()) text += tr(" (paused)");
+    reason_->setText(text);
+}
+
+}  // namespace lucerna

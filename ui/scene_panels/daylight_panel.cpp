@@ -1,0 +1,570 @@
+#include "ui/scene_panels/daylight_panel.h"
+
+#include "core/daylight/daylight.h"
+#include "core/daylight/sky_model.h"
+#include "core/daylight/solar_position.h"
+#include "ui/commands/daylight_commands.h"
+#include "ui/commands/light_commands.h"
+#include "ui/scene_panels/site_cities.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDateEdit>
+#include <QDoubleSpinBox>
+#include <QGroupBox>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <QTimeEdit>
+#include <QVBoxLayout>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+namespace lucerna {
+
+namespace {
+
+// The city list: "No site", the cities, then "Custom site" for any other place.
+constexpr int kNoSite = 0;
+constexpr int kCustomSite = int(kSiteCities.size()) + 1;
+
+// The sky model list, in this order.
+constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3;
+// The sky quantity list.
+constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
+
+// The ISO 15469 / CIE S 011 descriptions of the 15 general skies.
+const char* const kCieSkyNames[15] = {
+    "Overcast, steep gradation, uniform in azimuth (the CIE standard overcast sky)",
+    "Overcast, steep gradation, slight brightening toward the sun",
+    "Overcast, moderate gradation, uniform in azimuth",
+    "Overcast, moderate gradation, slight brightening toward the sun",
+    "Sky of uniform luminance",
+    "Partly cloudy, no gradation toward the zenith, slight brightening toward the sun",
+    "Partly cloudy, no gradation toward the zenith, brighter circumsolar region",
+    "Partly cloudy, no gradation toward the zenith, distinct solar corona",
+    "Partly cloudy, the sun obscured",
+    "Partly cloudy, brighter circumsolar region",
+    "White-blue sky, distinct solar corona",
+    "CIE standard clear sky, low luminance turbidity",
+    "CIE standard clear sky, polluted atmosphere",
+    "Cloudless turbid sky, broad solar corona",
+    "White-blue turbid sky, broad solar corona",
+};
+
+// A sky for a scene that had none: 10,000 lx on an open plane, a bright overcast day.
+Sky defaultSky() {
+    Sky s;
+    s.model = SkyModelType::CieOvercast;
+    s.horizontalIlluminance = 10000;
+    return s;
+}
+
+// Toward the sun of the scene's sun (switched on or not: a CIE general sky keeps its place), or
+// the zenith when there is none or its time cannot be placed.
+V3d towardSun(const Scene& scene) {
+    const int i = sunIndex(scene);
+    if (i < 0) return V3d(0, 1, 0);
+    try {
+        return sunDirection(scene, scene.lights[size_t(i)]);
+    } catch (const std::exception&) {
+        return V3d(0, 1, 0);
+    }
+}
+
+// The sky's horizontal illuminance on an open plane, lx (the sky alone). A coarse integral for
+// a CIE general sky: the panel shows it on every step of a slider drag.
+double skyHorizontalIlluminance(const Sky& sky, const V3d& sun) {
+    if (sky.horizontalIlluminance) return *sky.horizontalIlluminance;
+    return sky.zenithLuminance.value_or(0.0) * relativeHorizontalIlluminance(sky, sun, 64);
+}
+
+double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
+
+QString lux(double value) { return QStringLiteral("%L1 lx").arg(value, 0, 'f', 0); }
+
+}  // namespace
+
+DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+    auto* layout = new QVBoxLayout(this);
+    // Slim margins: the left docks are narrow, and the rows' labels take 110 px already.
+    layout->setContentsMargins(4, 4, 4, 4);
+    const auto group = [this, layout](const QString& title) {
+        auto* box = new QGroupBox(title, this);
+        auto* rows = new QVBoxLayout(box);
+        rows->setContentsMargins(4, 4, 4, 4);
+        layout->addWidget(box);
+        return rows;
+    };
+    // The panel's labels are short: a narrower label column leaves the fields room in a narrow dock.
+    const auto row = [](QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields) {
+        QWidget* r = addPropertyRow(rows, label, fields);
+        rowLabel(r)->setMinimumWidth(84);
+        return r;
+    };
+    // A numeric field whose edits are one undo step per field until editing finishes.
+    const auto spin = [this](QWidget* parent, const char* name, double lo, double hi, int decimals,
+                             void (DaylightPanel::*apply)(const void*)) {
+        QDoubleSpinBox* s = makePropertySpin(parent, lo, hi, decimals);
+        s->setMinimumWidth(50);
+        s->setObjectName(name);
+        connect(s, &QDoubleSpinBox::valueChanged, this, [this, s, apply] { (this->*apply)(s); });
+        connect(s, &QDoubleSpinBox::editingFinished, this, [this] { merge_.finish(); });
+        return s;
+    };
+
+    // Site.
+    QVBoxLayout* site = group(tr("Site"));
+    city_ = new QComboBox(this);
+    city_->setObjectName("daylightCity");
+    city_->addItem(tr("No site"));
+    for (const SiteCity& c : kSiteCities) city_->addItem(QString::fromUtf8(c.name.data(), qsizetype(c.name.size())));
+    city_->addItem(tr("Custom site"));
+    city_->setToolTip(tr("Where the scene stands on Earth: what places the sun by date and time"));
+    connect(city_, &QComboBox::activated, this, &DaylightPanel::chooseCity);
+    row(site, tr("Place"), {city_});
+    latitude_ = spin(this, "daylightLatitude", -90, 90, 4, &DaylightPanel::editSite);
+    latitude_->setSuffix(QStringLiteral(" °N"));
+    longitude_ = spin(this, "daylightLongitude", -180, 180, 4, &DaylightPanel::editSite);
+    longitude_->setSuffix(QStringLiteral(" °E"));
+    utcOffset_ = spin(this, "daylightUtcOffset", -14, 14, 2, &DaylightPanel::editSite);
+    utcOffset_->setSingleStep(0.5);
+    utcOffset_->setSuffix(QStringLiteral(" h"));
+    utcOffset_->setToolTip(tr("Local time = UTC + this offset; the standard time, without daylight saving"));
+    north_ = spin(this, "daylightNorth", 0, 360, 1, &DaylightPanel::editSite);
+    north_->setSuffix(QStringLiteral(" °"));
+    north_->setWrapping(true);
+    north_->setSingleStep(5);
+    north_->setToolTip(tr("The direction of geographic north, in degrees from -z toward +x (0: north is -z, east +x)"));
+    row(site, tr("Latitude"), {latitude_});
+    row(site, tr("Longitude"), {longitude_});
+    row(site, tr("UTC offset"), {utcOffset_});
+    row(site, tr("North"), {north_});
+
+    // Sun.
+    QVBoxLayout* sun = group(tr("Sun"));
+    sunPresent_ = new QCheckBox(tr("present"), this);
+    sunPresent_->setObjectName("daylightSunPresent");
+    connect(sunPresent_, &QCheckBox::clicked, this, &DaylightPanel::setSunPresent);
+    row(sun, tr("Sun"), {sunPresent_});
+    sunIlluminance_ = spin(this, "daylightSunIlluminance", 0, 1e6, 0, &DaylightPanel::editSun);
+    sunIlluminance_->setSingleStep(1000);
+    sunIlluminance_->setSuffix(QStringLiteral(" lx"));
+    sunIlluminance_->setToolTip(tr("Direct normal illuminance: on a surface facing the sun"));
+    sunDiameter_ = spin(this, "daylightSunDiameter", 0, 5, 2, &DaylightPanel::editSun);
+    sunDiameter_->setSingleStep(0.05);
+    sunDiameter_->setSuffix(QStringLiteral(" °"));
+    sunDiameter_->setToolTip(tr("The sun's disc; 0 makes it a point at infinity with hard shadows"));
+    row(sun, tr("Illuminance"), {sunIlluminance_});
+    row(sun, tr("Angular diameter"), {sunDiameter_});
+    date_ = new QDateEdit(QDate(2025, 6, 21), this);
+    date_->setObjectName("daylightDate");
+    date_->setDisplayFormat(QStringLiteral("yyyy-MM-dd"));
+    date_->setDateRange(QDate(1900, 1, 1), QDate(2100, 12, 31));
+    date_->setCalendarPopup(true);
+    date_->setKeyboardTracking(false);
+    connect(date_, &QDateEdit::dateChanged, this, [this] { moveSun(date_); });
+    connect(date_, &QDateEdit::editingFinished, this, [this] { merge_.finish(); });
+    row(sun, tr("Date"), {date_});
+    timeSlider_ = new QSlider(Qt::Horizontal, this);
+    timeSlider_->setObjectName("daylightTimeSlider");
+    timeSlider_->setRange(0, 24 * 60 - 1);  // minutes of the local day
+    timeSlider_->setSingleStep(5);
+    timeSlider_->setPageStep(60);
+    timeSlider_->setValue(12 * 60);
+    timeSlider_->setToolTip(tr("Local time at the site: drag to move the sun"));
+    connect(timeSlider_, &QSlider::valueChanged, this, [this] {
+        moveSun(timeSlider_);
+        // A drag is one step; a click on the track or a key is a step of its own.
+        if (!timeSlider_->isSliderDown()) merge_.finish();
+    });
+    connect(timeSlider_, &QSlider::sliderReleased, this, [this] { merge_.finish(); });
+    time_ = new QTimeEdit(QTime(12, 0), this);
+    time_->setObjectName("daylightTime");
+    time_->setDisplayFormat(QStringLiteral("HH:mm"));
+    time_->setKeyboardTracking(false);
+    connect(time_, &QTimeEdit::timeChanged, this, [this] { moveSun(time_); });
+    connect(time_, &QTimeEdit::editingFinished, this, [this] { merge_.finish(); });
+    timeSlider_->setTickPosition(QSlider::TicksBelow);
+    timeSlider_->setTickInterval(3 * 60);
+    row(sun, tr("Time"), {time_});
+    // The slider has the dock's whole width: a narrow one would move the sun by the hour.
+    sun->addWidget(timeSlider_);
+    sunPosition_ = new QLabel(this);
+    sunPosition_->setObjectName("daylightSunPosition");
+    sunPosition_->setWordWrap(true);
+    sun->addWidget(sunPosition_);
+    horizontalIlluminance_ = new QLabel(this);
+    horizontalIlluminance_->setObjectName("daylightHorizontalIlluminance");
+    horizontalIlluminance_->setWordWrap(true);
+    horizontalIlluminance_->setToolTip(tr("The horizontal illuminance of the sun and the sky on an open plane"));
+    sun->addWidget(horizontalIlluminance_);
+
+    // Sky.
+    QVBoxLayout* sky = group(tr("Sky"));
+    skyModel_ = new QComboBox(this);
+    skyModel_->setObjectName("daylightSkyModel");
+    skyModel_->addItems({tr("None"), tr("Uniform"), tr("CIE overcast (traditional)"), tr("CIE general")});
+    connect(skyModel_, &QComboBox::activated, this, &DaylightPanel::chooseSkyModel);
+    row(sky, tr("Model"), {skyModel_});
+    cieType_ = new QSpinBox(this);
+    cieType_->setObjectName("daylightCieType");
+    cieType_->setRange(1, 15);
+    cieType_->setKeyboardTracking(false);
+    connect(cieType_, &QSpinBox::valueChanged, this, [this] { editSky(cieType_); });
+    connect(cieType_, &QSpinBox::editingFinished, this, [this] { merge_.finish(); });
+    cieTypeRow_ = row(sky, tr("CIE type"), {cieType_});
+    cieTypeName_ = new QLabel(this);
+    cieTypeName_->setObjectName("daylightCieTypeName");
+    cieTypeName_->setWordWrap(true);
+    sky->addWidget(cieTypeName_);
+    skyQuantity_ = new QComboBox(this);
+    skyQuantity_->setObjectName("daylightSkyQuantity");
+    skyQuantity_->addItems({tr("Eh (lx)"), tr("Lz (cd/m²)")});
+    skyQuantity_->setToolTip(tr("Eh: the horizontal illuminance of the sky alone on an open plane; Lz: the sky's "
+                                "luminance at the zenith. Switching keeps the sky as it is."));
+    connect(skyQuantity_, &QComboBox::activated, this, &DaylightPanel::chooseSkyQuantity);
+    row(sky, tr("Given as"), {skyQuantity_});
+    skyValue_ = spin(this, "daylightSkyValue", 0, 1e7, 0, &DaylightPanel::editSky);
+    skyValue_->setSingleStep(100);
+    row(sky, tr("Value"), {skyValue_});
+    groundReflectance_ = spin(this, "daylightGroundReflectance", 0, 1, 2, &DaylightPanel::editSky);
+    groundReflectance_->setSingleStep(0.05);
+    groundReflectance_->setToolTip(tr("The ground below the horizon reflects this share of the sun and sky's light"));
+    row(sky, tr("Ground reflectance"), {groundReflectance_});
+
+    // Lists and date fields narrow with the dock like the number fields (makePropertySpin).
+    for (QWidget* w : std::initializer_list<QWidget*>{city_, date_, time_, skyModel_, cieType_, skyQuantity_}) {
+        w->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
+        w->setMinimumWidth(50);
+    }
+
+    error_ = new QLabel(this);
+    error_->setObjectName("daylightError");
+    error_->setWordWrap(true);
+    layout->addWidget(error_);
+    layout->addStretch(1);
+
+    connect(doc_, &Document::changed, this, &DaylightPanel::refresh);
+    connect(doc_, &Document::replaced, this, [this] {
+        merge_.finish();
+        lastSky_.reset();
+        error_->clear();
+    });
+    refresh();
+}
+
+std::string DaylightPanel::localTime() const {
+    const QDate d = date_->date();
+    const int minutes = timeSlider_->value();
+    return formatLocalTime(LocalTime{d.year(), d.month(), d.day(), minutes / 60, minutes % 60, 0});
+}
+
+void DaylightPanel::refuse(const QString& why) {
+    error_->setText(why);
+    emit message(why);
+    refresh();  // the fields show the scene as it still is
+}
+
+void DaylightPanel::refresh() {
+    // Signals blocked: showing the scene is no edit of it.
+    std::vector<std::unique_ptr<QSignalBlocker>> blocks;
+    for (QWidget* w : findChildren<QWidget*>()) blocks.push_back(std::make_unique<QSignalBlocker>(w));
+    refreshSite();
+    refreshSun();
+    refreshSky();
+    showSunPosition();
+}
+
+void DaylightPanel::refreshSite() {
+    const std::optional<Site>& site = doc_->scene().site;
+    for (QWidget* w : {static_cast<QWidget*>(latitude_), static_cast<QWidget*>(longitude_),
+                       static_cast<QWidget*>(utcOffset_), static_cast<QWidget*>(north_)})
+        w->setEnabled(site.has_value());
+    if (!site) {
+        city_->setCurrentIndex(kNoSite);
+        return;
+    }
+    const int city = siteCityAt(site->latitudeDeg, site->longitudeDeg, site->utcOffsetHours);
+    city_->setCurrentIndex(city < 0 ? kCustomSite : city + 1);
+    latitude_->setValue(site->latitudeDeg);
+    longitude_->setValue(site->longitudeDeg);
+    utcOffset_->setValue(site->utcOffsetHours);
+    north_->setValue(northAngleDeg(site->north));
+}
+
+void DaylightPanel::refreshSun() {
+    const Scene& scene = doc_->scene();
+    const int i = sunIndex(scene);
+    const Light* sun = i < 0 ? nullptr : &scene.lights[size_t(i)];
+    sunPresent_->setChecked(sun != nullptr);
+    for (QWidget* w : {static_cast<QWidget*>(sunIlluminance_), static_cast<QWidget*>(sunDiameter_)})
+        w->setEnabled(sun != nullptr);
+    // The clock places the sun only at a site; without a sun it is the time a new sun gets.
+    for (QWidget* w : {static_cast<QWidget*>(date_), static_cast<QWidget*>(timeSlider_), static_cast<QWidget*>(time_)})
+        w->setEnabled(scene.site.has_value());
+    if (!sun || !sun->sun) return;
+    sunIlluminance_->setValue(sun->sun->illuminanceLux);
+    sunDiameter_->setValue(sun->sun->angularDiameterDeg);
+    if (sun->sun->time)
+        if (const auto t = parseLocalTime(*sun->sun->time)) {
+            date_->setDate(QDate(t->year, t->month, t->day));
+            timeSlider_->setValue(t->hour * 60 + t->minute);
+        }
+    time_->setTime(QTime(timeSlider_->value() / 60, timeSlider_->value() % 60));
+}
+
+void DaylightPanel::refreshSky() {
+    const std::optional<Sky>& sky = doc_->scene().sky;
+    for (QWidget* w : {static_cast<QWidget*>(skyQuantity_), static_cast<QWidget*>(skyValue_),
+                       static_cast<QWidget*>(groundReflectance_)})
+        w->setEnabled(sky.has_value());
+    const bool general = sky && sky->model == SkyModelType::CieGeneral;
+    cieTypeRow_->setVisible(general);
+    cieTypeName_->setVisible(general);
+    if (!sky) {
+        skyModel_->setCurrentIndex(kNoSky);
+        return;
+    }
+    skyModel_->setCurrentIndex(sky->model == SkyModelType::Uniform       ? kUniform
+                               : sky->model == SkyModelType::CieOvercast ? kCieOvercast
+                                                                         : kCieGeneral);
+    if (general) {
+        cieType_->setValue(sky->cieType);
+        if (sky->cieType >= 1 && sky->cieType <= 15) cieTypeName_->setText(tr(kCieSkyNames[sky->cieType - 1]));
+    }
+    const bool zenith = sky->zenithLuminance.has_value();
+    skyQuantity_->setCurrentIndex(zenith ? kZenithLuminance : kHorizontalIlluminance);
+    skyValue_->setSuffix(zenith ? QStringLiteral(" cd/m²") : QStringLiteral(" lx"));
+    skyValue_->setValue(zenith ? *sky->zenithLuminance : sky->horizontalIlluminance.value_or(0.0));
+    groundReflectance_->setValue(sky->groundReflectance);
+}
+
+void DaylightPanel::showSunPosition() {
+    const Scene& scene = doc_->scene();
+    const int i = sunIndex(scene);
+    double sunEh = 0;
+    if (i < 0) {
+        sunPosition_->setText(tr("No sun."));
+    } else {
+        const Light& sun = scene.lights[size_t(i)];
+        try {
+            const V3d toward = sunDirection(scene, sun);
+            const V3d north = scene.site ? scene.site->north.normalized() : Site().north;
+            const V3d east = north.cross(V3d(0, 1, 0));
+            const double elevation = degrees(std::asin(std::clamp(toward.y, -1.0, 1.0)));
+            double azimuth = degrees(std::atan2(toward.dot(east), toward.dot(north)));
+            if (azimuth < 0) azimuth += 360;
+            QString where = tr("Elevation %1°, azimuth %2° (from north, eastward)")
+                                .arg(elevation, 0, 'f', 1)
+                                .arg(azimuth, 0, 'f', 1);
+            if (elevation <= 0) where += tr("; below the horizon: no sunlight");
+            if (!(sun.sun && sun.sun->time))
+                where += scene.site ? tr(". Placed by direction: a date or time places it by the site's clock.")
+                                    : tr(". Placed by direction: choose a site to place it by date and time.");
+            if (!sun.on) where += tr(" The sun is switched off.");
+            sunPosition_->setText(where);
+            if (sun.on && sun.sun && toward.y > 0) sunEh = sun.sun->illuminanceLux * toward.y;
+        } catch (const std::exception& e) {
+            sunPosition_->setText(QString::fromStdString(e.what()));
+        }
+    }
+    if (!scene.sky) {
+        horizontalIlluminance_->setText(i < 0 ? QString() : tr("Eh %1 from the sun (no sky)").arg(lux(sunEh)));
+        return;
+    }
+    const double skyEh = skyHorizontalIlluminance(*scene.sky, towardSun(scene));
+    horizontalIlluminance_->setText(
+        tr("Eh %1: sun %2, sky %3").arg(lux(sunEh + skyEh), lux(sunEh), lux(skyEh)));
+}
+
+void DaylightPanel::chooseCity(int item) {
+    merge_.finish();
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    if (item == kNoSite) {
+        if (!scene.site) return;
+        // A sun placed by time keeps where it stands, by direction: the scene stays valid.
+        QUndoStack* undo = doc_->undoStack();
+        undo->beginMacro(tr("Remove the site"));
+        const int i = sunIndex(scene);
+        if (i >= 0 && scene.lights[size_t(i)].sun && scene.lights[size_t(i)].sun->time)
+            undo->push(new EditLightCommand(doc_, i, sunByDirection(scene, scene.lights[size_t(i)]), 0,
+                                            tr("Place the sun by direction")));
+        undo->push(new EditSiteCommand(doc_, std::nullopt, 0, tr("Remove the site")));
+        undo->endMacro();
+        return;
+    }
+    Site site = scene.site.value_or(Site());
+    QString text;
+    if (item == kCustomSite) {
+        if (scene.site) return refresh();  // the fields edit the site; the list shows what it is
+        site.latitudeDeg = latitude_->value();
+        site.longitudeDeg = longitude_->value();
+        site.utcOffsetHours = utcOffset_->value();
+        text = tr("Add a site");
+    } else {
+        const SiteCity& c = kSiteCities[size_t(item - 1)];
+        site.latitudeDeg = c.latitudeDeg;
+        site.longitudeDeg = c.longitudeDeg;
+        site.utcOffsetHours = c.utcOffsetHours;
+        text = tr("Place the site in %1").arg(city_->itemText(item));
+    }
+    if (site == scene.site) return;
+    doc_->undoStack()->push(new EditSiteCommand(doc_, site, 0, text));
+}
+
+void DaylightPanel::editSite(const void* field) {
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    if (!scene.site) return;
+    Site site = *scene.site;
+    QString text;
+    if (field == latitude_) {
+        site.latitudeDeg = latitude_->value();
+        text = tr("Change the latitude");
+    } else if (field == longitude_) {
+        site.longitudeDeg = longitude_->value();
+        text = tr("Change the longitude");
+    } else if (field == utcOffset_) {
+        site.utcOffsetHours = utcOffset_->value();
+        text = tr("Change the UTC offset");
+    } else {
+        // Only when the angle shown changed: the vector read from a file stays as it was.
+        if (std::abs(north_->value() - northAngleDeg(site.north)) < 0.05) return;
+        site.north = northFromAngle(north_->value());
+        site.northGiven = true;
+        text = tr("Turn north");
+    }
+    if (site == *scene.site) return;
+    doc_->undoStack()->push(new EditSiteCommand(doc_, site, merge_.keyFor(field), text));
+}
+
+void DaylightPanel::setSunPresent(bool present) {
+    merge_.finish();
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    const int i = sunIndex(scene);
+    if (present && i < 0) {
+        const Light sun = newSun(scene, doc_->uniqueName("sun"), localTime());
+        doc_->undoStack()->push(new AddLightCommand(doc_, int(scene.lights.size()), sun,
+                                                    tr("Add %1").arg(QString::fromStdString(sun.name))));
+    } else if (!present && i >= 0) {
+        if (scene.sky && scene.sky->model == SkyModelType::CieGeneral)
+            return refuse(tr("A CIE general sky is shaped by the sun: choose another sky model before removing the sun."));
+        doc_->undoStack()->push(new DeleteLightCommand(doc_, i));
+    }
+}
+
+void DaylightPanel::editSun(const void* field) {
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    const int i = sunIndex(scene);
+    if (i < 0) return;
+    Light l = scene.lights[size_t(i)];
+    if (!l.sun) l.sun = SunSpec();
+    QString text;
+    if (field == sunIlluminance_) {
+        l.sun->illuminanceLux = sunIlluminance_->value();
+        text = tr("Change the sun's illuminance");
+    } else {
+        l.sun->angularDiameterDeg = sunDiameter_->value();
+        l.sun->angularDiameterGiven = true;
+        text = tr("Change the sun's diameter");
+    }
+    if (l == scene.lights[size_t(i)]) return;
+    doc_->undoStack()->push(new EditLightCommand(doc_, i, l, merge_.keyFor(field), text));
+}
+
+void DaylightPanel::moveSun(const void* field) {
+    error_->clear();
+    // The slider and the time field show the same minute.
+    if (field == time_) {
+        const QSignalBlocker block(timeSlider_);
+        timeSlider_->setValue(time_->time().hour() * 60 + time_->time().minute());
+    } else if (field == timeSlider_) {
+        const QSignalBlocker block(time_);
+        time_->setTime(QTime(timeSlider_->value() / 60, timeSlider_->value() % 60));
+    }
+    const Scene& scene = doc_->scene();
+    const int i = sunIndex(scene);
+    if (i < 0 || !scene.site) return;  // the clock is kept for the sun added next
+    const Light l = sunAtTime(scene.lights[size_t(i)], localTime());
+    if (l == scene.lights[size_t(i)]) return;
+    const QString text = tr("Move the sun to %1").arg(QString::fromStdString(localTime()).replace('T', ' '));
+    doc_->undoStack()->push(new EditLightCommand(doc_, i, l, merge_.keyFor(field), text));
+}
+
+void DaylightPanel::chooseSkyModel(int item) {
+    merge_.finish();
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    if (item == kNoSky) {
+        if (!scene.sky) return;
+        lastSky_ = scene.sky;
+        doc_->undoStack()->push(new EditSkyCommand(doc_, std::nullopt, 0, tr("Remove the sky")));
+        return;
+    }
+    if (item == kCieGeneral && sunIndex(scene) < 0)
+        return refuse(tr("A CIE general sky is shaped by the sun: add the sun first."));
+    Sky sky = scene.sky ? *scene.sky : lastSky_.value_or(defaultSky());
+    const int remembered = sky.cieType;
+    sky.model = item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast
+                                                                                : SkyModelType::CieGeneral;
+    // The standard clear sky unless a type was chosen before; other models have no type.
+    sky.cieType = item == kCieGeneral ? (remembered >= 1 && remembered <= 15 ? remembered : 12) : 0;
+    if (sky == scene.sky) return;
+    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, 0, tr("Sky: %1").arg(skyModel_->itemText(item))));
+}
+
+void DaylightPanel::editSky(const void* field) {
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    if (!scene.sky) return;
+    Sky sky = *scene.sky;
+    QString text;
+    if (field == cieType_) {
+        sky.cieType = cieType_->value();
+        text = tr("Change the CIE sky type");
+    } else if (field == skyValue_) {
+        (sky.zenithLuminance ? sky.zenithLuminance : sky.horizontalIlluminance) = skyValue_->value();
+        text = sky.zenithLuminance ? tr("Change the zenith luminance") : tr("Change the sky's illuminance");
+    } else {
+        sky.groundReflectance = groundReflectance_->value();
+        sky.groundReflectanceGiven = true;
+        text = tr("Change the ground reflectance");
+    }
+    if (sky == *scene.sky) return;
+    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, merge_.keyFor(field), text));
+}
+
+void DaylightPanel::chooseSkyQuantity(int item) {
+    merge_.finish();
+    error_->clear();
+    const Scene& scene = doc_->scene();
+    if (!scene.sky) return;
+    const bool zenith = item == kZenithLuminance;
+    if (zenith == scene.sky->zenithLuminance.has_value()) return;
+    // The same sky, given by the other quantity.
+    Sky sky = *scene.sky;
+    const V3d sun = towardSun(scene);
+    const double lz = zenithLuminance(sky, sun);
+    if (zenith) {
+        sky.zenithLuminance = lz;
+        sky.horizontalIlluminance.reset();
+    } else {
+        sky.horizontalIlluminance = lz * relativeHorizontalIlluminance(sky, sun);
+        sky.zenithLuminance.reset();
+    }
+    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, 0,
+                                               zenith ? tr("Give the sky by its zenith luminance")
+                                                      : tr("Give the sky by its horizontal illuminance")));
+}
+
+}  // namespace lucerna
