@@ -37,7 +37,8 @@ public:
         // A rank waiting in a collective yields its core instead of spinning on it (unless the
         // user set otherwise): waiting costs nothing then, while a spinning
         // rank on a shared or oversubscribed node took the core from the ranks still working
-        // (a small grid on 2 ranks here: 8.6 s spinning, 1.3 s yielding; BENCHMARKS.md).
+        // (a small grid on 2 ranks here: 8.6 s spinning, 1.3 s yielding; docs/benchmarks-history.md,
+        // "MPI (issue 23): the first versions").
         ::setenv("OMPI_MCA_mpi_yield_when_idle", "1", 0);
         int provided = 0;
         // The grid's exchanges run on a worker thread while the main thread waits: serialised,

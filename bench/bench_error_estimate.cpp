@@ -1,6 +1,6 @@
 // How well the film's own error estimate (Film::estimatedRelmse, from its two half-buffers)
 // tracks the true relmse against a reference, pass count by pass count, over several seeds: the
-// figures behind the estimator's choice (BENCHMARKS.md, "The estimated error").
+// figures behind the estimator's choice (BENCHMARKS.md, "The estimated error (issue 25)").
 //
 //   bench_error_estimate SCENE.json REF.exr BACKEND SEEDS MAX_PASSES [WIDTH HEIGHT]
 //

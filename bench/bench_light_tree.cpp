@@ -1,4 +1,4 @@
-// What the light tree costs and what it buys (BENCHMARKS.md, "Many lights"):
+// What the light tree costs and what it buys (BENCHMARKS.md, "Many lights (issue 19)"):
 //
 //   bench_light_tree build                 ms to build the tree (and the whole RenderScene) for
 //                                          100 to 100,000 lights

@@ -1,5 +1,5 @@
 #!/bin/sh
-# Issue 22's figures on the bundled daylit office (BENCHMARKS.md, "Daylight"):
+# Issue 22's figures on the bundled daylit office (BENCHMARKS.md, "Daylight (issue 22)"):
 #   bench/daylight.sh BUILD_DIR OUT_DIR ref [SECONDS]   the reference at 240 x 160: path and bdpt for
 #                                                        SECONDS each (default 600), their relmse
 #                                                        against each other, and their combination

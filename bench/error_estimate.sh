@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The estimated relmse against the true one on scenes with and without fireflies (BENCHMARKS.md,
-# "The estimated error"). Usage: bench/error_estimate.sh BUILD_DIR WORK_DIR
+# "The estimated error (issue 25)"). Usage: bench/error_estimate.sh BUILD_DIR WORK_DIR
 # WORK_DIR gets the generated office and the references this script renders (about 45 minutes
 # of the machine for the two long references).
 set -euo pipefail

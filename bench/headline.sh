@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# A quick check of BENCHMARKS.md's headline figures: a small set of its benchmarks with short
-# budgets (about 6 minutes on 2 cores), printed as a markdown table (figure, value, command).
+# A quick check of BENCHMARKS.md's figures (its "Quick check (`bench/headline.sh`)"): a small set
+# of its benchmarks with short budgets (about 6 minutes on 2 cores), printed as a markdown table
+# (figure, value, command).
 #
 # It is a quick check, not the authoritative figures: every figure here is ONE run with a budget
 # shorter than BENCHMARKS.md's (which says for each of its figures how many runs and what budget
@@ -153,7 +154,8 @@ rays_row rays-cornell "Cornell box" "$CB" --spp 16
 rays_row rays-million "Cornell box + bumpy sphere (1 M triangles)" "$CB" --spp 32 --million
 
 # ---------------------------------------------------------------------------------------------
-# Progressive backends on the Cornell box and the door, 10 s each (BENCHMARKS.md's session-4 command)
+# Progressive backends on the Cornell box and the door, 10 s each (the command of the 10 s rows of
+# BENCHMARKS.md, "Progressive backends (issue 3)")
 BACKENDS=path,bdpt,ir,mir,mlt,cmlt
 bench_scene() {
     local name=$1 scene=$2 ref=$3 label=$4

@@ -12,7 +12,8 @@ The closed spheres (albedo 0.5 to 0.9, closed form) come from `bench_make_scenes
 and 0.8 decide, 0.6, 0.7 and 0.9 are held out.
 
 Which members were used to decide changes and which were kept out of tuning is fixed in
-FAMILIES below and in BENCHMARKS.md; it was committed before the first change to a backend.
+FAMILIES below and in BENCHMARKS.md, "Held-out scene families (issue 21)"; it was committed
+before the first change to a backend.
 """
 import copy
 import json

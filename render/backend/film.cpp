@@ -89,7 +89,7 @@ double Film::estimatedRelmse() const {
             // pixel whose error is a thousand times r reports about 1. The mean of the 24 pixels
             // around it is independent of the pixel's own noise and, where the image is smooth at
             // that scale, estimates r; 8 neighbours read 1.4 to 4 times too high where a firefly
-            // lands in one pixel of twenty (BENCHMARKS.md, "The estimated error").
+            // lands in one pixel of twenty (BENCHMARKS.md, "The estimated error (issue 25)").
             std::array<double, 3> local{0, 0, 0};
             int neighbours = 0;
             for (int dy = -kRadius; dy <= kRadius; ++dy)

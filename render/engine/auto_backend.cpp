@@ -1,6 +1,7 @@
 // `--backend auto`: the backend a scene needs, from what is in it and from a small probe of what
 // the camera sees. The rules follow what each method can and cannot do, and the measurements in
-// BENCHMARKS.md:
+// BENCHMARKS.md ("`auto`'s choices", "Progressive backends (issue 3)") and
+// docs/benchmarks-history.md ("Issue 4"):
 //   - Mirrors or glass make caustics: paths whose light side must be sampled from the light. A
 //     path tracer cannot render a delta light's caustic at all and finds an area light's only by
 //     chance, VPLs (straight connections) none; bidirectional path tracing has the strategies for
@@ -11,7 +12,8 @@
 //     0.030 relmse, mir 0.054 at best, ir 0.064, path 0.097). On the caustic scene bdpt is
 //     ahead (cmlt takes 1.4 times bdpt's time to the same expected error over four runs, single
 //     runs 0.9 to 1.8 times; session 10), and bdpt has no chains to stick, so it stays the choice; on
-//     the Cornell box the path tracer is 4 to 5 times ahead of cmlt (BENCHMARKS.md, issue 4).
+//     the Cornell box the path tracer is 4 to 5 times ahead of cmlt (BENCHMARKS.md,
+//     "`auto`'s choices").
 //   - Otherwise (diffuse and glossy surfaces lit mostly directly): the path tracer with
 //     next-event estimation converges fastest (Cornell box, 60 s: path 3.4e-4, bdpt 4.3e-4).
 

@@ -49,18 +49,21 @@ struct PreviewSettings {
     float clampDistance = 0.05f;
     // VPL visibility by low-resolution cube shadow maps per VPL; off is the thesis' fast mode. On
     // by default: on llvmpipe it measured 4% of a 256-VPL 4x4 frame (plus the maps, redrawn only
-    // when lights or VPLs change) for a third of the error (BENCHMARKS.md, issue 5).
+    // when lights or VPLs change) for a third of the error (docs/benchmarks-history.md, issue 5,
+    // "VPL visibility: cost").
     bool visibility = true;
     int vplShadowSize = 32;        // per cube face
     bool blur = true;              // the n x m box blur over continuous regions
     // Fused by default: on llvmpipe one pass measured twice as fast as two, and fused faster
-    // than one (BENCHMARKS.md, issue 5); the two passes win on GPUs (the thesis).
+    // than one (BENCHMARKS.md, "Interactive preview (issue 5)"); the two passes win on GPUs (the
+    // thesis).
     SplitMode split = SplitMode::Fused;
     int splitBlock = 8;            // B of the two-pass split
     // The VPL shading pass unrolls its loop over a sub-buffer's VPLs, read at constant indices
     // from a uniform block, when no sub-buffer has more than this many (shade_vpl.frag); 0: never.
-    // 16 by measurement on llvmpipe (BENCHMARKS.md, issue 5): unrolled, 16 VPLs a sub-buffer (256
-    // at 4x4) shaded 4 to 27% faster; 22 and 64 (1024 at 8x6 and 4x4) 10% slower.
+    // 16 by measurement on llvmpipe (docs/benchmarks-history.md, issue 5, "Session 5"): unrolled,
+    // 16 VPLs a sub-buffer (256 at 4x4) shaded 4 to 27% faster; 22 and 64 (1024 at 8x6 and 4x4)
+    // 10% slower.
     int maxUnrolledVpls = 16;
     bool direct = true, indirect = true;
     // Point samples (shadow-mapped) standing for the emissive triangles' direct light. With
@@ -72,12 +75,13 @@ struct PreviewSettings {
     // Point, spot and luminaire lights shaded at every pixel; with more, these are the ones
     // nearest the camera for their power, and the rest are dealt to the interleaved sub-buffers
     // like the area samples, so that a pixel evaluates n m times fewer of them and the blur
-    // restores the rest (BENCHMARKS.md, issue 20).
+    // restores the rest (BENCHMARKS.md, "The preview on real scenes (issue 20)").
     int lightsShadedInFull = 8;
     // The VPLs' and area samples' shadow maps, drawn again for every fresh set, draw a clustered
     // proxy of the scene of at most this many triangles (shadow_proxy.h); 0: the scene itself.
     // 2048 made the closed sphere's sets 4 times cheaper but lost the desks and partitions of a
-    // 7,500-triangle hall (+6% of light leaked through them; BENCHMARKS.md, issue 20).
+    // 7,500-triangle hall (+6% of light leaked through them; BENCHMARKS.md,
+    // "The preview on real scenes (issue 20)").
     int shadowProxyTriangles = 8192;
     // Daylight (SPEC.md section 5): the sky and the ground as this many directional lights, drawn
     // in proportion to their luminance anew for every fresh set (render/preview/daylight_samples.h),

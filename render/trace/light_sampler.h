@@ -103,7 +103,7 @@ inline constexpr size_t kMaxPortalTriangles = 512;
 // How next-event estimation chooses a light: in proportion to power everywhere, or by a light
 // tree by each light's importance at the shading point (`--option light_sampler=power|tree`).
 enum class LightSelection { Power, Tree };
-// The choice where none is asked for: the tree (BENCHMARKS.md, "Many lights").
+// The choice where none is asked for: the tree (BENCHMARKS.md, "Many lights (issue 19)").
 constexpr LightSelection kDefaultLightSelection = LightSelection::Tree;
 
 class LightSampler {

@@ -57,7 +57,7 @@ private slots:
 private:
     // Samples per pixel for the open scenes, for the opening without a pane (no portal: the sky's
     // samples mostly meet the roof) and for the pane (a portal), chosen so that four seeds stayed
-    // within half the tolerance or so (BENCHMARKS.md, "Daylight").
+    // within half the tolerance or so (BENCHMARKS.md, "Daylight (issue 22)").
     void backends() {
         QTest::addColumn<QString>("backend");
         QTest::addColumn<int>("spp");

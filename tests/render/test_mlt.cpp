@@ -714,8 +714,8 @@ void TestMlt::halvesAreIndependent() {
     QVERIFY(std::isfinite(frame.estimatedRelmse) && frame.estimatedRelmse > 0);
 }
 
-// cmlt's chain takes half its steps large by default (mlt's: 0.3; BENCHMARKS.md, issue 4, session
-// 10), and `large_step` still sets it; the other chain settings are mlt's.
+// cmlt's chain takes half its steps large by default (mlt's: 0.3; docs/benchmarks-history.md,
+// issue 4, "Session 10"), and `large_step` still sets it; the other chain settings are mlt's.
 void TestMlt::cmltChainTakesMoreLargeSteps() {
     RenderSettings s;
     QCOMPARE(MltSettings::fromOptions(s).largeStepProbability, 0.3f);

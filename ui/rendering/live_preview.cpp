@@ -134,10 +134,11 @@ struct LivePreview::Shared {
 // relmse against an independent 128-frame mean is 0.021 for one frame, 0.0032 for 4, 0.0018 for
 // 16 (the blotches gone to the eye: about 1 s alone, 1.3 to 2.7 s in the window beside the
 // converging render) and 0.00046 for 64; and the 64-frame mean is at 0.0009 against the
-// path-traced reference (BENCHMARKS.md, "Interactive preview"), so about half of what is left
-// there is the preview's own bias (clamped VPLs), which no number of frames removes. At about 60 ms a frame, 64 frames are some 4 s of the cores (5 to 10 s in the window,
-// where they halve the converging render's samples per second meanwhile); more would take the
-// cores from it for a change below a display step.
+// path-traced reference (BENCHMARKS.md, "Interactive preview (issue 5)"), so about half of what
+// is left there is the preview's own bias (clamped VPLs), which no number of frames removes. At
+// about 60 ms a frame, 64 frames are some 4 s of the cores (5 to 10 s in the window, where they
+// halve the converging render's samples per second meanwhile); more would take the cores from it
+// for a change below a display step.
 class LivePreview::Job {
 public:
     Job(std::shared_ptr<Shared> shared, std::shared_ptr<std::atomic<int>> gate, Engine engine, int longSide)

@@ -7,7 +7,8 @@
 //
 // The cost: each pass is one pass of every layer (and one acceleration structure per layer). The
 // gain besides the mix: no layer chooses among lights, so the noise of that choice is gone; with
-// several lights of similar power that can outweigh the fewer passes (BENCHMARKS.md).
+// several lights of similar power that can outweigh the fewer passes (BENCHMARKS.md,
+// "Per-light layers (issue 7)").
 
 #include "render/backend/backend.h"
 

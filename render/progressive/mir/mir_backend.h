@@ -13,7 +13,7 @@
 // image contribution, a chain that drew a lucky point (a VPL right beside it) stayed there for
 // many steps, and each VPL's image contribution had to be measured and divided by, a ratio
 // estimate with heavy tails (Cornell box, 30 s: relmse 5e-3 to 3e-2 with the seed; now 1.0e-3 to
-// 2.0e-3 over 8 seeds, BENCHMARKS.md, issue 21).
+// 2.0e-3 over 8 seeds, BENCHMARKS.md, "Held-out scene families (issue 21)").
 // The VPLs only stand for the CLAMPED indirect term; the residual is estimated independently of
 // them, so nothing is counted twice.
 

@@ -10,7 +10,8 @@ namespace lucerna {
 struct MirSettings {
     GatherSettings gather;
     MirChainSettings chain;        // tries: MH beat 4-try MTM at equal time on the door and
-                                   // Cornell scenes (BENCHMARKS.md)
+                                   // Cornell scenes (docs/benchmarks-history.md,
+                                   // issue 3, "Targets")
     int pathVplsPerPass = 64;      // n: chain steps, hence path VPLs, per pass
     // Cheap samples refining Pc each pass (chain.pcSamples); -1: an eighth of the pixel count, at
     // least 256, so that Pc's error, shared by every pixel, falls as fast as the gather's noise.

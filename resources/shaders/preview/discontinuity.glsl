@@ -7,7 +7,8 @@ const float EDGE_NORMAL_TOLERANCE = 0.9;   // minimum cosine between normals
 
 // Branch-free (both neighbours are always read, off-image ones clamped and then rejected):
 // llvmpipe runs a SIMD vector of fragments through every branch any of them takes, and early
-// returns cost it masks; in the shading pass the branching form cost 5 ms (BENCHMARKS.md).
+// returns cost it masks; in the shading pass the branching form cost 5 ms
+// (docs/benchmarks-history.md, issue 5, "Session 6").
 bool continuousWith(sampler2D g0Tex, usampler2D g1Tex, ivec2 size, vec3 eye, vec4 a0, vec3 na, ivec2 b) {
     const ivec2 c = min(b, size - 1);
     const vec4 b0 = texelFetch(g0Tex, c, 0);

@@ -1,5 +1,6 @@
 // The G-buffer's encoding, two attachments (32 bytes a texel: on llvmpipe every pass that reads
-// or moves the G-buffer costs by the attachment, BENCHMARKS.md, issue 5):
+// or moves the G-buffer costs by the attachment; docs/benchmarks-history.md, issue 5,
+// "Session 5"):
 //   g0 (RGBA32F): position, and w = kind + alpha / 2, kind 0 nothing, 1 diffuse or glossy (alpha
 //        its GGX alpha, in [0, 1]), 2 an emitter's front face, 3 mirror or glass (black in the
 //        preview);

@@ -5,8 +5,9 @@
 // this one pass: the tile's VPLs are then the same for every fragment of a draw, and with
 // UNROLLED_VPLS > 0 they are read from a uniform block at constant indices (the loop unrolled by
 // FOR_EACH_TILE_VPL), which llvmpipe loads once for all its SIMD lanes instead of gathering them
-// lane by lane (BENCHMARKS.md, issue 5). Otherwise, for tiles with more VPLs than an unrolled body
-// should hold, a loop over [vplFirst, vplFirst + vplCount) of the storage buffer.
+// lane by lane (docs/benchmarks-history.md, issue 5, "Session 5"). Otherwise, for tiles with more
+// VPLs than an unrolled body should hold, a loop over [vplFirst, vplFirst + vplCount) of the
+// storage buffer.
 // Compile-time switches, set by the C++ side (frame_passes.cpp, shadeProgram) from the settings
 // and the scene, so that an unrolled body holds only the code the scene needs (llvmpipe runs a
 // SIMD vector of fragments through every branch any of them takes):
@@ -26,7 +27,8 @@
 //                      q n + t straight from the image-layout G-buffer (and finds its
 //                      discontinuity bits there), as split.frag's one-pass mode would have
 //                      moved it. On llvmpipe, which has no texture cache to keep coherent, this
-//                      saves the split's writes and reads (BENCHMARKS.md, issue 5).
+//                      saves the split's writes and reads (docs/benchmarks-history.md, issue 5,
+//                      "Session 6").
 // Lighting y from a VPL at x (render/vpl/vpl.h):
 //   f_y(wo, y->x) power f_x(incident, x->y) min(cos_x cos_y / d^2, maxG) V(x, y),
 // the geometric term clamped as in render/vpl/vpl_contribution.h (the energy the clamp loses is
