@@ -25,17 +25,12 @@ namespace {
 
 // One row per area: what it asks and what it achieves.
 ReportTable summaryTable(const ReportData& data) {
-    ReportTable t;
-    t.header = {QStringLiteral("Task area"), QStringLiteral("Activity (EN 12464-1)"), QStringLiteral("Eavg [lx]"),
-                QStringLiteral("U0"), QStringLiteral("UGR"), QStringLiteral("Requirements")};
-    t.weights = {1.3, 2.2, 0.8, 0.6, 0.6, 1.5};
-    t.alignment = {Qt::AlignLeft, Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
+    std::vector<ReportColumn> columns{{QStringLiteral("Task area"), 1.3}, {QStringLiteral("Activity (EN 12464-1)"), 2.2},
+                                      {QStringLiteral("Eavg [lx]"), 0.8, Qt::AlignRight}, {QStringLiteral("U0"), 0.6, Qt::AlignRight},
+                                      {QStringLiteral("UGR"), 0.6, Qt::AlignRight}, {QStringLiteral("Requirements"), 1.5}};
     const bool daylight = std::any_of(data.areas.begin(), data.areas.end(), [](const AreaReport& a) { return a.daylightFactor.has_value(); });
-    if (daylight) {
-        t.header.insert(5, QStringLiteral("DFavg"));
-        t.weights.insert(t.weights.begin() + 5, 0.7);
-        t.alignment.insert(t.alignment.begin() + 5, Qt::AlignRight);
-    }
+    if (daylight) columns.insert(columns.begin() + 5, {QStringLiteral("DFavg"), 0.7, Qt::AlignRight});
+    ReportTable t = tableOf(columns);
     for (const AreaReport& a : data.areas) {
         QString outcome = QStringLiteral("none given");
         if (a.requirement) {

@@ -8,11 +8,9 @@ namespace {
 QString percent(double x) { return QString::asprintf("%.2f%%", x); }
 
 ReportTable provisionTable(const DaylightProvision& p) {
-    ReportTable t;
-    t.header = {QStringLiteral("EN 17037 level"), QStringLiteral("DF on half the plane"), QStringLiteral("Target"),
-                QStringLiteral("DF on 95% of it"), QStringLiteral("Target"), QStringLiteral("Outcome")};
-    t.weights = {1.2, 1.2, 0.9, 1.2, 0.9, 0.9};
-    t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
+    ReportTable t = tableOf({{QStringLiteral("EN 17037 level"), 1.2}, {QStringLiteral("DF on half the plane"), 1.2, Qt::AlignRight},
+                             {QStringLiteral("Target"), 0.9, Qt::AlignRight}, {QStringLiteral("DF on 95% of it"), 1.2, Qt::AlignRight},
+                             {QStringLiteral("Target"), 0.9, Qt::AlignRight}, {QStringLiteral("Outcome"), 0.9}});
     for (const ProvisionLevel& l : p.levels)
         t.rows.push_back({QStringLiteral("%1 (%2 / %3 lx)").arg(l.name).arg(l.targetLux).arg(l.minimumTargetLux),
                           percent(p.dfHalf), QStringLiteral("\u2265 ") + percent(l.targetDf), percent(p.df95),

@@ -162,6 +162,16 @@ void PageFlow::keyValues(const std::vector<std::pair<QString, QString>>& pairs, 
     y_ += mm(1);
 }
 
+ReportTable tableOf(const std::vector<ReportColumn>& columns) {
+    ReportTable t;
+    for (const ReportColumn& c : columns) {
+        t.header.push_back(c.header);
+        t.weights.push_back(c.weight);
+        t.alignment.push_back(c.alignment);
+    }
+    return t;
+}
+
 const QFont& PageFlow::tableFont(const ReportTable& t, bool bold) const {
     if (t.compact) return bold ? fonts_.figureBold : fonts_.figure;
     return bold ? fonts_.tableBold : fonts_.table;

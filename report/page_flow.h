@@ -33,6 +33,15 @@ struct ReportTable {
     bool compact = false;                 // the small font (tables of values)
 };
 
+// A column of a table: its heading, its share of the width and how its cells align.
+struct ReportColumn {
+    QString header;
+    double weight = 1;
+    Qt::Alignment alignment = Qt::AlignLeft;
+};
+// A table of these columns, without rows yet.
+ReportTable tableOf(const std::vector<ReportColumn>& columns);
+
 class PageFlow {
 public:
     // `device` is what will be painted (a QPdfWriter set to A4 portrait): fonts are measured on it.

@@ -4,6 +4,8 @@
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"
+#include "render/display/plan_projection.h"
+#include "render/display/plan_scales.h"
 
 #include <QFontMetricsF>
 #include <QImage>
@@ -25,21 +27,6 @@ const QColor kObserver(110, 20, 140);
 const QColor kIsoLine(0, 0, 0);
 const QColor kLuminaire(20, 30, 110);
 
-// A grey for a material as a plan shows it: lighter the more it reflects.
-QColor materialGrey(const Material* m) {
-    double reflectance = 0.5;
-    if (m) switch (m->type) {
-        case MaterialType::Diffuse:
-        case MaterialType::Glossy: reflectance = luminance(m->albedo); break;
-        case MaterialType::Mirror: reflectance = luminance(m->reflectance); break;
-        case MaterialType::Dielectric:
-        case MaterialType::Glazing: reflectance = 0.9; break;
-        case MaterialType::Emitter: reflectance = 1.0; break;
-        }
-    const int g = int(std::lround(255 * (0.62 + 0.33 * std::clamp(reflectance, 0.0, 1.0))));
-    return QColor(g, g, g);
-}
-
 // How the figure maps the world: the plan (x right, z down, seen from above) for a horizontal
 // grid, else the grid's own frame (u right, v up).
 struct PlanFrame {
@@ -49,7 +36,7 @@ struct PlanFrame {
     QPointF offset;
 
     QPointF coordinate(const V3d& p) const {
-        if (plan) return {p.x, p.z};
+        if (plan) return planPoint(PlanAxis::Top, p);
         const V3d d = p - origin;
         return {d.dot(uHat), -d.dot(vHat)};
     }
@@ -142,61 +129,17 @@ QImage roomRaster(const Scene& scene, const PlanFrame& frame, const QRectF& view
     const double k = kRoomRasterDpmm / dpmm;  // raster pixels per device pixel
     QImage image(std::max(1, int(view.width() * k)), std::max(1, int(view.height() * k)), QImage::Format_RGB32);
     image.fill(QColor(255, 255, 255));
-    const SceneBounds b = sceneBounds(scene);
-    const double cut = b.lo.y + 0.75 * (b.hi.y - b.lo.y);
-    struct Face {
-        QPointF p[3];
-        double depth;
-        QColor fill;
-        bool edgeOn;
-        bool glass;  // glazing and glass: windows, drawn blue
-    };
-    std::vector<Face> faces;
-    for (const Object& o : scene.objects) {
-        if (!o.worldMesh) continue;
-        const Material* material = scene.findMaterial(o.material);
-        const QColor grey = materialGrey(material);
-        const bool glass = material && (material->type == MaterialType::Glazing || material->type == MaterialType::Dielectric);
-        const TriangleMesh& m = *o.worldMesh;
-        for (const V3i& t : m.triangles) {
-            const V3d &a = m.vertices[size_t(t.x)], &bb = m.vertices[size_t(t.y)], &c = m.vertices[size_t(t.z)];
-            if (std::min({a.y, bb.y, c.y}) > cut) continue;  // ceilings and what hangs from them
-            const V3d n = (bb - a).cross(c - a);
-            const double len = n.length();
-            if (len <= 0) continue;
-            Face f;
-            const V3d* v[3] = {&a, &bb, &c};
-            for (int i = 0; i < 3; ++i) f.p[i] = (frame.at(*v[i]) - view.topLeft()) * k;
-            f.depth = std::max({a.y, bb.y, c.y});
-            f.edgeOn = std::abs(n.y) / len < 0.2;
-            f.glass = glass;
-            f.fill = grey.darker(int(100 + 12 * (1 - std::abs(n.y) / len)));
-            faces.push_back(f);
-        }
-    }
-    std::stable_sort(faces.begin(), faces.end(), [](const Face& x, const Face& y) { return x.depth < y.depth; });
+    // Plan coordinates to the raster's pixels: the frame's mapping, from the view's corner.
+    const QTransform toRaster = QTransform::fromTranslate(-frame.u0, -frame.v0) * QTransform::fromScale(frame.scale, frame.scale) *
+                                QTransform::fromTranslate(frame.offset.x() - view.left(), frame.offset.y() - view.top()) *
+                                QTransform::fromScale(k, k);
+    const std::vector<PlanFace> faces = planFaces(scene, PlanAxis::Top, PlanShading::Grey);
     QPainter p(&image);
     p.setRenderHint(QPainter::Antialiasing);
-    for (const Face& f : faces) {
-        if (f.edgeOn) continue;
-        p.setPen(QPen(f.fill, 0.6));
-        p.setBrush(f.fill);
-        p.drawConvexPolygon(f.p, 3);
-    }
-    // Walls and partitions seen edge-on: the longest side of each sliver is the wall's line.
+    paintPlanFills(p, faces, toRaster, QRectF(image.rect()), 0.6);
+    // Walls and partitions seen edge-on as dark lines, windows blue.
     const QPen wall(kWall, std::max(1.0, 0.35 * kRoomRasterDpmm)), window(kGlass, std::max(1.0, 0.5 * kRoomRasterDpmm));
-    for (const Face& f : faces) {
-        if (!f.edgeOn) continue;
-        p.setPen(f.glass ? window : wall);
-        int k0 = 0;
-        double best = -1;
-        for (int i = 0; i < 3; ++i) {
-            const QPointF d = f.p[(i + 1) % 3] - f.p[i];
-            const double l = QPointF::dotProduct(d, d);
-            if (l > best) best = l, k0 = i;
-        }
-        p.drawLine(f.p[k0], f.p[(k0 + 1) % 3]);
-    }
+    paintPlanWalls(p, faces, toRaster, wall, window);
     return image;
 }
 
@@ -207,7 +150,7 @@ void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QStr
     const QFontMetricsF fm(font, p.device());
     const double unitWidth = fm.horizontalAdvance(unit) + 3 * dpmm;
     const QRectF ramp(band.left() + unitWidth, band.top() + 2 * dpmm, band.width() - unitWidth - 8 * dpmm, 4 * dpmm);
-    const Legend legend{s.lo, s.hi, s.logScale, QStringLiteral("lx")};
+    const Legend legend = s.legend(QStringLiteral("lx"));
     const int steps = 200;
     for (int i = 0; i < steps; ++i) {
         const double t0 = double(i) / steps, t1 = double(i + 1) / steps;
@@ -267,9 +210,8 @@ void paintObservers(QPainter& p, const QRectF& view, const PlanFrame& frame, con
 void paintScaleBar(QPainter& p, const QRectF& plan, const PlanFrame& frame, double metersPerUnit, const QFont& font,
                    double dpmm) {
     const double pxPerMeter = frame.scale / metersPerUnit;
-    double meters = 1;
-    for (double m : {0.5, 1.0, 2.0, 5.0, 10.0, 20.0, 50.0})
-        if (m * pxPerMeter <= plan.width() * 0.25) meters = m;
+    const double meters = scaleBarMeters(pxPerMeter, plan.width() * 0.25);
+    if (meters <= 0) return;
     const double len = meters * pxPerMeter;
     const QFontMetricsF fm(font, p.device());
     const QString text = QString::number(meters, 'g', 3) + QStringLiteral(" m");
@@ -309,37 +251,6 @@ void paintNorthArrow(QPainter& p, const QRectF& plan, const PlanFrame& frame, co
 
 }  // namespace
 
-PlanScale planScale(const GridStatistics& s) {
-    PlanScale out;
-    if (s.minimum > 0 && s.maximum > 10 * s.minimum) {
-        out.logScale = true;
-        const double decade = std::pow(10.0, std::floor(std::log10(s.minimum)));
-        out.lo = decade;
-        for (double m : {2.0, 5.0})
-            if (m * decade <= s.minimum) out.lo = m * decade;
-        out.hi = out.lo;
-        for (double d = decade; out.hi < s.maximum; d *= 10)
-            for (double m : {1.0, 2.0, 5.0}) {
-                const double level = m * d;
-                if (level > s.minimum && level < s.maximum) out.levels.push_back(level);
-                if (level >= s.maximum && out.hi < s.maximum) out.hi = level;
-            }
-        return out;
-    }
-    const std::vector<double> levels = isoLevels(s.minimum, s.maximum);
-    if (levels.size() >= 2) {
-        const double step = levels[1] - levels[0];
-        out.lo = std::floor(s.minimum / step) * step;
-        out.hi = std::ceil(s.maximum / step) * step;
-        if (out.hi <= out.lo) out.hi = out.lo + step;
-    } else {
-        out.lo = std::max(0.0, s.minimum * 0.9);
-        out.hi = std::max(s.maximum * 1.1, out.lo + 1);
-    }
-    out.levels = levels;
-    return out;
-}
-
 double planAspect(const Scene& scene, const CalculationGrid& grid) {
     double u0, u1, v0, v1;
     viewExtent(scene, grid, frameOf(grid), u0, u1, v0, v1);
@@ -364,7 +275,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
 
     // The grid: each point's value over its cell.
     const PlanScale scale = planScale(plan.statistics);
-    const Legend legend{scale.lo, scale.hi, scale.logScale, QStringLiteral("lx")};
+    const Legend legend = scale.legend(QStringLiteral("lx"));
     const int nu = layout.nu, nv = layout.nv;
     if (nu > 0 && nv > 0 && plan.values.size() == layout.points.size()) {
         const V3d du = g.edgeU / nu, dv = g.edgeV / nv;

@@ -35,15 +35,4 @@ double planAspect(const Scene& scene, const CalculationGrid& grid);
 // The legend's band under the plan, mm.
 inline constexpr double kPlanLegendMm = 15;
 
-// The legend's range and the levels of the iso-lux lines for an area's values: linear, from a
-// round number at or below Emin to one at or above Emax, in steps of the iso levels'; or, where
-// Emax is more than ten times Emin (a sun patch, a spotlit table), logarithmic, with levels at 1,
-// 2 and 5 times the powers of ten between them, so that the dim part of the area reads too.
-struct PlanScale {
-    double lo = 0, hi = 1;
-    bool logScale = false;
-    std::vector<double> levels;
-};
-PlanScale planScale(const GridStatistics& statistics);
-
 }  // namespace lucerna

@@ -2,7 +2,7 @@
 // Iso-lux lines over a calculation grid's point values, as a lighting designer reads them off a
 // DIALux plan: round levels (1, 2 or 5 times a power of ten apart) and their contours by
 // marching squares over the lattice of grid points. Pure functions, shared by the plan view
-// (ui/plan/plan_view.cpp) and the report's plans (report/), and checked by tests without a window.
+// (ui/plan/) and the report's plans (report/), and checked by tests without a window.
 
 #include <vector>
 

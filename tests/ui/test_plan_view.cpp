@@ -13,6 +13,7 @@
 #include "core/scene/scene_io.h"
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"
+#include "render/display/plan_scales.h"
 #include "ui/viewport/camera_navigation.h"
 #include "ui/scene_panels/camera_panel.h"
 #include "ui/calculation/grid_panel.h"
@@ -89,6 +90,7 @@ private slots:
     void planShowsAndMovesALight();
     void gridDrawnWithIsoLux();
     void isoLinesOfARamp();
+    void legendAndScaleBarRules();
     void computedGridOnTheInterior();
     void cameraPanelViewAllAndReset();
     void importedRoomsGetACameraInTheLargerRoom();
@@ -291,6 +293,30 @@ void TestPlanView::isoLinesOfARamp() {
         QCOMPARE(seg.i1, 1.5);
         QCOMPARE(std::abs(seg.j1 - seg.j0), 1.0);
     }
+}
+
+void TestPlanView::legendAndScaleBarRules() {
+    // The one legend rule of every plan (the window's and the report's): values within a factor
+    // of ten on a linear scale between round numbers, the iso levels on it.
+    GridStatistics s;
+    s.minimum = 123, s.maximum = 487;
+    const PlanScale linear = planScale(s);
+    QVERIFY(!linear.logScale);
+    QCOMPARE(linear.lo, 100.0);
+    QCOMPARE(linear.hi, 500.0);
+    QCOMPARE(linear.levels, isoLevels(123, 487));
+    // A sun patch (more than ten times Emin): logarithmic, levels at 1, 2 and 5 times the decades.
+    s.minimum = 30, s.maximum = 2500;
+    const PlanScale log = planScale(s);
+    QVERIFY(log.logScale);
+    QCOMPARE(log.lo, 20.0);
+    QCOMPARE(log.hi, 5000.0);
+    QCOMPARE(log.levels, (std::vector<double>{50, 100, 200, 500, 1000, 2000}));
+    // The scale bar: the longest of 1, 2 or 5 times a power of ten metres that fits.
+    QCOMPARE(scaleBarMeters(100, 250), 2.0);
+    QCOMPARE(scaleBarMeters(100, 99), 0.5);
+    QCOMPARE(scaleBarMeters(2, 150), 50.0);
+    QCOMPARE(scaleBarMeters(0, 150), 0.0);
 }
 
 void TestPlanView::cameraPanelViewAllAndReset() {

@@ -5,18 +5,15 @@
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"
-#include "ui/commands/light_commands.h"
-#include "ui/viewport/viewport.h"
+#include "ui/plan/plan_interaction.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
-#include <QKeyEvent>
-#include <QMouseEvent>
 #include <QPainter>
 #include <QToolButton>
-#include <QWheelEvent>
+#include <QTransform>
 
 #include <algorithm>
 #include <cmath>
@@ -25,47 +22,17 @@
 namespace lucerna {
 
 namespace {
-constexpr double kClickSlop = 3.0;  // widget pixels: a press that moves less is a click
-constexpr double kSymbolRadius = 7.0;
 const QColor kBackground(246, 246, 242);
 const QColor kWallColour(60, 60, 64);
 const QColor kSelectionColour(30, 110, 230);
 constexpr int kMaxRings = 50;  // selections larger than this show as blue symbols
 
-// Display sRGB of a linear value in [0, 1].
-double srgb(double linear) {
-    const double c = std::clamp(linear, 0.0, 1.0);
-    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055;
-}
-
-// A light shade of what a material looks like, so that the plan reads as a drawing.
-QColor materialShade(const Material* m) {
-    Rgbd c(0.7, 0.7, 0.7);
-    if (m) switch (m->type) {
-        case MaterialType::Diffuse:
-        case MaterialType::Glossy: c = m->albedo; break;
-        case MaterialType::Mirror: c = m->reflectance; break;
-        case MaterialType::Dielectric:
-        case MaterialType::Glazing: c = Rgbd(0.6, 0.8, 0.95); break;
-        case MaterialType::Emitter: c = Rgbd(1.0, 0.95, 0.6); break;
-        }
-    const auto channel = [](double v) { return int(std::lround(255 * (0.45 + 0.5 * srgb(v)))); };
-    return QColor(channel(c.x), channel(c.y), channel(c.z));
-}
-
 QString nameOf(const Light& light) { return QString::fromStdString(light.name); }
 }  // namespace
 
-struct PlanView::Face {
-    QPointF a, b, c;  // plan coordinates
-    double depth;     // toward the viewer: larger is nearer
-    QColor fill;
-    bool edgeOn;      // a wall seen edge-on: drawn as a line, not filled
-};
-
 PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
-    : QWidget(parent), doc_(doc), gate_(gate), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
-      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)) {
+    : QWidget(parent), doc_(doc), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
+      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)), interaction_(new PlanInteraction(this, doc, gate)) {
     setMouseTracking(false);
     setFocusPolicy(Qt::ClickFocus);
     setAutoFillBackground(false);
@@ -105,7 +72,7 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     connect(doc_, &Document::replaced, this, [this] {
         fitted_ = false;
         result_.reset();
-        levels_.clear();
+        gridScale_ = {};
         selected_ = -1;
         selectedSet_.clear();
         selectedCount_ = 0;
@@ -150,11 +117,8 @@ void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layo
     layout_ = layout;
     result_ = std::move(result);
     resultScene_ = doc_->snapshot();
-    levels_.clear();
-    if (result_ && !result_->lux.empty()) {
-        const GridStatistics s = gridStatistics(result_->lux);
-        levels_ = isoLevels(s.minimum, s.maximum);
-    }
+    gridScale_ = {};
+    if (result_ && !result_->lux.empty()) gridScale_ = planScale(gridStatistics(result_->lux));
     update();
 }
 
@@ -171,27 +135,24 @@ QColor PlanView::cameraColour() { return QColor(140, 40, 200); }
 
 // ---- projection ----
 
-QPointF PlanView::planOf(const V3d& p) const {
-    switch (projection_) {
-    case Projection::Top: return {p.x, p.z};
-    case Projection::Front: return {p.x, -p.y};
-    case Projection::Side: return {-p.z, -p.y};
-    }
-    return {};
-}
-
-V3d PlanView::worldDelta(const QPointF& d) const {
-    switch (projection_) {
-    case Projection::Top: return V3d(d.x(), 0, d.y());
-    case Projection::Front: return V3d(d.x(), -d.y(), 0);
-    case Projection::Side: return V3d(0, -d.y(), -d.x());
-    }
-    return V3d(0, 0, 0);
-}
-
 QPointF PlanView::widgetOfPlan(const QPointF& plan) const { return offset_ + plan * scale_; }
 QPointF PlanView::planOfWidget(const QPointF& widget) const { return (widget - offset_) / scale_; }
-QPointF PlanView::widgetOf(const V3d& world) const { return widgetOfPlan(planOf(world)); }
+QPointF PlanView::widgetOf(const V3d& world) const { return widgetOfPlan(planPoint(projection_, world)); }
+QTransform PlanView::planToWidget() const { return QTransform(scale_, 0, 0, scale_, offset_.x(), offset_.y()); }
+
+void PlanView::panBy(const QPointF& pixels) {
+    offset_ += pixels;
+    fitted_ = true;
+    update();
+}
+
+void PlanView::zoomAbout(const QPointF& widget, double factor) {
+    const QPointF plan = planOfWidget(widget);
+    scale_ *= factor;
+    offset_ = widget - plan * scale_;
+    fitted_ = true;
+    update();
+}
 
 std::optional<QPointF> PlanView::lightSymbol(int index) const {
     const auto& lights = doc_->scene().lights;
@@ -205,10 +166,7 @@ std::optional<Legend> PlanView::gridLegend() const {
     if (!result_ || result_->lux.empty() || layout_.points.size() != result_->lux.size()) return std::nullopt;
     const V3d axis = projection_ == Projection::Top ? V3d(0, 1, 0) : projection_ == Projection::Front ? V3d(0, 0, 1) : V3d(1, 0, 0);
     if (std::abs(grid_.normal().dot(axis)) < 0.9) return std::nullopt;  // the grid is not on a plane of this view
-    // As the grid panel's table colours it: a log scale from the lowest to the highest value.
-    const GridStatistics s = gridStatistics(result_->lux);
-    const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
-    return Legend{lo, hi, true, tr("lx")};
+    return gridScale_.legend(tr("lx"));
 }
 
 bool PlanView::gridOutOfDate() const {
@@ -222,7 +180,7 @@ void PlanView::fitToScene() {
     const SceneBounds b = sceneBounds(scene);
     double u0 = 1e300, u1 = -1e300, w0 = 1e300, w1 = -1e300;
     for (int k = 0; k < 8; ++k) {
-        const QPointF p = planOf(V3d(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z));
+        const QPointF p = planPoint(projection_, V3d(k & 1 ? b.hi.x : b.lo.x, k & 2 ? b.hi.y : b.lo.y, k & 4 ? b.hi.z : b.lo.z));
         u0 = std::min(u0, p.x()), u1 = std::max(u1, p.x()), w0 = std::min(w0, p.y()), w1 = std::max(w1, p.y());
     }
     const double du = std::max(u1 - u0, 1e-9), dw = std::max(w1 - w0, 1e-9);
@@ -237,82 +195,16 @@ void PlanView::fitToScene() {
 
 // ---- geometry ----
 
-void PlanView::rebuildFaces() {
-    const Scene& scene = doc_->scene();
-    // Built again only when the geometry, the materials' shades or the projection change (not
-    // when a light or the camera moves: a drag redraws at every step).
-    std::vector<std::shared_ptr<const TriangleMesh>> meshes;
-    std::vector<std::string> materialOf;
-    for (const Object& o : scene.objects) meshes.push_back(o.worldMesh), materialOf.push_back(o.material);
-    if (meshes == facesOf_ && materialOf == facesMaterialOf_ && scene.materials == facesMaterials_ &&
-        facesProjection_ == projection_ && !faces_.empty())
-        return;
-    facesOf_ = meshes;
-    facesMaterialOf_ = materialOf;
-    facesMaterials_ = scene.materials;
+const std::vector<PlanFace>& PlanView::faces() {
+    const SceneSnapshot scene = doc_->snapshot();
+    if (facesScene_ && facesProjection_ == projection_) {
+        const SceneChange change = facesScene_ == scene ? SceneChange{} : diff(*facesScene_, *scene);
+        if (!change.geometry && !change.materials) return faces_;
+    }
+    facesScene_ = scene;
     facesProjection_ = projection_;
-    faces_.clear();
-
-    const SceneBounds b = sceneBounds(scene);
-    const int axis = projection_ == Projection::Top ? 1 : projection_ == Projection::Front ? 2 : 0;
-    const auto depthOf = [axis](const V3d& p) { return axis == 0 ? p.x : axis == 1 ? p.y : p.z; };
-    // The plan leaves out what lies wholly above three quarters of the height (ceilings, the
-    // luminaires' bodies); an elevation is a section through the middle.
-    const double cut = axis == 1 ? b.lo.y + 0.75 * (b.hi.y - b.lo.y) : depthOf(b.center);
-    V3d view(0, 0, 0);
-    view[axis] = 1;
-    for (const Object& o : scene.objects) {
-        if (!o.worldMesh) continue;
-        const QColor shade = materialShade(scene.findMaterial(o.material));
-        const TriangleMesh& m = *o.worldMesh;
-        for (const V3i& t : m.triangles) {
-            const V3d &a = m.vertices[size_t(t.x)], &bb = m.vertices[size_t(t.y)], &c = m.vertices[size_t(t.z)];
-            if (std::min({depthOf(a), depthOf(bb), depthOf(c)}) > cut) continue;
-            const V3d n = (bb - a).cross(c - a);
-            const double len = n.length();
-            if (len <= 0) continue;
-            const double facing = std::abs(n.dot(view)) / len;
-            Face f{planOf(a), planOf(bb), planOf(c), (depthOf(a) + depthOf(bb) + depthOf(c)) / 3, shade, facing < 0.2};
-            if (!f.edgeOn) f.fill = shade.darker(int(100 + 25 * (1 - facing)));
-            faces_.push_back(f);
-        }
-    }
-    std::stable_sort(faces_.begin(), faces_.end(), [](const Face& x, const Face& y) { return x.depth < y.depth; });
-}
-
-void PlanView::paintFaces(QPainter& painter) {
-    rebuildFaces();
-    const QRectF bounds = rect();
-    painter.setPen(Qt::NoPen);
-    for (const Face& f : faces_) {
-        if (f.edgeOn) continue;
-        const QPointF p[3] = {widgetOfPlan(f.a), widgetOfPlan(f.b), widgetOfPlan(f.c)};
-        // (Not QRectF::united: it drops empty rectangles, and a triangle's box may be a line.)
-        const double x0 = std::min({p[0].x(), p[1].x(), p[2].x()}), x1 = std::max({p[0].x(), p[1].x(), p[2].x()});
-        const double y0 = std::min({p[0].y(), p[1].y(), p[2].y()}), y1 = std::max({p[0].y(), p[1].y(), p[2].y()});
-        if (x1 < bounds.left() || x0 > bounds.right() || y1 < bounds.top() || y0 > bounds.bottom()) continue;
-        painter.setBrush(f.fill);
-        // A hairline of the fill closes the seams between neighbouring triangles.
-        painter.setPen(QPen(f.fill, 0));
-        painter.drawConvexPolygon(p, 3);
-    }
-}
-
-void PlanView::paintEdges(QPainter& painter) const {
-    painter.setPen(QPen(kWallColour, 1.6));
-    for (const Face& f : faces_) {
-        if (!f.edgeOn) continue;
-        const QPointF p[3] = {widgetOfPlan(f.a), widgetOfPlan(f.b), widgetOfPlan(f.c)};
-        // Edge-on, the triangle is a sliver: its longest side is the wall's line.
-        double best = -1;
-        int k0 = 0;
-        for (int k = 0; k < 3; ++k) {
-            const QPointF d = p[(k + 1) % 3] - p[k];
-            const double l = QPointF::dotProduct(d, d);
-            if (l > best) best = l, k0 = k;
-        }
-        painter.drawLine(p[k0], p[(k0 + 1) % 3]);
-    }
+    faces_ = planFaces(*scene, projection_, PlanShading::Tint);
+    return faces_;
 }
 
 void PlanView::paintSnapGrid(QPainter& painter) const {
@@ -350,22 +242,23 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
     // Iso-lux lines between the points, each level labelled once on its longest piece.
     const V3d origin = layout_.points[0];
     const auto lattice = [&](double i, double j) { return widgetOf(origin + du * i + dv * j); };
-    const std::vector<IsoSegment> segments = isoSegments(result_->lux, nu, nv, levels_);
+    const std::vector<double>& levels = gridScale_.levels;
+    const std::vector<IsoSegment> segments = isoSegments(result_->lux, nu, nv, levels);
     painter.setPen(QPen(isoLineColour(), 1.5));
-    std::vector<std::pair<double, QPointF>> labelAt(levels_.size(), {-1.0, QPointF()});
+    std::vector<std::pair<double, QPointF>> labelAt(levels.size(), {-1.0, QPointF()});
     for (const IsoSegment& s : segments) {
         const QPointF a = lattice(s.i0, s.j0), b = lattice(s.i1, s.j1);
         painter.drawLine(a, b);
-        const size_t li = size_t(std::find(levels_.begin(), levels_.end(), s.level) - levels_.begin());
+        const size_t li = size_t(std::find(levels.begin(), levels.end(), s.level) - levels.begin());
         const double len = QLineF(a, b).length();
         if (li < labelAt.size() && len > labelAt[li].first) labelAt[li] = {len, (a + b) / 2};
     }
     QFont small = painter.font();
     small.setPointSizeF(std::max(6.0, small.pointSizeF() * 0.85));
     painter.setFont(small);
-    for (size_t li = 0; li < levels_.size(); ++li) {
+    for (size_t li = 0; li < levels.size(); ++li) {
         if (labelAt[li].first < 0) continue;
-        const QString text = QString::number(levels_[li], 'g', 6);
+        const QString text = QString::number(levels[li], 'g', 6);
         const QRectF box = painter.fontMetrics().boundingRect(text).adjusted(-2, 0, 2, 0);
         const QRectF at(labelAt[li].second - QPointF(box.width() / 2, box.height() / 2), box.size());
         painter.fillRect(at, QColor(255, 255, 255, 210));
@@ -409,7 +302,7 @@ void PlanView::paintLights(QPainter& painter) const {
         painter.drawLine(c - QPointF(0, r), c + QPointF(0, r));
         if (l.type == LightType::Spot || l.type == LightType::Luminaire) {
             // The axis's direction in this view, as a wedge of the cone's half-angle.
-            const QPointF d = planOf(l.position + l.direction.normalized()) - planOf(l.position);
+            const QPointF d = planPoint(projection_, l.position + l.direction.normalized()) - planPoint(projection_, l.position);
             const double len = std::hypot(d.x(), d.y());
             if (len > 0.05) {
                 const double angle = std::atan2(d.y(), d.x());
@@ -473,25 +366,19 @@ void PlanView::paintGroups(QPainter& painter) const {
 }
 
 void PlanView::paintField(QPainter& painter) const {
-    if (drag_ != Drag::Field) return;
-    const QRectF r = QRectF(widgetOfPlan(fieldStart_), widgetOfPlan(fieldEnd_)).normalized();
+    const std::optional<QRectF> field = interaction_->fieldBeingDrawn();
+    if (!field) return;
+    const QRectF r(widgetOfPlan(field->topLeft()), widgetOfPlan(field->bottomRight()));
     painter.setPen(QPen(kSelectionColour, 1.5, Qt::DashLine));
     QColor fill(30, 110, 230, 30);
     painter.setBrush(fill);
     painter.drawRect(r);
     const double mpu = doc_->scene().metersPerUnit;
     const QString size = tr("%1 x %2 m")
-                             .arg(std::abs(fieldEnd_.x() - fieldStart_.x()) * mpu, 0, 'g', 4)
-                             .arg(std::abs(fieldEnd_.y() - fieldStart_.y()) * mpu, 0, 'g', 4);
+                             .arg(field->width() * mpu, 0, 'g', 4)
+                             .arg(field->height() * mpu, 0, 'g', 4);
     painter.setPen(Qt::black);
     painter.drawText(r.bottomRight() + QPointF(6, 14), size);
-}
-
-QPointF PlanView::snappedPlan(const QPointF& widget) const {
-    QPointF p = planOfWidget(widget);
-    const double step = snapMeters() / doc_->scene().metersPerUnit;
-    if (step > 0) p = QPointF(std::round(p.x() / step) * step, std::round(p.y() / step) * step);
-    return p;
 }
 
 void PlanView::paintCamera(QPainter& painter) const {
@@ -520,13 +407,8 @@ void PlanView::paintScaleBar(QPainter& painter) const {
     // A bar of a round length in metres, at most a fifth of the width.
     const double mpu = doc_->scene().metersPerUnit;
     const double pxPerMeter = scale_ / mpu;
-    if (pxPerMeter <= 0) return;
-    double meters = std::pow(10.0, std::floor(std::log10(width() / 5.0 / pxPerMeter)));
-    for (double m : {5.0, 2.0})
-        if (meters * m * pxPerMeter <= width() / 5.0) {
-            meters *= m;
-            break;
-        }
+    const double meters = scaleBarMeters(pxPerMeter, width() / 5.0);
+    if (meters <= 0) return;
     const double len = meters * pxPerMeter;
     const QPointF a(16, height() - 16), b(16 + len, height() - 16);
     painter.setPen(QPen(Qt::black, 2));
@@ -542,9 +424,11 @@ void PlanView::paintEvent(QPaintEvent*) {
     painter.fillRect(rect(), kBackground);
     painter.setRenderHint(QPainter::Antialiasing, true);
     paintSnapGrid(painter);
-    paintFaces(painter);
+    const QTransform toWidget = planToWidget();
+    paintPlanFills(painter, faces(), toWidget, rect(), 0);
     paintCalculationGrid(painter);
-    paintEdges(painter);  // walls and furniture sides stay visible over the grid
+    // Walls and furniture sides stay visible over the grid.
+    paintPlanWalls(painter, faces_, toWidget, QPen(kWallColour, 1.6), QPen(kWallColour, 1.6));
     paintCamera(painter);
     paintLights(painter);
     paintGroups(painter);
@@ -555,127 +439,6 @@ void PlanView::paintEvent(QPaintEvent*) {
 void PlanView::resizeEvent(QResizeEvent* event) {
     QWidget::resizeEvent(event);
     fitted_ = false;
-}
-
-// ---- mouse ----
-
-int PlanView::lightAt(const QPointF& pos) const {
-    int best = -1;
-    double bestDistance = kSymbolRadius + 4;
-    for (int i = 0; i < int(doc_->scene().lights.size()); ++i)
-        if (const auto c = lightSymbol(i)) {
-            const double d = QLineF(*c, pos).length();
-            if (d <= bestDistance) best = i, bestDistance = d;
-        }
-    return best;
-}
-
-void PlanView::mousePressEvent(QMouseEvent* event) {
-    if (drag_ != Drag::None) return;
-    pressed_ = last_ = event->position();
-    moved_ = false;
-    fitted_ = true;  // the user frames the view from now on
-    if (event->button() == Qt::LeftButton && drawField_->isChecked() && projection_ == Projection::Top) {
-        drag_ = Drag::Field;
-        fieldStart_ = fieldEnd_ = snappedPlan(pressed_);
-        hold_ = std::make_unique<YieldGate::Scope>(gate_.counter());
-        update();
-        return;
-    }
-    const int light = event->button() == Qt::LeftButton ? lightAt(pressed_) : -1;
-    if (light >= 0) {
-        drag_ = Drag::MoveLight;
-        dragLight_ = light;
-        dragStart_ = doc_->scene().lights[size_t(light)];
-        mergeKey_ = nextMergeKey();
-        emit lightClicked(light);
-    } else {
-        drag_ = Drag::Pan;
-    }
-    hold_ = std::make_unique<YieldGate::Scope>(gate_.counter());
-}
-
-void PlanView::moveDraggedLight(const QPointF& pos) {
-    const auto& lights = doc_->scene().lights;
-    if (dragLight_ < 0 || size_t(dragLight_) >= lights.size()) return;
-    const V3d delta = worldDelta((pos - pressed_) / scale_);
-    Light light = lights[size_t(dragLight_)];
-    V3d p = dragStart_.position + delta;
-    const double step = snapMeters() / doc_->scene().metersPerUnit;
-    if (step > 0)
-        for (int axis = 0; axis < 3; ++axis)
-            if (delta[axis] != 0) p[axis] = std::round(p[axis] / step) * step;
-    if (p == light.position) return;
-    light.position = p;
-    doc_->undoStack()->push(new EditLightCommand(doc_, dragLight_, light, mergeKey_, tr("Move %1").arg(nameOf(light))));
-}
-
-void PlanView::mouseMoveEvent(QMouseEvent* event) {
-    const QPointF pos = event->position();
-    if (drag_ == Drag::None) return;
-    if (!moved_ && QLineF(pos, pressed_).length() < kClickSlop) return;
-    moved_ = true;
-    if (drag_ == Drag::Field) {
-        fieldEnd_ = snappedPlan(pos);
-        update();
-    } else if (drag_ == Drag::Pan) {
-        offset_ += pos - last_;
-        update();
-    } else {
-        moveDraggedLight(pos);
-    }
-    last_ = pos;
-}
-
-void PlanView::mouseReleaseEvent(QMouseEvent* event) {
-    if (drag_ == Drag::Field) {
-        fieldEnd_ = snappedPlan(event->position());
-        drag_ = Drag::None;
-        hold_.reset();
-        drawField_->setChecked(false);
-        update();
-        if (fieldStart_.x() != fieldEnd_.x() && fieldStart_.y() != fieldEnd_.y())
-            emit fieldDrawn(fieldStart_.x(), fieldStart_.y(), fieldEnd_.x(), fieldEnd_.y());
-        else
-            emit message(tr("The field's rectangle has no area: drag from one corner to the opposite one"));
-        return;
-    }
-    if (drag_ == Drag::MoveLight && moved_) moveDraggedLight(event->position());
-    if (drag_ == Drag::MoveLight && moved_ && size_t(dragLight_) < doc_->scene().lights.size()) {
-        const V3d p = doc_->scene().lights[size_t(dragLight_)].position;
-        emit message(tr("Moved %1 to (%2, %3, %4)")
-                         .arg(nameOf(dragStart_))
-                         .arg(p.x, 0, 'g', 6)
-                         .arg(p.y, 0, 'g', 6)
-                         .arg(p.z, 0, 'g', 6));
-    }
-    drag_ = Drag::None;
-    dragLight_ = -1;
-    hold_.reset();
-}
-
-void PlanView::wheelEvent(QWheelEvent* event) {
-    const double steps = event->angleDelta().y() / 120.0;
-    if (steps == 0) return;
-    const QPointF at = event->position();
-    const QPointF plan = planOfWidget(at);
-    scale_ *= std::pow(1.2, steps);
-    offset_ = at - plan * scale_;  // the point under the cursor stays there
-    fitted_ = true;
-    update();
-}
-
-void PlanView::keyPressEvent(QKeyEvent* event) {
-    if (event->key() == Qt::Key_Escape && (drawField_->isChecked() || drag_ == Drag::Field)) {
-        if (drag_ == Drag::Field) {
-            drag_ = Drag::None;
-            hold_.reset();
-        }
-        drawField_->setChecked(false);
-        update();
-        return;
-    }
-    QWidget::keyPressEvent(event);
 }
 
 }  // namespace lucerna

@@ -1,14 +1,15 @@
 #pragma once
 // The plan view: the scene seen orthographically from above (the plan) or from the front or the
 // side (elevations), drawn with QPainter, as DIALux users place luminaires. The geometry is cut
-// (in the plan above three quarters of the scene's height, so ceilings do not hide the room; in
+// (render/display/plan_projection.h; in the plan above three quarters of the scene's height, so ceilings do not hide the room; in
 // the elevations at the middle of the depth, a section) and drawn farthest first, faces filled in
 // a light shade of their material and walls seen edge-on as dark lines. Lights are symbols with
 // their names: a circle with a cross for a point light, a circle with a wedge along its axis for
 // a spot, a square with a cross for a luminaire (directional lights have no position); the scene
 // camera is a dot with its field of view.
 // The newest calculation grid facing the view is drawn on its plane in false colour, with
-// iso-lux lines at round levels and a legend.
+// iso-lux lines and a legend as the report's plans have them (render/display/plan_scales.h).
+// The mouse and keys (ui/plan/plan_interaction.h):
 // - Left drag on a light moves it in the view's plane (the plan: x and z, y unchanged), its
 //   moved coordinates snapped to the snap step (a grid in metres, drawn faintly); one undo step
 //   per drag. A click selects it.
@@ -19,6 +20,8 @@
 // so a field of thousands draws as a field.
 
 #include "core/photometry/calculation_grid.h"
+#include "render/display/plan_projection.h"
+#include "render/display/plan_scales.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/document/document.h"
 #include "ui/rendering/yield_gate.h"
@@ -35,13 +38,15 @@ class QToolButton;
 
 namespace lucerna {
 
-struct Legend;
+class PlanInteraction;
 
 class PlanView : public QWidget {
     Q_OBJECT
 public:
     // Which way the view looks: down -y (plan), along -z (front elevation), along -x (side).
-    enum class Projection { Top, Front, Side };
+    using Projection = PlanAxis;
+    // A light's symbol's radius, widget pixels.
+    static constexpr double kSymbolRadius = 7.0;
 
     PlanView(Document* doc, const YieldGate& gate, QWidget* parent = nullptr);
     ~PlanView() override;
@@ -67,6 +72,13 @@ public:
 
     // Widget position of a world point in the current view.
     QPointF widgetOf(const V3d& world) const;
+    // The plan coordinates (planPoint's) under a widget position.
+    QPointF planOfWidget(const QPointF& widget) const;
+    // The user frames the view (the mouse's pan and zoom): it is fitted to the scene again only
+    // when the projection, the widget's size or the scene changes.
+    void panBy(const QPointF& pixels);
+    // Scales by `factor` about a widget point, which stays where it is.
+    void zoomAbout(const QPointF& widget, double factor);
     // The widget position of a light's symbol (nothing for directional lights).
     std::optional<QPointF> lightSymbol(int index) const;
     // The false-colour legend of the grid drawn now (nothing without a grid shown).
@@ -75,7 +87,7 @@ public:
     // (lights, geometry, materials): the plan says so over the grid.
     bool gridOutOfDate() const;
     // The iso-lux levels drawn now.
-    const std::vector<double>& isoLevelsShown() const { return levels_; }
+    const std::vector<double>& isoLevelsShown() const { return gridScale_.levels; }
     // The colours the view draws lights and iso-lux lines in (for tests reading pixels back).
     static QColor lightColour();
     static QColor isoLineColour();
@@ -90,48 +102,31 @@ signals:
 protected:
     void paintEvent(QPaintEvent*) override;
     void resizeEvent(QResizeEvent*) override;
-    void mousePressEvent(QMouseEvent* event) override;
-    void mouseMoveEvent(QMouseEvent* event) override;
-    void mouseReleaseEvent(QMouseEvent* event) override;
-    void wheelEvent(QWheelEvent* event) override;
-    void keyPressEvent(QKeyEvent* event) override;
 
 private:
-    struct Face;  // a projected triangle
-    enum class Drag { None, Pan, MoveLight, Field };
-
-    // Plan coordinates (u right, w down on the screen, scene units) of a world point, and back
-    // for a displacement.
-    QPointF planOf(const V3d& world) const;
-    V3d worldDelta(const QPointF& planDelta) const;
     QPointF widgetOfPlan(const QPointF& plan) const;
-    QPointF planOfWidget(const QPointF& widget) const;
-    void rebuildFaces();
-    void paintFaces(QPainter& painter);
-    void paintEdges(QPainter& painter) const;
+    // The faces of the geometry (planFaces), built again only when the geometry, the materials
+    // or the projection changed since they were (not when a light or the camera moves: a drag
+    // redraws at every step).
+    const std::vector<PlanFace>& faces();
+    QTransform planToWidget() const;
     void paintSnapGrid(QPainter& painter) const;
     void paintCalculationGrid(QPainter& painter) const;
     void paintLights(QPainter& painter) const;
     void paintGroups(QPainter& painter) const;
     void paintField(QPainter& painter) const;
-    QPointF snappedPlan(const QPointF& widget) const;
     void paintCamera(QPainter& painter) const;
     void paintScaleBar(QPainter& painter) const;
-    int lightAt(const QPointF& pos) const;
-    void moveDraggedLight(const QPointF& pos);
 
     Document* doc_;
-    YieldGate gate_;
     Projection projection_ = Projection::Top;
     QLabel* title_;
     QCheckBox* snap_;
     QDoubleSpinBox* snapStep_;
     QToolButton* drawField_;
 
-    std::vector<Face> faces_;          // of the geometry below, for the projection
-    std::vector<std::shared_ptr<const TriangleMesh>> facesOf_;  // the meshes faces_ were built from
-    std::vector<std::string> facesMaterialOf_;  // and each object's material
-    std::vector<Material> facesMaterials_;
+    std::vector<PlanFace> faces_;      // of the geometry, for the projection
+    SceneSnapshot facesScene_;         // the scene faces_ were built from
     Projection facesProjection_ = Projection::Top;
     double scale_ = 100;               // pixels per scene unit
     QPointF offset_;                   // widget position of plan point (0, 0)
@@ -144,16 +139,9 @@ private:
     GridLayout layout_;
     std::shared_ptr<const GridResult> result_;
     SceneSnapshot resultScene_;  // the scene when the result arrived
-    std::vector<double> levels_;
+    PlanScale gridScale_;        // the result's legend and iso-lux levels
 
-    Drag drag_ = Drag::None;
-    int dragLight_ = -1;
-    Light dragStart_;
-    QPointF pressed_, last_;
-    QPointF fieldStart_, fieldEnd_;  // plan coordinates of the field being drawn
-    bool moved_ = false;
-    int mergeKey_ = 0;
-    std::unique_ptr<YieldGate::Scope> hold_;
+    PlanInteraction* interaction_;  // the mouse and keys (a child)
 };
 
 }  // namespace lucerna

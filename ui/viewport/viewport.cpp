@@ -4,6 +4,7 @@
 #include "ui/viewport/camera_navigation.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/scene_commands.h"
+#include "ui/viewport/light_pick.h"
 #include "ui/viewport/light_placement.h"
 
 #include <QAction>
@@ -19,8 +20,6 @@
 namespace lucerna {
 
 namespace {
-// A press that moves less than this (widget pixels) before its release is a click.
-constexpr double kClickSlop = 3.0;
 // Outlines of bigger objects would cost more than a frame to draw.
 constexpr size_t kMaxOutlinedTriangles = 20000;
 
@@ -149,15 +148,8 @@ std::optional<LightGizmo> Viewport::gizmo() const {
 }
 
 int Viewport::lightAt(const QPointF& pos) const {
-    int best = -1;
-    double bestDist = 10.0;  // pixels
-    for (int i = 0; i < int(doc_->scene().lights.size()); ++i)
-        if (const auto m = lightMarker(i)) {
-            const double d = std::hypot(m->x() - pos.x(), m->y() - pos.y());
-            // The selected light wins a tie: it is the one being worked on.
-            if (d < bestDist || (d <= bestDist && i == selected_)) bestDist = d, best = i;
-        }
-    return best;
+    // The selected light wins a tie: it is the one being worked on.
+    return lightNear(int(doc_->scene().lights.size()), [this](int i) { return lightMarker(i); }, pos, 10.0, selected_);
 }
 
 // ---- painting ----
