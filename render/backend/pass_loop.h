@@ -39,9 +39,9 @@ struct PassLoopOptions {
     // When this returns true the loop ends at the next pass boundary as if its budget were spent,
     // and makes its final frame of the passes done (the command line's --save-on-interrupt).
     std::function<bool()> finishEarly;
-    // When set, frames from the fifth pass on carry the albedo under each pixel (kAlbedoLayer of
-    // render/trace/surface_layers.h), traced once from this scene at the film's size, so that the
-    // lux view can divide by it (render/display/display.h, pixelIlluminance).
+    // When set, frames made once four passes are done carry the albedo under each pixel
+    // (kAlbedoLayer of render/trace/surface_layers.h), traced once from this scene at the film's
+    // size, so that the lux view can divide by it (render/display/display.h, pixelIlluminance).
     SceneSnapshot albedoScene;
     // A share of a render run by several processes (a distributed render, pooled_films.h): of the
     // render's passes 0, 1, 2, ... (the settings' spp counts them all), this process runs those

@@ -4,6 +4,7 @@
 #include "render/photometry/grid_statistics.h"
 #include "render/photometry/sensor_render.h"
 
+#include "render/preview/frame_accumulator.h"
 #include "render/preview/headless_backend.h"
 #include "render/preview/hemicube_irradiance.h"
 
@@ -27,8 +28,7 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
     runPointPasses(points.size(), 1, settings, ctx, [&](int pass, std::span<double> passLux) {
         const uint64_t passSeed = hashSeed(settings.seed, uint64_t(pass), 0x9e1d);
         preview.regenerate(passSeed);
-        Rng rng(passSeed, 0x717e7ULL);
-        const V2f jitter = rng.next2D();  // the faces' pixels, box-filtered over the passes
+        const V2f jitter = uniformJitter(passSeed);  // the faces' pixels, box-filtered over the passes
         for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i)
             if (ownsBlock(settings.processes, int(i / kPointsPerBlock)))
                 passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors.lifted[i], jitter.x, jitter.y))) +

@@ -4,6 +4,7 @@
 #include "render/photometry/irradiance_estimator.h"
 #include "render/photometry/sensor_render.h"
 #include "render/preview/headless_backend.h"
+#include "render/preview/preview_illuminance.h"
 #include "render/vpl/instant_radiosity.h"
 
 #include <algorithm>

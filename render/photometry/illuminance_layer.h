@@ -9,7 +9,7 @@
 //   - bdpt, mir, mlt, cmlt: the surface behind each pixel's centre becomes an irradiance sensor
 //     and the backend renders all of them together (sensor_render.h); one point per pixel, not
 //     box-filtered.
-//   - preview: white-receiver preview frames (preview.h, previewIlluminanceLayer).
+//   - preview: white-receiver preview frames (render/preview/preview_illuminance.h).
 
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"

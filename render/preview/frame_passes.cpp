@@ -1,18 +1,16 @@
-// The passes of one preview frame: shadow maps (only when lights or VPLs changed), G-buffer,
-// split (with the discontinuity buffer), interleaved VPL shading, gather with the horizontal
-// blur, vertical blur with the direct light and the blend.
+// The passes of one preview frame (Preview::render): shadow maps (only when lights or VPLs
+// changed), G-buffer (with what the camera sees through panes), split (with the discontinuity
+// buffer), interleaved VPL shading, gather with the horizontal blur, vertical blur with the
+// direct light and the blend, read-back.
 
 #include "core/daylight/sky_model.h"
 #include "render/preview/gpu_state.h"
 #include "render/preview/luminaire_textures.h"
-#include "render/trace/rng.h"
 #include "render/vpl/vpl_contribution.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
-#include <cstring>
-#include <numeric>
-#include <unordered_map>
 #include <stdexcept>
 
 namespace lucerna {
@@ -55,108 +53,6 @@ void ensureTargets(Preview::State& st, int w, int h, int n, int m, int block) {
     st.viewTransmittanceFbo = gl::makeFramebuffer({st.viewTransmittance.id()}, st.depth.id());
     st.finalFbo = gl::makeFramebuffer({st.final.id()});
     gl::checkErrors("preview targets");
-}
-
-// The sub-buffers' VPLs as uniform blocks, one after the other at the alignment GL asks for,
-// each unrolledVpls long (the shader's block size): when no sub-buffer has more than
-// maxUnrolled, shade_vpl.frag reads them at constant indices (its UNROLLED_VPLS).
-void uploadTileBlocks(Preview::State& st, const std::vector<GpuVpl>& gpu, int maxUnrolled) {
-    int most = 0;
-    for (const auto& t : st.tiles) most = std::max(most, t.count);
-    st.unrolledVpls = most <= maxUnrolled ? most : 0;
-    if (st.unrolledVpls == 0) return;
-    const size_t blockBytes = size_t(st.unrolledVpls) * sizeof(GpuVpl);
-    const size_t stride = uniformBlockStride(blockBytes);
-    std::vector<unsigned char> blocks(st.tiles.size() * stride + blockBytes);
-    for (size_t k = 0; k < st.tiles.size(); ++k) {
-        auto& t = st.tiles[k];
-        t.blockOffset = GLintptr(k * stride);
-        std::memcpy(blocks.data() + k * stride, gpu.data() + t.first, size_t(t.count) * sizeof(GpuVpl));
-    }
-    upload(st.tileVplBlocks, blocks);
-}
-
-// Orders the VPLs by sub-buffer: each light's set is shuffled and dealt round-robin, and a VPL's
-// power is scaled by (set size / the set's VPLs in its sub-buffer) so that every sub-buffer alone
-// estimates all the indirect light. Beyond the shadow cubes this GPU holds, each set keeps a
-// uniformly chosen share of its VPLs (the same scale keeps the estimate unbiased).
-void uploadVpls(Preview::State& st, const PreviewSettings& settings) {
-    const int subsets = st.patternX * st.patternY;
-    struct Dealt {
-        const Vpl* vpl;
-        float scale;
-        int cube;  // its shadow cube: its place among the kept VPLs in set order
-    };
-    std::vector<std::vector<Dealt>> buckets(static_cast<size_t>(subsets));
-    // Which VPLs are kept follows the VPLs' seed; how they are dealt follows the deal's, so that
-    // a new deal (Preview::redeal) keeps every VPL and with it its shadow cube.
-    Rng keepRng(st.seed, 0xde41ULL), dealRng(st.dealSeed, 0xdea1ULL);
-    size_t total = 0;
-    for (const LightVpls& set : st.sets) total += set.vpls.size();
-    const size_t capacity = size_t(CubeShadowSet::capacity());
-    // Room for each set's rounding up to one VPL.
-    const double keep = settings.visibility && total > capacity
-                            ? double(capacity - std::min(capacity - 1, st.sets.size())) / double(total)
-                            : 1.0;
-    int offset = 0;
-    size_t kept = 0;
-    std::vector<V3f> centres;  // by cube
-    const float lift = st.scene->boundsRadius() * 1e-4f;
-    for (const LightVpls& set : st.sets) {
-        std::vector<const Vpl*> order;
-        for (const Vpl& v : set.vpls) order.push_back(&v);
-        const size_t setSize = order.size();
-        if (keep < 1.0 && setSize > 0) {
-            for (size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[keepRng.nextUint() % i]);
-            order.resize(std::max<size_t>(1, size_t(double(setSize) * keep)));
-            std::sort(order.begin(), order.end());  // set order again: the cubes' order
-        }
-        std::vector<std::pair<const Vpl*, int>> cubes;  // in set order, then dealt
-        for (const Vpl* v : order) {
-            cubes.push_back({v, int(centres.size())});
-            centres.push_back(v->position + v->normal * lift);
-        }
-        for (size_t i = cubes.size(); i > 1; --i) std::swap(cubes[i - 1], cubes[dealRng.nextUint() % i]);
-        std::vector<int> counts(size_t(subsets), 0);
-        for (size_t j = 0; j < cubes.size(); ++j) ++counts[(j + size_t(offset)) % size_t(subsets)];
-        for (size_t j = 0; j < cubes.size(); ++j) {
-            const size_t k = (j + size_t(offset)) % size_t(subsets);
-            buckets[k].push_back({cubes[j].first, float(setSize) / float(counts[k]), cubes[j].second});
-        }
-        offset += int(order.size());
-        kept += order.size();
-    }
-    st.vplNote = kept < total ? "shadow maps for " + std::to_string(kept) + " of " + std::to_string(total) +
-                                    " VPLs (this GPU's limit; a random subset, scaled up)"
-                              : "";
-    std::vector<GpuVpl> gpu;
-    st.tiles.clear();
-    for (const auto& bucket : buckets) {
-        st.tiles.push_back({int(gpu.size()), int(bucket.size()), 0});
-        for (const auto& [v, scale, cube] : bucket) {
-            const ShadingMaterial& m = st.scene->material(v->material);
-            GpuVpl g{};
-            put(g.positionIndex, v->position, float(cube));  // w: its shadow cube
-            put(g.normalAlpha, v->normal, m.alpha);
-            // A diffuse VPL's BSDF is albedo / pi whatever the direction: premultiplied here.
-            const bool glossy = m.type == MaterialType::Glossy && !isBlack(m.specular);
-            put(g.incident, v->incident, glossy ? 1.0f : 0.0f);
-            put(g.power, glossy ? v->power * scale : v->power * m.albedo * (scale / kPi), 0);
-            put(g.albedo, m.albedo, 0);
-            put(g.specular, m.type == MaterialType::Glossy ? m.specular : Rgb(0, 0, 0), 0);
-            gpu.push_back(g);
-        }
-    }
-    upload(st.vplBuffer, gpu);
-    uploadTileBlocks(st, gpu, settings.maxUnrolledVpls);
-    st.uploadedVplCount = int(gpu.size());
-    st.vplVisibility = settings.visibility && !centres.empty();
-    if (st.vplVisibility) {
-        st.vplShadows.reserve(int(centres.size()), settings.vplShadowSize);
-        st.timings.shadowCubes += st.vplShadows.draw(st.shadowProgram, st.proxyCaster, centres, 0,
-                                                     st.scene->boundsRadius(), st.shadowCentres);
-    }
-    st.vplsDirty = false;
 }
 
 // The SPEC.md pinhole projection: pixel (i, j) shows the raster point (i + jx, j + jy). Rows are
@@ -330,41 +226,78 @@ Image readBack(GLuint texture, int w, int h) {
     return img;
 }
 
-}  // namespace
-
-Image Preview::render(float jitterX, float jitterY) {
-    State& st = *state_;
-    if (!st.scene) throw std::logic_error("preview: render() before setScene()");
-    EglContext::ScopedCurrent current(*context_);
-    const auto start = Clock::now();
-    auto mark = start;
-    const auto lap = [&](double& slot) {
-        glFinish();  // honest per-pass times: llvmpipe and GPUs both run asynchronously
+// Milliseconds per pass: glFinish before each reading (llvmpipe and GPUs both run
+// asynchronously), so that the passes' times are honest and add up.
+class PassClock {
+public:
+    void lap(double& slot) {
+        glFinish();
         const auto now = Clock::now();
-        slot = std::chrono::duration<double, std::milli>(now - mark).count();
-        mark = now;
-    };
-    PreviewTimings& tm = st.timings;
-    tm = PreviewTimings();
-    const PreviewSettings& s = settings_;
-    const int w = st.width, h = st.height;
-    const int subsets = s.patternX * s.patternY;
-    const bool interleaved = subsets > 1;
-    ensureTargets(st, w, h, s.patternX, s.patternY, s.split == SplitMode::TwoPass ? s.splitBlock : 1);
-    if (st.vplsDirty) uploadVpls(st, s);
-    if (st.lightsDirty) uploadLights(st, s);
-    st.degradation = st.vplNote + (st.vplNote.empty() || st.lightNote.empty() ? "" : "; ") + st.lightNote;
-    lap(tm.shadows);
+        slot = std::chrono::duration<double, std::milli>(now - mark_).count();
+        mark_ = now;
+    }
+    double total() const { return std::chrono::duration<double, std::milli>(Clock::now() - start_).count(); }
 
-    // G-buffer.
+private:
+    Clock::time_point start_ = Clock::now(), mark_ = start_;
+};
+
+// Which passes a frame draws, and how: from the settings and what the lights' and VPLs' upload
+// left (so decided after it).
+struct FramePlan {
+    bool interleaved = false;  // n x m sub-buffers (else one: the image itself)
+    bool splitPass = false;    // the G-buffer split in a pass of its own (not fused into the shading)
+    bool indirect = false;     // VPLs to shade
+    // Lights dealt to the sub-buffers (area samples, many delta lights) and the sky's directions
+    // are shaded with the VPLs (shade_vpl.frag), so they are split, gathered and blurred with them.
+    bool interleavedLights = false, interleavedSky = false;
+    bool throughPanes = false;  // the camera sees the scene through panes
+    // The shading pass's output holds light (else the direct pass adds none of it).
+    bool shadesSubBuffers() const { return indirect || interleavedLights || interleavedSky; }
+};
+
+FramePlan planFrame(const Preview::State& st, const PreviewSettings& s, bool whiteReceivers) {
+    FramePlan plan;
+    plan.interleaved = s.patternX * s.patternY > 1;
+    plan.splitPass = plan.interleaved && s.split != SplitMode::Fused;
+    plan.indirect = s.indirect && st.uploadedVplCount > 0;
+    plan.interleavedLights = plan.interleaved && s.direct && st.interleavedCount > 0;
+    plan.interleavedSky = plan.interleaved && s.direct && st.skyPerTile > 0;
+    // White receivers read the surface behind a pane as it is (the illuminance layer).
+    plan.throughPanes = st.glazing && !whiteReceivers;
+    return plan;
+}
+
+// The camera of a frame: its view-projection with the pixel sample at (jitterX, jitterY), the
+// depth range just holding the scene.
+struct FrameView {
+    Mat4 viewProj;
+    V3f eye;
+    float jitterX = 0.5f, jitterY = 0.5f;
+};
+
+FrameView frameView(const Preview::State& st, float jitterX, float jitterY) {
     const float radius = st.scene->boundsRadius();
     const float dist = (toFloat(st.camera.position) - st.scene->boundsCenter()).length();
     const float farZ = dist + radius * 1.01f;
     const float nearZ = std::max((dist - radius) * 0.9f, farZ * 1e-5f);
-    const Mat4 vp = viewProjection(st.camera, w, h, jitterX, jitterY, nearZ, farZ);
-    const V3f eye = toFloat(st.camera.position);
+    return {viewProjection(st.camera, st.width, st.height, jitterX, jitterY, nearZ, farZ), toFloat(st.camera.position),
+            jitterX, jitterY};
+}
+
+// The VPLs and lights dealt anew when they changed, with the shadow maps of those that moved.
+void uploadVplsAndLights(Preview::State& st, const PreviewSettings& s) {
+    if (st.vplsDirty) uploadVpls(st, s);
+    if (st.lightsDirty) uploadLights(st, s);
+    st.degradation = st.vplNote + (st.vplNote.empty() || st.lightNote.empty() ? "" : "; ") + st.lightNote;
+}
+
+// The G-buffer of the opaque triangles, and what the camera sees through panes: the product of
+// the transmittances of those in front of each pixel's surface (glazing.frag), which the direct
+// pass multiplies everything by.
+void drawGBuffer(Preview::State& st, const FrameView& view, const FramePlan& plan, bool whiteReceivers) {
     glBindFramebuffer(GL_FRAMEBUFFER, st.gFbo.id());
-    glViewport(0, 0, w, h);
+    glViewport(0, 0, st.width, st.height);
     const float zero[4] = {0, 0, 0, 0};
     const GLuint zeroBits[4] = {0, 0, 0, 0};
     glClearNamedFramebufferfv(st.gFbo.id(), GL_COLOR, 0, zero);
@@ -373,18 +306,15 @@ Image Preview::render(float jitterX, float jitterY) {
     glClearNamedFramebufferfv(st.gFbo.id(), GL_DEPTH, 0, &one);
     glEnable(GL_DEPTH_TEST);
     glUseProgram(st.gbufferProgram.id());
-    glProgramUniformMatrix4fv(st.gbufferProgram.id(), loc(st.gbufferProgram, "viewProj"), 1, GL_FALSE, vp.m.data());
-    setVec3(st.gbufferProgram, "cameraPos", eye);
-    setInt(st.gbufferProgram, "whiteReceivers", whiteReceivers_ ? 1 : 0);
+    glProgramUniformMatrix4fv(st.gbufferProgram.id(), loc(st.gbufferProgram, "viewProj"), 1, GL_FALSE,
+                              view.viewProj.m.data());
+    setVec3(st.gbufferProgram, "cameraPos", view.eye);
+    setInt(st.gbufferProgram, "whiteReceivers", whiteReceivers ? 1 : 0);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.triangles.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, st.materials.id());
     glBindVertexArray(st.sceneVao.id());
     glDrawArrays(GL_TRIANGLES, 0, st.opaqueVertexCount);
-    // What the camera sees through panes: the product of the transmittances of those in front of
-    // each pixel's surface (glazing.frag), which the direct pass multiplies everything by. White
-    // receivers read the surface behind a pane as it is (the illuminance layer).
-    const bool throughPanes = st.glazing && !whiteReceivers_;
-    if (throughPanes) {
+    if (plan.throughPanes) {
         const float white[4] = {1, 1, 1, 1};
         glClearNamedFramebufferfv(st.viewTransmittanceFbo.id(), GL_COLOR, 0, white);
         glBindFramebuffer(GL_FRAMEBUFFER, st.viewTransmittanceFbo.id());
@@ -394,7 +324,7 @@ Image Preview::render(float jitterX, float jitterY) {
         glBlendFuncSeparate(GL_DST_COLOR, GL_ZERO, GL_ONE, GL_ONE);
         const gl::Program& g = st.glazingProgram;
         glUseProgram(g.id());
-        glProgramUniformMatrix4fv(g.id(), loc(g, "viewProj"), 1, GL_FALSE, vp.m.data());
+        glProgramUniformMatrix4fv(g.id(), loc(g, "viewProj"), 1, GL_FALSE, view.viewProj.m.data());
         setInt(g, "firstTriangle", st.opaqueVertexCount / 3);
         glDrawArrays(GL_TRIANGLES, st.opaqueVertexCount, st.vertexCount - st.opaqueVertexCount);
         glDisable(GL_BLEND);
@@ -402,80 +332,71 @@ Image Preview::render(float jitterX, float jitterY) {
     }
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(st.emptyVao.id());
-    lap(tm.gbuffer);
+}
 
-    const bool indirect = s.indirect && st.uploadedVplCount > 0;
-    // Lights dealt to the sub-buffers (area samples, many delta lights) are shaded with the VPLs
-    // (shade_vpl.frag), so they are split, gathered and blurred with them.
-    const bool interleavedLights = interleaved && s.direct && st.interleavedCount > 0;
-    const bool interleavedSky = interleaved && s.direct && st.skyPerTile > 0;
-    if (indirect || interleavedLights || interleavedSky) {
-        const bool fused = interleaved && s.split == SplitMode::Fused;
-        if (interleaved && !fused) runSplit(st, s.split == SplitMode::TwoPass, w, h, s.blur, eye);
-        lap(tm.split);
-
-        const gl::Program& p = shadeProgram(st, interleavedLights, interleavedSky, interleaved && s.blur, fused);
-        glUseProgram(p.id());
-        setIvec2(p, "pattern", st.patternX, st.patternY);
-        setIvec2(p, "subSize", st.subW, st.subH);
-        setIvec2(p, "sourceSize", w, h);
-        setVec3(p, "cameraPos", eye);
-        setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
-        setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
-        setFloat(p, "shadowBias", 0.03f);
-        setFloat(p, "vplShadowSlack", st.proxyCaster.slack);
-        setInt(p, "cubesPerChunk", st.vplShadows.perArray());
-        setInt(p, "firstInterleaved", st.firstInterleaved);
-        setInt(p, "interleavedCount", st.interleavedCount);
-        setLightUniforms(st, p);
-        const bool splitLayout = interleaved && !fused;
-        glBindTextureUnit(0, splitLayout ? st.s[0].id() : st.g[0].id());
-        glBindTextureUnit(1, splitLayout ? st.s[1].id() : st.g[1].id());
-        glBindTextureUnit(2, st.s[2].id());
-        st.vplShadows.bind(4);
-        glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
-        glBindFramebuffer(GL_FRAMEBUFFER, interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
-        const int tileW = interleaved ? st.subW : w, tileH = interleaved ? st.subH : h;
-        for (int k = 0; k < subsets; ++k) {
-            const Preview::State::TileVpls t =
-                indirect && size_t(k) < st.tiles.size() ? st.tiles[size_t(k)] : Preview::State::TileVpls{};
-            const int tx = k % st.patternX, ty = k / st.patternX;
-            if (st.unrolledVpls > 0)
-                glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
-                                  GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
-            if (interleavedSky)
-                glBindBufferRange(GL_UNIFORM_BUFFER, 2, st.tileSkyBlocks.id(), k * st.skyBlockStride,
-                                  GLsizeiptr(size_t(st.skyPerTile) * sizeof(GpuSkyLight)));
-            if (interleavedLights && st.areaPerTile > 0)
-                glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
-                                  GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
-            setIvec2(p, "tile", tx, ty);
-            setInt(p, "vplFirst", t.first);
-            setInt(p, "vplCount", t.count);
-            glViewport(tx * tileW, ty * tileH, tileW, tileH);
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
-        lap(tm.shading);
-
-        // Gathered and blurred horizontally; without interleaving the shading pass wrote the
-        // image layout already, and there is no blur.
-        if (interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
-        lap(tm.gather);
+// The interleaved shading (shade_vpl.frag): a draw per sub-buffer with its own VPLs, and its
+// share of the interleaved lights and sky directions, into the split layout (or, without
+// interleaving, the image).
+void shadeSubBuffers(Preview::State& st, const PreviewSettings& s, const FramePlan& plan, const V3f& eye) {
+    const bool fused = plan.interleaved && !plan.splitPass;
+    const gl::Program& p =
+        shadeProgram(st, plan.interleavedLights, plan.interleavedSky, plan.interleaved && s.blur, fused);
+    glUseProgram(p.id());
+    setIvec2(p, "pattern", st.patternX, st.patternY);
+    setIvec2(p, "subSize", st.subW, st.subH);
+    setIvec2(p, "sourceSize", st.width, st.height);
+    setVec3(p, "cameraPos", eye);
+    setFloat(p, "maxG", std::min(geometricClampBound(*st.scene, s.clampDistance), 3.0e38f));
+    setFloat(p, "texelAngle", 2.0f / float(std::max(s.vplShadowSize, 1)));
+    setFloat(p, "shadowBias", 0.03f);
+    setFloat(p, "vplShadowSlack", st.proxyCaster.slack);
+    setInt(p, "cubesPerChunk", st.vplShadows.perArray());
+    setInt(p, "firstInterleaved", st.firstInterleaved);
+    setInt(p, "interleavedCount", st.interleavedCount);
+    setLightUniforms(st, p);
+    glBindTextureUnit(0, plan.splitPass ? st.s[0].id() : st.g[0].id());
+    glBindTextureUnit(1, plan.splitPass ? st.s[1].id() : st.g[1].id());
+    glBindTextureUnit(2, st.s[2].id());
+    st.vplShadows.bind(4);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
+    glBindFramebuffer(GL_FRAMEBUFFER, plan.interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
+    const int tileW = plan.interleaved ? st.subW : st.width, tileH = plan.interleaved ? st.subH : st.height;
+    for (int k = 0; k < s.patternX * s.patternY; ++k) {
+        const Preview::State::TileVpls t =
+            plan.indirect && size_t(k) < st.tiles.size() ? st.tiles[size_t(k)] : Preview::State::TileVpls{};
+        const int tx = k % st.patternX, ty = k / st.patternX;
+        if (st.unrolledVpls > 0)
+            glBindBufferRange(GL_UNIFORM_BUFFER, 0, st.tileVplBlocks.id(), t.blockOffset,
+                              GLsizeiptr(size_t(st.unrolledVpls) * sizeof(GpuVpl)));
+        if (plan.interleavedSky)
+            glBindBufferRange(GL_UNIFORM_BUFFER, 2, st.tileSkyBlocks.id(), k * st.skyBlockStride,
+                              GLsizeiptr(size_t(st.skyPerTile) * sizeof(GpuSkyLight)));
+        if (plan.interleavedLights && st.areaPerTile > 0)
+            glBindBufferRange(GL_UNIFORM_BUFFER, 1, st.tileAreaBlocks.id(), k * st.areaBlockStride,
+                              GLsizeiptr(size_t(st.areaPerTile) * sizeof(GpuLight)));
+        setIvec2(p, "tile", tx, ty);
+        setInt(p, "vplFirst", t.first);
+        setInt(p, "vplCount", t.count);
+        glViewport(tx * tileW, ty * tileH, tileW, tileH);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    // The shading pass's output holds light.
-    const bool withIndirect = indirect || interleavedLights || interleavedSky;
+}
 
+// The last pass (direct.frag), into `final`: the vertical half of the blur over what the shading
+// pass gave, the direct light of the lights shaded in full (without interleaving, the sky's
+// directions too), the background where no surface is seen, all through the panes.
+void drawDirect(Preview::State& st, const PreviewSettings& s, const FramePlan& plan, const FrameView& view,
+                bool whiteReceivers, bool sunDiscShown) {
     const int shadedHere = s.direct ? st.shadedHere : 0;
-    // Without interleaving the sky's directions are all shaded here.
-    const int skyHere = s.direct && !interleaved ? st.skyLightCount : 0;
+    const int skyHere = s.direct && !plan.interleaved ? st.skyLightCount : 0;
     const gl::Program& d = directProgram(st, shadedHere > 0, skyHere > 0);
     glUseProgram(d.id());
     setInt(d, "shadedHere", shadedHere);
     setInt(d, "skyLightCount", skyHere);
-    setVec3(d, "cameraPos", eye);
+    setVec3(d, "cameraPos", view.eye);
     setLightUniforms(st, d);
-    setInt(d, "addIndirect", withIndirect ? 1 : 0);
-    setInt(d, "boxHeight", interleaved && s.blur ? st.patternY : 1);
+    setInt(d, "addIndirect", plan.shadesSubBuffers() ? 1 : 0);
+    setInt(d, "boxHeight", plan.interleaved && s.blur ? st.patternY : 1);
     setInt(d, "boxFlip", int(st.dealSeed & 1));
     {
         // The pinhole's rays for the background (SPEC.md section 1's camera).
@@ -483,42 +404,79 @@ Image Preview::render(float jitterX, float jitterY) {
         const V3d r = f.cross(st.camera.up).normalized(), u = r.cross(f);
         const double t = std::tan(radians(st.camera.fovYDeg) * 0.5);
         setVec3(d, "viewForward", toFloat(f));
-        setVec3(d, "viewRight", toFloat(r * (t * double(w) / double(h))));
+        setVec3(d, "viewRight", toFloat(r * (t * double(st.width) / double(st.height))));
         setVec3(d, "viewUp", toFloat(u * t));
-        glProgramUniform2f(d.id(), loc(d, "viewJitter"), jitterX, jitterY);
+        glProgramUniform2f(d.id(), loc(d, "viewJitter"), view.jitterX, view.jitterY);
     }
-    setInt(d, "showBackground", whiteReceivers_ ? 0 : 1);
-    setBackgroundUniforms(st, d, sunDiscShown_);
-    setInt(d, "throughPanes", throughPanes ? 1 : 0);
+    setInt(d, "showBackground", whiteReceivers ? 0 : 1);
+    setBackgroundUniforms(st, d, sunDiscShown);
+    setInt(d, "throughPanes", plan.throughPanes ? 1 : 0);
     glBindTextureUnit(4, st.viewTransmittance.id());
     glBindTextureUnit(0, st.g[0].id());
     glBindTextureUnit(1, st.g[1].id());
-    glBindTextureUnit(3, interleaved ? st.blurTemp.id() : st.indirect.id());
-    drawFullscreen(st.finalFbo.id(), w, h);
-    lap(tm.direct);
+    glBindTextureUnit(3, plan.interleaved ? st.blurTemp.id() : st.indirect.id());
+    drawFullscreen(st.finalFbo.id(), st.width, st.height);
+}
 
-    Image image = readBack(st.final.id(), w, h);
-    // The albedo layer from the G-buffer (diffuse and glossy surfaces; 0 on emitters, mirrors,
-    // glass and the background), so that illuminance can be read off the preview as off the
-    // converged image (render/display/display.h: E = pi L / albedo).
-    if (albedoLayer_) {
-        const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h);
-        std::vector<GLuint> g1(size_t(w) * size_t(h) * 4);
-        glGetTextureImage(st.g[1].id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, GLsizei(g1.size() * sizeof(GLuint)), g1.data());
-        for (int c = 0; c < 3; ++c) {
-            std::vector<float>& layer = image.channels[std::string("albedo.") + "RGB"[c]];
-            layer.resize(image.pixelCount());
-            // gbuffer.glsl: kind 1 (floor of g0.w), albedo r, g in g1.y and b in g1.z's low half.
-            for (size_t i = 0; i < layer.size(); ++i) {
-                const GLuint word = g1[i * 4 + (c < 2 ? 1 : 2)];
-                const GLuint bits = c == 1 ? word >> 16 : word & 0xffffu;
-                layer[i] = int(g0[i * 4 + 3]) == 1 ? float(bits) / 65535.0f : 0.0f;
-            }
+// The albedo of the surface under each pixel from the G-buffer, as channels albedo.R/G/B
+// (diffuse and glossy surfaces; 0 on emitters, mirrors, glass and the background), so that
+// illuminance can be read off the preview as off the converged image (render/display/display.h:
+// E = pi L / albedo).
+void readBackAlbedo(const Preview::State& st, Image& image) {
+    const int w = st.width, h = st.height;
+    const std::vector<float> g0 = readBackRgba(st.g[0].id(), w, h);
+    std::vector<GLuint> g1(size_t(w) * size_t(h) * 4);
+    glGetTextureImage(st.g[1].id(), 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, GLsizei(g1.size() * sizeof(GLuint)), g1.data());
+    for (int c = 0; c < 3; ++c) {
+        std::vector<float>& layer = image.channels[std::string("albedo.") + "RGB"[c]];
+        layer.resize(image.pixelCount());
+        // gbuffer.glsl: kind 1 (floor of g0.w), albedo r, g in g1.y and b in g1.z's low half.
+        for (size_t i = 0; i < layer.size(); ++i) {
+            const GLuint word = g1[i * 4 + (c < 2 ? 1 : 2)];
+            const GLuint bits = c == 1 ? word >> 16 : word & 0xffffu;
+            layer[i] = int(g0[i * 4 + 3]) == 1 ? float(bits) / 65535.0f : 0.0f;
         }
     }
+}
+
+}  // namespace
+
+Image Preview::render(float jitterX, float jitterY) {
+    State& st = *state_;
+    if (!st.scene) throw std::logic_error("preview: render() before setScene()");
+    EglContext::ScopedCurrent current(*context_);
+    PassClock clock;
+    PreviewTimings& tm = st.timings;
+    tm = PreviewTimings();
+    const PreviewSettings& s = settings_;
+    ensureTargets(st, st.width, st.height, s.patternX, s.patternY, s.split == SplitMode::TwoPass ? s.splitBlock : 1);
+    uploadVplsAndLights(st, s);
+    clock.lap(tm.shadows);
+
+    const FramePlan plan = planFrame(st, s, whiteReceivers_);
+    const FrameView view = frameView(st, jitterX, jitterY);
+    drawGBuffer(st, view, plan, whiteReceivers_);
+    clock.lap(tm.gbuffer);
+
+    if (plan.shadesSubBuffers()) {
+        if (plan.splitPass) runSplit(st, s.split == SplitMode::TwoPass, st.width, st.height, s.blur, view.eye);
+        clock.lap(tm.split);
+        shadeSubBuffers(st, s, plan, view.eye);
+        clock.lap(tm.shading);
+        // Gathered and blurred horizontally; without interleaving the shading pass wrote the
+        // image layout already, and there is no blur.
+        if (plan.interleaved) runGatherBlur(st, st.indirectSplit.id(), s.blur ? st.patternX : 1);
+        clock.lap(tm.gather);
+    }
+
+    drawDirect(st, s, plan, view, whiteReceivers_, sunDiscShown_);
+    clock.lap(tm.direct);
+
+    Image image = readBack(st.final.id(), st.width, st.height);
+    if (albedoLayer_) readBackAlbedo(st, image);
     gl::checkErrors("Preview::render");
-    lap(tm.readback);
-    tm.total = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    clock.lap(tm.readback);
+    tm.total = clock.total();
     image.attributes["lucerna:backend"] = "preview";
     return image;
 }

@@ -1,5 +1,6 @@
 #pragma once
-// Private to the preview's sources (preview.cpp: scene and VPLs; frame_passes.cpp: the passes):
+// Private to the preview's sources (preview.cpp: scene and VPLs; direct_lights.cpp and
+// interleaved_vpls.cpp: their upload; frame_passes.cpp: the passes):
 // the GL objects and CPU-side data behind Preview, and the GPU buffer layouts the shaders mirror.
 
 #include "core/daylight/daylight.h"
@@ -190,6 +191,9 @@ struct Preview::State {
 namespace preview_detail {
 // Direct lights (direct_lights.cpp): the light buffer's ranges above and their shadow maps.
 void uploadLights(Preview::State& st, const PreviewSettings& settings);
+// VPLs (interleaved_vpls.cpp): the sets dealt to the sub-buffers (tiles, vplBuffer,
+// tileVplBlocks) and their shadow maps.
+void uploadVpls(Preview::State& st, const PreviewSettings& settings);
 }  // namespace preview_detail
 
 }  // namespace lucerna

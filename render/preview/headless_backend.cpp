@@ -1,6 +1,7 @@
 #include "render/preview/headless_backend.h"
 
 #include "render/backend/backend_options.h"
+#include "render/preview/frame_accumulator.h"
 #include "render/trace/rng.h"
 
 #include <cstdio>
@@ -60,31 +61,20 @@ public:
         preview_->setSettings(previewSettings_);
         preview_->setScene(snapshot_, settings_.width, settings_.height);
         const Image probe = preview_->render();  // sizes the film and compiles everything up front
-        film_ = std::make_unique<Film>(probe.width, probe.height);
+        frames_.restart(probe.width, probe.height);
     }
 
     void renderPass(TaskContext& ctx, int pass) override {
         if (ctx.isCancelled()) return;
         const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
-        preview_->regenerate(passSeed);
-        Rng rng(passSeed, 0x717e7ULL);
-        const V2f jitter = rng.next2D();  // the box filter, one uniform point per pass
-        const Image frame = preview_->render(jitter.x, jitter.y);
-        const int half = pass % 2;
-        for (int y = 0; y < frame.height; ++y)
-            for (int x = 0; x < frame.width; ++x) {
-                Rgb L = frame.at(x, y);
-                if (!isFinite(L)) L = Rgb(0, 0, 0);
-                film_->addSample(half, x, y, L);
-            }
-        film_->finishPass(half);
+        frames_.add(drawJitteredFrame(*preview_, passSeed, uniformJitter(passSeed)), pass % 2);
         for (const auto& [name, ms] : {std::pair{"gbuffer", preview_->timings().gbuffer},
                                        {"shading", preview_->timings().shading}, {"total", preview_->timings().total}})
             lastTimings_[std::string("preview:ms_") + name] = std::to_string(ms);
     }
 
-    const Film& film() const override { return *film_; }
-    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(*film_); }
+    const Film& film() const override { return frames_.film(); }
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override { rewrite(frames_.film()); }
 
     std::map<std::string, std::string> diagnostics() const override {
         auto d = lastTimings_;
@@ -101,7 +91,7 @@ private:
     RenderSettings settings_;
     PreviewSettings previewSettings_;
     std::unique_ptr<Preview> preview_;
-    std::unique_ptr<Film> film_;
+    FrameAccumulator frames_;
     std::map<std::string, std::string> lastTimings_;
 };
 

@@ -1,7 +1,6 @@
 #include "render/preview/mir_vpl_source.h"
 
 #include "render/trace/camera.h"
-#include "render/vpl/mir_chain.h"
 #include "render/vpl/vpl_contribution.h"
 
 namespace lucerna {
@@ -9,15 +8,8 @@ namespace lucerna {
 VplSet generateMirVpls(const RenderScene& scene, const LightSampler& lights, const Camera& cameraDesc, int width,
                        int height, const MirVplSettings& settings, uint64_t seed) {
     if (lights.empty() || settings.pathVpls <= 0) return {};
-    MirChainSettings chain;
-    chain.tries = settings.tries;
-    chain.largeStepProbability = settings.largeStepProbability;
-    chain.startCandidates = settings.startCandidates;
-    chain.pcSamples = settings.pcSamples;
-    chain.importancePoints = settings.importancePoints;
-    chain.vpl.maxBounces = settings.maxBounces;
     const Sensor camera(PinholeCamera(cameraDesc, width, height));
-    MirChain mir(scene, lights, camera, chain, geometricClampBound(scene, settings.clampFraction), seed);
+    MirChain mir(scene, lights, camera, settings.chain, geometricClampBound(scene, settings.clampFraction), seed);
     return mir.sampleVpls(settings.pathVpls);
 }
 

@@ -15,19 +15,23 @@
 #include "core/scene/scene.h"
 #include "render/trace/light_sampler.h"
 #include "render/trace/render_scene.h"
+#include "render/vpl/mir_chain.h"
 #include "render/vpl/vpl.h"
 
 namespace lucerna {
 
 struct MirVplSettings {
     int pathVpls = 256;              // n: chain steps (the geometric VPLs are at most this many)
-    int tries = 4;                   // multiple-try trials per step
-    float largeStepProbability = 0.3f;
-    int startCandidates = 1024;
-    int pcSamples = 1024;            // extra uniform samples refining Pc
-    int importancePoints = 256;      // camera points a light path's importance is measured on
     float clampFraction = 0.05f;     // as PreviewSettings::clampDistance (0: no clamp)
-    int maxBounces = 8;
+    // The chain's settings (mir_chain.h), the preview's own values where they differ from its
+    // defaults; the preview sets chain.vpl.maxBounces to PreviewSettings::maxBounces.
+    MirChainSettings chain = [] {
+        MirChainSettings c;
+        c.tries = 4;
+        c.pcSamples = 1024;
+        c.importancePoints = 256;
+        return c;
+    }();
 };
 
 // A VPL set whose powers already carry the normalisation: rendered as is (sum of contributions),

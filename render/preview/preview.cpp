@@ -100,7 +100,7 @@ void Preview::update(SceneSnapshot scene, int width, int height) {
         if (!change.geometry && !change.materials && !change.lightSet && !change.daylight && !change.resolution &&
             w == st.width && h == st.height) {
             if (change.camera) setCamera(scene->camera);
-            for (size_t i : change.lights) setLight(i, scene->lights[i]);
+            for (size_t i : change.lights) editLight(i, scene->lights[i], change.emissionOnly);
             current_ = std::move(scene);
             return;
         }
@@ -222,17 +222,13 @@ void Preview::setCamera(const Camera& camera) {
 
 namespace {
 
-// new.intensity / old.intensity per channel when the two lights differ in nothing else (a
-// channel dark in both: 1); nothing when they do, or when a dark channel lights up.
-std::optional<Rgb> powerRatio(const DeltaLight& old, const DeltaLight& now) {
-    if (old.type != now.type || old.position != now.position || old.direction != now.direction ||
-        old.cosCone != now.cosCone || old.cosFalloffStart != now.cosFalloffStart || old.c0 != now.c0 ||
-        old.c90 != now.c90 || old.goniometric != now.goniometric)
-        return std::nullopt;
+// now / before per channel, for a light whose emission alone changed (a channel dark in both: 1);
+// nothing when a dark channel lights up (its VPLs carry none of that channel to scale).
+std::optional<Rgb> emissionRatio(const Rgb& before, const Rgb& now) {
     Rgb ratio(1, 1, 1);
     for (int c = 0; c < 3; ++c) {
-        if (old.intensity[c] > 0) ratio[c] = now.intensity[c] / old.intensity[c];
-        else if (now.intensity[c] != 0) return std::nullopt;
+        if (before[c] > 0) ratio[c] = now[c] / before[c];
+        else if (now[c] != 0) return std::nullopt;
     }
     return ratio;
 }
@@ -347,8 +343,16 @@ void Preview::regenerate(uint64_t seed) {
 }
 
 void Preview::setLight(size_t index, const Light& light) {
+    if (index >= state_->deltas.size()) throw std::out_of_range("preview: no light " + std::to_string(index));
+    auto edited = std::make_shared<Scene>(*current_);
+    edited->lights[index] = light;
+    const bool emissionOnly = diff(*current_, *edited).emissionOnly;
+    current_ = std::move(edited);
+    editLight(index, light, emissionOnly);
+}
+
+void Preview::editLight(size_t index, const Light& light, bool emissionOnly) {
     State& st = *state_;
-    if (index >= st.deltas.size()) throw std::out_of_range("preview: no light " + std::to_string(index));
     const DeltaLight previous = st.deltas[index];
     st.deltas[index] = previewDeltaLight(light);
     st.lightsDirty = true;
@@ -372,10 +376,12 @@ void Preview::setLight(size_t index, const Light& light) {
         regenerate(st.seed);  // one set serves every light
         return;
     }
-    // Only its power changed (dimmed, recoloured): its VPLs' power is linear in the light's,
+    // Only its emission changed (dimmed, recoloured): its VPLs' power is linear in the light's,
     // channel by channel, so they are scaled (still an unbiased set), keep their places and
     // need no shadow map drawn again.
-    if (const std::optional<Rgb> ratio = powerRatio(previous, st.deltas[index])) {
+    const std::optional<Rgb> ratio =
+        emissionOnly ? emissionRatio(previous.intensity, st.deltas[index].intensity) : std::nullopt;
+    if (ratio) {
         for (LightVpls& set : st.sets)
             if (set.lightIndex == int(index))
                 for (Vpl& v : set.vpls) v.power *= *ratio;
@@ -410,7 +416,7 @@ void Preview::regenerateMir() {
     MirVplSettings mir;
     mir.pathVpls = settings_.indirect ? settings_.vplCount : 0;
     mir.clampFraction = settings_.clampDistance;
-    mir.maxBounces = settings_.maxBounces;
+    mir.chain.vpl.maxBounces = settings_.maxBounces;
     LightVpls set;
     set.lightIndex = -3;
     set.vpls = generateMirVpls(*st.scene, all, st.camera, st.width, st.height, mir, hashSeed(st.seed, 0x4d4952ULL));

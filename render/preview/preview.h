@@ -130,14 +130,16 @@ public:
     // width/height override the camera's resolution (0: keep).
     void setScene(SceneSnapshot scene, int width = 0, int height = 0);
     // Takes the newest version of the scene and redraws only what changed since the one before
-    // (core/scene/scene_change.h): the camera, the lights that differ (a light whose power alone
-    // changed keeps its VPLs, scaled), or everything (setScene) when geometry, materials, the
-    // number of lights or the size changed. width/height as for setScene.
+    // (core/scene/scene_change.h): the camera, the lights that differ (as setLight; when the
+    // scenes differ in emission alone, those lights keep their VPLs, scaled), or everything
+    // (setScene) when geometry, materials, the number of lights, the site or sky, or the size
+    // changed. width/height as for setScene.
     void update(SceneSnapshot scene, int width = 0, int height = 0);
     // A camera move: no VPL is regenerated (MIR's camera-dependent VPLs follow at regenerate()).
     void setCamera(const Camera& camera);
     // Light `index` of the scene changed (same type of edit as the GUI's): only its VPLs and its
-    // shadow map are regenerated.
+    // shadow map are regenerated; when its emission alone changed (core/scene/scene_change.h),
+    // its VPLs are kept, scaled. Throws std::out_of_range for no such light.
     void setLight(size_t index, const Light& light);
     // New VPL sets and area-light samples for every light from this seed (progressive passes).
     void regenerate(uint64_t seed);
@@ -169,7 +171,7 @@ public:
     // With white receivers on, render() gives what white Lambertian surfaces (albedo 1) in place
     // of every diffuse and glossy one would reflect under the same direct light and VPLs: E / pi,
     // the irradiance over pi (0 on emitters, mirrors, glass and the background). The VPLs keep
-    // the scene's own materials. For the illuminance layer (previewIlluminanceLayer).
+    // the scene's own materials. For the illuminance layer (preview_illuminance.h).
     void setWhiteReceivers(bool on) { whiteReceivers_ = on; }
     // Whether pixels that see no surface show the sun's disc (on by default). Hemicubes of small
     // faces (hemicube_irradiance.h) would catch a disc a fraction of a pixel wide only now and
@@ -205,20 +207,16 @@ public:
 
 private:
     void regenerateMir();
+    // setLight's work, with what the scene diff says of the edit.
+    void editLight(size_t index, const Light& light, bool emissionOnly);
 
     std::unique_ptr<EglContext> context_;
     std::unique_ptr<State> state_;
-    SceneSnapshot current_;  // the scene as of the last setScene() or update()
+    SceneSnapshot current_;  // the scene as of the last setScene(), update() or setLight()
     PreviewSettings settings_;
     bool albedoLayer_ = false;
     bool whiteReceivers_ = false;
     bool sunDiscShown_ = true;
 };
-
-// The illuminance layer (lux, render/photometry/illuminance_layer.h) as the preview sees it: the
-// mean of `frames` white-receiver frames, each with fresh VPLs and a uniform point of every
-// pixel (the box filter), times 683 pi Y. At the scene's camera or width x height.
-std::vector<float> previewIlluminanceLayer(SceneSnapshot scene, int width, int height,
-                                           const PreviewSettings& settings, int frames, uint64_t seed);
 
 }  // namespace lucerna

@@ -15,6 +15,7 @@
 //   VPLs than the GPU's shadow cubes render within 5% of the path tracer's mean, the last saying
 //   what it gave up; the clustered shadow proxy meets its budget and stays near the surface;
 // - accumulated frames converge: relmse against the Cornell reference falls from 1 to 16 frames;
+//   the accumulator averages every channel and drops what is not finite;
 // - a new deal keeps the VPLs and draws no shadow map, and averaged deals approach the
 //   non-interleaved frame of the same VPLs;
 // - a camera move regenerates no VPL, a light edit only that light's;
@@ -27,6 +28,7 @@
 #include "render_helpers.h"
 
 #include "core/image/exr_io.h"
+#include "render/preview/frame_accumulator.h"
 #include "render/preview/preview.h"
 #include "render/preview/shadow_proxy.h"
 #include "render/trace/render_scene.h"
@@ -61,16 +63,12 @@ double relmse(const Image& t, const Image& r) {
 // The mean of `frames` preview frames, each with fresh VPLs and a jittered pixel position, as the
 // preview backend's passes do.
 Image averagedFrames(Preview& preview, int frames) {
-    Image sum;
+    FrameAccumulator sum;
     for (int f = 0; f < frames; ++f) {
-        preview.regenerate(uint64_t(1000 + f));
-        const float jx = (f % 4 + 0.5f) / 4.0f, jy = ((f / 4) % 4 + 0.5f) / 4.0f;
-        const Image img = preview.render(jx, jy);
-        if (f == 0) sum = Image(img.width, img.height);
-        for (size_t i = 0; i < img.pixels.size(); ++i) sum.pixels[i] += img.pixels[i];
+        const V2f jitter((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f);
+        sum.add(drawJitteredFrame(preview, uint64_t(1000 + f), jitter));
     }
-    for (Rgb& p : sum.pixels) p /= float(frames);
-    return sum;
+    return sum.mean();
 }
 
 // A glossy floor seen from above, nothing else: what a hand-made VPL set lights is exactly what
@@ -115,6 +113,7 @@ private slots:
     void manyLightsEmittersAndVpls();
     void shadowProxyMeetsBudget();
     void accumulatedFramesConverge();
+    void frameAccumulatorAverages();
     void redealKeepsVplsAndShadowMaps();
 };
 
@@ -484,6 +483,33 @@ void TestPreview::accumulatedFramesConverge() {
     const double one = relmse(averagedFrames(preview, 1), half), sixteen = relmse(averagedFrames(preview, 16), half);
     qInfo("Cornell box relmse: 1 frame %.5f, 16 frames %.5f", one, sixteen);
     QVERIFY2(sixteen < 0.7 * one, qPrintable(QString("%1 -> %2").arg(one).arg(sixteen)));
+}
+
+// The frame accumulator's mean: every channel averaged, a pixel or channel value that is not
+// finite adding nothing, the first frame's channels alone, a frame of another size starting the
+// sum over; the live preview's sequence of points starts at the pixel centre.
+void TestPreview::frameAccumulatorAverages() {
+    Image a(2, 1), b(2, 1);
+    a.pixels = {Rgb(1, 2, 3), Rgb(4, 4, 4)};
+    b.pixels = {Rgb(3, 2, 1), Rgb(std::nanf(""), 0, 0)};
+    a.channels["albedo.R"] = {0.5f, 1.0f};
+    b.channels["albedo.R"] = {0.25f, std::numeric_limits<float>::infinity()};
+    b.channels["extra"] = {1.0f, 1.0f};
+    FrameAccumulator sum;
+    sum.add(a);
+    sum.add(b);
+    QCOMPARE(sum.count(), 2);
+    QCOMPARE(sum.film().samplesPerPixel(), 2.0);
+    QVERIFY(!std::isnan(sum.film().estimatedRelmse()));  // a frame in each half
+    const Image mean = sum.mean();
+    QCOMPARE(mean.pixels[0], Rgb(2, 2, 2));
+    QCOMPARE(mean.pixels[1], Rgb(2, 2, 2));
+    QCOMPARE(mean.channels.at("albedo.R"), (std::vector<float>{0.375f, 0.5f}));
+    QVERIFY(!mean.channels.contains("extra"));
+    sum.add(Image(3, 1));
+    QCOMPARE(sum.count(), 1);
+    QCOMPARE(sum.mean().width, 3);
+    QCOMPARE(sequenceJitter(0), V2f(0.5f, 0.5f));
 }
 
 void TestPreview::editsRegenerateOnlyWhatChanged() {

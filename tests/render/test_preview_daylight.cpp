@@ -18,6 +18,7 @@
 #include "core/daylight/daylight.h"
 #include "core/daylight/sky_model.h"
 #include "render/preview/daylight_samples.h"
+#include "render/preview/frame_accumulator.h"
 #include "render/preview/preview.h"
 
 #include <QtTest>
@@ -105,16 +106,12 @@ V3d floorPoint(const Camera& cam, int i, int j, double jx = 0.5, double jy = 0.5
 // over six seeds, stays under 1.7% (24 frames: 2.4%); the mean over the floor under 1.3%.
 constexpr int kBoxFrames = 32;
 Image averagedFrames(Preview& preview, int frames) {
-    Image sum;
+    FrameAccumulator sum;
     for (int f = 0; f < frames; ++f) {
-        preview.regenerate(uint64_t(2000 + f));
-        const float jx = (f % 4 + 0.5f) / 4.0f, jy = ((f / 4) % 4 + 0.5f) / 4.0f;
-        const Image img = preview.render(jx, jy);
-        if (f == 0) sum = Image(img.width, img.height);
-        for (size_t i = 0; i < img.pixels.size(); ++i) sum.pixels[i] += img.pixels[i];
+        const V2f jitter((f % 4 + 0.5f) / 4.0f, ((f / 4) % 4 + 0.5f) / 4.0f);
+        sum.add(drawJitteredFrame(preview, uint64_t(2000 + f), jitter));
     }
-    for (Rgb& p : sum.pixels) p /= float(frames);
-    return sum;
+    return sum.mean();
 }
 
 // Floor radiance of the box against albedo E / pi, E from Lambert's formula times `tau`: the

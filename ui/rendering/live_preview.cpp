@@ -2,6 +2,7 @@
 
 #include "core/resources.h"
 #include "render/engine/backend_table.h"
+#include "render/preview/frame_accumulator.h"
 #include "render/preview/preview.h"
 #include "render/trace/rng.h"
 
@@ -55,53 +56,6 @@ Image pathFrame(const SceneSnapshot& scene, int w, int h, TaskContext& ctx) {
     return backend->film().image();
 }
 
-// Frame k's point in the pixel: the R2 sequence (Roberts 2018), low-discrepancy at any length,
-// so a mean stopped early is still evenly spread; offset so that frame 0 is the pixel centre,
-// where the plain frame answering an edit samples.
-V2f jitter(int k) {
-    constexpr double g = 1.32471795724474602596;  // the plastic number
-    const auto frac = [](double x) { return x - std::floor(x); };
-    return V2f(float(frac(0.5 + k / g)), float(frac(0.5 + k / (g * g))));
-}
-
-// A sample that is not finite leaves the mean where it is instead of poisoning the pixel for
-// good.
-float finiteOr(float value, float mean) { return std::isfinite(value) ? value : mean; }
-
-// The running sum of frames of one scene, every channel (the albedo layer too, so that the lux
-// view's L / albedo stays consistent at jittered edges).
-class Accumulator {
-public:
-    void restart(const Image& first) {
-        sum_ = first;
-        count_ = 1;
-    }
-    void add(const Image& frame) {
-        if (frame.pixels.size() != sum_.pixels.size()) return restart(frame);
-        const float n = float(count_);
-        for (size_t i = 0; i < sum_.pixels.size(); ++i)
-            for (int c = 0; c < 3; ++c) sum_.pixels[i][c] += finiteOr(frame.pixels[i][c], sum_.pixels[i][c] / n);
-        for (auto& [name, sum] : sum_.channels) {
-            const auto it = frame.channels.find(name);
-            if (it == frame.channels.end() || it->second.size() != sum.size()) continue;
-            for (size_t i = 0; i < sum.size(); ++i) sum[i] += finiteOr(it->second[i], sum[i] / n);
-        }
-        ++count_;
-    }
-    int count() const { return count_; }
-    Image mean() const {
-        Image m = sum_;
-        const float s = 1.0f / float(count_);
-        for (Rgb& p : m.pixels) p *= s;
-        for (auto& [name, data] : m.channels)
-            for (float& v : data) v *= s;
-        return m;
-    }
-
-private:
-    Image sum_;
-    int count_ = 0;
-};
 }  // namespace
 
 QString previewStatusText(const QString& engine, const LiveFrame& frame) {
@@ -205,7 +159,8 @@ private:
         const double ms = millisecondsSince(t0);
         lastAnswerMs_ = ms;
         current_ = request;
-        sum_.restart(image);
+        sum_.restart(image.width, image.height);
+        sum_.add(image);
         totalMilliseconds_ = ms;
         // The path tracer is not accumulated: the converging render beside it is the same
         // estimator, converging already.
@@ -229,11 +184,8 @@ private:
                            framesSinceFresh_ + 1 >= std::clamp(int(std::lround(freshMs_ / std::max(dealMs_, 1.0))), 1, 8);
         Image image;
         try {
-            const uint64_t seed = hashSeed(0x11fe9ULL, ++regenerations_);
-            if (fresh) gl_->regenerate(seed);
-            else gl_->redeal(seed);
-            const V2f j = jitter(sum_.count());
-            image = gl_->render(j.x, j.y);
+            image = drawJitteredFrame(*gl_, hashSeed(0x11fe9ULL, ++regenerations_), sequenceJitter(sum_.count()),
+                                      fresh ? FrameRenewal::FreshSet : FrameRenewal::NewDeal);
         } catch (const std::exception& e) {
             return fail(e.what(), current_.serial);
         }
@@ -328,7 +280,7 @@ private:
 
     Request current_;  // the request the frames shown are of
     bool accumulating_ = false;
-    Accumulator sum_;
+    FrameAccumulator sum_;  // the frames shown, of current_'s scene
     double totalMilliseconds_ = 0;
     Clock::time_point settledAt_;
 };
