@@ -14,9 +14,11 @@
 // and `vn` (checked, and counted for relative indices); `f` with v, v/vt, v//vn or v/vt/vn
 // corners, whose indices count from 1, or from the end (-1 is the last one read so far); a
 // positive index may name an element further down the file (OpenMesh read every vertex first).
-// `mtllib` names are kept for the caller; `g`, `o`, `s`, `usemtl` and the other statements carry
-// nothing for positions and are skipped. '#' starts a comment; a line that ends in '\' (outside a
-// comment) goes on on the next line.
+// `l` and `p` (line and point elements) add no triangles, but their indices are checked as a
+// face's are. `mtllib` names are kept for the caller; `g`, `o`, `s`, `usemtl` and the other
+// statements carry nothing for positions and are skipped. '#' starts a comment; a line that ends
+// in '\' (outside a comment) goes on on the next line. In these two the format is followed where
+// OpenMesh was not: it read a face line on past a '#', and joined no lines.
 
 #include "core/scene/scene.h"
 
