@@ -23,7 +23,7 @@ set(CPACK_STRIP_FILES ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)  # lucerna_<version>_<arch>.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION "graphics")
 set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.invalid/lucerna")
-# The runtime libraries (Qt 6, Embree, oneTBB, OpenEXR, OpenMesh, EGL) from the executable's
+# The runtime libraries (Qt 6, Embree, oneTBB, OpenEXR, Assimp, EGL) from the executable's
 # ELF dependencies, so that `apt install ./lucerna_*.deb` pulls exactly what it links.
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Qt loads its platform plugin (xcb) at run time, which shlibdeps cannot see; the software

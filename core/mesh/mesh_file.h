@@ -1,7 +1,8 @@
 #pragma once
 // OBJ, PLY, OFF and STL files: positions and faces only (SPEC.md ignores normals, UVs, colours
-// and materials); polygons fan-triangulated from their first vertex in file order. OBJ and STL
-// through OpenMesh, PLY and OFF by mesh_file_formats.h (OpenMesh's readers trust their counts).
+// and materials); polygons fan-triangulated from their first vertex in file order. Each format is
+// read by Lucerna itself: PLY and OFF by mesh_file_formats.h, OBJ by obj_file.h, STL by
+// stl_file.h (each says why no library reads it).
 
 #include "core/scene/scene.h"
 
@@ -9,8 +10,8 @@
 
 namespace lucerna {
 
-// Throws std::runtime_error with a one-line reason if the file is missing, unreadable or not a
-// mesh OpenMesh understands.
+// Throws std::runtime_error with a one-line reason (the path first) if the file is missing,
+// unreadable, not a regular file, not a valid mesh of its format, or has no faces.
 TriangleMesh readMeshFile(const std::string& absolutePath);
 
 // Writes `mesh` as a binary little-endian PLY file (double vertices, int triangles) that

@@ -1,7 +1,7 @@
 #include "core/mesh/mesh_file_formats.h"
 
+#include "core/mesh/text_words.h"
 #include "core/message_text.h"
-#include "core/regular_file.h"
 
 #include <bit>
 #include <cfloat>
@@ -10,19 +10,13 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
-#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string_view>
 
 namespace lucerna {
 
-namespace {
-
-[[noreturn]] void refuse(const std::string& why) { throw std::runtime_error(why); }
-
-// A coordinate as OpenMesh's readers hold it (single precision), or why it cannot be one.
-std::optional<float> coordinate(std::string_view word, std::string* problem) {
+std::optional<float> parseCoordinate(std::string_view word, std::string* problem) {
     std::string_view digits = word;
     if (digits.starts_with('+')) digits.remove_prefix(1);  // istream accepts it, from_chars not
     const char* end = digits.data() + digits.size();
@@ -43,13 +37,7 @@ std::optional<float> coordinate(std::string_view word, std::string* problem) {
     return std::nullopt;
 }
 
-std::string formatValue(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", v);
-    return buf;
-}
-
-std::optional<long long> integer(std::string_view word) {
+std::optional<long long> parseInteger(std::string_view word) {
     if (word.starts_with('+')) word.remove_prefix(1);
     long long v = 0;
     const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
@@ -57,46 +45,15 @@ std::optional<long long> integer(std::string_view word) {
     return v;
 }
 
-// Whitespace-separated words of a text from `from`, each with its line number.
-class Words {
-public:
-    Words(std::string_view text, size_t from, bool hashComments) : text_(text), at_(from), comments_(hashComments) {
-        for (size_t i = 0; i < from && i < text.size(); ++i) line_ += text[i] == '\n';
-    }
+namespace {
 
-    // The next word, or nothing at the end of the text.
-    std::optional<std::string_view> next() {
-        for (;;) {
-            while (at_ < text_.size() && isBlank(text_[at_])) line_ += text_[at_++] == '\n';
-            if (comments_ && at_ < text_.size() && text_[at_] == '#') {
-                skipLine();
-                continue;
-            }
-            break;
-        }
-        if (at_ >= text_.size()) return std::nullopt;
-        wordLine_ = line_;
-        const size_t start = at_;
-        while (at_ < text_.size() && !isBlank(text_[at_]) && !(comments_ && text_[at_] == '#')) ++at_;
-        return text_.substr(start, at_ - start);
-    }
-    // Past the end of the current line.
-    void skipLine() {
-        while (at_ < text_.size() && text_[at_] != '\n') ++at_;
-        if (at_ < text_.size()) {
-            ++at_;
-            ++line_;
-        }
-    }
-    int line() const { return wordLine_; }  // of the last word returned
+[[noreturn]] void refuse(const std::string& why) { throw std::runtime_error(why); }
 
-private:
-    static bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f' || c == '\v'; }
-    std::string_view text_;
-    size_t at_;
-    bool comments_;
-    int line_ = 1, wordLine_ = 1;
-};
+std::string formatValue(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
 
 // The triangles of the recorded polygons (fans from each first vertex), after every index has
 // been checked against the vertices.
@@ -209,10 +166,10 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
     std::string format;
     std::vector<PlyElement> elements;
     {
-        Words header(std::string_view(bytes).substr(0, endHeader + 1), 0, false);
+        TextWords header(std::string_view(bytes).substr(0, endHeader + 1), 0, false);
         header.next();  // "ply"
         std::vector<std::string_view> line;
-        int current = header.line();
+        long long current = header.line();
         const auto take = [&] {
             if (line.empty()) return;
             const auto word = [&](size_t i) { return i < line.size() ? std::string(line[i]) : std::string(); };
@@ -222,7 +179,7 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
                 PlyElement e;
                 e.name = word(1);
                 // Every record takes at least a byte (or a word): no count beyond the file's size.
-                const std::optional<long long> count = integer(line.size() > 2 ? line[2] : "");
+                const std::optional<long long> count = parseInteger(line.size() > 2 ? line[2] : "");
                 if (!count || *count < 0 || (unsigned long long)*count > bytes.size())
                     refuse("the PLY header's count of " + printableWord(e.name) + " is not a count the file can hold");
                 e.count = (unsigned long long)*count;
@@ -259,7 +216,7 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
 
     TriangleMesh mesh;
     std::vector<long long> polygon;
-    Words words(bytes, body, false);
+    TextWords words(bytes, body, false);
     PlyBytes binary(bytes, body, format == "binary_big_endian");
     const auto cutShort = [&](const PlyElement& e, unsigned long long i) {
         refuse("the file ends inside " + e.name + " " + std::to_string(i) + " of " + std::to_string(e.count) +
@@ -280,11 +237,11 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
         if (used) {
             if (isFloat(t)) {
                 std::string problem;
-                const std::optional<float> f = coordinate(*w, &problem);
+                const std::optional<float> f = parseCoordinate(*w, &problem);
                 if (!f) refuse("line " + std::to_string(words.line()) + ": " + problem);
                 *out = *f;
             } else {
-                const std::optional<long long> i = integer(*w);
+                const std::optional<long long> i = parseInteger(*w);
                 if (!i) refuse("line " + std::to_string(words.line()) + ": \"" + printableWord(*w) + "\" is not an integer");
                 *out = double(*i);
             }
@@ -341,11 +298,11 @@ TriangleMesh readPlyBytes(const std::string& bytes) {
 }
 
 TriangleMesh readOffBytes(const std::string& bytes) {
-    Words words(bytes, 0, true);
+    TextWords words(bytes, 0, true);
     const std::optional<std::string_view> keyword = words.next();
     if (!keyword) refuse("not an OFF file (no OFF keyword)");
     std::string_view k = *keyword;
-    const int keywordLine = words.line();
+    const long long keywordLine = words.line();
     bool colours = false, normals = false, texcoords = false;
     const auto prefix = [&](std::string_view letters) {
         if (!k.starts_with(letters)) return false;
@@ -360,7 +317,7 @@ TriangleMesh readOffBytes(const std::string& bytes) {
 
     TriangleMesh mesh;
     std::vector<long long> polygon;
-    Words probe = words;
+    TextWords probe = words;
     const std::optional<std::string_view> second = probe.next();
     if (second && *second == "BINARY" && probe.line() == keywordLine) {
         // OpenMesh's binary OFF: after the keyword line, little-endian int32 counts, then per
@@ -404,7 +361,7 @@ TriangleMesh readOffBytes(const std::string& bytes) {
     const auto count = [&](const char* what) {
         const std::optional<std::string_view> w = words.next();
         if (!w) refuse(std::string("the file ends before the ") + what);
-        const std::optional<long long> n = integer(*w);
+        const std::optional<long long> n = parseInteger(*w);
         if (!n || *n < 0)
             refuse("line " + std::to_string(words.line()) + ": the " + what + " \"" + printableWord(*w) + "\" is not a count");
         return *n;
@@ -421,7 +378,7 @@ TriangleMesh readOffBytes(const std::string& bytes) {
                 refuse("the file ends inside vertex " + std::to_string(i) + " of " + std::to_string(nV) +
                        " (it is cut short, or the vertex count is wrong)");
             std::string problem;
-            const std::optional<float> v = coordinate(*w, &problem);
+            const std::optional<float> v = parseCoordinate(*w, &problem);
             if (!v) refuse("line " + std::to_string(words.line()) + ": vertex " + std::to_string(i) + ": " + problem);
             c = *v;
         }
@@ -433,8 +390,8 @@ TriangleMesh readOffBytes(const std::string& bytes) {
         if (!w)
             refuse("the file ends before face " + std::to_string(f) + " of " + std::to_string(nF) +
                    " (it is cut short, or the face count is wrong)");
-        const int line = words.line();
-        const std::optional<long long> n = integer(*w);
+        const long long line = words.line();
+        const std::optional<long long> n = parseInteger(*w);
         if (!n || *n < 0)
             refuse("line " + std::to_string(line) + ": face " + std::to_string(f) + ": \"" + printableWord(*w) +
                    "\" is not a vertex count");
@@ -445,7 +402,7 @@ TriangleMesh readOffBytes(const std::string& bytes) {
             if (!index)
                 refuse("line " + std::to_string(line) + ": face " + std::to_string(f) + " claims " + std::to_string(*n) +
                        " vertices, the file ends after " + std::to_string(j));
-            const std::optional<long long> i = integer(*index);
+            const std::optional<long long> i = parseInteger(*index);
             if (!i)
                 refuse("line " + std::to_string(words.line()) + ": face " + std::to_string(f) + ": \"" +
                        printableWord(*index) + "\" is not a vertex index");
@@ -456,48 +413,6 @@ TriangleMesh readOffBytes(const std::string& bytes) {
     }
     checkIndices(mesh);
     return mesh;
-}
-
-std::string objProblem(const std::string& bytes, const std::string& folder) {
-    size_t start = 0;
-    for (int line = 1; start < bytes.size(); ++line) {
-        size_t end = bytes.find('\n', start);
-        if (end == std::string::npos) end = bytes.size();
-        Words words(std::string_view(bytes).substr(start, end - start), 0, true);
-        start = end + 1;
-        const std::optional<std::string_view> keyword = words.next();
-        if (!keyword) continue;
-        const std::string at = "line " + std::to_string(line) + ": ";
-        if (*keyword == "v") {
-            for (int i = 0; i < 3; ++i) {
-                const std::optional<std::string_view> w = words.next();
-                if (!w) return at + "the vertex has fewer than three coordinates";
-                std::string problem;
-                if (!coordinate(*w, &problem)) return at + "vertex coordinate " + problem;
-            }
-        } else if (*keyword == "f") {
-            // Each corner is v, v/vt, v//vn or v/vt/vn; a corner without its vertex index trips
-            // an assertion in OpenMesh's reader (the process aborts).
-            for (auto w = words.next(); w; w = words.next()) {
-                const std::string_view v = w->substr(0, w->find('/'));
-                if (!integer(v)) return at + "face corner \"" + printableWord(*w) + "\" has no vertex index";
-                for (std::string_view rest = w->substr(v.size()); !rest.empty();) {
-                    rest.remove_prefix(1);  // the '/'
-                    const std::string_view part = rest.substr(0, rest.find('/'));
-                    if (!part.empty() && !integer(part)) return at + "face corner \"" + printableWord(*w) + "\" is malformed";
-                    rest.remove_prefix(part.size());
-                }
-            }
-        } else if (*keyword == "mtllib") {
-            // OpenMesh reads each named library; the rest of the line is file names.
-            for (auto w = words.next(); w; w = words.next()) {
-                const std::filesystem::path lib = std::filesystem::path(folder) / std::string(*w);
-                if (const std::string kind = nonRegularFileKind(lib.string()); !kind.empty())
-                    return at + "the material library " + printableWord(*w) + " is " + kind + ", not a regular file";
-            }
-        }
-    }
-    return {};
 }
 
 }  // namespace lucerna

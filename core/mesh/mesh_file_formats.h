@@ -2,9 +2,9 @@
 // The parts of mesh reading that cannot be left to OpenMesh, whose readers trust what a file
 // claims: a face line "3000000000 0 1 2" makes its OFF reader push three billion vertex handles,
 // a binary PLY list count of 2^31-1 (or -1) makes its PLY reader do the same, and a face cut
-// short is padded with index 0. So PLY and OFF files are read here, each value checked against
-// the bytes that are really there (work and memory grow with the file, not with its claims), and
-// OBJ files are checked here before OpenMesh reads them.
+// short is padded with index 0. So PLY and OFF files are read here (OBJ files by obj_file.h),
+// each value checked against the bytes that are really there (work and memory grow with the
+// file, not with its claims).
 //
 // Values are what OpenMesh made of them, so that meshes and renders stay the same: positions go
 // through single precision (a PLY file's doubles too), every polygon of three or more vertices
@@ -15,7 +15,9 @@
 
 #include "core/scene/scene.h"
 
+#include <optional>
 #include <string>
+#include <string_view>
 
 namespace lucerna {
 
@@ -27,10 +29,12 @@ TriangleMesh readPlyBytes(const std::string& bytes);
 // form ("OFF BINARY", little-endian 32-bit counts, floats and indices).
 TriangleMesh readOffBytes(const std::string& bytes);
 
-// Problems with an OBJ file that OpenMesh would hide: a vertex line whose coordinates are not
-// numbers, not finite or beyond single precision (OpenMesh drops the vertex, and the faces then
-// refer to vertices that do not exist), and a material library (mtllib, resolved against
-// `folder`) that is not a regular file (OpenMesh would read it forever). Empty when none.
-std::string objProblem(const std::string& bytes, const std::string& folder);
+// A coordinate word of a text mesh file as OpenMesh's readers held it (single precision), or
+// nothing, with why in `problem`: not a number, not finite, beyond single-precision range. A
+// leading '+' is allowed (istream took it).
+std::optional<float> parseCoordinate(std::string_view word, std::string* problem);
+
+// An integer word (a leading '+' allowed), or nothing when it is not one or beyond 64 bits.
+std::optional<long long> parseInteger(std::string_view word);
 
 }  // namespace lucerna

@@ -227,6 +227,8 @@ private slots:
     void meshCountsBeyondTheFile();
     void objLinesGiveTheTrueReason_data();
     void objLinesGiveTheTrueReason();
+    void objCornerThatIsAComment();
+    void stlFanReadsInTime();
     void importRefusesOrWritesALoadableScene_data();
     void importRefusesOrWritesALoadableScene();
     void importToAFolderLeavesNothing();
@@ -297,7 +299,7 @@ void TestHostileFiles::objLinesGiveTheTrueReason_data() {
     QTest::newRow("1e39") << QByteArray("v 1e39 0 0") << "1e39 lies beyond single-precision range";
     QTest::newRow("letters") << QByteArray("v a b c") << "\"a\" is not a number";
     QTest::newRow("two coordinates") << QByteArray("v 1 2") << "fewer than three coordinates";
-    // Found by fuzz_mesh: a corner without its vertex index aborts OpenMesh on an assertion.
+    // Found by fuzz_mesh: a corner without its vertex index aborted OpenMesh on an assertion.
     QTest::newRow("corner without index") << QByteArray("f /1/1 2/2/1 3/3/1") << "face corner \"/1/1\" has no vertex index";
 }
 
@@ -312,13 +314,48 @@ void TestHostileFiles::objLinesGiveTheTrueReason() {
     QVERIFY2(r.err.contains(expected.toUtf8()) && !r.err.contains("does not exist"), r.err.constData());
 }
 
+void TestHostileFiles::objCornerThatIsAComment() {
+    // Six bytes that passed the old OBJ check and aborted the process (exit 134) on an assertion
+    // in OpenMesh's reader: in info, render and import alike (issue 41).
+    QTemporaryDir dir;
+    writeFile(dir.filePath("m.obj"), "f # /5");
+    writeFile(dir.filePath("scene.json"), meshScene("m.obj"));
+    const char* const expected = "m.obj: line 1: the face has 0 corners before the comment \"# /5\", a face needs three or more";
+    VERIFY_REFUSED(QStringList({"info", "scene.json"}), dir.path(), expected);
+    VERIFY_REFUSED(QStringList({"render", "scene.json", "-o", "o.exr"}), dir.path(), expected);
+    VERIFY_REFUSED(QStringList({"import", "m.obj", "-o", "o.json"}), dir.path(), expected);
+    QCOMPARE(leftovers(dir.path(), {"m.obj", "scene.json"}), QStringList());
+}
+
+void TestHostileFiles::stlFanReadsInTime() {
+    // 40000 triangles around one vertex, 2 MB: OpenMesh's reader took 21 s (quadratic).
+    QByteArray stl(80, ' ');
+    stl += le32(40000);
+    for (int i = 0; i < 40000; ++i) {
+        for (float v : {0.f, 0.f, 1.f, 0.f, 0.f, 0.f, float(i + 1), 0.f, 0.f, float(i + 1), 1.f, 0.f}) stl += lef(v);
+        stl += QByteArray(2, '\0');
+    }
+    QTemporaryDir dir;
+    writeFile(dir.filePath("fan.stl"), stl);
+    writeFile(dir.filePath("scene.json"), meshScene("fan.stl"));
+    const Run r = runLucerna({"info", "scene.json"}, dir.path());
+    QVERIFY2(r.exitCode == 0 && r.cpuSeconds < 2.0, qPrintable(describe({"info", "scene.json"}, r)));
+}
+
 void TestHostileFiles::importRefusesOrWritesALoadableScene_data() {
     QTest::addColumn<QString>("model");
     QTest::addColumn<QByteArray>("bytes");
     QTest::addColumn<QString>("refusal");  // empty: the import must succeed
     const QByteArray tail = "v 1 0 0\nv 0 1 0\nf 1 2 3\n";
-    QTest::newRow("OBJ vertex at 1e39") << "m.obj" << "v 1e39 0 0\n" + tail << "not a finite point";
-    QTest::newRow("OBJ vertex nan") << "m.obj" << "v nan 0 0\n" + tail << "not a finite point";
+    // OBJ files are read by Lucerna's reader before Assimp sees them (model_import.cpp).
+    QTest::newRow("OBJ vertex at 1e39") << "m.obj" << "v 1e39 0 0\n" + tail << "m.obj: line 1: vertex coordinate 1e39 lies beyond";
+    QTest::newRow("OBJ vertex nan") << "m.obj" << "v nan 0 0\n" + tail << "m.obj: line 1: vertex coordinate nan is not a finite";
+    QTest::newRow("OBJ corner that is a comment") << "m.obj" << QByteArray("f # /5") << "m.obj: line 1: the face has 0 corners";
+    QTest::newRow("OBJ corner without its vertex") << "m.obj" << "v 0 0 0\n" + tail + "f /1 2 3\n"
+                                                   << "m.obj: line 5: face corner \"/1\" has no vertex index";
+    QTest::newRow("OBJ texture index beyond the file") << "m.obj" << "v 0 0 0\nvt 0 0\n" + tail + "f 1/1 2/1 3/7\n"
+                                                       << "m.obj: line 6: a corner names texture coordinate 7";
+    QTest::newRow("OBJ line element beyond the file") << "m.obj" << "v 0 0 0\n" + tail + "l 1 9\n" << "a corner names vertex 9";
     QTest::newRow("OBJ vertex 1e38") << "m.obj" << "v 1e38 0 0\n" + tail << "";
     QTest::newRow("OBJ plain") << "m.obj" << "v 0 0 0\n" + tail << "";
     // glTF: one triangle whose first vertex is NaN, in an embedded buffer.
@@ -433,6 +470,9 @@ void TestHostileFiles::nonRegularPathsAreRefusedAtOnce() {
     writeFile(dir.filePath("mesh-zero.json"), meshScene("zero.obj"));
     writeFile(dir.filePath("lib.obj"), "mtllib fifo.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     fifo("fifo.mtl");
+    // A library that is not there makes Assimp try the file's own name with .mtl.
+    writeFile(dir.filePath("fifo-fallback.obj"), "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    fifo("fifo-fallback.mtl");
     writeFile(dir.filePath("mesh-lib.json"), meshScene("lib.obj"));
     const QString small = dir.filePath("small.exr");
     {
@@ -448,7 +488,12 @@ void TestHostileFiles::nonRegularPathsAreRefusedAtOnce() {
     VERIFY_REFUSED(QStringList({"render", "lum-fifo.json", "-o", "o.exr"}), dir.path(), "not a regular file");
     VERIFY_REFUSED(QStringList({"info", "mesh-fifo.json"}), dir.path(), "fifo.ply: not a regular file");
     VERIFY_REFUSED(QStringList({"info", "mesh-zero.json"}), dir.path(), "zero.obj: not a regular file");
-    VERIFY_REFUSED(QStringList({"info", "mesh-lib.json"}), dir.path(), "the material library fifo.mtl is a FIFO");
+    // The mesh reader takes positions only and opens no library; Assimp (import) would block.
+    const Run lib = runLucerna({"info", "mesh-lib.json"}, dir.path());
+    QVERIFY2(lib.exitCode == 0, qPrintable(describe({"info", "mesh-lib.json"}, lib)));
+    VERIFY_REFUSED(QStringList({"import", "lib.obj", "-o", "o.json"}), dir.path(), "the material library fifo.mtl is a FIFO");
+    VERIFY_REFUSED(QStringList({"import", "fifo-fallback.obj", "-o", "o.json"}), dir.path(),
+                   "the material library fifo-fallback.mtl is a FIFO");
     VERIFY_REFUSED(QStringList({"info", "fifo.json"}), dir.path(), "fifo.json: cannot read the file: not a regular file");
     VERIFY_REFUSED(QStringList({"info", "zero.json"}), dir.path(), "zero.json: cannot read the file: not a regular file");
     VERIFY_REFUSED(QStringList({"render", "fifo.json", "-o", "o.exr"}), dir.path(), "not a regular file");

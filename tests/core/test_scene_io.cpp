@@ -571,8 +571,8 @@ void TestSceneIo::readsMeshFiles() {
         QCOMPARE(m.triangles[11], V3i(0, 7, 3));
     } else {
         // The tetrahedron (0,0,0) (1,0,0) (0,1,0) (0,0,1) with outward faces in file order:
-        // STL repeats vertices per facet and OpenMesh merges them, so compare positions.
-        // OpenMesh's readers hold positions in single precision, even a PLY file's doubles.
+        // STL repeats vertices per facet and the reader merges them, so compare positions.
+        // The readers hold positions in single precision (as OpenMesh's did), even a PLY file's doubles.
         const V3d offset = file == "tetra_binary.ply" ? V3d(0.1, 0.2, 0.3) : V3d(0, 0, 0);
         const V3d v[4] = {V3d(0, 0, 0), V3d(1, 0, 0), V3d(0, 1, 0), V3d(0, 0, 1)};
         const int faces[4][3] = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
@@ -587,8 +587,8 @@ void TestSceneIo::readsMeshFiles() {
 }
 
 void TestSceneIo::keepsEveryFaceOfNonManifoldFiles() {
-    // Three faces on one edge and a face wound against its neighbour: OpenMesh's half-edge
-    // structure refuses both, and every face must still arrive, in order, with its winding.
+    // Three faces on one edge and a face wound against its neighbour: a half-edge structure
+    // (OpenMesh's) refuses both, and every face must still arrive, in order, with its winding.
     const TriangleMesh m = readMeshFile(kData + "/meshes/nonmanifold.obj");
     QCOMPARE(m.triangles, (std::vector<V3i>{V3i(0, 1, 2), V3i(1, 0, 3), V3i(0, 1, 4), V3i(2, 0, 5)}));
     QCOMPARE(m.vertices[3], V3d(0.5, -1, 0));
@@ -601,7 +601,7 @@ void TestSceneIo::readsUpperCaseExtensionsAndDropsNothingOnStderr() {
     const QString upper = dir.filePath("POLYGONS.OBJ");
     QVERIFY(QFile::copy(QString::fromStdString(kData + "/meshes/polygons.obj"), upper));
 
-    // Send stderr to a file while OpenMesh reads a non-manifold mesh (which makes it complain).
+    // Send stderr to a file while a non-manifold mesh is read (OpenMesh's reader complained there).
     const QString log = dir.filePath("stderr.txt");
     std::fflush(stderr);
     const int saved = ::dup(2);
