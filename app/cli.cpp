@@ -229,14 +229,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
     exitOnInterrupt("render interrupted; no file written\n");
     const int rank = rankOf(processes);
-    std::optional<RenderSetup> setup;
-    std::exception_ptr failure;
-    try {
-        setup = setUpRender(args, processes);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    agreeOnOutcome(processes, failure);  // every rank leaves, or none
+    std::optional<RenderSetup> setup = setUpTogether(processes, [&] { return setUpRender(args, processes); });
     RenderSetup& s = *setup;
     const RenderArgs& r = s.r;
     const std::string& backendName = s.backendName;
@@ -269,7 +262,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         }
         result = std::move(frame);
     });
-    failure = nullptr;
+    std::exception_ptr failure;
     try {
         // With --save-on-interrupt the first Ctrl-C is the pass loop's (it finishes), a second
         // one cancels.
@@ -314,7 +307,7 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         throw UsageError(e.what());  // the output path was checked, but the disk may be full
     }
     std::fprintf(stderr, "wrote %s: %s, %.0f spp in %s, estimated relmse %.3g", r.output.c_str(),
-                 backendName.c_str(), result->samplesPerPixel, formatSeconds(result->seconds).c_str(),
+                 backendName.c_str(), result->samplesPerPixel, formatDuration(result->seconds).c_str(),
                  result->estimatedRelmse);
     if (processes) std::fprintf(stderr, ", %d ranks", processes->size());
     std::fprintf(stderr, "\n");

@@ -1,5 +1,6 @@
 #include "app/cli_support.h"
 
+#include "core/number_format.h"
 #include "core/process_group.h"
 #include "core/task_system.h"
 
@@ -67,13 +68,6 @@ Imath::V3d parseVector(const std::string& option, const std::string& text) {
     return v;
 }
 
-std::string formatSeconds(double s) {
-    char buf[32];
-    if (s < 60) std::snprintf(buf, sizeof buf, "%.1f s", s);
-    else std::snprintf(buf, sizeof buf, "%d min %02d s", int(s) / 60, int(s) % 60);
-    return buf;
-}
-
 void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAfter, ProgressLines lines) {
     const bool tty = lines != ProgressLines::Never && isatty(STDERR_FILENO);
     const bool everyTenSeconds = !tty && lines == ProgressLines::Also;
@@ -85,9 +79,9 @@ void waitShowingProgress(TaskHandle& job, const std::string& label, int cancelAf
         const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         if (tty || (everyTenSeconds && t - lastLine >= 10)) {
             const double p = job.progress();
-            const std::string left = p > 0.01 ? formatSeconds(t * (1.0 - p) / p) + " left" : "estimating";
+            const std::string left = p > 0.01 ? formatDuration(t * (1.0 - p) / p) + " left" : "estimating";
             std::fprintf(stderr, "%s%s: %5.1f%%  %s elapsed, %s%s", tty ? "\r" : "", label.c_str(), 100.0 * p,
-                         formatSeconds(t).c_str(), left.c_str(), tty ? "   " : "\n");
+                         formatDuration(t).c_str(), left.c_str(), tty ? "   " : "\n");
             lastLine = t;
         }
     }

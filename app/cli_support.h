@@ -11,8 +11,10 @@
 #include <functional>
 #include <memory>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace lucerna::cli {
@@ -61,9 +63,6 @@ void checkOutputPath(const std::string& path);
 // "X,Y,Z" as three numbers; UsageError naming `option` otherwise.
 Imath::V3d parseVector(const std::string& option, const std::string& text);
 
-// "12.3 s" or "4 min 05 s".
-std::string formatSeconds(double seconds);
-
 }  // namespace lucerna::cli
 
 namespace lucerna {
@@ -96,6 +95,22 @@ struct QuietExit {
 // message prefixed "rank N: "), the others throw QuietExit. Alone (nullptr), it rethrows the
 // error if there is one.
 void agreeOnOutcome(ProcessGroup* processes, std::exception_ptr error);
+
+// A distributed command's setup (`setUp()`: arguments, scene, backend), run by every process and
+// agreed on (agreeOnOutcome), so that every process leaves, or none: what it made, where every
+// process's setup succeeded.
+template <class SetUp>
+std::optional<std::invoke_result_t<SetUp&>> setUpTogether(ProcessGroup* processes, SetUp&& setUp) {
+    std::optional<std::invoke_result_t<SetUp&>> made;
+    std::exception_ptr failure;
+    try {
+        made.emplace(setUp());
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);
+    return made;
+}
 
 // Runs a command: UsageError gives "lucerna: MESSAGE" and 2, any other exception "lucerna:
 // internal error: ..." and 1, QuietExit its status and nothing.

@@ -3,6 +3,7 @@
 
 #include "core/photometry/glare.h"
 #include "core/photometry/luminaire.h"
+#include "core/number_format.h"
 #include "core/scene/scene_io.h"
 #include "core/photometry/ugr_table.h"
 #include "render/photometry/glare_evaluation.h"
@@ -159,7 +160,7 @@ int glareImpl(const std::vector<std::string>& args) {
         std::printf("UGR %s +- %s (95%%)\n", fixed(*r.ugr, 1).c_str(), fixed(r.ugrErrorBar, 1).c_str());
         std::printf("background luminance Lb %s cd/m^2 (indirect illuminance at the eye %s lx) after %d passes, %s%s\n",
                     fixed(r.backgroundLuminanceCdM2, 2).c_str(), fixed(r.backgroundLuminanceCdM2 * std::numbers::pi, 1).c_str(),
-                    grid.passes, formatSeconds(grid.seconds).c_str(), grid.converged ? "" : " (target not reached)");
+                    grid.passes, formatDuration(grid.seconds).c_str(), grid.converged ? "" : " (target not reached)");
     }
     if (!r.sources.empty()) {
         std::printf("%-24s %12s %12s %7s %7s\n", "light", "L (cd/m^2)", "omega (sr)", "p", "share");

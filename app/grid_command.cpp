@@ -12,6 +12,7 @@
 #include "render/backend/backend_options.h"
 #include "render/engine/backend_table.h"
 #include "render/photometry/grid_calculation.h"
+#include "render/photometry/grid_text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -88,17 +89,9 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     return g;
 }
 
-// The grid's values, rows from the far edge (v) down; `scale` turns lux into what is printed.
-void printTable(const GridLayout& layout, const GridResult& r, double scale = 1.0, const char* format = "%9.1f") {
-    if (layout.nu > 16) return;  // a wide grid reads better from the CSV
-    for (int j = layout.nv - 1; j >= 0; --j) {
-        for (int i = 0; i < layout.nu; ++i) {
-            const size_t k = size_t(j) * layout.nu + i;
-            if (r.insideGeometry[k]) std::printf("%9s", "inside");
-            else std::printf(format, r.lux[k] * scale);
-        }
-        std::printf("\n");
-    }
+// Lines of render/photometry/grid_text.h, each on its own.
+void printLines(const std::vector<std::string>& lines) {
+    for (const std::string& line : lines) std::printf("%s\n", line.c_str());
 }
 
 // What a grid needs once its arguments and scene are known.
@@ -216,22 +209,17 @@ int reportDaylightFactor(const GridSetup& setup, const GridResult& r) {
                 g.settings.autoMethod ? " (auto)" : "");
     std::printf("CIE overcast sky alone, Eh,sky %.1f lx on an open horizontal plane; sun and electric lights off\n",
                 setup.skyHorizontalIlluminance);
-    if (s.excluded > 0) std::printf("%d of %zu points inside geometry, excluded\n", s.excluded, layout.points.size());
-    if (s.counted == 0) {
-        std::printf("DF: none (every point is inside geometry)\n");
-    } else {
-        std::printf("DFavg %.2f%%, DFmin %.2f%%, DFmax %.2f%%, uniformity DFmin/DFavg %.3f\n", s.average, s.minimum,
-                    s.maximum, s.uniformity);
-        std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %s%s\n",
-                    100.0 * r.maxRelativeError, r.passes, formatSeconds(r.seconds).c_str(),
-                    r.converged ? "" : " (target not reached)");
+    if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size(), true).c_str());
+    std::printf("%s\n", daylightFactorFiguresLine(s).c_str());
+    if (s.counted > 0) {
+        printLines(gridErrorLines(r, s.counted));
         const DaylightProvision p = checkDaylightProvision(df, r.insideGeometry, setup.medianDiffuseIlluminance);
         std::printf("median external diffuse illuminance %.0f lx%s; EN 17037 asks for its reference plane 0.85 m above "
                     "the floor (this grid's plane is the one given)\n",
                     setup.medianDiffuseIlluminance, setup.medianGiven ? "" : " (not given: EN 17037's usual value)");
         std::printf("%s", describeProvision(p).c_str());
     }
-    printTable(layout, r, perLux, "%9.2f");
+    std::printf("%s", gridTableText(layout, r, perLux, 2).c_str());
     if (!g.csv.empty()) {
         writeTextAtomically(g.csv, gridCsv(layout, r.lux, r.errorLux, r.insideGeometry, r.errorBarUnknown, perLux));
         std::fprintf(stderr, "wrote %s\n", g.csv.c_str());
@@ -242,14 +230,7 @@ int reportDaylightFactor(const GridSetup& setup, const GridResult& r) {
 int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
     exitOnInterrupt("grid interrupted; no file written\n");
-    std::optional<GridSetup> setup;
-    std::exception_ptr failure;
-    try {
-        setup = setUpGrid(args, processes);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    agreeOnOutcome(processes, failure);  // every rank leaves, or none
+    std::optional<GridSetup> setup = setUpTogether(processes, [&] { return setUpGrid(args, processes); });
     GridArgs& g = setup->g;
     const SceneSnapshot& scene = setup->scene;
     const GridLayout& layout = setup->layout;
@@ -264,7 +245,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         GridResult r = computeSceneGrid(scene, layout.points, g.grid.normal(), g.settings, ctx);
         if (!ctx.isCancelled()) result = std::move(r);
     });
-    failure = nullptr;
+    std::exception_ptr failure;
     try {
         waitShowingProgress(*job, std::string("grid ") + (g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method)),
                             1, !processes ? ProgressLines::TerminalOnly : speaks ? ProgressLines::Also : ProgressLines::Never);
@@ -273,7 +254,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     }
     agreeOnOutcome(processes, failure);
     bool stopped = interrupted() || !result;
-    if (sizeOf(processes) > 1) {  // every rank stopped with the others (shareRound), but say so together
+    if (sizeOf(processes) > 1) {  // every rank stopped with the others (runRounds), but say so together
         const double mine = stopped ? 1.0 : 0.0;
         for (double theirs : processes->allGather(std::span(&mine, 1))) stopped = stopped || theirs > 0;
     }
@@ -290,21 +271,9 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
                 layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
                 g.settings.autoMethod ? " (auto)" : "");
     std::printf("%s\n", describeMaintenance(maintenanceRange(*scene)).c_str());
-    if (s.excluded > 0)
-        std::printf("%d of %zu points inside geometry, excluded from Eavg, Emin, Emax and U0\n", s.excluded,
-                    layout.points.size());
-    if (s.counted == 0) std::printf("Eavg, Emin, Emax, U0: none (every point is inside geometry)\n");
-    else std::printf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f\n", s.average, s.minimum, s.maximum, s.uniformity);
-    if (r.errorBarUnknown) {
-        std::printf("%s cannot carry light through glass to %d of %d points: use bdpt (or --method auto)\n",
-                    gridMethodName(r.method), r.litThroughGlass, s.counted);
-        std::printf("error bar unknown (the light through glass is missing) after %d passes, %lld samples per point, %s\n",
-                    r.passes, r.samplesPerPoint, formatSeconds(r.seconds).c_str());
-    } else {
-        std::printf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per point, %s%s\n",
-                    100.0 * r.maxRelativeError, r.passes, r.samplesPerPoint, formatSeconds(r.seconds).c_str(),
-                    r.converged ? "" : " (target not reached)");
-    }
+    if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size()).c_str());
+    std::printf("%s\n", gridFiguresLine(s).c_str());
+    printLines(gridErrorLines(r, s.counted));
     if (setup->requirement && s.counted > 0) {
         std::printf("%s\n", describeRequirement(*setup->requirement).c_str());
         TaskAreaFigures figures{s, std::nullopt, statedColourRendering(*scene)};
@@ -313,7 +282,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     } else if (!g.taskArea.empty()) {
         std::printf("task area '%s' names no activity: nothing to check\n", g.taskArea.c_str());
     }
-    printTable(layout, r);
+    std::printf("%s", gridTableText(layout, r).c_str());
     if (!g.csv.empty()) {
         writeTextAtomically(g.csv, gridCsv(layout, r.lux, r.errorLux, r.insideGeometry, r.errorBarUnknown));
         std::fprintf(stderr, "wrote %s\n", g.csv.c_str());

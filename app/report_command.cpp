@@ -1,8 +1,10 @@
 #include "app/report_command.h"
 #include "app/cli_support.h"
 
+#include "core/number_format.h"
 #include "core/scene/scene_io.h"
 #include "core/task_system.h"
+#include "render/photometry/grid_text.h"
 #include "report/report_builder.h"
 #include "report/report_writer.h"
 
@@ -102,16 +104,14 @@ int reportImpl(const std::vector<std::string>& args, int& argc, char** argv) {
     }
     // Each area's figures as `lucerna grid` prints them.
     for (const AreaReport& a : data->areas) {
-        const GridStatistics& s = a.statistics;
         std::printf("area '%s': %d x %d points, method %s\n", a.name.c_str(), a.layout.nu, a.layout.nv,
                     gridMethodName(a.result.method));
-        if (s.counted == 0) std::printf("Eavg, Emin, Emax, U0: none (every point is inside geometry)\n");
-        else std::printf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f\n", s.average, s.minimum, s.maximum, s.uniformity);
+        std::printf("%s\n", gridFiguresLine(a.statistics).c_str());
         if (a.worstUgr) std::printf("UGR %.1f (worst of %zu observers)\n", *a.worstUgr, a.glare.size());
         for (const RequirementCheck& c : a.checks) std::printf("%s\n", c.describe().c_str());
     }
     std::fprintf(stderr, "wrote %s: %d pages, %zu task area%s, %s\n", r.output.c_str(), pages, data->areas.size(),
-                 data->areas.size() == 1 ? "" : "s", formatSeconds(data->seconds).c_str());
+                 data->areas.size() == 1 ? "" : "s", formatDuration(data->seconds).c_str());
     return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "report/plan_figure.h"
 #include "report/report_pages.h"
 #include "report/report_text.h"
+#include "render/photometry/grid_text.h"
 
 #include <QPainter>
 
@@ -192,9 +193,8 @@ void addValues(PageFlow& flow, const ReportData& data, const AreaReport& a) {
             QStringList row{rowLabel(r)};
             for (int c = c0; c < c1; ++c) {
                 const size_t k = pointAt(columns[size_t(c)], r);
-                const bool inside = k < a.result.insideGeometry.size() && a.result.insideGeometry[k];
-                anyInside = anyInside || inside;
-                row << (inside ? QStringLiteral("inside") : lux(a.result.lux[k]));
+                anyInside = anyInside || (k < a.result.insideGeometry.size() && a.result.insideGeometry[k]);
+                row << qs(gridPointText(a.result, k));
             }
             t.rows.push_back(row);
         }
@@ -248,13 +248,10 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     addPlan(flow, data, a, std::move(plan), flow.mm(125));
 
     flow.subheading(QStringLiteral("Results"));
-    flow.paragraph(gridFiguresLine(a.statistics), flow.fonts().tableBold);
-    flow.paragraph(gridErrorLine(a.result, a.statistics.counted), flow.fonts().small);
+    flow.paragraph(qs(gridFiguresLine(a.statistics)), flow.fonts().tableBold);
+    for (const std::string& line : gridErrorLines(a.result, a.statistics.counted)) flow.paragraph(qs(line), flow.fonts().small);
     if (a.statistics.excluded > 0)
-        flow.paragraph(QStringLiteral("%1 of %2 points inside geometry, excluded from Eavg, Emin, Emax and U0")
-                           .arg(a.statistics.excluded)
-                           .arg(a.layout.points.size()),
-                       flow.fonts().small);
+        flow.paragraph(qs(excludedPointsLine(a.statistics, a.layout.points.size())), flow.fonts().small);
     if (data.schedule.wattsPerM2 && a.statistics.average > 0)
         flow.paragraph(QStringLiteral("Specific connected load %1 W/m\u00b2, %2 W/m\u00b2 per 100 lx of this area's Eavg")
                            .arg(QString::number(*data.schedule.wattsPerM2, 'f', 2),

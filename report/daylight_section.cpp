@@ -1,5 +1,6 @@
 #include "report/report_pages.h"
 #include "report/report_text.h"
+#include "render/photometry/grid_text.h"
 
 namespace lucerna {
 
@@ -30,7 +31,7 @@ void addDaylightFactor(PageFlow& flow, const ReportData& data, const AreaReport&
                        .arg(QString::number(df.skyHorizontalIlluminance, 'f', 1)),
                    flow.fonts().small);
     if (df.statistics.counted == 0) {
-        flow.paragraph(QStringLiteral("DF: none (every point is inside geometry)"));
+        flow.paragraph(qs(daylightFactorFiguresLine(df.statistics)));
         return;
     }
     PlanValues plan;
@@ -40,11 +41,8 @@ void addDaylightFactor(PageFlow& flow, const ReportData& data, const AreaReport&
     plan.quantity = QStringLiteral("DF [%]");
     addPlan(flow, data, a, std::move(plan), flow.mm(95));
     const GridStatistics& s = df.statistics;
-    // As `lucerna grid --daylight-factor` prints them.
-    flow.paragraph(QString::asprintf("DFavg %.2f%%, DFmin %.2f%%, DFmax %.2f%%, uniformity DFmin/DFavg %.3f", s.average,
-                                     s.minimum, s.maximum, s.uniformity),
-                   flow.fonts().tableBold);
-    flow.paragraph(gridErrorLine(df.result, s.counted), flow.fonts().small);
+    flow.paragraph(qs(daylightFactorFiguresLine(s)), flow.fonts().tableBold);
+    for (const std::string& line : gridErrorLines(df.result, s.counted)) flow.paragraph(qs(line), flow.fonts().small);
     flow.table(provisionTable(df.provision));
     flow.paragraph(QStringLiteral("Median external diffuse illuminance %1 lx%2. EN 17037 asks for its reference plane "
                                   "0.85 m above the floor; this area's plane is the one shown.")

@@ -1,5 +1,6 @@
 #include "report/report_pages.h"
 #include "report/report_text.h"
+#include "core/number_format.h"
 
 #include <algorithm>
 
@@ -50,8 +51,9 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                                                                       : QString(gridMethodName(s.grid.method)));
     settings.emplace_back(QStringLiteral("Target error bar"),
                           QStringLiteral("%1% of each point's value (95%)").arg(QString::number(100 * s.grid.targetRelativeError, 'g', 4)));
-    settings.emplace_back(QStringLiteral("Time limit"), s.grid.timeLimitSeconds > 0 ? seconds(s.grid.timeLimitSeconds) + QStringLiteral(" per area")
-                                                                                    : QStringLiteral("none"));
+    settings.emplace_back(QStringLiteral("Time limit"), s.grid.timeLimitSeconds > 0
+                                                            ? qs(formatDuration(s.grid.timeLimitSeconds)) + QStringLiteral(" per area")
+                                                            : QStringLiteral("none"));
     settings.emplace_back(QStringLiteral("Seed"), QString::number(s.grid.seed));
     settings.emplace_back(QStringLiteral("Samples per pass"), s.grid.samplesPerPass > 0 ? QString::number(s.grid.samplesPerPass)
                                                                                         : QStringLiteral("the method's default"));
@@ -65,7 +67,7 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
     t.alignment = {Qt::AlignLeft, Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
     for (const AreaReport& a : data.areas)
         t.rows.push_back({qs(a.name), QString(gridMethodName(a.result.method)), QString::number(a.result.passes),
-                          QString::number(a.result.samplesPerPoint), seconds(a.result.seconds),
+                          QString::number(a.result.samplesPerPoint), qs(formatDuration(a.result.seconds)),
                           a.result.errorBarUnknown ? QStringLiteral("unknown")
                                                    : QString::asprintf("%.2f%%", 100 * a.result.maxRelativeError),
                           a.result.converged ? QStringLiteral("reached") : QStringLiteral("not reached")});
@@ -100,7 +102,8 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                            .arg(qs(data.renders->backend), qs(data.renders->autoReason))
                            .arg(data.settings.renderSpp));
     }
-    flow.paragraph(QStringLiteral("Calculated by %1 on %2 in %3.").arg(qs(data.software), qs(data.date), seconds(data.seconds)),
+    flow.paragraph(QStringLiteral("Calculated by %1 on %2 in %3.")
+                       .arg(qs(data.software), qs(data.date), qs(formatDuration(data.seconds))),
                    flow.fonts().small);
 }
 

@@ -1,5 +1,6 @@
 #include "report/report_pages.h"
 #include "report/report_text.h"
+#include "core/number_format.h"
 
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
@@ -59,8 +60,8 @@ void addRendersPage(PageFlow& flow, const ReportData& data) {
     flow.paragraph(QStringLiteral("Rendered by %1 (%2), %3 samples per pixel in %4, estimated relative error (relMSE) "
                                   "%5; %6 x %7 pixels; %8. Exposure %9 stops, metered on the image's log-average "
                                   "luminance.")
-                       .arg(qs(r.backend), qs(r.autoReason), QString::number(r.samplesPerPixel, 'f', 0), seconds(r.seconds),
-                            QString::number(r.estimatedRelmse, 'g', 3))
+                       .arg(qs(r.backend), qs(r.autoReason), QString::number(r.samplesPerPixel, 'f', 0),
+                            qs(formatDuration(r.seconds)), QString::number(r.estimatedRelmse, 'g', 3))
                        .arg(r.converged.width)
                        .arg(r.converged.height)
                        .arg(qs(data.maintenance), QString::asprintf("%+.1f", r.exposureStops)),

@@ -1,32 +1,6 @@
 #include "report/report_text.h"
 
-#include <cstdio>
-
 namespace lucerna {
-
-QString gridFiguresLine(const GridStatistics& s) {
-    if (s.counted == 0) return QStringLiteral("Eavg, Emin, Emax, U0: none (every point is inside geometry)");
-    return QString::asprintf("Eavg %.1f lx, Emin %.1f lx, Emax %.1f lx, U0 %.3f", s.average, s.minimum, s.maximum,
-                             s.uniformity);
-}
-
-QString seconds(double s) {
-    if (s < 60) return QString::asprintf("%.1f s", s);
-    const int whole = int(s + 0.5);
-    return QString::asprintf("%d min %02d s", whole / 60, whole % 60);
-}
-
-QString gridErrorLine(const GridResult& r, int counted) {
-    if (r.errorBarUnknown)
-        return QString::asprintf("%s cannot carry light through glass to %d of %d points: error bar unknown after %d "
-                                 "passes, %lld samples per point, ",
-                                 gridMethodName(r.method), r.litThroughGlass, counted, r.passes, r.samplesPerPoint) +
-               seconds(r.seconds);
-    return QString::asprintf("error bar (95%%) at most %.2f%% of each point's value after %d passes, %lld samples per "
-                             "point, ",
-                             100.0 * r.maxRelativeError, r.passes, r.samplesPerPoint) +
-           seconds(r.seconds) + (r.converged ? QString() : QStringLiteral(" (target not reached)"));
-}
 
 QString lux(double value) { return QString::asprintf("%.1f", value); }
 

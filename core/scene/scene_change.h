@@ -1,7 +1,8 @@
 #pragma once
 // What differs between two versions of a scene, computed in one place for every part that keeps
 // state derived from a scene: the interactive preview (what to redraw), the editor's surface
-// picker (when to rebuild) and the per-light layers (whether an edit is a re-mix).
+// picker (when to rebuild), the per-light layers (whether an edit is a re-mix), and the plan and
+// the grid dock (whether a grid's result is out of date).
 
 #include "core/scene/scene.h"
 
@@ -23,6 +24,11 @@ struct SceneChange {
     // photometric values, a luminaire's lumens and colour, switched on or off), in their lights'
     // groups, and in their emitters' radiance; true when they are equal. Never with `daylight`.
     bool emissionOnly = false;
+
+    // Whether light on the scene's surfaces may differ: its geometry, materials, lights or
+    // daylight changed; not so the camera's pose or resolution (what a grid's or a plan's
+    // illuminance is out of date by).
+    bool changesIlluminance() const { return geometry || materials || lightSet || !lights.empty() || daylight; }
 
     bool none() const {
         return !geometry && !materials && !camera && !resolution && !lightSet && lights.empty() && !daylight &&

@@ -32,6 +32,24 @@ double relativeError(double mean, double halfWidth, double floor) {
     const double scale = std::max(mean, floor);
     return scale > 0 ? halfWidth / scale : std::numeric_limits<double>::infinity();
 }
+
+// The end of a round shared among processes: each gives the values of what it owns (0
+// elsewhere) in `sums` and its own figures in `maxima` (times so far, 1 when cancelled); every
+// one gets back the sums over the processes and the maxima, so that all decide alike. Nothing
+// changes when `processes` is nullptr.
+void shareRound(ProcessGroup* processes, std::vector<double>& sums, std::vector<double>& maxima) {
+    if (!processes || processes->size() == 1) return;
+    std::vector<double> mine = sums;
+    mine.insert(mine.end(), maxima.begin(), maxima.end());
+    const std::vector<double> all = processes->allGather(mine);
+    const size_t n = mine.size();
+    for (int r = 0; r < processes->size(); ++r) {
+        const double* theirs = all.data() + size_t(r) * n;
+        for (size_t i = 0; i < sums.size(); ++i) sums[i] = r == 0 ? theirs[i] : sums[i] + theirs[i];
+        for (size_t i = 0; i < maxima.size(); ++i)
+            maxima[i] = r == 0 ? theirs[sums.size() + i] : std::max(maxima[i], theirs[sums.size() + i]);
+    }
+}
 }  // namespace
 
 GridResult emptyGridResult(size_t points, const std::vector<uint8_t>& insideGeometry) {
@@ -82,50 +100,48 @@ bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const Grid
     return result.converged || (settings.timeLimitSeconds > 0 && result.seconds >= settings.timeLimitSeconds);
 }
 
-void shareRound(ProcessGroup* processes, std::vector<double>& sums, std::vector<double>& maxima) {
-    if (!processes || processes->size() == 1) return;
-    std::vector<double> mine = sums;
-    mine.insert(mine.end(), maxima.begin(), maxima.end());
-    const std::vector<double> all = processes->allGather(mine);
-    const size_t n = mine.size();
-    for (int r = 0; r < processes->size(); ++r) {
-        const double* theirs = all.data() + size_t(r) * n;
-        for (size_t i = 0; i < sums.size(); ++i) sums[i] = r == 0 ? theirs[i] : sums[i] + theirs[i];
-        for (size_t i = 0; i < maxima.size(); ++i)
-            maxima[i] = r == 0 ? theirs[sums.size() + i] : std::max(maxima[i], theirs[sums.size() + i]);
+void runRounds(const GridSettings& settings, TaskContext& ctx, std::chrono::steady_clock::time_point start,
+               RoundValues kind, const std::function<std::vector<double>(int first, int passes)>& round,
+               const std::function<bool(const std::vector<double>& values, int first, int passes, double seconds)>& take) {
+    using Clock = std::chrono::steady_clock;
+    const bool shared = sizeOf(settings.processes) > 1;
+    const bool grows = shared || kind == RoundValues::EachRound;
+    constexpr int kMaxPassesPerRound = 256;
+    for (int first = 0, passes = 1; shared || !ctx.isCancelled();) {
+        const auto roundStart = Clock::now();
+        std::vector<double> values = round(first, passes);
+        const auto now = Clock::now();
+        std::vector<double> maxima{std::chrono::duration<double>(now - start).count(),
+                                   std::chrono::duration<double>(now - roundStart).count(), ctx.isCancelled() ? 1.0 : 0.0};
+        shareRound(settings.processes, values, maxima);
+        if (maxima[2] > 0 || take(values, first, passes, maxima[0])) return;
+        first += passes;
+        if (grows && maxima[1] < 0.1 * maxima[0]) passes = std::min(kMaxPassesPerRound, 2 * passes);
     }
 }
 
 void runPointPasses(size_t points, int samplesPerPass, const GridSettings& settings, TaskContext& ctx,
                     const std::function<void(int pass, std::span<double> values)>& pass,
                     const std::function<void(const GridResult&)>& onPass, GridResult& result) {
-    using Clock = std::chrono::steady_clock;
-    const auto start = Clock::now();
-    // Shared, every process goes round until all agree to stop (shareRound), a cancelled one too.
-    const bool shared = sizeOf(settings.processes) > 1;
-    constexpr int kMaxPassesPerRound = 256;
     std::vector<BatchMeans> batches(points);
-    int passesPerRound = 1;
-    for (int first = 0; shared || !ctx.isCancelled();) {
-        const auto roundStart = Clock::now();
-        std::vector<double> values(size_t(passesPerRound) * points, 0.0);  // pass by pass
-        for (int k = 0; k < passesPerRound && !ctx.isCancelled(); ++k)
-            pass(first + k, std::span(values).subspan(size_t(k) * points, points));
-        const auto now = Clock::now();
-        std::vector<double> maxima{std::chrono::duration<double>(now - start).count(),
-                                   std::chrono::duration<double>(now - roundStart).count(), ctx.isCancelled() ? 1.0 : 0.0};
-        shareRound(settings.processes, values, maxima);
-        if (maxima[2] > 0) break;  // a partial pass would bias the points it missed
-        for (int k = 0; k < passesPerRound; ++k) {
-            for (size_t i = 0; i < points; ++i) batches[i].add(values[size_t(k) * points + i]);
-            result.passes = first + k + 1;
-            result.samplesPerPoint = static_cast<long long>(result.passes) * samplesPerPass;
-            result.seconds = maxima[0];
-            if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) return;
-        }
-        first += passesPerRound;
-        if (shared && maxima[1] < 0.1 * maxima[0]) passesPerRound = std::min(kMaxPassesPerRound, 2 * passesPerRound);
-    }
+    runRounds(
+        settings, ctx, std::chrono::steady_clock::now(), RoundValues::EachPass,
+        [&](int first, int passes) {
+            std::vector<double> values(size_t(passes) * points, 0.0);  // pass by pass
+            for (int k = 0; k < passes && !ctx.isCancelled(); ++k)
+                pass(first + k, std::span(values).subspan(size_t(k) * points, points));
+            return values;
+        },
+        [&](const std::vector<double>& values, int first, int passes, double seconds) {
+            for (int k = 0; k < passes; ++k) {
+                for (size_t i = 0; i < points; ++i) batches[i].add(values[size_t(k) * points + i]);
+                result.passes = first + k + 1;
+                result.samplesPerPoint = static_cast<long long>(result.passes) * samplesPerPass;
+                result.seconds = seconds;
+                if (finishRound(batches, result.passes >= settings.minPasses, settings, ctx, result, onPass)) return true;
+            }
+            return false;
+        });
 }
 
 }  // namespace lucerna

@@ -5,6 +5,7 @@
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 
+#include <chrono>
 #include <span>
 #include <vector>
 
@@ -44,20 +45,38 @@ std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass);
 
-// The end of a round of a grid shared among processes (GridSettings::processes): each process
-// gives the values of what it owns (0 elsewhere) in `sums` and its own figures in `maxima` (times
-// so far, 1 when cancelled); every process gets back the sums over the processes (each value
-// from its owner alone, so exactly that) and the maxima, so that all decide alike. Nothing
-// changes when `processes` is nullptr.
-void shareRound(ProcessGroup* processes, std::vector<double>& sums, std::vector<double>& maxima);
+// How a method's values come out of its rounds of passes (runRounds).
+enum class RoundValues {
+    // One independent estimate a point each pass (path, ir, preview), taken pass by pass: alone,
+    // a round is one pass; rounds of several matter only where processes exchange their values.
+    EachPass,
+    // The estimates so far, read once a round (bdpt, mir, mlt, cmlt: the replicas'): reading them
+    // costs, so rounds grow alone too.
+    EachRound,
+};
+
+// The rounds of passes of a grid calculation, until `take` says stop or the calculation is
+// cancelled. `round(first, passes)` computes passes first to first + passes - 1 (fewer once
+// cancelled) and returns this process's values of them, 0 for another process's. Shared among
+// processes (GridSettings::processes), a round's values are summed over the processes (each
+// value from its owner alone, so exactly that), and every process goes round until all agree to
+// stop, a cancelled one too. A round that any process left unfinished ends the calculation
+// untaken: a partial pass would bias the points it missed. `take(values, first, passes,
+// seconds)` gets the round's values and the longest time any process has taken since `start`,
+// and returns true to stop. A round is one pass at first; where rounds grow (RoundValues), it
+// doubles, to 256 passes at most, while it takes under a tenth of the time so far: the target is
+// checked often enough that the time to reach it is known within about 10%, and rarely enough
+// that the checks and the exchanges cost nothing.
+void runRounds(const GridSettings& settings, TaskContext& ctx, std::chrono::steady_clock::time_point start,
+               RoundValues kind, const std::function<std::vector<double>(int first, int passes)>& round,
+               const std::function<bool(const std::vector<double>& values, int first, int passes, double seconds)>& take);
 
 // The passes of a method that adds one independent estimate a point each pass (path, ir,
-// preview), until finishRound says stop or the calculation is cancelled. `pass(p, values)`
-// writes pass p's estimates of this process's points into `values` (one a point, 0 for the
-// others'). Alone, a round is one pass. Shared among processes, rounds of passes, doubled while
-// a round takes under a tenth of the time so far, are exchanged at once and then taken pass by
-// pass as one process takes them, so that the values and the pass the calculation stops at are
-// one process's (the last round may compute passes past it, a tenth of the time at most).
+// preview), until finishRound says stop or the calculation is cancelled: runRounds taking each
+// pass. `pass(p, values)` writes pass p's estimates of this process's points into `values` (one
+// a point, 0 for the others'). Shared among processes, the values and the pass the calculation
+// stops at are those of one process (the last round may compute passes past it, a tenth of the
+// time at most).
 void runPointPasses(size_t points, int samplesPerPass, const GridSettings& settings, TaskContext& ctx,
                     const std::function<void(int pass, std::span<double> values)>& pass,
                     const std::function<void(const GridResult&)>& onPass, GridResult& result);

@@ -12,6 +12,7 @@
 #include "core/photometry/ugr_table.h"
 #include "render/photometry/glare_evaluation.h"
 #include "ui/calculation/grid_panel.h"
+#include "ui/calculation/ugr_table.h"
 #include "ui/window/main_window.h"
 #include "window_test_helpers.h"
 

@@ -9,6 +9,8 @@
 #include "csv_table.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/grid_statistics.h"
+#include "render/photometry/grid_text.h"
+#include "core/number_format.h"
 #include "render/photometry/illuminance_layer.h"
 #include "render_helpers.h"
 
@@ -16,6 +18,7 @@
 #include <QTemporaryDir>
 #include <QTest>
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -343,6 +346,70 @@ private slots:
         for (double x : {100.0, 200.0, 300.0}) points[1].add(x);  // bright and noisy: not converged
         QVERIFY(!finishRound(points, true, settings, ctx, r, {}));
         QVERIFY(!r.converged && r.maxRelativeError > 0.5);
+    }
+
+    // The rounds of passes: a method that takes each pass checks after every one, alone, so its
+    // rounds stay one pass; one whose values are read once a round doubles its rounds while they
+    // are short against the time so far (here 100 s before the first).
+    void roundsGrowWhereTheirValuesAreReadOnce() {
+        CancellationToken token;
+        TaskContext ctx(token);
+        const GridSettings settings;
+        for (RoundValues kind : {RoundValues::EachPass, RoundValues::EachRound}) {
+            std::vector<int> firsts, sizes;
+            double earliest = 1e300;  // seconds a take was given
+            runRounds(
+                settings, ctx, std::chrono::steady_clock::now() - std::chrono::seconds(100), kind,
+                [&](int first, int passes) {
+                    firsts.push_back(first);
+                    sizes.push_back(passes);
+                    return std::vector<double>(size_t(passes), 1.0);
+                },
+                [&](const std::vector<double>& values, int first, int passes, double seconds) {
+                    earliest = std::min(earliest, seconds);
+                    return first + passes >= 31;
+                });
+            QVERIFY(earliest >= 100);  // counted from `start`
+            const std::vector<int> grown{1, 2, 4, 8, 16}, starts{0, 1, 3, 7, 15};
+            if (kind == RoundValues::EachRound) {
+                QCOMPARE(sizes, grown);
+                QCOMPARE(firsts, starts);
+            } else {
+                QCOMPARE(sizes, std::vector<int>(31, 1));
+            }
+        }
+    }
+
+    // A grid's results as text, as `lucerna grid`, the report and the dock all show them.
+    void resultsAsText() {
+        QCOMPARE(formatDuration(12.34), std::string("12.3 s"));
+        QCOMPARE(formatDuration(59.96), std::string("1 min 00 s"));
+        QCOMPARE(formatDuration(119.7), std::string("2 min 00 s"));
+        QCOMPARE(formatDuration(245.2), std::string("4 min 05 s"));
+        GridResult r = emptyGridResult(4, {0, 0, 1, 0});
+        r.lux = {512.34, 0.04, 0.0, 1234.5};
+        r.passes = 12;
+        r.samplesPerPoint = 192;
+        r.seconds = 119.7;
+        r.maxRelativeError = 0.0193;
+        r.converged = true;
+        QCOMPARE(gridErrorLines(r, 3), std::vector<std::string>{"error bar (95%) at most 1.93% of each point's value "
+                                                                 "after 12 passes, 192 samples per point, 2 min 00 s"});
+        r.errorBarUnknown = true;
+        r.litThroughGlass = 2;
+        const std::vector<std::string> unknown = gridErrorLines(r, 3);
+        QCOMPARE(unknown.size(), size_t(2));
+        QCOMPARE(unknown[0], std::string("path cannot carry light through glass to 2 of 3 points: use bdpt (or method auto)"));
+        QVERIFY(unknown[1].starts_with("error bar unknown"));
+        GridLayout layout;
+        layout.nu = 2;
+        layout.nv = 2;
+        // Rows from the far edge down, as printf's %9.1f and %9s.
+        QCOMPARE(gridTableText(layout, r), std::string("   inside   1234.5\n    512.3      0.0\n"));
+        QCOMPARE(gridPointText(r, 0, 0.1, 2), std::string("51.23"));
+        const GridStatistics s = gridStatistics(r.lux, r.insideGeometry);
+        QCOMPARE(gridFiguresLine(s), std::string("Eavg 582.3 lx, Emin 0.0 lx, Emax 1234.5 lx, U0 0.000"));
+        QCOMPARE(excludedPointsLine(s, 4), std::string("1 of 4 points inside geometry, excluded from Eavg, Emin, Emax and U0"));
     }
 
     // Cancelling stops the calculation at a pass boundary, with what it had.

@@ -1,6 +1,6 @@
 // The calculation-grid dock driven through its widgets in the real window: a point light over a
 // floor (exact closed form, E = I cos / r^2), the table and the figures it shows, CSV export,
-// the out-of-date mark after an edit, and cancelling a calculation that cannot converge.
+// the out-of-date mark after an edit of the light (not after a camera move), and cancelling a calculation that cannot converge.
 
 #include "closed_form_scenes.h"
 #include "daylight_scenes.h"
@@ -11,6 +11,7 @@
 #include "render/display/false_colour.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/commands/light_commands.h"
+#include "ui/commands/scene_commands.h"
 #include "ui/compare/compare_view.h"
 #include "ui/rendering/display_controls.h"
 #include "ui/calculation/grid_panel.h"
@@ -148,13 +149,22 @@ private slots:
         QCOMPARE(int(exported.rows.size()), 64);
         QVERIFY(std::abs(*exported.number(0, "illuminance_lux") / result->lux[0] - 1) < 1e-8);
 
-        // An edit marks the result out of date; Compute again follows the edit.
+        // A camera move changes no illuminance: the result stays current (as on the plan).
+        Camera moved = w.document()->scene().camera;
+        moved.position += V3d(100, 50, 0);
+        moved.fovYDeg += 5;
+        w.document()->undoStack()->push(new EditCameraCommand(w.document(), moved, 0, "move"));
+        QVERIFY(!panel->resultOutOfDate());
+        QVERIFY(!child<QLabel>(*panel, "gridStatus")->text().contains("changed"));
+        // An edit of a light marks it out of date; Compute again follows the edit.
         Light brighter = w.document()->scene().lights[0];
         brighter.intensity = brighter.intensity * 2.0;
         w.document()->undoStack()->push(new EditLightCommand(w.document(), 0, brighter, 0, "brighter"));
+        QVERIFY(panel->resultOutOfDate());
         QVERIFY(child<QLabel>(*panel, "gridStatus")->text().contains("changed"));
         QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
         QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+        QVERIFY(!panel->resultOutOfDate());
         QVERIFY(std::abs(panel->result()->lux[0] / result->lux[0] - 2) < 1e-4);
     }
 

@@ -4,8 +4,12 @@
 #include "core/daylight/daylight_provision.h"
 
 #include "core/atomic_file.h"
+#include "core/number_format.h"
+#include "core/scene/scene_change.h"
 #include "core/scene/scene_geometry.h"
 #include "render/display/display.h"
+#include "render/photometry/grid_text.h"
+#include "ui/calculation/ugr_table.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -27,6 +31,14 @@ namespace lucerna {
 namespace {
 constexpr int kAutoMethod = -1;  // the estimator box's item for auto
 enum Quantity { kIlluminance = 0, kDaylightFactor = 1, kUgr = 2 };  // the quantity box's items
+
+// The lines of render/photometry/grid_text.h and ugr_grid.h for a label.
+QString text(const std::string& line) { return QString::fromStdString(line); }
+QStringList text(const std::vector<std::string>& lines) {
+    QStringList list;
+    for (const std::string& line : lines) list << text(line);
+    return list;
+}
 
 QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
     auto* box = new QDoubleSpinBox(parent);
@@ -139,12 +151,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     useWholeRoom();
     connect(quantity_, &QComboBox::currentIndexChanged, this, &GridPanel::quantityChanged);
     quantityChanged();
-    connect(doc_, &Document::changed, this, [this] {
-        if ((shown_ || shownGlare_) && !stale_) {
-            stale_ = true;
-            status_->setText(tr("The scene changed since this result: Compute again to update it."));
-        }
-    });
+    connect(doc_, &Document::changed, this, &GridPanel::sceneChanged);
     poll_.setInterval(100);
     connect(&poll_, &QTimer::timeout, this, &GridPanel::poll);
 }
@@ -156,6 +163,13 @@ void GridPanel::quantityChanged() {
     eyeHeight_->setEnabled(ugr);
     viewAlong_->setEnabled(ugr);
     height_->setEnabled(!ugr);  // the eyes stand at their own height above the floor
+}
+
+void GridPanel::sceneChanged() {
+    if (!(shown_ || shownGlare_) || stale_ || !resultScene_) return;
+    if (!diff(*resultScene_, doc_->scene()).changesIlluminance()) return;  // the camera moved, say
+    stale_ = true;
+    status_->setText(tr("The scene changed since this result: Compute again to update it."));
 }
 
 void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
@@ -175,7 +189,8 @@ void GridPanel::useWholeRoom() {
 
 void GridPanel::compute() {
     cancel();
-    SceneSnapshot scene = doc_->snapshot();
+    const SceneSnapshot current = doc_->snapshot();
+    SceneSnapshot scene = current;
     dfPerLux_.reset();
     maintenance_ = QString::fromStdString(describeMaintenance(maintenanceRange(*scene)));
     if (quantity_->currentIndex() == kDaylightFactor) {
@@ -209,6 +224,7 @@ void GridPanel::compute() {
     shownGlare_.reset();
     latest_.reset();
     latestGlare_.reset();
+    resultScene_ = current;
     if (quantity_->currentIndex() == kUgr) {
         computeUgr(scene, grid);
         return;
@@ -245,12 +261,7 @@ void GridPanel::computeUgr(const SceneSnapshot& scene, const CalculationGrid& gr
     eyes_ = observerPositions(layout_, sceneBounds(*scene).lo.y, scene->metersPerUnit, eyeHeightM_);
     const auto along = GridViewDirection(viewAlong_->currentData().toInt());
     view_ = gridViewDirection(grid, along);
-    viewLabel_ = along == GridViewDirection::PlusU    ? tr("along +u")
-                 : along == GridViewDirection::MinusU ? tr("along -u")
-                 : along == GridViewDirection::PlusV  ? tr("along +v")
-                                                      : tr("along -v");
-    const V3d toward = view_.normalized();
-    viewLabel_ += tr(", toward (%1, %2, %3)").arg(toward.x, 0, 'g', 3).arg(toward.y, 0, 'g', 3).arg(toward.z, 0, 'g', 3);
+    viewLabel_ = describeGridView(grid, along);
     GlareSettings settings;
     const int method = method_->currentData().toInt();
     if (method != kAutoMethod) settings.backgroundMethod = GridMethod(method);  // auto: path
@@ -315,15 +326,15 @@ void GridPanel::poll() {
     progress_->setValue(1000);
     if (!error.isEmpty()) status_->setText(tr("The calculation failed: %1").arg(error));
     else if (shownGlare_)
-        status_->setText(tr("Done: %1 passes of the background, %2 s%3.")
+        status_->setText(tr("Done: %1 passes of the background, %2%3.")
                              .arg(shownGlare_->passes)
-                             .arg(shownGlare_->seconds, 0, 'f', 1)
+                             .arg(text(formatDuration(shownGlare_->seconds)))
                              .arg(shownGlare_->converged ? QString() : tr(" (error target not reached)")));
     else if (shown_)
-        status_->setText(tr("Done: %1 passes, %2 samples per point, %3 s.")
+        status_->setText(tr("Done: %1 passes, %2 samples per point, %3.")
                              .arg(shown_->passes)
                              .arg(shown_->samplesPerPoint)
-                             .arg(shown_->seconds, 0, 'f', 1));
+                             .arg(text(formatDuration(shown_->seconds))));
     emit finished();
 }
 
@@ -336,11 +347,7 @@ void GridPanel::showResult() {
     const GridStatistics s = gridStatistics(values, shown_->insideGeometry);
     QStringList lines;
     if (dfPerLux_) {
-        lines << tr("DFavg %1%   DFmin %2%   DFmax %3%   DFmin/DFavg %4")
-                     .arg(s.average, 0, 'f', 2)
-                     .arg(s.minimum, 0, 'f', 2)
-                     .arg(s.maximum, 0, 'f', 2)
-                     .arg(s.uniformity, 0, 'f', 2);
+        lines << text(daylightFactorFiguresLine(s));
         const DaylightProvision p = checkDaylightProvision(values, shown_->insideGeometry, medianDiffuseIlluminance_);
         lines << tr("EN 17037 (E v,d,med %1 lx%2):").arg(medianDiffuseIlluminance_, 0, 'f', 0)
                                                    .arg(medianGiven_ ? QString() : tr(", the usual value"));
@@ -354,23 +361,12 @@ void GridPanel::showResult() {
                          .arg(l.minimumTargetDf, 0, 'f', 2)
                          .arg(l.minimumMargin, 0, 'f', 2);
     } else {
-        lines << tr("Eavg %1 lx   Emin %2 lx   Emax %3 lx   U0 %4")
-                     .arg(s.average, 0, 'f', 1)
-                     .arg(s.minimum, 0, 'f', 1)
-                     .arg(s.maximum, 0, 'f', 1)
-                     .arg(s.uniformity, 0, 'f', 2);
+        lines << text(gridFiguresLine(s));
         lines << maintenance_;
     }
-    if (s.excluded > 0)
-        lines << tr("%1 of %2 points inside geometry, excluded (hatched)").arg(s.excluded).arg(shown_->lux.size());
-    const QString method = QString::fromLatin1(gridMethodName(shown_->method));
-    if (shown_->errorBarUnknown)
-        lines << tr("%1 cannot carry light through glass to %2 of %3 points: use bdpt (or auto); error bar unknown")
-                     .arg(method)
-                     .arg(shown_->litThroughGlass)
-                     .arg(s.counted);
-    else
-        lines << tr("error bar at most %1% (95%), %2").arg(100.0 * shown_->maxRelativeError, 0, 'f', 2).arg(method);
+    if (s.excluded > 0) lines << text(excludedPointsLine(s, shown_->lux.size(), dfPerLux_.has_value()));
+    lines << tr("method %1").arg(QString::fromLatin1(gridMethodName(shown_->method)));
+    lines << text(gridErrorLines(*shown_, s.counted));
     figures_->setText(lines.join('\n'));
     // Rows from the far side (largest j) down, as the plane is seen from above with u to the right.
     table_->setRowCount(layout_.nv);
@@ -408,7 +404,7 @@ void GridPanel::showResult() {
 
 void GridPanel::showGlareResult() {
     if (!shownGlare_ || shownGlare_->observers.size() != layout_.points.size()) return;
-    figures_->setText(ugrFigures(*shownGlare_, layout_, eyeHeightM_, viewLabel_).join('\n'));
+    figures_->setText(text(ugrGridFigures(*shownGlare_, layout_, eyeHeightM_, viewLabel_)).join('\n'));
     fillUgrTable(*table_, layout_, *shownGlare_);
     export_->setEnabled(true);
     emit resultChanged();

@@ -4,19 +4,21 @@
 // clicks; core/photometry/calculation_grid.h, gridFromCorners), its illuminance computed in the background with a Monte Carlo error bar per point
 // (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
 // Emax and U0 (points inside geometry grey, hatched and left out; a method that cannot carry
-// light through glass flagged: render/photometry/grid_diagnosis.h), and exported as CSV. A scene edit marks the result as out of date; Compute runs
+// light through glass flagged: render/photometry/grid_diagnosis.h), in the words of
+// render/photometry/grid_text.h, and exported as CSV. A scene edit that changes the light
+// (core/scene/scene_change.h: not a camera move) marks the result as out of date; Compute runs
 // again on the current scene. The calculation is a foreground request: it runs in a task arena of
 // its own (in the converging render's, whose job never ends, it could wait behind the render's
 // passes indefinitely) and holds the yield gate, so the render waits until it is done.
 // The quantity UGR puts an observer over each point, at eye height above the floor (seated 1.2 m
 // or standing 1.7 m), all looking along one edge of the grid, and shows each one's UGR
-// (render/photometry/glare_evaluation.h, ui/calculation/ugr_grid.h).
+// (render/photometry/ugr_grid.h, ui/calculation/ugr_table.h).
 
 #include "core/photometry/calculation_grid.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
+#include "render/photometry/ugr_grid.h"
 #include "ui/document/document.h"
-#include "ui/calculation/ugr_grid.h"
 #include "ui/rendering/yield_gate.h"
 
 #include <QTimer>
@@ -24,6 +26,7 @@
 
 #include <memory>
 #include <optional>
+#include <string>
 
 class QComboBox;
 class QDoubleSpinBox;
@@ -47,6 +50,8 @@ public:
     void setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b);
     void useWholeRoom();
     bool isComputing() const { return job_ != nullptr; }
+    // The scene changed since the shown result was computed in a way that changes its values.
+    bool resultOutOfDate() const { return stale_; }
     // The newest result and its layout (null before the first pass of a calculation).
     std::shared_ptr<const GridResult> result() const { return shown_; }
     const GridLayout& layout() const { return layout_; }
@@ -74,6 +79,7 @@ private:
     void showResult();
     void showGlareResult();
     void quantityChanged();
+    void sceneChanged();
     // The UGR grid's calculation over `grid` of `scene` (compute() with the quantity UGR).
     void computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid);
     void exportClicked();
@@ -99,6 +105,7 @@ private:
     std::shared_ptr<TaskHandle> job_;
     std::shared_ptr<const GridResult> shown_;
     uint64_t shownVersion_ = 0;
+    SceneSnapshot resultScene_;  // the document's scene when the calculation started
     bool stale_ = false;
     std::optional<double> dfPerLux_;
     QString maintenance_;  // which illuminance the result is: maintained or the new installation's
@@ -110,7 +117,7 @@ private:
     std::vector<V3d> eyes_;
     V3d view_{1, 0, 0};
     double eyeHeightM_ = 1.2;
-    QString viewLabel_;
+    std::string viewLabel_;
 };
 
 }  // namespace lucerna

@@ -171,8 +171,7 @@ std::optional<Legend> PlanView::gridLegend() const {
 
 bool PlanView::gridOutOfDate() const {
     if (!result_ || !resultScene_) return false;
-    const SceneChange change = diff(*resultScene_, doc_->scene());
-    return change.geometry || change.materials || change.lightSet || !change.lights.empty() || change.daylight;
+    return diff(*resultScene_, doc_->scene()).changesIlluminance();
 }
 
 void PlanView::fitToScene() {

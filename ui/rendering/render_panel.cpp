@@ -1,5 +1,6 @@
 #include "ui/rendering/render_panel.h"
 
+#include "core/number_format.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "render/engine/backend_table.h"
@@ -84,8 +85,8 @@ void RenderPanel::showFrame() {
     if (!frame) return;
     view_->setImage(toDisplayImage(frame->image, display_));
     const double err = frame->estimatedRelmse;
-    figures_->setText(tr("%1 s   %2 spp   estimated relmse %3")
-                          .arg(frame->seconds, 0, 'f', 1)
+    figures_->setText(tr("%1   %2 spp   estimated relmse %3")
+                          .arg(QString::fromStdString(formatDuration(frame->seconds)))
                           .arg(frame->samplesPerPixel, 0, 'g', 4)
                           .arg(std::isfinite(err) ? QString::number(err, 'g', 3) : tr("(after two passes)")));
     plot_->setPoints(render_->history());
