@@ -7,32 +7,6 @@
 
 namespace lucerna {
 
-EditSiteCommand::EditSiteCommand(Document* doc, std::optional<Site> after, int mergeKey, const QString& text)
-    : QUndoCommand(text), doc_(doc), before_(doc->scene().site), after_(std::move(after)), mergeKey_(mergeKey) {}
-
-void EditSiteCommand::redo() { doc_->setSite(after_); }
-void EditSiteCommand::undo() { doc_->setSite(before_); }
-
-bool EditSiteCommand::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const EditSiteCommand*>(other);
-    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_) return false;
-    after_ = o->after_;
-    return true;
-}
-
-EditSkyCommand::EditSkyCommand(Document* doc, std::optional<Sky> after, int mergeKey, const QString& text)
-    : QUndoCommand(text), doc_(doc), before_(doc->scene().sky), after_(std::move(after)), mergeKey_(mergeKey) {}
-
-void EditSkyCommand::redo() { doc_->setSky(after_); }
-void EditSkyCommand::undo() { doc_->setSky(before_); }
-
-bool EditSkyCommand::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const EditSkyCommand*>(other);
-    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_) return false;
-    after_ = o->after_;
-    return true;
-}
-
 int sunIndex(const Scene& scene) {
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].type == LightType::Sun) return int(i);

@@ -3,42 +3,16 @@
 // light and is edited with the light commands; the suns made here are what those commands take.
 // Consecutive edits with the same merge key fold into one step (a run of arrow steps in a field).
 
-#include "ui/document/document.h"
-
-#include <QUndoCommand>
+#include "ui/commands/change_value.h"
 
 #include <string>
 
 namespace lucerna {
 
-class EditSiteCommand : public QUndoCommand {
-public:
-    // mergeKey 0: never merges.
-    EditSiteCommand(Document* doc, std::optional<Site> after, int mergeKey, const QString& text);
-    void redo() override;
-    void undo() override;
-    int id() const override { return 1010; }
-    bool mergeWith(const QUndoCommand* other) override;
-
-private:
-    Document* doc_;
-    std::optional<Site> before_, after_;
-    int mergeKey_;
-};
-
-class EditSkyCommand : public QUndoCommand {
-public:
-    EditSkyCommand(Document* doc, std::optional<Sky> after, int mergeKey, const QString& text);
-    void redo() override;
-    void undo() override;
-    int id() const override { return 1011; }
-    bool mergeWith(const QUndoCommand* other) override;
-
-private:
-    Document* doc_;
-    std::optional<Sky> before_, after_;
-    int mergeKey_;
-};
+// EditSiteCommand(doc, after, mergeKey, text), EditSkyCommand(doc, after, mergeKey, text);
+// mergeKey 0: never merges.
+using EditSiteCommand = ChangeValue<ValueKind::Site, &Document::site, &Document::setSite>;
+using EditSkyCommand = ChangeValue<ValueKind::Sky, &Document::sky, &Document::setSky>;
 
 // The index of the scene's sun (SPEC.md: at most one), or -1.
 int sunIndex(const Scene& scene);

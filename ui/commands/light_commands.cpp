@@ -5,33 +5,6 @@
 
 namespace lucerna {
 
-AddLightCommand::AddLightCommand(Document* doc, int index, Light light, const QString& text)
-    : QUndoCommand(text), doc_(doc), index_(index), light_(std::move(light)) {}
-
-void AddLightCommand::redo() { doc_->insertLight(index_, light_); }
-void AddLightCommand::undo() { doc_->removeLight(index_); }
-
-DeleteLightCommand::DeleteLightCommand(Document* doc, int index)
-    : QUndoCommand(QObject::tr("Delete %1").arg(QString::fromStdString(doc->scene().lights.at(size_t(index)).name))),
-      doc_(doc), index_(index), light_(doc->scene().lights.at(size_t(index))) {}
-
-void DeleteLightCommand::redo() { doc_->removeLight(index_); }
-void DeleteLightCommand::undo() { doc_->insertLight(index_, light_); }
-
-EditLightCommand::EditLightCommand(Document* doc, int index, Light after, int mergeKey, const QString& text)
-    : QUndoCommand(text), doc_(doc), index_(index), before_(doc->scene().lights.at(size_t(index))),
-      after_(std::move(after)), mergeKey_(mergeKey) {}
-
-void EditLightCommand::redo() { doc_->setLight(index_, after_); }
-void EditLightCommand::undo() { doc_->setLight(index_, before_); }
-
-bool EditLightCommand::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const EditLightCommand*>(other);
-    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_ || o->index_ != index_) return false;
-    after_ = o->after_;
-    return true;
-}
-
 QString lightTypeName(LightType type) {
     switch (type) {
     case LightType::Point: return QObject::tr("Point light");

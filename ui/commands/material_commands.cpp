@@ -4,20 +4,6 @@
 
 namespace lucerna {
 
-EditMaterialCommand::EditMaterialCommand(Document* doc, int index, Material after, int mergeKey, const QString& text)
-    : QUndoCommand(text), doc_(doc), index_(index), before_(doc->scene().materials.at(size_t(index))),
-      after_(std::move(after)), mergeKey_(mergeKey) {}
-
-void EditMaterialCommand::redo() { doc_->setMaterial(index_, after_); }
-void EditMaterialCommand::undo() { doc_->setMaterial(index_, before_); }
-
-bool EditMaterialCommand::mergeWith(const QUndoCommand* other) {
-    const auto* o = static_cast<const EditMaterialCommand*>(other);
-    if (mergeKey_ == 0 || o->mergeKey_ != mergeKey_ || o->index_ != index_) return false;
-    after_ = o->after_;
-    return true;
-}
-
 Material withMaterialType(const Material& m, MaterialType type) {
     if (m.type == type) return m;
     // The colour the material shows most, to seed the new type's colour.

@@ -3,7 +3,8 @@
 // of its own when given) and delete. Consecutive edits of one object with the same merge key (one
 // per drag or per field) fold into one undo step.
 
-#include "ui/document/document.h"
+#include "ui/commands/add_or_delete.h"
+#include "ui/commands/change_value.h"
 
 #include <QUndoCommand>
 
@@ -11,22 +12,9 @@
 
 namespace lucerna {
 
-// Replaces an object (transform, material, name); `after` must carry its resolved world mesh.
-class EditObjectCommand : public QUndoCommand {
-public:
-    // mergeKey 0: never merges.
-    EditObjectCommand(Document* doc, int index, Object after, int mergeKey, const QString& text);
-    void redo() override;
-    void undo() override;
-    int id() const override { return 1003; }
-    bool mergeWith(const QUndoCommand* other) override;
-
-private:
-    Document* doc_;
-    int index_;
-    Object before_, after_;
-    int mergeKey_;
-};
+// EditObjectCommand(doc, index, after, mergeKey, text) replaces an object (transform, material,
+// name); `after` must carry its resolved world mesh. mergeKey 0: never merges.
+using EditObjectCommand = ChangeValue<ValueKind::Object, &Document::object, &Document::setObject>;
 
 // Adds an object at the end (mesh import), and a material for it at the end when `material` is
 // given. The object must carry its resolved world mesh.
@@ -43,16 +31,7 @@ private:
     int objectIndex_ = 0, materialIndex_ = 0;
 };
 
-class DeleteObjectCommand : public QUndoCommand {
-public:
-    DeleteObjectCommand(Document* doc, int index);
-    void redo() override;
-    void undo() override;
-
-private:
-    Document* doc_;
-    int index_;
-    Object object_;
-};
+// DeleteObjectCommand(doc, index): "Delete NAME".
+using DeleteObjectCommand = AddOrDelete<&Document::object, &Document::insertObject, &Document::removeObject>;
 
 }  // namespace lucerna

@@ -32,116 +32,89 @@ void Document::reset(Scene scene) {
     emit daylightChanged();
 }
 
+template <class T> void Document::insertInto(std::vector<T> Scene::*list, int index, T item) {
+    modify([&](Scene& s) { (s.*list).insert((s.*list).begin() + index, std::move(item)); });
+    emit structureChanged();
+}
+
+template <class T> void Document::removeFrom(std::vector<T> Scene::*list, int index) {
+    modify([&](Scene& s) { (s.*list).erase((s.*list).begin() + index); });
+    emit structureChanged();
+}
+
+template <class T> void Document::replaceIn(std::vector<T> Scene::*list, int index, T item, bool listed) {
+    modify([&](Scene& s) { (s.*list)[size_t(index)] = std::move(item); });
+    if (listed) emit structureChanged();
+}
+
+std::vector<Light> Document::lightsAt(const std::vector<int>& indices) const {
+    std::vector<Light> lights;
+    lights.reserve(indices.size());
+    for (int i : indices) lights.push_back(light(i));
+    return lights;
+}
+
 void Document::setLight(int index, Light light) {
-    const Light& old = scene_->lights.at(size_t(index));
+    const Light& old = this->light(index);
     const bool renamed = old.name != light.name || old.group != light.group;
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->lights[size_t(index)] = std::move(light);
-    publish(std::move(copy));
+    modify([&](Scene& s) { s.lights[size_t(index)] = std::move(light); });
     emit lightChanged(index);
     if (renamed) emit structureChanged();
 }
 
 void Document::setLights(const std::vector<int>& indices, const std::vector<Light>& lights) {
     bool renamed = false;
-    auto copy = std::make_shared<Scene>(*scene_);
-    for (size_t k = 0; k < indices.size() && k < lights.size(); ++k) {
-        Light& l = copy->lights.at(size_t(indices[k]));
-        renamed = renamed || l.name != lights[k].name || l.group != lights[k].group;
-        l = lights[k];
-    }
-    publish(std::move(copy));
+    modify([&](Scene& s) {
+        for (size_t k = 0; k < indices.size() && k < lights.size(); ++k) {
+            Light& l = s.lights.at(size_t(indices[k]));
+            renamed = renamed || l.name != lights[k].name || l.group != lights[k].group;
+            l = lights[k];
+        }
+    });
     for (int i : indices) emit lightChanged(i);
     if (renamed) emit structureChanged();
 }
 
 void Document::replaceLights(std::vector<Light> lights) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->lights = std::move(lights);
-    publish(std::move(copy));
+    modify([&](Scene& s) { s.lights = std::move(lights); });
     emit structureChanged();
 }
 
-void Document::insertLight(int index, Light light) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->lights.insert(copy->lights.begin() + index, std::move(light));
-    publish(std::move(copy));
-    emit structureChanged();
-}
-
-void Document::removeLight(int index) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->lights.erase(copy->lights.begin() + index);
-    publish(std::move(copy));
-    emit structureChanged();
-}
+void Document::insertLight(int index, Light light) { insertInto(&Scene::lights, index, std::move(light)); }
+void Document::removeLight(int index) { removeFrom(&Scene::lights, index); }
 
 void Document::setMaterial(int index, Material material) {
     // The outliner shows each material's type.
-    const Material& old = scene_->materials.at(size_t(index));
-    const bool renamed = old.name != material.name || old.type != material.type;
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->materials[size_t(index)] = std::move(material);
-    publish(std::move(copy));
-    if (renamed) emit structureChanged();
+    const bool listed = material.name != this->material(index).name || material.type != this->material(index).type;
+    replaceIn(&Scene::materials, index, std::move(material), listed);
 }
 
 void Document::insertMaterial(int index, Material material) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->materials.insert(copy->materials.begin() + index, std::move(material));
-    publish(std::move(copy));
-    emit structureChanged();
+    insertInto(&Scene::materials, index, std::move(material));
 }
-
-void Document::removeMaterial(int index) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->materials.erase(copy->materials.begin() + index);
-    publish(std::move(copy));
-    emit structureChanged();
-}
+void Document::removeMaterial(int index) { removeFrom(&Scene::materials, index); }
 
 void Document::setObject(int index, Object object) {
     // The outliner shows each object's material.
-    const Object& old = scene_->objects.at(size_t(index));
-    const bool renamed = old.name != object.name || old.material != object.material;
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->objects[size_t(index)] = std::move(object);
-    publish(std::move(copy));
-    if (renamed) emit structureChanged();
+    const bool listed = object.name != this->object(index).name || object.material != this->object(index).material;
+    replaceIn(&Scene::objects, index, std::move(object), listed);
 }
 
-void Document::insertObject(int index, Object object) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->objects.insert(copy->objects.begin() + index, std::move(object));
-    publish(std::move(copy));
-    emit structureChanged();
-}
-
-void Document::removeObject(int index) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->objects.erase(copy->objects.begin() + index);
-    publish(std::move(copy));
-    emit structureChanged();
-}
+void Document::insertObject(int index, Object object) { insertInto(&Scene::objects, index, std::move(object)); }
+void Document::removeObject(int index) { removeFrom(&Scene::objects, index); }
 
 void Document::setCamera(const Camera& camera) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->camera = camera;
-    publish(std::move(copy));
+    modify([&](Scene& s) { s.camera = camera; });
     emit cameraChanged();
 }
 
 void Document::setSite(std::optional<Site> site) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->site = std::move(site);
-    publish(std::move(copy));
+    modify([&](Scene& s) { s.site = std::move(site); });
     emit daylightChanged();
 }
 
 void Document::setSky(std::optional<Sky> sky) {
-    auto copy = std::make_shared<Scene>(*scene_);
-    copy->sky = std::move(sky);
-    publish(std::move(copy));
+    modify([&](Scene& s) { s.sky = std::move(sky); });
     emit daylightChanged();
 }
 

@@ -38,7 +38,17 @@ public:
     // Replaces the whole scene (open, revert, recovery) and clears the undo history.
     void reset(Scene scene);
 
-    // Typed setters for the undo commands. Indices must be valid (insert: at most the size).
+    // Typed getters and setters for the undo commands, which pair them (ui/commands/change_value.h,
+    // ui/commands/add_or_delete.h). Indices must be valid (insert: at most the size).
+    const Light& light(int index) const { return scene_->lights.at(size_t(index)); }
+    const Material& material(int index) const { return scene_->materials.at(size_t(index)); }
+    const Object& object(int index) const { return scene_->objects.at(size_t(index)); }
+    const std::vector<Light>& lights() const { return scene_->lights; }
+    std::vector<Light> lightsAt(const std::vector<int>& indices) const;
+    const Camera& camera() const { return scene_->camera; }
+    const std::optional<Site>& site() const { return scene_->site; }
+    const std::optional<Sky>& sky() const { return scene_->sky; }
+
     void setLight(int index, Light light);
     void insertLight(int index, Light light);
     void removeLight(int index);
@@ -81,6 +91,11 @@ signals:
 
 private:
     void publish(std::shared_ptr<Scene> copy);
+    // An item inserted into or removed from one of the scene's lists; the structure changed.
+    template <class T> void insertInto(std::vector<T> Scene::*list, int index, T item);
+    template <class T> void removeFrom(std::vector<T> Scene::*list, int index);
+    // An item of one of the scene's lists replaced; `listed`: what the outliner shows of it changed.
+    template <class T> void replaceIn(std::vector<T> Scene::*list, int index, T item, bool listed);
 
     SceneSnapshot scene_;
     uint64_t version_ = 1;

@@ -40,13 +40,8 @@ Rgbd shownColour(std::optional<double> temperatureK, std::optional<Rgbd> colour)
 }
 }  // namespace
 
-LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
-    empty_ = new QLabel(tr("Select a light in the outliner or the viewport."), this);
-    empty_->setWordWrap(true);
-    fields_ = new QWidget(this);
-    rows_ = new QVBoxLayout(fields_);
-    rows_->setContentsMargins(0, 0, 0, 0);
-    fields_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);  // rows packed at the top
+LightProperties::LightProperties(Document* doc, QWidget* parent)
+    : ItemProperties(doc, tr("Select a light in the outliner or the viewport."), parent) {
     name_ = new QLineEdit(fields_);
     name_->setObjectName("lightName");
     type_ = new QLabel(fields_);
@@ -64,9 +59,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     directionRow_ = addPropertyRow(rows_, tr("Direction"), {direction_[0], direction_[1], direction_[2]});
 
     // Luminaire.
-    file_ = new QLabel(fields_);
-    file_->setObjectName("luminaireFile");
-    file_->setWordWrap(true);
+    file_ = makeWrappingLabel(fields_, "luminaireFile");
     fileRow_ = addPropertyRow(rows_, tr("Photometry"), {file_});
     rotation_ = makeSpin(Field::Rotation, -360, 360, 2);
     rotation_->setSuffix(QStringLiteral(" °"));
@@ -114,9 +107,8 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
     coneRow_ = addPropertyRow(rows_, tr("Cone half-angle"), {cone_});
     falloffRow_ = addPropertyRow(rows_, tr("Falloff start"), {falloff_});
 
-    sunNote_ = new QLabel(tr("The sun's illuminance, disc, date and time are in the Daylight panel."), fields_);
-    sunNote_->setObjectName("lightSunNote");
-    sunNote_->setWordWrap(true);
+    sunNote_ = makeWrappingLabel(fields_, "lightSunNote",
+                                 tr("The sun's illuminance, disc, date and time are in the Daylight panel."));
     rows_->addWidget(sunNote_);
 
     polar_ = new LuminairePolarPlot(fields_);
@@ -166,11 +158,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent) : QWidget(paren
 }
 
 QDoubleSpinBox* LightProperties::makeSpin(Field field, double lo, double hi, int decimals) {
-    QDoubleSpinBox* spin = makePropertySpin(fields_, lo, hi, decimals);
-    connect(spin, &QDoubleSpinBox::valueChanged, this, [this, field, spin] { apply(field, spin); });
-    // A new edit of this field after editing finished is a new undo step.
-    connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { merge_.finish(); });
-    return spin;
+    return ItemProperties::makeSpin(lo, hi, decimals, [this, field](QDoubleSpinBox* spin) { apply(field, spin); });
 }
 
 std::array<QDoubleSpinBox*, 3> LightProperties::makeTriple(Field field) {
@@ -179,22 +167,11 @@ std::array<QDoubleSpinBox*, 3> LightProperties::makeTriple(Field field) {
     return spins;
 }
 
-void LightProperties::setLight(int index) {
-    if (index != index_) merge_.finish();
-    index_ = index;
-    refresh();
-}
-
 void LightProperties::refresh() {
     const Scene& scene = doc_->scene();
-    const bool valid = index_ >= 0 && index_ < int(scene.lights.size());
-    empty_->setVisible(!valid);
-    fields_->setVisible(valid);
-    if (!valid) return;
+    if (!showsItem(scene.lights.size())) return;
     const Light& l = scene.lights[size_t(index_)];
-    const QList<QWidget*> all = fields_->findChildren<QWidget*>();
-    std::vector<std::unique_ptr<QSignalBlocker>> blocks;
-    for (QWidget* w : all) blocks.push_back(std::make_unique<QSignalBlocker>(w));
+    const auto quiet = quietFields();
 
     if (!name_->hasFocus() || name_->text().isEmpty()) name_->setText(QString::fromStdString(l.name));
     type_->setText(lightTypeName(l.type));
@@ -389,18 +366,8 @@ void LightProperties::apply(Field field, const void* sender) {
 }
 
 void LightProperties::renameLight() {
-    const Scene& scene = doc_->scene();
-    if (index_ < 0 || index_ >= int(scene.lights.size())) return;
-    Light l = scene.lights[size_t(index_)];
-    const std::string name = name_->text().trimmed().toStdString();
-    // SPEC.md: names are unique across objects and lights; an empty or taken name is refused.
-    if (name == l.name || name.empty() || doc_->nameInUse(name)) {
-        name_->setText(QString::fromStdString(l.name));
-        return;
-    }
-    const QString text = tr("Rename %1 to %2").arg(QString::fromStdString(l.name), QString::fromStdString(name));
-    l.name = name;
-    doc_->undoStack()->push(new EditLightCommand(doc_, index_, l, 0, text));
+    if (index_ >= 0 && index_ < int(doc_->scene().lights.size()))
+        rename<EditLightCommand>(name_, doc_->light(index_));
 }
 
 void LightProperties::regroupLight() {

@@ -9,10 +9,7 @@
 // Every edit of a field is one EditLightCommand holding the whole light before and after; the
 // arrow steps of one field merge into it until the field's editing finishes.
 
-#include "ui/document/document.h"
-#include "ui/properties/property_rows.h"
-
-#include <QWidget>
+#include "ui/properties/item_properties.h"
 
 #include <array>
 
@@ -21,20 +18,19 @@ class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
 class QToolButton;
-class QVBoxLayout;
 
 namespace lucerna {
 
 class LightColourEdit;
 class LuminairePolarPlot;
 
-class LightProperties : public QWidget {
+class LightProperties : public ItemProperties {
     Q_OBJECT
 public:
     explicit LightProperties(Document* doc, QWidget* parent = nullptr);
 
     // -1: no light (the panel says so).
-    void setLight(int index);
+    void setLight(int index) { select(index); }
     int light() const { return index_; }
 
     // The fields, for tests and for focus.
@@ -61,16 +57,12 @@ private:
     enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens };
     std::array<QDoubleSpinBox*, 3> makeTriple(Field field);
     QDoubleSpinBox* makeSpin(Field field, double lo, double hi, int decimals);
-    void refresh();
+    void refresh() override;
     void apply(Field field, const void* sender);
     void renameLight();
     void regroupLight();
 
-    Document* doc_;
-    int index_ = -1;
-    QLabel *empty_, *type_, *outputOther_, *file_, *sunNote_;
-    QWidget* fields_;
-    QVBoxLayout* rows_;
+    QLabel *type_, *outputOther_, *file_, *sunNote_;
     QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
     QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_;
     QLineEdit* name_;
@@ -81,7 +73,6 @@ private:
     LightColourEdit* colour_;
     QToolButton* advanced_;
     LuminairePolarPlot* polar_;
-    MergeTracker merge_;
 };
 
 }  // namespace lucerna

@@ -122,9 +122,7 @@ LightSetProperties::LightSetProperties(Document* doc, QWidget* parent) : QWidget
     title_->setFont(bold);
     title_->setWordWrap(true);
     rows->addWidget(title_);
-    summary_ = new QLabel(this);
-    summary_->setObjectName("lightSetSummary");
-    summary_->setWordWrap(true);
+    summary_ = makeWrappingLabel(this, "lightSetSummary");
     rows->addWidget(summary_);
 
     group_ = new QLineEdit(this);
@@ -146,9 +144,7 @@ LightSetProperties::LightSetProperties(Document* doc, QWidget* parent) : QWidget
     temperature_->setSpecialValueText(tr("mixed"));
     temperature_->setSingleStep(100);
     temperatureRow_ = addPropertyRow(rows, tr("Colour temperature"), {temperature_});
-    file_ = new QLabel(this);
-    file_->setObjectName("lightSetFile");
-    file_->setWordWrap(true);
+    file_ = makeWrappingLabel(this, "lightSetFile");
     replace_ = new QPushButton(tr("Replace..."), this);
     replace_->setObjectName("lightSetReplaceFile");
     replace_->setToolTip(tr("Make every light with a position a luminaire of an IES or EULUMDAT file"));

@@ -1,6 +1,7 @@
 #include "ui/properties/luminaire_polar_plot.h"
 
 #include "core/photometry/goniometric_distribution.h"
+#include "ui/properties/property_rows.h"
 
 #include <QLabel>
 #include <QPainter>
@@ -46,9 +47,7 @@ LuminairePolarPlot::LuminairePolarPlot(QWidget* parent) : QWidget(parent) {
     v->setContentsMargins(0, 0, 0, 0);
     canvas_ = new PolarCanvas(this, this);
     canvas_->setObjectName("luminairePolarCanvas");
-    peak_ = new QLabel(this);
-    peak_->setObjectName("luminairePeak");
-    peak_->setWordWrap(true);
+    peak_ = makeWrappingLabel(this, "luminairePeak");
     v->addWidget(canvas_);
     v->addWidget(peak_);
 }

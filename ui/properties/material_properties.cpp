@@ -19,14 +19,8 @@ constexpr MaterialType kTypes[] = {MaterialType::Diffuse, MaterialType::Glossy, 
                                    MaterialType::Dielectric, MaterialType::Emitter, MaterialType::Glazing};
 }  // namespace
 
-MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
-    empty_ = new QLabel(tr("Select an object, a light or a material in the outliner."), this);
-    empty_->setWordWrap(true);
-    fields_ = new QWidget(this);
-    rows_ = new QVBoxLayout(fields_);
-    rows_->setContentsMargins(0, 0, 0, 0);
-    fields_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
-
+MaterialProperties::MaterialProperties(Document* doc, QWidget* parent)
+    : ItemProperties(doc, tr("Select an object, a light or a material in the outliner."), parent) {
     name_ = new QLabel(fields_);
     name_->setObjectName("materialName");
     QFont bold = name_->font();
@@ -110,18 +104,9 @@ MaterialProperties::MaterialProperties(Document* doc, QWidget* parent) : QWidget
     refresh();
 }
 
-void MaterialProperties::setMaterial(int index) {
-    if (index != index_) merge_.finish();
-    index_ = index;
-    refresh();
-}
-
 void MaterialProperties::refresh() {
     const Scene& scene = doc_->scene();
-    const bool valid = index_ >= 0 && index_ < int(scene.materials.size());
-    empty_->setVisible(!valid);
-    fields_->setVisible(valid);
-    if (!valid) return;
+    if (!showsItem(scene.materials.size())) return;
     const Material& m = scene.materials[size_t(index_)];
     name_->setText(QString::fromStdString(m.name));
     {

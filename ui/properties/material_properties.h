@@ -5,28 +5,24 @@
 // and an emitter's radiance in W sr^-1 m^-2 with its luminance in cd/m^2 (683 Y). Every change is
 // an EditMaterialCommand; a slider drag or a field's arrow steps merge into one undo step.
 
-#include "ui/document/document.h"
-#include "ui/properties/property_rows.h"
-
-#include <QWidget>
+#include "ui/properties/item_properties.h"
 
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QSlider;
-class QVBoxLayout;
 
 namespace lucerna {
 
 class ColourEdit;
 
-class MaterialProperties : public QWidget {
+class MaterialProperties : public ItemProperties {
     Q_OBJECT
 public:
     explicit MaterialProperties(Document* doc, QWidget* parent = nullptr);
 
     // -1: no material (the panel says so).
-    void setMaterial(int index);
+    void setMaterial(int index) { select(index); }
     int material() const { return index_; }
 
     // The fields, for tests.
@@ -41,23 +37,18 @@ public:
     QLabel* luminanceLabel() const { return luminance_; }
 
 private:
-    void refresh();
+    void refresh() override;
     // Pushes the edited material; `source` is the widget that changed (undo merging).
     void push(Material m, const void* source, const QString& what);
     void applyFields(const void* source);
 
-    Document* doc_;
-    int index_ = -1;
-    QLabel *empty_, *name_, *luminance_;
-    QWidget* fields_;
-    QVBoxLayout* rows_;
+    QLabel *name_, *luminance_;
     QComboBox* type_;
     ColourEdit *albedo_, *specular_, *reflectance_, *radiance_, *transmittance_;
     QSlider* roughnessSlider_;
     QDoubleSpinBox *roughness_, *ior_;
     QWidget *albedoRow_, *specularRow_, *roughnessRow_, *reflectanceRow_, *iorRow_, *radianceRow_, *luminanceRow_,
         *transmittanceRow_;
-    MergeTracker merge_;
 };
 
 }  // namespace lucerna

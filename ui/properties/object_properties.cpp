@@ -17,19 +17,12 @@
 
 namespace lucerna {
 
-ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
-    fields_ = new QWidget(this);
-    rows_ = new QVBoxLayout(fields_);
-    rows_->setContentsMargins(0, 0, 0, 0);
-    fields_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
-
+ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : ItemProperties(doc, {}, parent) {
     name_ = new QLineEdit(fields_);
     name_->setObjectName("objectName");
     material_ = new QComboBox(fields_);
     material_->setObjectName("objectMaterial");
-    mesh_ = new QLabel(fields_);
-    mesh_->setObjectName("objectMesh");
-    mesh_->setWordWrap(true);
+    mesh_ = makeWrappingLabel(fields_, "objectMesh");
     size_ = new QLabel(fields_);
     size_->setObjectName("objectSize");
     addPropertyRow(rows_, tr("Object"), {name_});
@@ -42,17 +35,14 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
     axis_ = makeTriple(-1e6, 1e6, 4);
     for (QDoubleSpinBox* s : axis_) s->setSingleStep(0.1);
     axisRow_ = addPropertyRow(rows_, tr("Rotation axis"), {axis_[0], axis_[1], axis_[2]});
-    angle_ = makePropertySpin(fields_, -360.0, 360.0, 2);
+    angle_ = makeSpin(-360.0, 360.0, 2, [this](QDoubleSpinBox* spin) { applyTransform(spin); });
     angle_->setSuffix(QStringLiteral(" °"));
     angle_->setObjectName("objectAngle");
-    connect(angle_, &QDoubleSpinBox::valueChanged, this, [this] { applyTransform(angle_); });
-    connect(angle_, &QDoubleSpinBox::editingFinished, this, [this] { merge_.finish(); });
     angleRow_ = addPropertyRow(rows_, tr("Rotation angle"), {angle_});
     scale_ = makeTriple(-1e6, 1e6, 3);
     for (QDoubleSpinBox* s : scale_) s->setSingleStep(0.1);
     scaleRow_ = addPropertyRow(rows_, tr("Scale"), {scale_[0], scale_[1], scale_[2]});
-    matrixNote_ = new QLabel(tr("The transform is a matrix in the scene file; edit it there."), fields_);
-    matrixNote_->setWordWrap(true);
+    matrixNote_ = makeWrappingLabel(fields_, {}, tr("The transform is a matrix in the scene file; edit it there."));
     rows_->addWidget(matrixNote_);
     rows_->addStretch(1);  // rows packed at the top while hidden ones still count in the hint
     for (int i = 0; i < 3; ++i) {
@@ -65,7 +55,7 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
     layout->setContentsMargins(0, 0, 0, 0);
     layout->addWidget(fields_);
 
-    connect(name_, &QLineEdit::editingFinished, this, &ObjectProperties::rename);
+    connect(name_, &QLineEdit::editingFinished, this, &ObjectProperties::renameObject);
     connect(material_, &QComboBox::activated, this, &ObjectProperties::assignMaterial);
     connect(doc_, &Document::changed, this, &ObjectProperties::refresh);
     refresh();
@@ -73,30 +63,15 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : QWidget(par
 
 std::array<QDoubleSpinBox*, 3> ObjectProperties::makeTriple(double lo, double hi, int decimals) {
     std::array<QDoubleSpinBox*, 3> spins{};
-    for (auto& s : spins) {
-        s = makePropertySpin(fields_, lo, hi, decimals);
-        QDoubleSpinBox* spin = s;
-        connect(spin, &QDoubleSpinBox::valueChanged, this, [this, spin] { applyTransform(spin); });
-        connect(spin, &QDoubleSpinBox::editingFinished, this, [this] { merge_.finish(); });
-    }
+    for (auto& s : spins) s = makeSpin(lo, hi, decimals, [this](QDoubleSpinBox* spin) { applyTransform(spin); });
     return spins;
-}
-
-void ObjectProperties::setObject(int index) {
-    if (index != index_) merge_.finish();
-    index_ = index;
-    refresh();
 }
 
 void ObjectProperties::refresh() {
     const Scene& scene = doc_->scene();
-    const bool valid = index_ >= 0 && index_ < int(scene.objects.size());
-    setVisible(valid);
-    if (!valid) return;
+    if (!showsItem(scene.objects.size())) return;
     const Object& o = scene.objects[size_t(index_)];
-    const QList<QWidget*> all = fields_->findChildren<QWidget*>();
-    std::vector<std::unique_ptr<QSignalBlocker>> blocks;
-    for (QWidget* w : all) blocks.push_back(std::make_unique<QSignalBlocker>(w));
+    const auto quiet = quietFields();
 
     if (!name_->hasFocus() || name_->text().isEmpty()) name_->setText(QString::fromStdString(o.name));
     material_->clear();
@@ -202,19 +177,9 @@ Object ObjectProperties::withWorldMesh(const Scene& scene, Object o) {
     return o;
 }
 
-void ObjectProperties::rename() {
-    const Scene& scene = doc_->scene();
-    if (index_ < 0 || index_ >= int(scene.objects.size())) return;
-    Object o = scene.objects[size_t(index_)];
-    const std::string name = name_->text().trimmed().toStdString();
-    // SPEC.md: names are unique across objects and lights; an empty or taken name is refused.
-    if (name == o.name || name.empty() || doc_->nameInUse(name)) {
-        name_->setText(QString::fromStdString(o.name));
-        return;
-    }
-    const QString text = tr("Rename %1 to %2").arg(QString::fromStdString(o.name), QString::fromStdString(name));
-    o.name = name;
-    doc_->undoStack()->push(new EditObjectCommand(doc_, index_, std::move(o), 0, text));
+void ObjectProperties::renameObject() {
+    if (index_ >= 0 && index_ < int(doc_->scene().objects.size()))
+        rename<EditObjectCommand>(name_, doc_->object(index_));
 }
 
 void ObjectProperties::assignMaterial() {

@@ -6,10 +6,7 @@
 // the converging render see the moved object; a field's arrow steps merge into one undo step.
 // A transform given as a matrix is shown as such and not edited here.
 
-#include "ui/document/document.h"
-#include "ui/properties/property_rows.h"
-
-#include <QWidget>
+#include "ui/properties/item_properties.h"
 
 #include <array>
 #include <memory>
@@ -19,17 +16,16 @@ class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QLineEdit;
-class QVBoxLayout;
 
 namespace lucerna {
 
-class ObjectProperties : public QWidget {
+class ObjectProperties : public ItemProperties {
     Q_OBJECT
 public:
     explicit ObjectProperties(Document* doc, QWidget* parent = nullptr);
 
     // -1: no object (the panel hides its fields).
-    void setObject(int index);
+    void setObject(int index) { select(index); }
     int object() const { return index_; }
 
     QLineEdit* nameField() const { return name_; }
@@ -46,25 +42,20 @@ signals:
 
 private:
     std::array<QDoubleSpinBox*, 3> makeTriple(double lo, double hi, int decimals);
-    void refresh();
+    void refresh() override;
     void applyTransform(const void* source);
-    void rename();
+    void renameObject();
     void assignMaterial();
     // `o` with its world mesh for its new transform. A mesh file is read once and kept while the
     // object is edited, so that the steps of a drag do not parse it again.
     Object withWorldMesh(const Scene& scene, Object o);
 
-    Document* doc_;
-    int index_ = -1;
-    QWidget* fields_;
-    QVBoxLayout* rows_;
     QLineEdit* name_;
     QComboBox* material_;
     QLabel *mesh_, *size_, *matrixNote_;
     QWidget *translateRow_, *axisRow_, *angleRow_, *scaleRow_;
     std::array<QDoubleSpinBox*, 3> translate_{}, axis_{}, scale_{};
     QDoubleSpinBox* angle_;
-    MergeTracker merge_;
     std::string cachedPath_;  // absolute path of the mesh file in cachedMesh_
     std::shared_ptr<const TriangleMesh> cachedMesh_;
 };

@@ -26,6 +26,13 @@ QWidget* addPropertyRow(QVBoxLayout* rows, const QString& label, std::initialize
 
 QLabel* rowLabel(QWidget* row) { return row->findChild<QLabel*>(QString(), Qt::FindDirectChildrenOnly); }
 
+QLabel* makeWrappingLabel(QWidget* parent, const QString& name, const QString& text) {
+    auto* label = new QLabel(text, parent);
+    label->setObjectName(name);
+    label->setWordWrap(true);
+    return label;
+}
+
 QDoubleSpinBox* makePropertySpin(QWidget* parent, double lo, double hi, int decimals) {
     auto* spin = new QDoubleSpinBox(parent);
     spin->setKeyboardTracking(false);

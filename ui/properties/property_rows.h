@@ -19,6 +19,9 @@ namespace lucerna {
 QWidget* addPropertyRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields);
 QLabel* rowLabel(QWidget* row);
 
+// A label whose text wraps to the panel's width, named `name` (tests find it by it).
+QLabel* makeWrappingLabel(QWidget* parent, const QString& name, const QString& text = {});
+
 // A spin box for a property: no keyboard tracking, accelerated arrows, and a width the layout
 // shares (three in a row must not widen the dock past the viewport).
 QDoubleSpinBox* makePropertySpin(QWidget* parent, double lo, double hi, int decimals);

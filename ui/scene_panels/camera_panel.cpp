@@ -44,9 +44,7 @@ CameraPanel::CameraPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     buttons->addWidget(all);
     buttons->addWidget(reset);
     rows->addLayout(buttons);
-    error_ = new QLabel(this);
-    error_->setObjectName("cameraError");
-    error_->setWordWrap(true);
+    error_ = makeWrappingLabel(this, "cameraError");
     rows->addWidget(error_);
     rows->addStretch(1);
     connect(all, &QPushButton::clicked, this, &CameraPanel::viewAll);

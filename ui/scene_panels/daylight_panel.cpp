@@ -39,6 +39,12 @@ constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3;
 // The sky quantity list.
 constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
 
+// A field's edit: `value` takes the field's value; returns the undo step's name.
+template <class T, class Field> QString taken(T& value, const Field* field, const QString& step) {
+    value = field->value();
+    return step;
+}
+
 // The ISO 15469 / CIE S 011 descriptions of the 15 general skies.
 const char* const kCieSkyNames[15] = {
     "Overcast, steep gradation, uniform in azimuth (the CIE standard overcast sky)",
@@ -196,13 +202,9 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     row(sun, tr("Time"), {time_});
     // The slider has the dock's whole width: a narrow one would move the sun by the hour.
     sun->addWidget(timeSlider_);
-    sunPosition_ = new QLabel(this);
-    sunPosition_->setObjectName("daylightSunPosition");
-    sunPosition_->setWordWrap(true);
+    sunPosition_ = makeWrappingLabel(this, "daylightSunPosition");
     sun->addWidget(sunPosition_);
-    horizontalIlluminance_ = new QLabel(this);
-    horizontalIlluminance_->setObjectName("daylightHorizontalIlluminance");
-    horizontalIlluminance_->setWordWrap(true);
+    horizontalIlluminance_ = makeWrappingLabel(this, "daylightHorizontalIlluminance");
     horizontalIlluminance_->setToolTip(tr("The horizontal illuminance of the sun and the sky on an open plane"));
     sun->addWidget(horizontalIlluminance_);
 
@@ -220,9 +222,7 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     connect(cieType_, &QSpinBox::valueChanged, this, [this] { editSky(cieType_); });
     connect(cieType_, &QSpinBox::editingFinished, this, [this] { merge_.finish(); });
     cieTypeRow_ = row(sky, tr("CIE type"), {cieType_});
-    cieTypeName_ = new QLabel(this);
-    cieTypeName_->setObjectName("daylightCieTypeName");
-    cieTypeName_->setWordWrap(true);
+    cieTypeName_ = makeWrappingLabel(this, "daylightCieTypeName");
     sky->addWidget(cieTypeName_);
     skyQuantity_ = new QComboBox(this);
     skyQuantity_->setObjectName("daylightSkyQuantity");
@@ -245,9 +245,7 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
         w->setMinimumWidth(50);
     }
 
-    error_ = new QLabel(this);
-    error_->setObjectName("daylightError");
-    error_->setWordWrap(true);
+    error_ = makeWrappingLabel(this, "daylightError");
     layout->addWidget(error_);
     layout->addStretch(1);
 
@@ -384,10 +382,14 @@ void DaylightPanel::showSunPosition() {
         tr("Eh %1: sun %2, sky %3").arg(lux(sunEh + skyEh), lux(sunEh), lux(skyEh)));
 }
 
-void DaylightPanel::chooseCity(int item) {
+const Scene& DaylightPanel::beginChoice() {
     merge_.finish();
     error_->clear();
-    const Scene& scene = doc_->scene();
+    return doc_->scene();
+}
+
+void DaylightPanel::chooseCity(int item) {
+    const Scene& scene = beginChoice();
     if (item == kNoSite) {
         if (!scene.site) return;
         // A sun placed by time keeps where it stands, by direction: the scene stays valid.
@@ -420,36 +422,31 @@ void DaylightPanel::chooseCity(int item) {
     doc_->undoStack()->push(new EditSiteCommand(doc_, site, 0, text));
 }
 
-void DaylightPanel::editSite(const void* field) {
+template <class Command, class Value, class Edit>
+void DaylightPanel::editValue(const void* field, const std::optional<Value>& current, Edit edit) {
     error_->clear();
-    const Scene& scene = doc_->scene();
-    if (!scene.site) return;
-    Site site = *scene.site;
-    QString text;
-    if (field == latitude_) {
-        site.latitudeDeg = latitude_->value();
-        text = tr("Change the latitude");
-    } else if (field == longitude_) {
-        site.longitudeDeg = longitude_->value();
-        text = tr("Change the longitude");
-    } else if (field == utcOffset_) {
-        site.utcOffsetHours = utcOffset_->value();
-        text = tr("Change the UTC offset");
-    } else {
+    if (!current) return;
+    Value value = *current;
+    const QString text = edit(value);
+    if (text.isEmpty() || value == *current) return;
+    doc_->undoStack()->push(new Command(doc_, std::move(value), merge_.keyFor(field), text));
+}
+
+void DaylightPanel::editSite(const void* field) {
+    editValue<EditSiteCommand>(field, doc_->scene().site, [&](Site& site) {
+        if (field == latitude_) return taken(site.latitudeDeg, latitude_, tr("Change the latitude"));
+        if (field == longitude_) return taken(site.longitudeDeg, longitude_, tr("Change the longitude"));
+        if (field == utcOffset_) return taken(site.utcOffsetHours, utcOffset_, tr("Change the UTC offset"));
         // Only when the angle shown changed: the vector read from a file stays as it was.
-        if (std::abs(north_->value() - northAngleDeg(site.north)) < 0.05) return;
+        if (std::abs(north_->value() - northAngleDeg(site.north)) < 0.05) return QString();
         site.north = northFromAngle(north_->value());
         site.northGiven = true;
-        text = tr("Turn north");
-    }
-    if (site == *scene.site) return;
-    doc_->undoStack()->push(new EditSiteCommand(doc_, site, merge_.keyFor(field), text));
+        return tr("Turn north");
+    });
 }
 
 void DaylightPanel::setSunPresent(bool present) {
-    merge_.finish();
-    error_->clear();
-    const Scene& scene = doc_->scene();
+    const Scene& scene = beginChoice();
     const int i = sunIndex(scene);
     if (present && i < 0) {
         const Light sun = newSun(scene, doc_->uniqueName("sun"), localTime());
@@ -502,9 +499,7 @@ void DaylightPanel::moveSun(const void* field) {
 }
 
 void DaylightPanel::chooseSkyModel(int item) {
-    merge_.finish();
-    error_->clear();
-    const Scene& scene = doc_->scene();
+    const Scene& scene = beginChoice();
     if (item == kNoSky) {
         if (!scene.sky) return;
         lastSky_ = scene.sky;
@@ -524,30 +519,19 @@ void DaylightPanel::chooseSkyModel(int item) {
 }
 
 void DaylightPanel::editSky(const void* field) {
-    error_->clear();
-    const Scene& scene = doc_->scene();
-    if (!scene.sky) return;
-    Sky sky = *scene.sky;
-    QString text;
-    if (field == cieType_) {
-        sky.cieType = cieType_->value();
-        text = tr("Change the CIE sky type");
-    } else if (field == skyValue_) {
-        (sky.zenithLuminance ? sky.zenithLuminance : sky.horizontalIlluminance) = skyValue_->value();
-        text = sky.zenithLuminance ? tr("Change the zenith luminance") : tr("Change the sky's illuminance");
-    } else {
+    editValue<EditSkyCommand>(field, doc_->scene().sky, [&](Sky& sky) {
+        if (field == cieType_) return taken(sky.cieType, cieType_, tr("Change the CIE sky type"));
+        if (field == skyValue_)
+            return taken(sky.zenithLuminance ? sky.zenithLuminance : sky.horizontalIlluminance, skyValue_,
+                         sky.zenithLuminance ? tr("Change the zenith luminance") : tr("Change the sky's illuminance"));
         sky.groundReflectance = groundReflectance_->value();
         sky.groundReflectanceGiven = true;
-        text = tr("Change the ground reflectance");
-    }
-    if (sky == *scene.sky) return;
-    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, merge_.keyFor(field), text));
+        return tr("Change the ground reflectance");
+    });
 }
 
 void DaylightPanel::chooseSkyQuantity(int item) {
-    merge_.finish();
-    error_->clear();
-    const Scene& scene = doc_->scene();
+    const Scene& scene = beginChoice();
     if (!scene.sky) return;
     const bool zenith = item == kZenithLuminance;
     if (zenith == scene.sky->zenithLuminance.has_value()) return;

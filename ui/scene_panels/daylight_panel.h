@@ -46,8 +46,16 @@ private:
     void showSunPosition();
     void refuse(const QString& why);
 
+    // A choice from a list or a check box is an undo step of its own: it ends the fields' merge
+    // runs and clears the error line. Returns the scene.
+    const Scene& beginChoice();
     void chooseCity(int item);
     void editSite(const void* field);
+    // A field's edit of the site or the sky, pushed as a `Command` that merges with the field's
+    // earlier steps: `edit` changes a copy of the value and names the step ("" refuses it).
+    // Nothing happens when there is no value to edit or the edit leaves it as it was.
+    template <class Command, class Value, class Edit>
+    void editValue(const void* field, const std::optional<Value>& current, Edit edit);
     void setSunPresent(bool present);
     void editSun(const void* field);
     void moveSun(const void* field);
