@@ -6,7 +6,7 @@
 #include "core/scene/scene.h"
 #include "render/trace/bsdf.h"
 #include "render/trace/embree_scene.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 #include "render/trace/sensor.h"
 #include "render/trace/surface_point.h"
 

@@ -1,4 +1,4 @@
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 
 #include <algorithm>
 #include <cmath>

@@ -8,9 +8,9 @@
 #include "core/scene/scene.h"
 #include "render/trace/discrete_distribution.h"
 #include "render/trace/embree_scene.h"
-#include "render/trace/environment_light.h"
-#include "render/trace/goniometric_sampler.h"
-#include "render/trace/light_tree.h"
+#include "render/trace/lights/environment_light.h"
+#include "render/trace/lights/goniometric_sampler.h"
+#include "render/trace/lights/light_tree.h"
 #include "render/trace/surface_point.h"
 
 #include <map>
