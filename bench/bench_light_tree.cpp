@@ -16,7 +16,7 @@
 #include "render_helpers.h"
 
 #include "core/image/image_metrics.h"
-#include "render/trace/light_tree.h"
+#include "render/trace/lights/light_tree.h"
 #include "render/trace/render_scene.h"
 #include "render/trace/rng.h"
 

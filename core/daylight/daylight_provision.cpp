@@ -16,13 +16,6 @@ double reachedBy(const std::vector<double>& ascending, double fraction) {
 }
 }  // namespace
 
-const ProvisionLevel* DaylightProvision::highestMet() const {
-    const ProvisionLevel* best = nullptr;
-    for (const ProvisionLevel& l : levels)
-        if (l.met) best = &l;
-    return best;
-}
-
 DaylightProvision checkDaylightProvision(const std::vector<double>& dfPercent, const std::vector<uint8_t>& insideGeometry,
                                          double medianDiffuseIlluminance) {
     DaylightProvision p;

@@ -28,7 +28,6 @@ struct DaylightProvision {
     double df95 = 0;        // %: the DF that 95% of them reach
     int points = 0;         // points counted (those inside geometry left out)
     std::vector<ProvisionLevel> levels;  // minimum, medium, high
-    const ProvisionLevel* highestMet() const;
 };
 
 // The check on daylight factors (%) at the points of a plane; points marked inside geometry

@@ -1,84 +1,18 @@
 #include "core/photometry/eulumdat_file.h"
 
-#include "core/message_text.h"
 #include "core/number_format.h"
+#include "core/photometry/luminaire_file_fields.h"
 
 #include <algorithm>
 #include <cfloat>
-#include <charconv>
 #include <cmath>
-#include <sstream>
+#include <optional>
 
 namespace lucerna {
 
-namespace {
-
-std::string trim(const std::string& s) {
-    const size_t a = s.find_first_not_of(" \t\r\n");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
-
-// EULUMDAT is one field per line; some writers use a decimal comma.
-class Lines {
-public:
-    Lines(const std::string& text, std::string label) : label_(std::move(label)) {
-        std::istringstream in(text);
-        std::string l;
-        while (std::getline(in, l)) lines_.push_back(trim(l));
-    }
-    [[noreturn]] void fail(size_t line, const std::string& problem) const {
-        throw LuminaireFileError(label_ + ": line " + std::to_string(line) + ": " + problem);
-    }
-    size_t line() const { return next_ + 1; }
-    size_t lastLine() const { return lines_.size(); }
-    size_t remaining() const {
-        size_t n = 0;
-        for (size_t i = next_; i < lines_.size(); ++i) n += lines_[i].empty() ? 0 : 1;
-        return n;
-    }
-
-    std::string text(const std::string& what) {
-        if (next_ >= lines_.size()) fail(lines_.size(), "the file ends before " + what);
-        return lines_[next_++];
-    }
-    double number(const std::string& what) {
-        const size_t here = line();
-        std::string word = text(what);
-        std::replace(word.begin(), word.end(), ',', '.');
-        double x = 0;
-        const char* end = word.data() + word.size();
-        const auto r = std::from_chars(word.data(), end, x);
-        if (word.empty() || r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(here, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
-        return x;
-    }
-    int integer(const std::string& what, int lo, int hi) {
-        const size_t here = line();
-        const double x = number(what);
-        if (x != std::floor(x) || x < lo || x > hi)
-            fail(here, what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                           ", got " + shortestNumber(x));
-        return int(x);
-    }
-    std::vector<double> numbers(size_t count, const std::string& what) {
-        if (remaining() < count)
-            fail(lastLine(), "expected " + std::to_string(count) + " " + what + ", found " + std::to_string(remaining()));
-        std::vector<double> out;
-        for (size_t i = 0; i < count; ++i) out.push_back(number(what));
-        return out;
-    }
-
-private:
-    std::vector<std::string> lines_;
-    size_t next_ = 0;
-    std::string label_;
-};
-
-}  // namespace
-
 GoniometricDistribution parseEulumdat(const std::string& text, const std::string& label) {
-    Lines in(text, label);
+    // EULUMDAT is one field per line.
+    LuminaireFileFields in = LuminaireFileFields::lines(text, label);
     in.text("the company identification");
     in.integer("the type indicator", 0, 3);
     const int isym = in.integer("the symmetry indicator", 0, 4);
@@ -127,12 +61,8 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     // Ra when the field is a number (some files give a group such as "1B": no Ra then).
     std::optional<double> ra;
     for (int i = 0; i < sets; ++i) {
-        std::string word = in.text("the colour rendering index");
-        std::replace(word.begin(), word.end(), ',', '.');
-        double x = 0;
-        const char* end = word.data() + word.size();
-        const auto r = std::from_chars(word.data(), end, x);
-        if (!word.empty() && r.ec == std::errc() && r.ptr == end && x > 0 && x <= 100) ra = std::min(ra.value_or(x), x);
+        const std::optional<double> x = fieldNumber(decimalPoints(in.text("the colour rendering index")));
+        if (x && *x > 0 && *x <= 100) ra = std::min(ra.value_or(*x), *x);
     }
     double watts = 0;
     for (int i = 0; i < sets; ++i) watts += std::max(0.0, in.number("the wattage"));

@@ -2,10 +2,11 @@
 
 #include "core/message_text.h"
 #include "core/number_format.h"
+#include "core/photometry/luminaire_file_fields.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cfloat>
-#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -13,80 +14,12 @@ namespace lucerna {
 
 namespace {
 
-std::string trim(const std::string& s) {
-    const size_t a = s.find_first_not_of(" \t\r\n");
-    if (a == std::string::npos) return {};
-    return s.substr(a, s.find_last_not_of(" \t\r\n") - a + 1);
-}
-
 std::string upper(std::string s) {
     for (char& c : s) c = char(std::toupper(static_cast<unsigned char>(c)));
     return s;
 }
 
-// The numbers after the TILT line, separated by blanks or commas, each with its line number.
-class Tokens {
-public:
-    Tokens(const std::vector<std::string>& lines, size_t first, std::string label) : label_(std::move(label)) {
-        for (size_t i = first; i < lines.size(); ++i) {
-            std::string l = lines[i];
-            std::replace(l.begin(), l.end(), ',', ' ');
-            std::istringstream in(l);
-            std::string word;
-            while (in >> word) words_.push_back({word, int(i + 1)});
-        }
-        lastLine_ = int(lines.size());
-    }
-
-    [[noreturn]] void fail(int line, const std::string& problem) const {
-        throw LuminaireFileError(label_ + ": line " + std::to_string(line) + ": " + problem);
-    }
-    int line() const { return next_ < words_.size() ? words_[next_].line : lastLine_; }
-    size_t remaining() const { return words_.size() - next_; }
-
-    double number(const std::string& what) {
-        if (next_ >= words_.size()) fail(lastLine_, "the file ends before " + what);
-        const auto& [word, line] = words_[next_];
-        double x = 0;
-        const char* end = word.data() + word.size();
-        const auto r = std::from_chars(word.data(), end, x);
-        if (r.ec != std::errc() || r.ptr != end || !std::isfinite(x))
-            fail(line, "expected a number for " + what + ", found \"" + printableWord(word) + "\"");
-        ++next_;
-        return x;
-    }
-
-    int integer(const std::string& what, int lo, int hi) {
-        const int line = this->line();
-        const double x = number(what);
-        if (x != std::floor(x) || x < lo || x > hi)
-            fail(line, what + " must be a whole number from " + std::to_string(lo) + " to " + std::to_string(hi) +
-                           ", got " + shortestNumber(x));
-        return int(x);
-    }
-
-    // `count` numbers; a short table is reported with how many there were.
-    std::vector<double> numbers(size_t count, const std::string& what) {
-        if (remaining() < count)
-            fail(lastLine_, "expected " + std::to_string(count) + " " + what + ", found " + std::to_string(remaining()));
-        std::vector<double> out;
-        out.reserve(count);
-        for (size_t i = 0; i < count; ++i) out.push_back(number(what));
-        return out;
-    }
-
-private:
-    struct Word {
-        std::string text;
-        int line;
-    };
-    std::vector<Word> words_;
-    size_t next_ = 0;
-    int lastLine_ = 0;
-    std::string label_;
-};
-
-void checkAscending(const Tokens& t, int line, const std::vector<double>& v, const std::string& what) {
+void checkAscending(const LuminaireFileFields& t, size_t line, const std::vector<double>& v, const std::string& what) {
     for (size_t i = 1; i < v.size(); ++i)
         if (!(v[i] > v[i - 1]))
             t.fail(line, what + " must increase, but " + shortestNumber(v[i]) + " follows " + shortestNumber(v[i - 1]));
@@ -105,7 +38,7 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     std::string name, lumcat;
     size_t tiltLine = lines.size();
     for (size_t i = 0; i < lines.size(); ++i) {
-        const std::string l = trim(lines[i]);
+        const std::string l = trimmed(lines[i]);
         if (upper(l).rfind("TILT", 0) == 0) {
             tiltLine = i;
             break;
@@ -114,28 +47,29 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
             const size_t close = l.find(']');
             if (close == std::string::npos) continue;
             const std::string key = upper(l.substr(1, close - 1));
-            const std::string value = trim(l.substr(close + 1));
+            const std::string value = trimmed(l.substr(close + 1));
             if (key == "LUMINAIRE" && name.empty()) name = value;
             if (key == "LUMCAT" && lumcat.empty()) lumcat = value;
         }
     }
     if (tiltLine == lines.size())
         throw LuminaireFileError(label + ": line " + std::to_string(lines.size()) + ": no TILT= line (is this an IES file?)");
-    const std::string tiltText = trim(lines[tiltLine]);
+    const std::string tiltText = trimmed(lines[tiltLine]);
     const size_t eq = tiltText.find('=');
-    const std::string tilt = eq == std::string::npos ? std::string() : upper(trim(tiltText.substr(eq + 1)));
+    const std::string tilt = eq == std::string::npos ? std::string() : upper(trimmed(tiltText.substr(eq + 1)));
     const int tiltLineNumber = int(tiltLine + 1);
     if (tilt != "NONE" && tilt != "INCLUDE")
         throw LuminaireFileError(label + ": line " + std::to_string(tiltLineNumber) + ": " + printableWord(tiltText, 60) +
                                  ": a separate tilt file is not supported (use TILT=INCLUDE or TILT=NONE)");
 
-    Tokens t(lines, tiltLine + 1, label);
+    // The numbers after the TILT line, separated by blanks or commas.
+    LuminaireFileFields t = LuminaireFileFields::words(lines, tiltLine + 1, label);
     GoniometricDistribution d;
     d.name = !name.empty() ? name : lumcat;
     if (tilt == "INCLUDE") {
         t.integer("the lamp-to-luminaire geometry", 1, 3);
         const int n = t.integer("the number of tilt angles", 1, 1000);
-        int line = t.line();
+        size_t line = t.line();
         d.tiltAngles = t.numbers(size_t(n), "tilt angles");
         checkAscending(t, line, d.tiltAngles, "tilt angles");
         line = t.line();
@@ -144,15 +78,15 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
             if (m < 0) t.fail(line, "tilt multipliers must be at least 0, got " + shortestNumber(m));
     }
     const int lamps = t.integer("the number of lamps", 1, 1000000);
-    int line = t.line();
+    size_t line = t.line();
     const double lumensPerLamp = t.number("lumens per lamp");
     if (!(lumensPerLamp > 0 || lumensPerLamp == -1))
         t.fail(line, "lumens per lamp must be positive, or -1 for absolute photometry, got " + shortestNumber(lumensPerLamp));
-    const int lumensLine = line;
+    const size_t lumensLine = line;
     line = t.line();
     const double multiplier = t.number("the candela multiplier");
     if (!(multiplier > 0)) t.fail(line, "the candela multiplier must be positive, got " + shortestNumber(multiplier));
-    const int multiplierLine = line;
+    const size_t multiplierLine = line;
     const int nV = t.integer("the number of vertical angles", 2, 100000);
     const int nH = t.integer("the number of horizontal angles", 1, 100000);
     line = t.line();
@@ -168,7 +102,7 @@ GoniometricDistribution parseIes(const std::string& text, const std::string& lab
     line = t.line();
     const double ballast = t.number("the ballast factor");
     if (!(ballast > 0)) t.fail(line, "the ballast factor must be positive, got " + shortestNumber(ballast));
-    const int ballastLine = line;
+    const size_t ballastLine = line;
     t.number("the ballast-lamp factor (future use, or file generation type)");
     const double inputWatts = t.number("the input watts");
 

@@ -30,17 +30,6 @@ SceneBounds sceneBounds(const Scene& scene) {
     return b;
 }
 
-int objectOfTriangle(const Scene& scene, uint32_t tri) {
-    size_t first = 0;
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const auto& mesh = scene.objects[i].worldMesh;
-        if (!mesh) continue;
-        if (tri < first + mesh->triangles.size()) return int(i);
-        first += mesh->triangles.size();
-    }
-    return -1;
-}
-
 Object resolvedObject(const Scene& scene, Object object) {
     // resolveMeshes works on whole scenes; a scene of this one object reads only its mesh.
     Scene single;

@@ -18,10 +18,6 @@ struct SceneBounds {
 // or suns, at infinity); a unit box when the scene is empty.
 SceneBounds sceneBounds(const Scene& scene);
 
-// The object that owns triangle `tri` in RenderScene's numbering (objects in order, those without
-// a world mesh skipped); -1 when out of range.
-int objectOfTriangle(const Scene& scene, uint32_t tri);
-
 // `object` with its worldMesh recomputed (transform or mesh edited). Mesh files are read relative
 // to scene.baseDir; the object's material must be one of scene's. Throws SceneError with a
 // one-line reason.

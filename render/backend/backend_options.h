@@ -4,7 +4,7 @@
 // is std::invalid_argument with a one-line message (the command line's exit status 2).
 
 #include "render/backend/backend.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 
 #include <limits>
 

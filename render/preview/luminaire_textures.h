@@ -4,7 +4,7 @@
 // it at u = C / 360, v = gamma / 180 (texel centres on the grid's angles).
 
 #include "render/preview/gl_objects.h"
-#include "render/trace/goniometric_sampler.h"
+#include "render/trace/lights/goniometric_sampler.h"
 
 #include <vector>
 

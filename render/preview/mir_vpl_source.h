@@ -13,7 +13,7 @@
 // preview's current one.
 
 #include "core/scene/scene.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 #include "render/trace/render_scene.h"
 #include "render/vpl/mir_chain.h"
 #include "render/vpl/vpl.h"

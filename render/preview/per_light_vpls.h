@@ -9,7 +9,7 @@
 // so that an edited light needs no new RenderScene (no BVH rebuild).
 
 #include "core/scene/scene.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 #include "render/trace/render_scene.h"
 #include "render/vpl/vpl.h"
 

@@ -241,7 +241,7 @@ int vplShare(double power, double totalPower, int budget, int subsets) {
 }
 
 // A light sampler over these emitters and delta lights, with the daylight's particles when
-// `daylight`: the sky and the sun's disc as the environment light (render/trace/environment_light.h;
+// `daylight`: the sky and the sun's disc as the environment light (render/trace/lights/environment_light.h;
 // particles leave a disc over the scene facing each direction), a sun without a disc as a
 // directional light, as the ray-traced backends have them.
 LightSampler previewLightSampler(const Preview::State& st, std::vector<EmitterTriangle> emitters,

@@ -66,7 +66,6 @@ public:
     // the first array, so that every sampler has a complete texture).
     void bind(GLuint firstUnit) const;
     int faceSize() const { return size_; }
-    int arraysInUse() const { return (cubes_ + perArray_ - 1) / std::max(perArray_, 1); }
     int perArray() const { return perArray_; }
 
 private:

@@ -3,6 +3,7 @@
 // cmlt): the scene snapshot and settings they are made with, and what every one of them prepares
 // first: the render scene (Embree's BVH, light tables) at the requested resolution or for the
 // requested sensors, counting rays into the settings' recorder, and a film of its size.
+// PassFunctionBackend: such a backend made of one pass function.
 
 #include "render/backend/backend.h"
 #include "render/backend/backend_options.h"
@@ -43,6 +44,30 @@ protected:
     LightSelection lightSelection_;
     std::unique_ptr<RenderScene> scene_;
     std::unique_ptr<Film> film_;
+};
+
+// A tracing backend whose pass is one function of the render scene and its own settings (path,
+// bdpt): it prepares the scene and film alone, and renderPass(ctx, pass) is
+// pass(scene, settings, seed, pass, film, ctx), the settings read by fromOptions.
+template <class Settings>
+class PassFunctionBackend : public TracingBackend {
+public:
+    using FromOptions = Settings (*)(const RenderSettings&);
+    using Pass = void (*)(const RenderScene&, const Settings&, uint64_t seed, int pass, Film&, TaskContext&);
+
+    PassFunctionBackend(SceneSnapshot scene, const RenderSettings& settings, FromOptions fromOptions, Pass pass,
+                        std::optional<LightSelection> lightSelection = std::nullopt)
+        : TracingBackend(std::move(scene), settings, lightSelection), passSettings_(fromOptions(settings)),
+          pass_(pass) {}
+
+    void prepare(TaskContext&) override { prepareSceneAndFilm(); }
+    void renderPass(TaskContext& ctx, int pass) override {
+        pass_(*scene_, passSettings_, settings_.seed, pass, *film_, ctx);
+    }
+
+private:
+    Settings passSettings_;
+    Pass pass_;
 };
 
 }  // namespace lucerna

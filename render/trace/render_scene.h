@@ -6,7 +6,7 @@
 #include "core/scene/scene.h"
 #include "render/trace/bsdf.h"
 #include "render/trace/embree_scene.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 #include "render/trace/sensor.h"
 #include "render/trace/surface_point.h"
 
@@ -36,7 +36,6 @@ public:
     const ShadingMaterial& material(uint32_t id) const { return materials_[id]; }
     const ShadingMaterial& materialOfTriangle(uint32_t tri) const { return materials_[triangleMaterial_[tri]]; }
     const V3f& normalOfTriangle(uint32_t tri) const { return triangleNormal_[tri]; }
-    float areaOfTriangle(uint32_t tri) const { return triangleArea_[tri]; }
     std::array<V3f, 3> verticesOfTriangle(uint32_t tri) const {
         const V3i& t = triangles_[tri];
         return {positions_[t.x], positions_[t.y], positions_[t.z]};

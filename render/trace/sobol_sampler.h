@@ -40,9 +40,8 @@ inline uint32_t nestedUniformScramble(uint32_t x, uint32_t seed) {
     return reverseBits(laineKarras(reverseBits(x), seed));
 }
 
-// Sobol dimension 0 (van der Corput) and dimension 1; together a (0,2)-sequence.
-inline uint32_t dimension0(uint32_t i) { return reverseBits(i); }
-// Dimension 1 is a linear map over GF(2) of the index bits (its generator matrix has the columns
+// Sobol dimension 1, which with dimension 0 (van der Corput: the index's bits reversed) makes a
+// (0,2)-sequence: a linear map over GF(2) of the index bits (its generator matrix has the columns
 // v_k, v_0 = 2^31, v_k+1 = v_k ^ (v_k >> 1)); evaluated byte by byte from tables, since the
 // shuffled indices use all 32 bits.
 struct Dimension1Tables {

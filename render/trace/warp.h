@@ -54,7 +54,6 @@ float uniformConePdf(float cosThetaMax);
 // "A Low-Distortion Map Between Triangle and Square"), so stratification of u carries over.
 // Density: 2 per unit area of the (b1, b2) plane, i.e. 1 / area of the actual triangle.
 V2f squareToUniformTriangle(const V2f& u);
-inline float uniformTrianglePdfBarycentric() { return 2.0f; }
 
 // --- GGX (SPEC glossy lobe) --------------------------------------------------------------------
 

@@ -117,15 +117,6 @@ public:
     // Mean of f over every uniform, chain-independent evaluation so far (0 before any).
     double uniformMean() const { return uniformCount_ > 0 ? uniformSum_ / double(uniformCount_) : 0.0; }
     long long uniformCount() const { return uniformCount_; }
-    // Extra independent uniform evaluations, only to refine uniformMean().
-    void sampleUniform(Rng& rng, int count) {
-        std::vector<float> u(state_.size());
-        Payload p;
-        for (int i = 0; i < count; ++i) {
-            fillUniform(rng, u);
-            evaluateUniform(u, p);
-        }
-    }
 
 private:
     static void fillUniform(Rng& rng, std::vector<float>& u) {

@@ -12,7 +12,7 @@
 #include "core/photometry/ies_file.h"
 #include "core/photometry/luminaire.h"
 #include "render/preview/preview.h"
-#include "render/trace/light_sampler.h"
+#include "render/trace/lights/light_sampler.h"
 #include "render_helpers.h"
 
 #include <QProcess>

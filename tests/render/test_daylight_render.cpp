@@ -9,7 +9,7 @@
 #include "render_helpers.h"
 
 #include "core/daylight/daylight.h"
-#include "render/trace/environment_light.h"
+#include "render/trace/lights/environment_light.h"
 #include "render/trace/render_scene.h"
 
 #include <QtTest>

@@ -1,10 +1,10 @@
-// The light tree (render/trace/light_tree.h): its probabilities sum to one at any point, the
+// The light tree (render/trace/lights/light_tree.h): its probabilities sum to one at any point, the
 // lights it chooses follow them (chi-square), what sample() reports is what pmf() computes, and
 // its bounds are conservative: no light that reaches a point has probability 0 there (an uplight,
 // a wide spot, one-sided emitters seen from the front).
 
 #include "chi_square.h"
-#include "render/trace/light_tree.h"
+#include "render/trace/lights/light_tree.h"
 #include "render/trace/rng.h"
 
 #include <QtTest>

@@ -24,7 +24,5 @@ public:
 
 // The indices of the lights in `group`, in file order.
 std::vector<int> groupMembers(const Scene& scene, const std::string& group);
-// The scene's groups in the order their first lights come.
-std::vector<std::string> groupNames(const Scene& scene);
 
 }  // namespace lucerna

@@ -80,7 +80,6 @@ void ImportReportDialog::setReport(const QString& file, const QStringList& lines
     text_->setPlainText(lines.join('\n'));
 }
 
-QString ImportReportDialog::text() const { return text_->toPlainText(); }
 
 ImportReportDialog* ImportReportDialog::present(QWidget* parent, const QString& file, const QStringList& lines) {
     auto* dialog = parent->findChild<ImportReportDialog*>(QString(), Qt::FindDirectChildrenOnly);

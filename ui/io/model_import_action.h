@@ -36,7 +36,6 @@ class ImportReportDialog : public QDialog {
 public:
     explicit ImportReportDialog(QWidget* parent);
     void setReport(const QString& file, const QStringList& lines);
-    QString text() const;
 
     // The parent's report window (made on first use), filled and shown.
     static ImportReportDialog* present(QWidget* parent, const QString& file, const QStringList& lines);

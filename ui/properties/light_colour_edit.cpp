@@ -61,7 +61,6 @@ void LightColourEdit::setColourOnly(bool only) {
 
 bool LightColourEdit::usesTemperature() const { return mode_->currentIndex() == 0; }
 double LightColourEdit::temperatureK() const { return temperature_->value(); }
-Rgbd LightColourEdit::colour() const { return colour_->value(); }
 
 void LightColourEdit::showMode() {
     temperature_->setVisible(usesTemperature());

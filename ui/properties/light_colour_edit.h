@@ -29,7 +29,6 @@ public:
 
     bool usesTemperature() const;
     double temperatureK() const;
-    Rgbd colour() const;
 
     QComboBox* modeField() const { return mode_; }
     QDoubleSpinBox* temperatureField() const { return temperature_; }

@@ -24,9 +24,8 @@ public:
     void setDistribution(std::shared_ptr<const GoniometricDistribution> distribution, double cdPerTableCd,
                          double fluxLm);
 
-    // The largest intensity drawn (cd), and the ring spacing (cd).
+    // The largest intensity drawn (cd).
     double peakCandela() const { return peakCd_; }
-    double ringStep() const { return ringStep_; }
     QWidget* canvas() const { return canvas_; }
     QLabel* peakLabel() const { return peak_; }
 

@@ -29,7 +29,6 @@ public:
     QComboBox* typeField() const { return type_; }
     ColourEdit* albedoField() const { return albedo_; }
     ColourEdit* specularField() const { return specular_; }
-    ColourEdit* reflectanceField() const { return reflectance_; }
     ColourEdit* radianceField() const { return radiance_; }
     QSlider* roughnessSlider() const { return roughnessSlider_; }
     QDoubleSpinBox* roughnessField() const { return roughness_; }

@@ -31,7 +31,6 @@ public:
     QLineEdit* nameField() const { return name_; }
     QComboBox* materialField() const { return material_; }
     const std::array<QDoubleSpinBox*, 3>& translateFields() const { return translate_; }
-    const std::array<QDoubleSpinBox*, 3>& axisFields() const { return axis_; }
     QDoubleSpinBox* angleField() const { return angle_; }
     const std::array<QDoubleSpinBox*, 3>& scaleFields() const { return scale_; }
     QLabel* sizeLabel() const { return size_; }

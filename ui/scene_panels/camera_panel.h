@@ -25,7 +25,6 @@ public:
     void viewAll();
     void resetCamera();
     // The camera Reset Camera goes back to.
-    const Camera& homeCamera() const { return home_; }
     void setHomeCamera(const Camera& camera) { home_ = camera; }
 
 signals:

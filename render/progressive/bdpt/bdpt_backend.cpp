@@ -1,9 +1,9 @@
 #include "render/progressive/bdpt/bdpt_backend.h"
 
 #include "render/backend/backend_options.h"
-#include "render/progressive/tracing_backend.h"
 #include "render/progressive/bdpt/bdpt_tracer.h"
-#include "render/trace/sobol_sampler.h"
+#include "render/progressive/camera_pass.h"
+#include "render/progressive/tracing_backend.h"
 
 #include <cstdio>
 #include <stdexcept>
@@ -25,29 +25,14 @@ BdptSettings BdptSettings::fromOptions(const RenderSettings& settings) {
 void renderBdptPass(const RenderScene& scene, const BdptSettings& settings, uint64_t seed, int pass, Film& film,
                     TaskContext& ctx) {
     const Sensor& camera = scene.camera();
-    const int tile = settings.tileSize;
-    const int tilesX = (camera.width() + tile - 1) / tile, tilesY = (camera.height() + tile - 1) / tile;
-    const int half = pass % 2;
     // One splat list per tile: no contention while the pass runs, a fixed order afterwards.
-    std::vector<std::vector<FilmSplat>> splats(size_t(tilesX) * tilesY);
-    ctx.parallelFor(0, tilesX * tilesY, [&](int t) {
-        BdptTracer tracer(scene, settings);
-        std::vector<FilmSplat>& tileSplats = splats[size_t(t)];
-        const int x0 = (t % tilesX) * tile, y0 = (t / tilesX) * tile;
-        const int x1 = std::min(x0 + tile, camera.width()), y1 = std::min(y0 + tile, camera.height());
-        for (int y = y0; y < y1; ++y)
-            for (int x = x0; x < x1; ++x) {
-                // Each half of the film draws from its own scrambled sequence per pixel (as the
-                // path backend does): stratified jitter and first bounces, independent halves.
-                SobolSampler sampler(hashSeed(seed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x), half),
-                                     uint32_t(pass / 2));
-                const V2f jitter = sampler.next2D();  // box filter: uniform over the pixel's square
-                Rgb L = tracer.sample(float(x) + jitter.x, float(y) + jitter.y, sampler, tileSplats);
-                if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
-                film.addSample(half, x, y, L);
-            }
+    std::vector<std::vector<FilmSplat>> splats(size_t(tileCount(camera.width(), camera.height(), settings.tileSize)));
+    runCameraPass(camera, settings.tileSize, seed, pass, film, ctx, [&](int t) {
+        return [tracer = BdptTracer(scene, settings), &tileSplats = splats[size_t(t)]](
+                   float x, float y, SobolSampler& sampler) mutable { return tracer.sample(x, y, sampler, tileSplats); };
     });
     if (ctx.isCancelled()) return;
+    const int half = pass % 2;
     for (const auto& list : splats) film.addSplats(half, list);
     film.finishPass(half);
 }
@@ -71,23 +56,15 @@ CameraPower estimateCameraPower(const RenderScene& scene, const BdptSettings& se
 
 namespace {
 
-class BdptBackend final : public TracingBackend {
+class BdptBackend final : public PassFunctionBackend<BdptSettings> {
 public:
     BdptBackend(SceneSnapshot scene, const RenderSettings& settings)
         // By power, always: the bidirectional family's MIS weights and CMLT's path-space
         // values take the recorded pdf of a next-event light vertex as the density it was drawn
         // with, which holds only for a choice that does not depend on the shading point
         // (issue 19: a tree here needs its density at x1 in every strategy's weight).
-        : TracingBackend(std::move(scene), settings, LightSelection::Power),
-          bdptSettings_(BdptSettings::fromOptions(settings)) {}
-
-    void prepare(TaskContext&) override {
-        prepareSceneAndFilm();
-    }
-
-    void renderPass(TaskContext& ctx, int pass) override {
-        renderBdptPass(*scene_, bdptSettings_, settings_.seed, pass, *film_, ctx);
-    }
+        : PassFunctionBackend(std::move(scene), settings, BdptSettings::fromOptions, renderBdptPass,
+                              LightSelection::Power) {}
 
     std::map<std::string, std::string> diagnostics() const override {
         const CameraPower pc = cameraPower(*film_);
@@ -95,9 +72,6 @@ public:
         std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g", pc.rgb.x, pc.rgb.y, pc.rgb.z);
         return {{"pc", buf}};
     }
-
-private:
-    BdptSettings bdptSettings_;
 };
 
 }  // namespace

@@ -1,9 +1,7 @@
 #include "render/progressive/ir/ir_backend.h"
 
-#include "render/progressive/tracing_backend.h"
+#include "render/progressive/gathering_backend.h"
 #include "render/progressive/ir/ir_settings.h"
-#include "render/vpl/tile_scheduler.h"
-#include "render/vpl/vpl_gatherer.h"
 
 #include <algorithm>
 #include <atomic>
@@ -13,14 +11,13 @@ namespace lucerna {
 
 namespace {
 
-class IrBackend final : public TracingBackend {
+class IrBackend final : public GatheringBackend {
 public:
     IrBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : TracingBackend(std::move(scene), settings), ir_(IrSettings::fromOptions(settings)) {}
+        : GatheringBackend(std::move(scene), settings), ir_(IrSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        prepareSceneAndFilm();
-        gatherer_ = std::make_unique<VplGatherer>(*scene_, ir_.gather);
+        prepareGatherer(ir_.gather);
         // Each set is gathered by 64 pixels or more, so that particles stay cheap next to the
         // gather on small films (a calculation grid's sensors).
         const Sensor& camera = scene_->camera();
@@ -39,20 +36,11 @@ public:
                                    ir_.vpl);
             vplCount_ += sets[k].size();
         }
-        const Sensor& camera = scene_->camera();
-        const int half = pass % 2;
-        const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
-        forEachPixel(camera.width(), camera.height(), ir_.gather.tileSize, ctx, [&](int x, int y) {
-            Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
-            const V2f jitter = rng.next2D();  // box filter: uniform over the pixel's square
-            const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
-            const VplSet& vpls = sets[size_t(hashSeed(passSeed, pixel, 0x696c76) % sets.size())];
-            Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vpls);
-            if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
-            film_->addSample(half, x, y, L);
+        gatherPass(ctx, pass, ir_.gather.tileSize, [&](uint64_t passSeed, uint64_t pixel) -> const VplSet& {
+            return sets[size_t(hashSeed(passSeed, pixel, 0x696c76) % sets.size())];
         });
         if (!ctx.isCancelled()) {
-            film_->finishPass(half);
+            film_->finishPass(pass % 2);
             ++passes_;
         }
     }
@@ -70,7 +58,6 @@ public:
 
 private:
     IrSettings ir_;
-    std::unique_ptr<VplGatherer> gatherer_;
     int interleave_ = 1;  // m: m^2 sets a pass
     size_t vplCount_ = 0;
     int passes_ = 0;

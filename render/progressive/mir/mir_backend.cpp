@@ -1,9 +1,8 @@
 #include "render/progressive/mir/mir_backend.h"
 
 #include "core/number_format.h"
-#include "render/progressive/tracing_backend.h"
+#include "render/progressive/gathering_backend.h"
 #include "render/progressive/mir/mir_settings.h"
-#include "render/vpl/tile_scheduler.h"
 
 namespace lucerna {
 
@@ -11,14 +10,13 @@ namespace {
 
 std::string number(double v) { return formatNumber(v, 6); }
 
-class MirBackend final : public TracingBackend {
+class MirBackend final : public GatheringBackend {
 public:
     MirBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : TracingBackend(std::move(scene), settings), mir_(MirSettings::fromOptions(settings)) {}
+        : GatheringBackend(std::move(scene), settings), mir_(MirSettings::fromOptions(settings)) {}
 
     void prepare(TaskContext&) override {
-        prepareSceneAndFilm();
-        gatherer_ = std::make_unique<VplGatherer>(*scene_, mir_.gather);
+        prepareGatherer(mir_.gather);
         const Sensor& camera = scene_->camera();
         mir_.chain.pcSamples = mir_.pcSamplesPerPass >= 0 ? mir_.pcSamplesPerPass
                                                           : std::max(256, camera.width() * camera.height() / 8);
@@ -31,7 +29,8 @@ public:
         const int half = pass % 2;
         const VplSet vpls = chains_[size_t(half)]->sampleVpls(mir_.pathVplsPerPass);
         if (ctx.isCancelled()) return;
-        gather(ctx, pass, vpls);
+        // One camera sample per pixel, as `ir`; the VPLs' powers carry their weights.
+        gatherPass(ctx, pass, mir_.gather.tileSize, [&](uint64_t, uint64_t) -> const VplSet& { return vpls; });
         if (ctx.isCancelled()) return;
         film_->finishPass(half);
         geometricVplCount_ += vpls.size();
@@ -55,22 +54,7 @@ public:
     }
 
 private:
-    // One camera sample per pixel, as `ir`; the VPLs' powers carry their weights.
-    void gather(TaskContext& ctx, int pass, const VplSet& vpls) {
-        const Sensor& camera = scene_->camera();
-        const int half = pass % 2;
-        const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
-        forEachPixel(camera.width(), camera.height(), mir_.gather.tileSize, ctx, [&](int x, int y) {
-            Rng rng(passSeed, uint64_t(y) * uint64_t(camera.width()) + uint64_t(x));
-            const V2f jitter = rng.next2D();
-            Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vpls);
-            if (!isFinite(L)) L = Rgb(0, 0, 0);
-            film_->addSample(half, x, y, L);
-        });
-    }
-
     MirSettings mir_;
-    std::unique_ptr<VplGatherer> gatherer_;
     std::vector<std::unique_ptr<MirChain>> chains_;  // one per film half
     size_t geometricVplCount_ = 0;
     int passes_ = 0;

@@ -1,4 +1,4 @@
-#include "render/trace/environment_light.h"
+#include "render/trace/lights/environment_light.h"
 
 #include <cmath>
 

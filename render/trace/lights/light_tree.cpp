@@ -1,4 +1,4 @@
-#include "render/trace/light_tree.h"
+#include "render/trace/lights/light_tree.h"
 
 #include <algorithm>
 #include <cmath>

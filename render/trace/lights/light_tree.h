@@ -7,8 +7,8 @@
 // any light at any point is computable (pmf), because MIS needs it.
 //
 // The bounds are conservative: a node's importance at a point is zero only where none of its
-// lights can send light, so the tree never turns light into bias. LightSampler uses it for
-// next-event estimation with LightSelection::Tree.
+// lights can send light, so the tree never turns light into bias. TreeSelection
+// (tree_selection.h) uses it for next-event estimation with LightSelection::Tree.
 
 #include "core/math.h"
 

@@ -1,4 +1,4 @@
-#include "render/trace/goniometric_sampler.h"
+#include "render/trace/lights/goniometric_sampler.h"
 
 #include <algorithm>
 

@@ -1,0 +1,106 @@
+// Daylight in a scene file (SPEC.md section 5): the sun's keys, the site, the sky, and the rules
+// that span them.
+
+#include "core/scene/scene_parser.h"
+
+#include "core/daylight/solar_position.h"
+#include "core/number_format.h"
+#include "core/scene/scene_resolve.h"
+
+#include <cmath>
+
+namespace lucerna {
+
+SunSpec SceneParser::parseSun(const Value& v, const std::string& place, Light& l) const {
+    SunSpec s;
+    const std::string lux = member(place, "illuminance");
+    s.illuminanceLux = number(required(v, place, "illuminance"), lux);
+    if (!(s.illuminanceLux >= 0)) fail(lux, "must be at least 0, got " + shortestNumber(s.illuminanceLux));
+    if (const Value* d = v.find("angular_diameter")) {
+        s.angularDiameterDeg = numberIn(*d, member(place, "angular_diameter"), 0, false, 5, false, " degrees");
+        s.angularDiameterGiven = true;
+    }
+    const Value* direction = v.find("direction");
+    const Value* time = v.find("time");
+    if (direction && time) fail(place, "give direction or time, not both");
+    if (!direction && !time) fail(place, "a sun needs \"direction\" or \"time\"");
+    if (direction) l.direction = this->direction(*direction, member(place, "direction"));
+    if (time) {
+        const std::string here = member(place, "time");
+        s.time = text(*time, here);
+        if (!parseLocalTime(*s.time))
+            fail(here, "expected a local time \"YYYY-MM-DDTHH:MM\", got " + quote(*s.time));
+    }
+    if (const Value* c = v.find("color")) {
+        s.colour = colour(*c, member(place, "color"), false);
+        if (!(luminance(*s.colour) > 0)) fail(member(place, "color"), "must have a positive luminance");
+    }
+    return s;
+}
+
+Site SceneParser::parseSite(const Value& v, const std::string& place) const {
+    checkKeys(v, place, {"latitude", "longitude", "utc_offset", "north", "median_diffuse_illuminance"});
+    Site s;
+    s.latitudeDeg = numberIn(required(v, place, "latitude"), member(place, "latitude"), -90, false, 90, false, " degrees");
+    s.longitudeDeg = numberIn(required(v, place, "longitude"), member(place, "longitude"), -180, false, 180, false, " degrees");
+    s.utcOffsetHours = numberIn(required(v, place, "utc_offset"), member(place, "utc_offset"), -14, false, 14, false, " hours");
+    if (const Value* n = v.find("north")) {
+        const std::string here = member(place, "north");
+        s.north = direction(*n, here);
+        if (s.north.y != 0) fail(item(here, 1), "north is horizontal: its y must be 0, got " + shortestNumber(s.north.y));
+        s.northGiven = true;
+    }
+    if (const Value* e = v.find("median_diffuse_illuminance"))
+        s.medianDiffuseIlluminance =
+            numberIn(*e, member(place, "median_diffuse_illuminance"), 0, true, 200000, false, " lx");
+    return s;
+}
+
+Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
+    checkKeys(v, place, {"model", "cie_type", "zenith_luminance", "horizontal_illuminance", "ground_reflectance"});
+    Sky s;
+    const std::string modelPlace = member(place, "model");
+    const std::string model = text(required(v, place, "model"), modelPlace);
+    if (model == "uniform") s.model = SkyModelType::Uniform;
+    else if (model == "cie_overcast") s.model = SkyModelType::CieOvercast;
+    else if (model == "cie_general") s.model = SkyModelType::CieGeneral;
+    else fail(modelPlace, "unknown sky model " + quote(model) + " (expected uniform, cie_overcast or cie_general)");
+    const Value* type = v.find("cie_type");
+    if (s.model == SkyModelType::CieGeneral) {
+        const std::string here = member(place, "cie_type");
+        const double t = integer(required(v, place, "cie_type"), here);
+        if (t < 1 || t > 15) fail(here, "must be from 1 to 15, got " + shortestNumber(t));
+        s.cieType = int(t);
+    } else if (type) {
+        fail(member(place, "cie_type"), "only for the cie_general model");
+    }
+    const Value* lz = v.find("zenith_luminance");
+    const Value* eh = v.find("horizontal_illuminance");
+    if ((lz != nullptr) == (eh != nullptr))
+        fail(place, "give exactly one of zenith_luminance and horizontal_illuminance");
+    const std::string quantityPlace = member(place, lz ? "zenith_luminance" : "horizontal_illuminance");
+    const double quantity = number(lz ? *lz : *eh, quantityPlace);
+    if (!(quantity >= 0) || !std::isfinite(quantity))
+        fail(quantityPlace, "must be a finite number at least 0, got " + shortestNumber(quantity));
+    (lz ? s.zenithLuminance : s.horizontalIlluminance) = quantity;
+    if (const Value* g = v.find("ground_reflectance")) {
+        s.groundReflectance = numberIn(*g, member(place, "ground_reflectance"), 0, false, 1, false);
+        s.groundReflectanceGiven = true;
+    }
+    return s;
+}
+
+void SceneParser::checkDaylight(const Scene& scene) const {
+    int suns = 0;
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        if (l.type != LightType::Sun) continue;
+        if (++suns > 1) fail(item("lights", i), "a scene has at most one sun");
+        if (l.sun && l.sun->time && !scene.site)
+            fail(member(item("lights", i), "time"), "a sun placed by time needs the scene's \"site\"");
+    }
+    if (scene.sky && scene.sky->model == SkyModelType::CieGeneral && suns == 0)
+        fail("sky.model", "a cie_general sky needs a light of type \"sun\"");
+}
+
+}  // namespace lucerna

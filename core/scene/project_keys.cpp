@@ -1,0 +1,83 @@
+// The lighting designer's keys of a scene file: maintenance factors, task areas with their
+// activities and glare observers, and the project's details for the report.
+
+#include "core/scene/scene_parser.h"
+
+#include "core/number_format.h"
+#include "core/photometry/lighting_standards.h"
+#include "core/scene/scene_resolve.h"
+
+#include <cmath>
+
+namespace lucerna {
+
+MaintenanceFactor SceneParser::parseMaintenance(const Value& v, const std::string& place) const {
+    MaintenanceFactor mf;
+    if (v.type == Type::Number) {
+        mf.value = numberIn(v, place, 0, true, 1, false);
+        return mf;
+    }
+    if (v.type != Type::Object) fail(place, std::string("expected a number or an object, got ") + json::describe(v.type));
+    checkKeys(v, place, {"llmf", "lsf", "lmf", "rsmf"});
+    if (v.object.empty()) fail(place, "give at least one of llmf, lsf, lmf, rsmf");
+    const auto factor = [&](const char* key, std::optional<double>& out) {
+        if (const Value* f = v.find(key)) out = numberIn(*f, member(place, key), 0, true, 1, false);
+    };
+    factor("llmf", mf.lampLumenMaintenance);
+    factor("lsf", mf.lampSurvival);
+    factor("lmf", mf.luminaireMaintenance);
+    factor("rsmf", mf.roomSurfaceMaintenance);
+    return mf;
+}
+
+TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const {
+    checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "observers"});
+    TaskArea a;
+    const std::string namePlace = member(place, "name");
+    a.grid.name = text(required(v, place, "name"), namePlace);
+    if (a.grid.name.empty()) fail(namePlace, "task area name is empty");
+    if (a.grid.name.find('\0') != std::string::npos) fail(namePlace, "task area name contains a NUL character");
+    for (const TaskArea& e : earlier)
+        if (e.grid.name == a.grid.name) fail(namePlace, "another task area is already named " + quote(a.grid.name));
+    a.grid.corner = vec3(required(v, place, "corner"), member(place, "corner"));
+    a.grid.edgeU = direction(required(v, place, "u"), member(place, "u"));
+    a.grid.edgeV = direction(required(v, place, "v"), member(place, "v"));
+    const double cosine = a.grid.edgeU.dot(a.grid.edgeV) / (a.grid.edgeU.length() * a.grid.edgeV.length());
+    if (std::abs(cosine) > 1e-6) fail(member(place, "v"), "u and v must be perpendicular");
+    if (const Value* sp = v.find("spacing"))
+        a.grid.spacingMeters = numberIn(*sp, member(place, "spacing"), 0, true, 1e6, false, " m");
+    if (const Value* act = v.find("activity")) {
+        a.activity = text(*act, member(place, "activity"));
+        if (!findActivity(a.activity))
+            fail(member(place, "activity"), "unknown activity " + quote(a.activity) +
+                                                " (expected a reference number of EN 12464-1's table: `lucerna standards` lists them)");
+    }
+    if (const Value* obs = v.find("observers")) {
+        const std::string here = member(place, "observers");
+        expectType(*obs, Type::Array, here);
+        for (size_t i = 0; i < obs->array.size(); ++i) {
+            const std::string o = item(here, i);
+            checkKeys(obs->array[i], o, {"position", "view"});
+            GlareObserver g;
+            g.position = vec3(required(obs->array[i], o, "position"), member(o, "position"));
+            g.view = direction(required(obs->array[i], o, "view"), member(o, "view"));
+            a.observers.push_back(g);
+        }
+    }
+    return a;
+}
+
+ProjectInfo SceneParser::parseProject(const Value& v, const std::string& place) const {
+    checkKeys(v, place, {"name", "client", "designer", "notes"});
+    ProjectInfo p;
+    const auto field = [&](const char* key, std::string& out) {
+        if (const Value* f = v.find(key)) out = text(*f, member(place, key));
+    };
+    field("name", p.name);
+    field("client", p.client);
+    field("designer", p.designer);
+    field("notes", p.notes);
+    return p;
+}
+
+}  // namespace lucerna

@@ -1,0 +1,47 @@
+#pragma once
+// The common part of the backends that gather VPLs at the camera's pixels (ir, mir): the VPL
+// gatherer, and the pass that takes one camera sample per pixel and gathers a set of VPLs there.
+
+#include "render/progressive/tracing_backend.h"
+#include "render/trace/rng.h"
+#include "render/vpl/tile_scheduler.h"
+#include "render/vpl/vpl_gatherer.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace lucerna {
+
+class GatheringBackend : public TracingBackend {
+protected:
+    using TracingBackend::TracingBackend;
+
+    // Builds scene_, film_ and gatherer_; a backend that prepares more calls it first.
+    void prepareGatherer(const GatherSettings& gather) {
+        prepareSceneAndFilm();
+        gatherer_ = std::make_unique<VplGatherer>(*scene_, gather);
+    }
+
+    // Adds one sample to every pixel of the film's half pass % 2 (not finishing the pass): a
+    // camera ray through a uniformly jittered point of the pixel (box filter), gathering the VPLs
+    // vplsAt(passSeed, pixel) chooses for the pixel (its index y * width + x); each pixel's
+    // random numbers depend only on the seed, the pass and the pixel.
+    template <class VplsAt>
+    void gatherPass(TaskContext& ctx, int pass, int tileSize, const VplsAt& vplsAt) {
+        const Sensor& camera = scene_->camera();
+        const int half = pass % 2;
+        const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
+        forEachPixel(camera.width(), camera.height(), tileSize, ctx, [&](int x, int y) {
+            const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
+            Rng rng(passSeed, pixel);
+            const V2f jitter = rng.next2D();
+            Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vplsAt(passSeed, pixel));
+            if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
+            film_->addSample(half, x, y, L);
+        });
+    }
+
+    std::unique_ptr<VplGatherer> gatherer_;
+};
+
+}  // namespace lucerna
