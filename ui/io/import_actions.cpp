@@ -5,6 +5,7 @@
 #include "ui/io/file_dialogs.h"
 #include "ui/io/mesh_import.h"
 #include "ui/io/model_import_action.h"
+#include "ui/io/read_crash_hook.h"
 #include "ui/scene_panels/camera_panel.h"
 #include "ui/scene_panels/outliner.h"
 #include "ui/window/file_actions.h"
@@ -51,9 +52,13 @@ ImportTarget ImportActions::askTarget() {
 }
 
 bool ImportActions::importMeshFile(const QString& path) {
+    files_.secureUnsavedWork();
     MeshImport imported;
-    if (!messages_.attempt([&] { imported = importMesh(doc_, path); }, tr("Could not import %1").arg(path)))
-        return false;
+    const auto read = [&] {
+        crashHereWhenTesting("import");
+        imported = importMesh(doc_, path);
+    };
+    if (!messages_.attempt(read, tr("Could not import %1").arg(path))) return false;
     const QString text = tr("Import %1").arg(QString::fromStdString(imported.object.name));
     doc_.undoStack()->push(new AddObjectCommand(&doc_, std::move(imported.object), std::move(imported.material), text));
     outliner_.select(Outliner::Kind::Object, int(doc_.scene().objects.size()) - 1);
@@ -63,8 +68,10 @@ bool ImportActions::importMeshFile(const QString& path) {
 
 bool ImportActions::importModelFile(const QString& path, ImportTarget target) {
     if (target == ImportTarget::Cancel) return false;
+    files_.secureUnsavedWork();
     QStringList report;
     const auto importModel = [&] {
+        crashHereWhenTesting("import");
         const Camera before = doc_.scene().camera;
         // A new scene is a new document, not an undo step of the old one.
         if (target == ImportTarget::NewScene) files_.replaceScene(newSceneWithModel(path, &report), {}, true);

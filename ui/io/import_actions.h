@@ -35,7 +35,8 @@ public:
     void addTo(QMenu* menu);
 
     // The operations behind the menu, without dialogs. Each returns false and says why
-    // (WindowMessages::fail) when it fails.
+    // (WindowMessages::fail) when it fails. Each first autosaves unsaved changes
+    // (FileActions::secureUnsavedWork): an importer that crashes loses no work.
     // Adds the mesh file as a new object with a material of its own, and selects it.
     bool importMeshFile(const QString& path);
     // Adds a model in one undo step and shows the import report (ui/io/model_import_action.h) in

@@ -5,8 +5,10 @@
 #include "ui/commands/object_commands.h"
 #include "ui/io/file_dialogs.h"
 #include "ui/io/luminaire_import.h"
+#include "ui/io/read_crash_hook.h"
 #include "ui/scene_panels/arrangement_dialog.h"
 #include "ui/scene_panels/outliner.h"
+#include "ui/window/file_actions.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/window_messages.h"
 
@@ -16,8 +18,9 @@
 
 namespace lucerna {
 
-EditActions::EditActions(Document& doc, Outliner& outliner, FileDialogs& dialogs, WindowMessages& messages)
-    : doc_(doc), outliner_(outliner), dialogs_(dialogs), messages_(messages) {}
+EditActions::EditActions(Document& doc, FileActions& files, Outliner& outliner, FileDialogs& dialogs,
+                         WindowMessages& messages)
+    : doc_(doc), files_(files), outliner_(outliner), dialogs_(dialogs), messages_(messages) {}
 
 void EditActions::addTo(QMenu* menu) {
     QAction* undo = doc_.undoStack()->createUndoAction(messages_.window(), tr("&Undo"));
@@ -58,9 +61,13 @@ void EditActions::addLight(LightType type) {
 }
 
 bool EditActions::addLuminaireFile(const QString& path) {
+    files_.secureUnsavedWork();
     Light light;
-    if (!messages_.attempt([&] { light = luminaireFromFile(doc_, path); }, tr("Could not add %1").arg(path)))
-        return false;
+    const auto read = [&] {
+        crashHereWhenTesting("luminaire");
+        light = luminaireFromFile(doc_, path);
+    };
+    if (!messages_.attempt(read, tr("Could not add %1").arg(path))) return false;
     append(std::move(light));
     return true;
 }

@@ -17,14 +17,16 @@ namespace lucerna {
 
 class Document;
 class FileDialogs;
+class FileActions;
 class Outliner;
 class WindowMessages;
 
 class EditActions : public QObject {
     Q_OBJECT
 public:
-    // `outliner` holds the selection the actions work on, and selects what they add.
-    EditActions(Document& doc, Outliner& outliner, FileDialogs& dialogs, WindowMessages& messages);
+    // `outliner` holds the selection the actions work on, and selects what they add; `files`
+    // autosaves unsaved changes before a luminaire file is read.
+    EditActions(Document& doc, FileActions& files, Outliner& outliner, FileDialogs& dialogs, WindowMessages& messages);
 
     // Adds Undo, Redo and the actions below to `menu`.
     void addTo(QMenu* menu);
@@ -33,7 +35,7 @@ public:
     // A light of `type` (point, spot or directional) above the middle of the scene, selected.
     void addLight(LightType type);
     // Adds the IES or EULUMDAT file's luminaire and selects it; false (and a status message)
-    // when the file cannot be read.
+    // when the file cannot be read. Unsaved changes are autosaved before the file is read.
     bool addLuminaireFile(const QString& path);
     // The dialog, over the rectangle drawn in the plan when given (x0, z0, x1, z1), else the
     // scene's plan.
@@ -53,6 +55,7 @@ private:
     void append(Light light);
 
     Document& doc_;
+    FileActions& files_;
     Outliner& outliner_;
     FileDialogs& dialogs_;
     WindowMessages& messages_;

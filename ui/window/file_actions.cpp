@@ -4,6 +4,7 @@
 #include "ui/document/autosave.h"
 #include "ui/document/new_scene.h"
 #include "ui/io/file_dialogs.h"
+#include "ui/io/read_crash_hook.h"
 #include "ui/rendering/converging_render.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/recent_files.h"
@@ -58,8 +59,13 @@ void FileActions::replaceScene(Scene scene, const std::string& path, bool unsave
 }
 
 bool FileActions::openFile(const QString& path) {
+    secureUnsavedWork();
     Scene scene;
-    if (!messages_.attempt([&] { scene = loadScene(path.toStdString()); })) return false;
+    if (!messages_.attempt([&] {
+            crashHereWhenTesting("open");
+            scene = loadScene(path.toStdString());
+        }))
+        return false;
     replaceScene(std::move(scene), QFileInfo(path).absoluteFilePath().toStdString(), false);
     recent_->add(path);
     messages_.show(tr("Opened %1").arg(QFileInfo(path).fileName()), 5000);
@@ -104,6 +110,10 @@ bool FileActions::saveFileAs(const QString& path) {
     recent_->add(absolute);
     messages_.show(tr("Saved %1").arg(QFileInfo(path).fileName()), 5000);
     return true;
+}
+
+void FileActions::secureUnsavedWork() {
+    if (autosave_) autosave_->writeNow();
 }
 
 bool FileActions::maybeSave() {

@@ -33,6 +33,7 @@ public:
 
     // The operations behind the menu, without dialogs. Each returns false and says why
     // (WindowMessages::fail) when it fails.
+    // Autosaves unsaved changes (secureUnsavedWork) before it reads the file.
     bool openFile(const QString& path);
     bool save();  // to the document's path; Save As when it has none
     bool saveFileAs(const QString& path);
@@ -42,6 +43,10 @@ public:
     // `unsaved`: its content is unsaved work (an import, a recovery). The converging render starts
     // on it, and the recovery file of the scene before goes (its changes were saved or let go).
     void replaceScene(Scene scene, const std::string& path, bool unsaved);
+
+    // Before a read that could crash its reader (a third-party importer) or replace the scene:
+    // unsaved changes go to the recovery file at once, so that a crash loses none of them.
+    void secureUnsavedWork();
 
     // Before unsaved changes are lost: asks (Save, Discard, Cancel); true when it may go on.
     bool maybeSave();

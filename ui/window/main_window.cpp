@@ -204,7 +204,7 @@ void MainWindow::createMenus() {
     files_ = std::make_unique<FileActions>(*doc_, *render_, *dialogs_, messages_);
     exports_ = std::make_unique<ExportActions>(*doc_, *render_, *preview_, *report_, *compare_, *dialogs_, messages_);
     imports_ = std::make_unique<ImportActions>(*doc_, *files_, *outliner_, *cameraPanel_, *dialogs_, messages_);
-    edits_ = std::make_unique<EditActions>(*doc_, *outliner_, *dialogs_, messages_);
+    edits_ = std::make_unique<EditActions>(*doc_, *files_, *outliner_, *dialogs_, messages_);
 
     QMenu* file = menuBar()->addMenu(tr("&File"));
     files_->addTo(file);
