@@ -3,6 +3,7 @@
 #include "core/mesh/gltf_material_extensions.h"
 #include "core/mesh/mesh_edges.h"
 #include "core/mesh/obj_file.h"
+#include "core/mesh/regular_files_only.h"
 #include "core/message_text.h"
 #include "core/regular_file.h"
 #include "core/image/texture_average.h"
@@ -21,8 +22,8 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <set>
-#include <sstream>
 #include <stdexcept>
 
 namespace lucerna {
@@ -53,31 +54,18 @@ std::string lowerExtension(const std::string& path) {
 }
 
 // Assimp 5.2's OBJ importer has out-of-bounds reads and writes on malformed lines (oss-fuzz
-// reports on ObjFileParser::getFace and ObjFileImporter::createVertexArray, fixed after 5.2.5),
-// and it opens every material library a file names, blocking forever on a FIFO. So an OBJ file
-// is read by Lucerna's own reader first: a line that reader refuses is refused here with its
-// number, and so is a library (as the line names it, each of its words, or Assimp's fallback:
-// the file's own name with .mtl) that is there but is not a regular file.
+// reports on ObjFileParser::getFace and ObjFileImporter::createVertexArray, fixed after 5.2.5).
+// So an OBJ file is read by Lucerna's own reader first, and a line that reader refuses is refused
+// here with its number. (The material libraries it names are guarded by RegularFilesOnly.)
 void checkObjFile(const std::string& path) {
-    const std::filesystem::path file(path);
-    std::vector<std::string> libraries{file.stem().string() + ".mtl"};
     try {
         std::ifstream in(path, std::ios::binary);
-        const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        for (const std::string& names : readObjBytes(bytes).materialLibraries) {
-            libraries.push_back(names);  // Assimp takes the rest of the line as one name
-            std::istringstream words(names);
-            for (std::string word; words >> word;) libraries.push_back(word);
-        }
+        readObjBytes(std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
     } catch (const std::bad_alloc&) {
         throw std::runtime_error(path + ": the file is too large to read into memory");
     } catch (const std::runtime_error& e) {
         throw std::runtime_error(path + ": " + e.what());
     }
-    for (const std::string& name : libraries)
-        if (const std::string kind = nonRegularFileKind((file.parent_path() / name).string()); !kind.empty())
-            throw std::runtime_error(path + ": the material library " + printableWord(name) + " is " + kind +
-                                     ", not a regular file");
 }
 
 // Names unique across objects and lights together (SPEC.md), and materials apart: base, base-2, ...
@@ -457,17 +445,21 @@ void Mapper::mapLight(const aiLight& light) {
 
 }  // namespace
 
-ModelImport importModel(const std::string& path, const ImportOptions& options) {
+ModelImport importModelInProcess(const std::string& path, const ImportOptions& options) {
     if (const std::string kind = nonRegularFileKind(path); !kind.empty())
         throw std::runtime_error(path + ": not a regular file (" + kind + ")");
     const std::string ext = lowerExtension(path);
     if (ext == ".obj") checkObjFile(path);
     Assimp::Importer importer;
+    auto guardedFiles = std::make_unique<RegularFilesOnly>();
+    const RegularFilesOnly& files = *guardedFiles;
+    importer.SetIOHandler(guardedFiles.release());  // Assimp's Importer owns its IO system
     // aiProcess_GlobalScale applies the file's own unit where the importer reports one (FBX's
     // UnitScaleFactor, in centimetres, becomes metres); COLLADA's <unit> is applied by its loader.
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType |
                            aiProcess_GlobalScale | aiProcess_ValidateDataStructure;
     const aiScene* ai = importer.ReadFile(path, flags);
+    if (!files.refusal().empty()) throw std::runtime_error(path + ": " + files.refusal());
     // Assimp calls a scene without meshes incomplete; one with lights alone is still worth having.
     if (!ai || !ai->mRootNode || ((ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumLights == 0)) {
         std::string why = importer.GetErrorString();

@@ -2,7 +2,9 @@
 // Model import (README, "Import Model"): OBJ with its MTL, glTF 2.0 (.gltf, .glb) with
 // KHR_lights_punctual, FBX, COLLADA and the other formats Assimp reads, turned into SPEC.md
 // objects (inline world-space triangle meshes), materials and lights, with a report of what was
-// mapped and what was approximated. Assimp is confined to model_import.cpp.
+// mapped and what was approximated. Assimp is confined to model_import.cpp, and it runs in a
+// process of its own (model_import_process.cpp): Assimp 5.2's importers have known crashes on
+// malformed files, and a crash there must not take the application, or its unsaved work, down.
 
 #include "core/scene/scene.h"
 
@@ -35,8 +37,17 @@ struct ModelImport {
     std::vector<std::string> report;
 };
 
-// Reads the model at `path`. Throws std::runtime_error with one line (the file and Assimp's
-// message) when the file cannot be read or holds no triangles and no lights.
+// Reads the model at `path` in the importer's own process (the executable lucerna-model-import,
+// beside this one or where the build put it). Throws std::runtime_error with one line (the file
+// and Assimp's message) when the file cannot be read or holds no triangles and no lights, and
+// when the importer crashed on it or could not be started.
 ModelImport importModel(const std::string& path, const ImportOptions& options = {});
+
+// The same in this process: what the importer's process runs. A malformed file may crash it.
+ModelImport importModelInProcess(const std::string& path, const ImportOptions& options = {});
+
+// The importer process's main: `lucerna-model-import REQUEST.json FOLDER` reads the request that
+// importModel wrote and writes the result into FOLDER. Returns 0, or 2 after one line on stderr.
+int runModelImportProcess(int argc, char** argv);
 
 }  // namespace lucerna

@@ -20,7 +20,9 @@ PreviewSettings previewSettingsFromOptions(const RenderSettings& settings) {
     readOption(settings, "proxy_triangles", p.shadowProxyTriangles, 0);
     readOption(settings, "sky_samples", p.skySamples, 0);
     readOption(settings, "sky_shadow_size", p.skyShadowSize, 1, 16384);
-    for (const auto& [key, value] : settings.options) {
+    for (const auto& option : settings.options) {
+        const std::string& key = option.first;  // not a structured binding: clang 14 cannot capture one
+        const std::string& value = option.second;
         const auto bad = [&](const char* what) {
             return std::invalid_argument("option " + key + " must be " + what + " (got '" + value + "')");
         };

@@ -232,6 +232,7 @@ private slots:
     void importRefusesOrWritesALoadableScene_data();
     void importRefusesOrWritesALoadableScene();
     void importToAFolderLeavesNothing();
+    void importerCrashIsOneLine();
     void overflowingPhotometryNamesFileAndLine_data();
     void overflowingPhotometryNamesFileAndLine();
     void binaryBytesStayOutOfMessages();
@@ -403,6 +404,22 @@ void TestHostileFiles::importToAFolderLeavesNothing() {
     QCOMPARE(leftovers(dir.path(), {"cube.obj", "target.json"}), QStringList());
 }
 
+// Assimp runs in a process of its own (core/mesh/model_import.h): the test hook makes that process
+// abort, as an importer crashing on a malformed file would.
+void TestHostileFiles::importerCrashIsOneLine() {
+    QTemporaryDir dir;
+    writeFile(dir.filePath("cube.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    qputenv("LUCERNA_TEST_CRASH_READING", "model-importer");
+    const Run r = runLucerna({"import", "cube.obj", "-o", "out.json"}, dir.path());
+    qunsetenv("LUCERNA_TEST_CRASH_READING");
+    QVERIFY2(r.exitCode == 2 && isOnePrintableLine(r.err), qPrintable(describe({"import"}, r)));
+    QVERIFY2(r.err.contains("cube.obj: the model importer (Assimp) crashed on this file (SIGABRT)"),
+             qPrintable(describe({"import"}, r)));
+    QCOMPARE(leftovers(dir.path(), {"cube.obj"}), QStringList());
+    const Run fine = runLucerna({"import", "cube.obj", "-o", "out.json"}, dir.path());
+    QVERIFY2(fine.exitCode == 0, qPrintable(describe({"import"}, fine)));
+}
+
 void TestHostileFiles::overflowingPhotometryNamesFileAndLine_data() {
     QTest::addColumn<QString>("name");
     QTest::addColumn<QString>("text");
@@ -474,6 +491,15 @@ void TestHostileFiles::nonRegularPathsAreRefusedAtOnce() {
     writeFile(dir.filePath("fifo-fallback.obj"), "mtllib missing.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
     fifo("fifo-fallback.mtl");
     writeFile(dir.filePath("mesh-lib.json"), meshScene("lib.obj"));
+    // A glTF file's buffers are opened by Assimp too: a FIFO blocked the import forever.
+    const QByteArray gltf = R"({"asset":{"version":"2.0"},"buffers":[{"uri":"BUFFER","byteLength":36}],
+        "bufferViews":[{"buffer":0,"byteLength":36}],"accessors":[{"bufferView":0,"componentType":5126,"count":3,
+        "type":"VEC3","max":[1,1,0],"min":[0,0,0]}],"meshes":[{"primitives":[{"attributes":{"POSITION":0}}]}],
+        "nodes":[{"mesh":0}],"scenes":[{"nodes":[0]}],"scene":0})";
+    writeFile(dir.filePath("fifo-buffer.gltf"), QByteArray(gltf).replace("BUFFER", "fifo.bin"));
+    writeFile(dir.filePath("zero-buffer.gltf"), QByteArray(gltf).replace("BUFFER", "zero.bin"));
+    fifo("fifo.bin");
+    link("/dev/zero", "zero.bin");
     const QString small = dir.filePath("small.exr");
     {
         // A real 2 x 2 EXR to compare the hostile ones with.
@@ -491,9 +517,14 @@ void TestHostileFiles::nonRegularPathsAreRefusedAtOnce() {
     // The mesh reader takes positions only and opens no library; Assimp (import) would block.
     const Run lib = runLucerna({"info", "mesh-lib.json"}, dir.path());
     QVERIFY2(lib.exitCode == 0, qPrintable(describe({"info", "mesh-lib.json"}, lib)));
-    VERIFY_REFUSED(QStringList({"import", "lib.obj", "-o", "o.json"}), dir.path(), "the material library fifo.mtl is a FIFO");
+    VERIFY_REFUSED(QStringList({"import", "lib.obj", "-o", "o.json"}), dir.path(),
+                   "lib.obj: the file names fifo.mtl, which is a FIFO, not a regular file");
     VERIFY_REFUSED(QStringList({"import", "fifo-fallback.obj", "-o", "o.json"}), dir.path(),
-                   "the material library fifo-fallback.mtl is a FIFO");
+                   "the file names fifo-fallback.mtl, which is a FIFO");
+    VERIFY_REFUSED(QStringList({"import", "fifo-buffer.gltf", "-o", "o.json"}), dir.path(),
+                   "fifo-buffer.gltf: the file names fifo.bin, which is a FIFO, not a regular file");
+    VERIFY_REFUSED(QStringList({"import", "zero-buffer.gltf", "-o", "o.json"}), dir.path(),
+                   "the file names zero.bin, which is a character device");
     VERIFY_REFUSED(QStringList({"info", "fifo.json"}), dir.path(), "fifo.json: cannot read the file: not a regular file");
     VERIFY_REFUSED(QStringList({"info", "zero.json"}), dir.path(), "zero.json: cannot read the file: not a regular file");
     VERIFY_REFUSED(QStringList({"render", "fifo.json", "-o", "o.exr"}), dir.path(), "not a regular file");

@@ -38,11 +38,12 @@ Autosave::Autosave(Document& document, QString directory, int intervalMs, QObjec
     // each autosave.
     if (QDir().mkpath(directory_)) writeAtomically(runFile(directory_), runId_);
     connect(&timer_, &QTimer::timeout, this, [this] { writeNow(); });
+    connect(document_.undoStack(), &QUndoStack::indexChanged, this, [this] { letGo_ = false; });
     timer_.start(intervalMs);
 }
 
 bool Autosave::writeNow() {
-    if (!document_.isModified()) return false;
+    if (letGo_ || !document_.isModified()) return false;
     const Scene& scene = document_.scene();
     const std::string parseAs =
         document_.path().empty() ? QDir(QString::fromStdString(scene.baseDir)).filePath("untitled.json").toStdString()
@@ -56,6 +57,11 @@ bool Autosave::writeNow() {
 }
 
 void Autosave::discard() { discard(directory_); }
+
+void Autosave::letGo() {
+    discard();
+    letGo_ = true;
+}
 
 void Autosave::closedCleanly() {
     timer_.stop();

@@ -26,6 +26,10 @@ public:
     // The document was saved, or replaced by another (its changes saved or let go): nothing to
     // recover.
     void discard();
+    // The designer let the unsaved changes go (Discard, before another scene replaces them): the
+    // recovery file goes, and none is written again until the document changes, so that a crash
+    // while the next scene is read does not offer the discarded changes back.
+    void letGo();
     // The application closes cleanly: nothing to recover, and the run's marker goes.
     void closedCleanly();
 
@@ -45,6 +49,7 @@ private:
     QString directory_;
     QByteArray runId_;  // this run's marker, also the third line of the origin file
     QTimer timer_;
+    bool letGo_ = false;  // until the undo stack moves
 };
 
 }  // namespace lucerna

@@ -5,7 +5,7 @@
 #include "ui/io/file_dialogs.h"
 #include "ui/io/mesh_import.h"
 #include "ui/io/model_import_action.h"
-#include "ui/io/read_crash_hook.h"
+#include "core/read_crash_hook.h"
 #include "ui/scene_panels/camera_panel.h"
 #include "ui/scene_panels/outliner.h"
 #include "ui/window/file_actions.h"

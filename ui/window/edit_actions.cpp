@@ -5,7 +5,7 @@
 #include "ui/commands/object_commands.h"
 #include "ui/io/file_dialogs.h"
 #include "ui/io/luminaire_import.h"
-#include "ui/io/read_crash_hook.h"
+#include "core/read_crash_hook.h"
 #include "ui/scene_panels/arrangement_dialog.h"
 #include "ui/scene_panels/outliner.h"
 #include "ui/window/file_actions.h"

@@ -4,7 +4,7 @@
 #include "ui/document/autosave.h"
 #include "ui/document/new_scene.h"
 #include "ui/io/file_dialogs.h"
-#include "ui/io/read_crash_hook.h"
+#include "core/read_crash_hook.h"
 #include "ui/rendering/converging_render.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/recent_files.h"
@@ -123,7 +123,9 @@ bool FileActions::maybeSave() {
                  : QMessageBox::warning(messages_.window(), tr("Unsaved changes"), tr("The scene has unsaved changes. Save them?"),
                                         QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel);
     if (answer == QMessageBox::Save) return save();
-    return answer == QMessageBox::Discard;
+    if (answer != QMessageBox::Discard) return false;
+    if (autosave_) autosave_->letGo();
+    return true;
 }
 
 bool FileActions::startAutosave(const QString& directory, int intervalMs) {

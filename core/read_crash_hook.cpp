@@ -1,4 +1,4 @@
-#include "ui/io/read_crash_hook.h"
+#include "core/read_crash_hook.h"
 
 #include <QString>
 

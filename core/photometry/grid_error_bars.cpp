@@ -1,0 +1,25 @@
+#include "core/photometry/grid_error_bars.h"
+
+namespace lucerna {
+
+GridErrorBars gridErrorBars(const std::vector<double>& lux, const std::vector<double>& errorLux,
+                            const std::vector<uint8_t>& excluded) {
+    GridErrorBars e;
+    const GridStatistics s = gridStatistics(lux, excluded);
+    if (s.counted == 0 || errorLux.size() != lux.size()) return e;
+    double sum = 0;
+    bool minimumSeen = false;
+    for (size_t i = 0; i < lux.size(); ++i) {
+        if (i < excluded.size() && excluded[i]) continue;
+        sum += errorLux[i];
+        if (!minimumSeen && lux[i] == s.minimum) {
+            e.minimum = errorLux[i];
+            minimumSeen = true;
+        }
+    }
+    e.average = sum / double(s.counted);
+    if (s.average > 0 && s.minimum > 0) e.uniformity = s.uniformity * (e.minimum / s.minimum + e.average / s.average);
+    return e;
+}
+
+}  // namespace lucerna
