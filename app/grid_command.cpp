@@ -270,13 +270,18 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(), layout.nu,
                 layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
                 g.settings.autoMethod ? " (auto)" : "");
-    std::printf("%s\n", describeMaintenance(maintenanceRange(*scene)).c_str());
+    const MaintenanceRange maintenance = maintenanceRange(*scene);
+    std::printf("%s\n", describeMaintenance(maintenance).c_str());
     if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size()).c_str());
     std::printf("%s\n", gridFiguresLine(s).c_str());
     printLines(gridErrorLines(r, s.counted));
     if (setup->requirement && s.counted > 0) {
         std::printf("%s\n", describeRequirement(*setup->requirement).c_str());
-        TaskAreaFigures figures{s, std::nullopt, statedColourRendering(*scene)};
+        TaskAreaFigures figures;
+        figures.grid = s;
+        if (!r.errorBarUnknown) figures.gridErrors = gridErrorBars(r.lux, r.errorLux, r.insideGeometry);
+        figures.colourRendering = statedColourRendering(*scene);
+        figures.maintainedValues = valuesAreMaintained(maintenance);
         for (const RequirementCheck& c : checkRequirements(*setup->requirement, figures))
             std::printf("  %s\n", c.describe().c_str());
     } else if (!g.taskArea.empty()) {

@@ -78,7 +78,9 @@ ReportTable checksTable(const AreaReport& a) {
             margin = (c.margin >= 0 ? QStringLiteral("+") : QString()) + figure(c.margin);
             if (lx && c.required > 0) margin += QString::asprintf(" (%+.1f%%)", 100 * c.margin / c.required);
         }
-        t.rows.push_back({name, c.achieved ? figure(*c.achieved) : QStringLiteral("-"), required, margin, outcomeText(c)});
+        QString achieved = c.achieved ? figure(*c.achieved) : QStringLiteral("-");
+        if (c.achieved && c.error > 0) achieved += QStringLiteral(" \u00b1 ") + figure(c.error);
+        t.rows.push_back({name, achieved, required, margin, outcomeText(c)});
     }
     return t;
 }

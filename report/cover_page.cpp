@@ -34,14 +34,16 @@ ReportTable summaryTable(const ReportData& data) {
     for (const AreaReport& a : data.areas) {
         QString outcome = QStringLiteral("none given");
         if (a.requirement) {
-            int met = 0, notMet = 0, open = 0;
+            int met = 0, notMet = 0, borderline = 0, open = 0;
             for (const RequirementCheck& c : a.checks) {
-                if (!c.achieved) ++open;
-                else if (c.outcome == CheckOutcome::Met) ++met;
-                else ++notMet;
+                if (c.outcome == CheckOutcome::Met) ++met;
+                else if (c.outcome == CheckOutcome::NotMet) ++notMet;
+                else if (c.outcome == CheckOutcome::Borderline) ++borderline;
+                else ++open;  // not stated, not computed, not checked
             }
             outcome = notMet > 0 ? QStringLiteral("%1 of %2 not met").arg(notMet).arg(a.checks.size())
                                  : QStringLiteral("%1 of %2 met").arg(met).arg(a.checks.size());
+            if (borderline > 0) outcome += QStringLiteral(", %1 borderline").arg(borderline);
             if (open > 0) outcome += QStringLiteral(", %1 open").arg(open);
         }
         const QString activity = a.requirement ? activityText(*a.requirement) : QStringLiteral("none given");

@@ -24,6 +24,18 @@ namespace lucerna {
 
 namespace {
 
+// The figures an area's requirements are checked on, with their error bars.
+TaskAreaFigures taskAreaFigures(const AreaReport& r, bool maintainedValues) {
+    TaskAreaFigures f;
+    f.grid = r.statistics;
+    if (!r.result.errorBarUnknown) f.gridErrors = gridErrorBars(r.result.lux, r.result.errorLux, r.result.insideGeometry);
+    f.worstUgr = r.worstUgr;
+    f.worstUgrError = r.worstUgrError;
+    f.colourRendering = r.colourRendering;
+    f.maintainedValues = maintainedValues;
+    return f;
+}
+
 constexpr double kWorkPlaneM = 0.8, kBorderM = 0.5;  // EN 12464-1's usual work plane
 
 // A stage of the report as a share of its progress: a context of its own (the parent's token,
@@ -76,7 +88,10 @@ void computeGlare(const Scene& scene, const TaskArea& area, const ReportSettings
     for (size_t i = 0; i < observers.size() && !ctx.isCancelled(); ++i) {
         ObserverGlare o{observers[i], defaults, evaluateGlare(scene, observers[i], glare, ctx)};
         ctx.setProgress(double(i + 1) / double(observers.size()));
-        if (o.result.ugr) out.worstUgr = std::max(out.worstUgr.value_or(*o.result.ugr), *o.result.ugr);
+        if (o.result.ugr && (!out.worstUgr || *o.result.ugr > *out.worstUgr)) {
+            out.worstUgr = *o.result.ugr;
+            out.worstUgrError = o.result.ugrErrorBar;
+        }
         out.glare.push_back(std::move(o));
     }
     // The worst UGR only when every observer has one: a missing one might be the worst.
@@ -200,6 +215,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     // Everything that can fail on bad input, before any work.
     checkReportInput(*scene, settings);
     const std::vector<ReportArea> areas = reportAreas(*scene);
+    const bool maintainedValues = valuesAreMaintained(maintenanceRange(*scene));
     for (const ReportArea& a : areas) {
         AreaReport r;
         r.name = a.area.grid.name;
@@ -236,7 +252,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
             if (ctx.isCancelled()) return data;
         }
         if (r.requirement)
-            r.checks = checkRequirements(*r.requirement, TaskAreaFigures{r.statistics, r.worstUgr, r.colourRendering});
+            r.checks = checkRequirements(*r.requirement, taskAreaFigures(r, maintainedValues));
         if (daylightFactor) {
             DaylightFactorReport df;
             {

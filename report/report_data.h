@@ -86,6 +86,7 @@ struct AreaReport {
     GridStatistics statistics;
     const ActivityRequirement* requirement = nullptr;  // the activity (null: none given)
     std::optional<double> worstUgr;
+    double worstUgrError = 0;               // its 95% error bar
     std::optional<double> colourRendering;  // the lowest Ra of the luminaires (absent: not stated)
     std::vector<RequirementCheck> checks;   // with an activity
     std::vector<ObserverGlare> glare;

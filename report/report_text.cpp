@@ -35,8 +35,8 @@ QString methodDescription(GridMethod method) {
 }
 
 QString outcomeText(const RequirementCheck& c) {
-    if (!c.achieved) return c.quantity == "Ra" ? QStringLiteral("not stated") : QStringLiteral("not computed");
-    return c.outcome == CheckOutcome::Met ? QStringLiteral("met") : QStringLiteral("not met");
+    const QString word = QString::fromStdString(c.outcomeWord());
+    return c.outcome == CheckOutcome::NotChecked ? word + ": " + QString::fromStdString(c.notCheckedBecause) : word;
 }
 
 }  // namespace lucerna

@@ -56,7 +56,15 @@ std::string figure(const std::string& quantity, double x) {
     return fixedNumber(x, quantity == "UGR" ? 1 : 0);
 }
 
-RequirementCheck check(const std::string& quantity, double required, bool upperLimit, std::optional<double> achieved) {
+// Met only when the margin exceeds the error bar, not met only when it falls short by more; an
+// exact figure (no error bar) that equals the requirement meets it.
+CheckOutcome judge(double margin, double error) {
+    if (margin > error || (error == 0 && margin >= 0)) return CheckOutcome::Met;
+    return margin < -error ? CheckOutcome::NotMet : CheckOutcome::Borderline;
+}
+
+RequirementCheck check(const std::string& quantity, double required, bool upperLimit, std::optional<double> achieved,
+                       std::optional<double> error) {
     RequirementCheck c;
     c.quantity = quantity;
     c.required = required;
@@ -64,7 +72,13 @@ RequirementCheck check(const std::string& quantity, double required, bool upperL
     c.achieved = achieved;
     if (!achieved) return c;
     c.margin = upperLimit ? required - *achieved : *achieved - required;
-    c.outcome = c.margin >= 0 ? CheckOutcome::Met : CheckOutcome::NotMet;
+    c.error = error.value_or(0);
+    if (!error) {
+        c.outcome = CheckOutcome::NotChecked;
+        c.notCheckedBecause = "error bar unknown";
+        return c;
+    }
+    c.outcome = judge(c.margin, c.error);
     return c;
 }
 
@@ -78,15 +92,28 @@ const ActivityRequirement* findActivity(const std::string& reference) {
     return nullptr;
 }
 
+std::string RequirementCheck::outcomeWord() const {
+    switch (outcome) {
+    case CheckOutcome::Met: return "met";
+    case CheckOutcome::Borderline: return "borderline";
+    case CheckOutcome::NotMet: return "not met";
+    case CheckOutcome::NotChecked: return "not checked";
+    case CheckOutcome::NotStated: break;
+    }
+    return quantity == "Ra" ? "not stated" : "not computed";
+}
+
 std::string RequirementCheck::describe() const {
     const std::string bound = std::string(upperLimit ? "<= " : ">= ") + figure(quantity, required);
-    if (!achieved)
-        return quantity + (quantity == "Ra" ? " not stated (" : " not computed (") + bound + " required)";
-    std::string line = quantity + " " + figure(quantity, *achieved) + " " + bound + ": " +
-                       (outcome == CheckOutcome::Met ? "met" : "not met") + " (margin " + (margin >= 0 ? "+" : "") +
-                       figure(quantity, margin);
+    if (!achieved) return quantity + " " + outcomeWord() + " (" + bound + " required)";
+    std::string line = quantity + " " + figure(quantity, *achieved);
+    if (error > 0) line += " +- " + figure(quantity, error);
+    line += " " + bound + ": " + outcomeWord();
+    if (outcome == CheckOutcome::NotChecked) return line + ": " + notCheckedBecause;
+    line += " (margin " + std::string(margin >= 0 ? "+" : "") + figure(quantity, margin);
     if (quantity == "Em" && required > 0)
         line += ", " + std::string(margin >= 0 ? "+" : "") + fixedNumber(100 * margin / required, 1) + "%";
+    if (outcome == CheckOutcome::Borderline) line += ", within the error bar";
     return line + ")";
 }
 
@@ -112,10 +139,18 @@ std::string describeRequirement(const ActivityRequirement& r) {
 }
 
 std::vector<RequirementCheck> checkRequirements(const ActivityRequirement& requirement, const TaskAreaFigures& figures) {
-    return {check("Em", requirement.maintainedLux, false, figures.grid.average),
-            check("U0", requirement.uniformity, false, figures.grid.uniformity),
-            check("UGR", requirement.ugrLimit, true, figures.worstUgr),
-            check("Ra", requirement.colourRendering, false, figures.colourRendering)};
+    const std::optional<GridErrorBars>& bars = figures.gridErrors;
+    RequirementCheck em = check("Em", requirement.maintainedLux, false, figures.grid.average,
+                                bars ? std::optional(bars->average) : std::nullopt);
+    if (em.achieved && !figures.maintainedValues) {
+        em.outcome = CheckOutcome::NotChecked;
+        em.notCheckedBecause = "no maintenance factor (Em is maintained; these are values of the new installation)";
+    }
+    return {em,
+            check("U0", requirement.uniformity, false, figures.grid.uniformity,
+                  bars ? std::optional(bars->uniformity) : std::nullopt),
+            check("UGR", requirement.ugrLimit, true, figures.worstUgr, figures.worstUgrError),
+            check("Ra", requirement.colourRendering, false, figures.colourRendering, 0.0)};
 }
 
 }  // namespace lucerna

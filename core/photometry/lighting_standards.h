@@ -9,6 +9,7 @@
 // values for some contexts; a design for it should be checked against the edition in force.
 
 #include "core/photometry/calculation_grid.h"
+#include "core/photometry/grid_error_bars.h"
 #include "core/scene/scene.h"
 
 #include <optional>
@@ -32,7 +33,10 @@ std::span<const ActivityRequirement> en12464Activities();
 // The activity with this reference number; null when the table has none.
 const ActivityRequirement* findActivity(const std::string& reference);
 
-enum class CheckOutcome { Met, NotMet, NotStated };
+// Met and NotMet only where the error bar cannot change the answer: a requirement within the
+// achieved figure's error bar is Borderline. NotChecked: the figure is not the one the
+// requirement is about (Em of a new installation, no maintenance factor) or its error is unknown.
+enum class CheckOutcome { Met, Borderline, NotMet, NotStated, NotChecked };
 
 // One requirement against what the design achieves.
 struct RequirementCheck {
@@ -40,23 +44,36 @@ struct RequirementCheck {
     double required = 0;
     bool upperLimit = false;        // UGR: achieved at most `required`; the others at least
     std::optional<double> achieved; // absent: not stated (Ra) or not computed (UGR)
+    double error = 0;               // the achieved figure's 95% error bar (0: exact, as Ra)
     CheckOutcome outcome = CheckOutcome::NotStated;
+    std::string notCheckedBecause;  // NotChecked: "no maintenance factor", "error bar unknown"
     // Achieved minus required for a lower bound, required minus achieved for UGR: positive
     // when met, in the quantity's unit.
     double margin = 0;
 
-    // One line: "Em 512 lx >= 500 lx: met (margin +12 lx, +2.4%)", "Ra not stated (>= 80 required)".
+    // One line: "Em 512 lx +- 4 lx >= 500 lx: met (margin +12 lx, +2.4%)", "UGR 19.0 +- 0.1
+    // <= 19: borderline (margin +0.0 within the error bar)", "Ra not stated (>= 80 required)".
     std::string describe() const;
+    // "met", "borderline", "not met", "not stated", "not computed", "not checked".
+    std::string outcomeWord() const;
 };
 
-// What a task area achieves: the grid's figures (lux, maintained when the scene says so), the
-// worst UGR over its observers (absent: not computed), the lowest Ra of the luminaires that
-// light it (absent: some file does not state it).
+// What a task area achieves: the grid's figures (lux) and their error bars, the worst UGR over
+// its observers (absent: not computed) and its error bar, the lowest Ra of the luminaires that
+// light it (absent: some file does not state it), and whether the lux are maintained values
+// (EN 12464-1's Em is maintained: without a maintenance factor it is not checked).
 struct TaskAreaFigures {
     GridStatistics grid;
+    std::optional<GridErrorBars> gridErrors;  // absent: the method backs no error bar
     std::optional<double> worstUgr;
     std::optional<double> colourRendering;
+    double worstUgrError = 0;
+    bool maintainedValues = false;  // a maintenance factor applies, or no electric light is lit
 };
+
+// Whether lux figures may be checked as maintained values: a maintenance factor applies, or there
+// is no electric light to maintain.
+inline bool valuesAreMaintained(const MaintenanceRange& range) { return range.maintained() || !range.electric; }
 
 // The Ra of the installation: the lowest Ra the files of the scene's luminaires (switched on)
 // state; absent when any electric light states none (a point or spot light, an IES file, an
