@@ -6,6 +6,7 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace lucerna {
@@ -63,6 +64,15 @@ CheckOutcome judge(double margin, double error) {
     return margin < -error ? CheckOutcome::NotMet : CheckOutcome::Borderline;
 }
 
+// An error bar to the figure's precision, or to one significant digit where that would read 0.
+std::string errorFigure(const std::string& quantity, double error) {
+    const double unit = quantity == "U0" ? 0.01 : quantity == "UGR" ? 0.1 : 1.0;
+    if (error >= 0.5 * unit) return figure(quantity, error);
+    char digits[32];
+    std::snprintf(digits, sizeof digits, "%.1g", error);
+    return std::string(digits) + (quantity == "Em" ? " lx" : "");
+}
+
 RequirementCheck check(const std::string& quantity, double required, bool upperLimit, std::optional<double> achieved,
                        std::optional<double> error) {
     RequirementCheck c;
@@ -107,7 +117,7 @@ std::string RequirementCheck::describe() const {
     const std::string bound = std::string(upperLimit ? "<= " : ">= ") + figure(quantity, required);
     if (!achieved) return quantity + " " + outcomeWord() + " (" + bound + " required)";
     std::string line = quantity + " " + figure(quantity, *achieved);
-    if (error > 0) line += " +- " + figure(quantity, error);
+    if (error > 0) line += " +- " + errorFigure(quantity, error);
     line += " " + bound + ": " + outcomeWord();
     if (outcome == CheckOutcome::NotChecked) return line + ": " + notCheckedBecause;
     line += " (margin " + std::string(margin >= 0 ? "+" : "") + figure(quantity, margin);

@@ -15,12 +15,16 @@
 
 namespace lucerna {
 
-// Per point, 1 when it is inside closed geometry. The rule: of kInsideProbeRays directions spread
-// over the hemisphere the grid measures (cosine-weighted, a fixed spiral), more than three
-// quarters meet the back face of a surface (its normal pointing away from the point: the inside of
-// a closed solid, or the underside of a one-sided sheet right above the point). A point in a
-// room meets the walls' front faces, a point under a table its underside's front face; a few
-// probes slipping out through a seam of a closed box do not change the answer.
+// Per point, 1 when it is inside geometry or on a surface, whichever way the faces point.
+// Inside: more than three quarters of kInsideProbeRays directions spread over the hemisphere the
+// grid measures (cosine-weighted, a fixed spiral) cross one object's surface an odd number of
+// times (a few probes slipping out through a seam do not change the answer; a cabinet without a
+// bottom encloses the upper hemisphere as well as a closed one), and that object is a solid: it
+// does not enclose a light or the camera in the same way (a ceiling over the room, a room
+// modelled as a closed box with outward faces) nor most of a work plane of four points or more
+// (a daylit room seen from outside). On a surface: more than an eighth of the probes meet one
+// within 1e-4 of the scene's radius (a grid point on a cabinet's face, whose estimate would be
+// half inside the cabinet).
 inline constexpr int kInsideProbeRays = 64;
 std::vector<uint8_t> pointsInsideGeometry(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal);
 

@@ -6,7 +6,11 @@
 //
 // Every child runs through fork/exec and wait4 rather than QProcess, so that its own peak
 // resident set (ru_maxrss) and CPU time are measured; it runs under an address-space limit of
-// 4 GB (and 20 s of CPU) so that a regression fails here instead of eating the machine.
+// 4 GB (and 20 s of CPU) so that a regression fails here instead of eating the machine. Under
+// AddressSanitizer the bounds are multiplied by kResourceScale and no address-space limit is set
+// (tests/support/sanitizers.h).
+
+#include "sanitizers.h"
 
 #include <QDir>
 #include <QFile>
@@ -24,6 +28,9 @@
 #include <sys/wait.h>
 #include <thread>
 #include <unistd.h>
+
+using lucerna::test::kAddressSanitizer;
+using lucerna::test::kResourceScale;
 
 namespace {
 
@@ -65,7 +72,7 @@ Run runLucerna(const QStringList& args, const QString& dir, const std::function<
         const int in = ::open("/dev/null", O_RDONLY);
         if (o < 0 || e < 0 || in < 0 || ::dup2(o, 1) < 0 || ::dup2(e, 2) < 0 || ::dup2(in, 0) < 0) ::_exit(120);
         const rlimit as{addressSpace, addressSpace}, cpu{20, 20};
-        ::setrlimit(RLIMIT_AS, &as);
+        if (!kAddressSanitizer) ::setrlimit(RLIMIT_AS, &as);
         ::setrlimit(RLIMIT_CPU, &cpu);
         if (::chdir(cwd.c_str()) != 0) ::_exit(121);
         ::execv(argv[0], argv.data());
@@ -123,8 +130,9 @@ bool isOnePrintableLine(const QByteArray& s) {
         const Run r_ = runLucerna(a_, (dir));                                                                \
         QVERIFY2(r_.exitCode == 2, qPrintable(describe(a_, r_)));                                            \
         QVERIFY2(isOnePrintableLine(r_.err), qPrintable(describe(a_, r_)));                                  \
-        QVERIFY2(r_.cpuSeconds < 1.0 && r_.wallSeconds < 10.0, qPrintable(describe(a_, r_)));                \
-        QVERIFY2(r_.maxRssMb < 100, qPrintable(describe(a_, r_)));                                           \
+        QVERIFY2(r_.cpuSeconds < 1.0 * kResourceScale && r_.wallSeconds < 10.0 * kResourceScale,             \
+                 qPrintable(describe(a_, r_)));                                                              \
+        QVERIFY2(r_.maxRssMb < 100 * kResourceScale, qPrintable(describe(a_, r_)));                          \
         QVERIFY2(QString::fromUtf8(r_.err).contains(expected), qPrintable(describe(a_, r_) + " expected: " + \
                                                                           QString(expected)));               \
     } while (0)
@@ -340,7 +348,7 @@ void TestHostileFiles::stlFanReadsInTime() {
     writeFile(dir.filePath("fan.stl"), stl);
     writeFile(dir.filePath("scene.json"), meshScene("fan.stl"));
     const Run r = runLucerna({"info", "scene.json"}, dir.path());
-    QVERIFY2(r.exitCode == 0 && r.cpuSeconds < 2.0, qPrintable(describe({"info", "scene.json"}, r)));
+    QVERIFY2(r.exitCode == 0 && r.cpuSeconds < 2.0 * kResourceScale, qPrintable(describe({"info", "scene.json"}, r)));
 }
 
 void TestHostileFiles::importRefusesOrWritesALoadableScene_data() {
@@ -662,7 +670,7 @@ void TestHostileFiles::filmTooLargeForMemory() {
     const Run r = runLucerna(args, dir.path());
     QVERIFY2(r.exitCode == 2 && isOnePrintableLine(r.err), qPrintable(describe(args, r)));
     QVERIFY2(r.err.contains("a 16384 x 16384 render needs more memory than is available"), qPrintable(describe(args, r)));
-    QVERIFY2(r.cpuSeconds < 2.0 && r.maxRssMb < 200, qPrintable(describe(args, r)));
+    QVERIFY2(r.cpuSeconds < 2.0 * kResourceScale && r.maxRssMb < 200 * kResourceScale, qPrintable(describe(args, r)));
     QCOMPARE(leftovers(dir.path(), {}), QStringList());
 }
 

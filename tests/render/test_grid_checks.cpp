@@ -113,6 +113,34 @@ private slots:
         QVERIFY2(r.out.contains(QString("U0 %1").arg(s.uniformity, 0, 'f', 3)), qPrintable(r.out));
     }
 
+    // The same test whichever way a room's faces point: in a closed box room, faces outward (as a
+    // box primitive makes it) or inward, exactly the cabinet's 4 points are inside, the lamp and
+    // camera in the room or above its roof (then the work plane, mostly in the room, says so). A
+    // point on the cabinet's face is flagged (its estimate would be half inside the cabinet); one
+    // 2 cm off it is not.
+    void insideDoesNotDependOnFaceOrientation() {
+        CalculationGrid grid;
+        grid.corner = V3d(-2, 0.6, 2);
+        grid.edgeU = V3d(4, 0, 0);
+        grid.edgeV = V3d(0, 0, -4);
+        grid.spacingMeters = 0.5;
+        const GridLayout layout = layoutGrid(grid, 1.0);
+        for (const bool outward : {true, false})
+            for (const bool fromOutside : {false, true}) {
+                const RenderScene scene(sceneFromJson(boxRoomSceneJson(outward, fromOutside)), 8, 8);
+                const std::vector<uint8_t> inside = pointsInsideGeometry(scene, layout.points, grid.normal());
+                for (size_t k = 0; k < layout.points.size(); ++k) {
+                    const V3d& p = layout.points[k];
+                    QVERIFY2(bool(inside[k]) == (std::abs(p.x) < 0.5 && std::abs(p.z) < 0.5),
+                             qPrintable(QString("outward %1, from outside %2, point (%3, %4)")
+                                            .arg(outward).arg(fromOutside).arg(p.x).arg(p.z)));
+                }
+            }
+        const RenderScene scene(sceneFromJson(cabinetSceneJson()), 8, 8);
+        QCOMPARE(int(pointsInsideGeometry(scene, {V3d(0.5, 0.6, 0.1)}, V3d(0, 1, 0))[0]), 1);
+        QCOMPARE(int(pointsInsideGeometry(scene, {V3d(0.52, 0.6, 0.1)}, V3d(0, 1, 0))[0]), 0);
+    }
+
     // A lamp over a pane of glass: path reads 0 and says it cannot carry that light (error bar
     // unknown, in the CSV too); auto chooses bdpt, whose Eavg is the bare lamp's (path, no glass)
     // times the two faces' Fresnel transmittance, (1 - R)^2 at normal incidence (the points are

@@ -322,7 +322,7 @@ void TestStandards::gridCommandChecksATaskArea() {
     // The check's Em is the printed Eavg, to the lux, and its verdict follows.
     const QRegularExpressionMatch eavg = QRegularExpression("Eavg ([0-9.]+) lx").match(r.out);
     const QRegularExpressionMatch em =
-        QRegularExpression("\n  Em ([0-9]+) lx \\+- ([0-9]+) lx >= 500 lx: (met|borderline|not met) \\(margin ").match(r.out);
+        QRegularExpression("\n  Em ([0-9]+) lx \\+- ([0-9.]+) lx >= 500 lx: (met|borderline|not met) \\(margin ").match(r.out);
     QVERIFY2(eavg.hasMatch() && em.hasMatch(), qPrintable(r.out));
     QVERIFY(std::abs(decimal(em.captured(1)) - decimal(eavg.captured(1))) <= 0.55);
     const double achieved = decimal(eavg.captured(1)), bar = decimal(em.captured(2));

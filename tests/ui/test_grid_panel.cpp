@@ -385,6 +385,57 @@ private slots:
 
     // The lux view asks the live preview for its albedo layer (and only then): its frames then
     // give illuminance under the pixels that see the floor.
+    // A scene's task area chosen in the dock: its own rectangle and spacing (as grid --task-area
+    // and the report), the height and spacing fields locked, and its activity's checks under the
+    // figures: Em judged with its error bar when the scene has a maintenance factor, "not
+    // checked" without one. Another scene opened brings its own list.
+    void taskAreasAreComputedAndChecked() {
+        for (const bool maintained : {true, false}) {
+            std::string json = cabinetSceneJson();
+            json.insert(json.rfind('}'), std::string(maintained ? R"(, "maintenance_factor": 0.8)" : "") +
+                                             R"(, "task_areas": [{"name": "desk", "corner": [-1.5, 0.8, 1.5], "u": [1, 0, 0],
+                                             "v": [0, 0, -1], "spacing": 0.25, "activity": "5.26.2"}])");
+            const QString path = dir_.filePath(maintained ? "task-maintained.json" : "task-new.json");
+            std::ofstream(path.toStdString()) << json;
+            MainWindow w(path);
+            w.resize(1400, 900);
+            w.show();
+            GridPanel* panel = w.gridPanel();
+            w.findChild<QDockWidget*>("gridDock")->raise();
+            auto* areas = child<QComboBox>(*panel, "gridTaskArea");
+            QCOMPARE(areas->count(), 2);
+            QCOMPARE(areas->itemText(1), QString("desk (5.26.2)"));
+            areas->setCurrentIndex(1);
+            emit areas->activated(1);
+            QVERIFY(!child<QDoubleSpinBox>(*panel, "gridHeight")->isEnabled());
+            QVERIFY(!child<QDoubleSpinBox>(*panel, "gridSpacing")->isEnabled());
+            QCOMPARE(child<QDoubleSpinBox>(*panel, "gridSpacing")->value(), 0.25);  // the area's own
+            QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("Task area 'desk': EN 12464-1:2011 5.26.2"));
+            auto* method = child<QComboBox>(*panel, "gridMethod");
+            method->setCurrentIndex(method->findText("path"));
+            child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(5);
+            QTest::mouseClick(child<QPushButton>(*panel, "gridCompute"), Qt::LeftButton);
+            QTRY_VERIFY_WITH_TIMEOUT(!panel->isComputing(), kTimeout);
+            QCOMPARE(panel->layout().points, layoutGrid(w.document()->scene().taskAreas[0].grid, 1.0).points);
+            QCOMPARE(panel->layout().points.size(), size_t(16));
+            const QString figures = child<QLabel>(*panel, "gridFigures")->text();
+            const QRegularExpression em(maintained ? R"(\n  Em [0-9]+ lx \+- [0-9.]+ lx >= 500 lx: (met|borderline|not met) \(margin)"
+                                                   : R"(\n  Em [0-9]+ lx \+- [0-9.]+ lx >= 500 lx: not checked: no maintenance factor)");
+            QVERIFY2(figures.contains("EN 12464-1:2011 5.26.2, Offices") && em.match(figures).hasMatch(), qPrintable(figures));
+            QVERIFY2(figures.contains("  UGR not computed (<= 19.0 required)"), qPrintable(figures));
+            if (maintained) {
+                QTest::qWait(200);
+                w.grab().save("grid_panel_task_area.png");
+            }
+            // Another scene opened, without task areas: the list follows, the whole room again.
+            QVERIFY(w.openFile(cornellPath()));
+            QCOMPARE(areas->count(), 1);
+            QVERIFY(child<QDoubleSpinBox>(*panel, "gridHeight")->isEnabled());
+            QCOMPARE(child<QDoubleSpinBox>(*panel, "gridSpacing")->value(), 0.0);  // the user's again
+            w.setSaveQuestion([] { return QMessageBox::Discard; });
+        }
+    }
+
     void luxViewGetsThePreviewsAlbedo() {
         MainWindow w(QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"));
         w.show();

@@ -12,6 +12,7 @@
 #include "ui/calculation/ugr_table.h"
 
 #include <QComboBox>
+#include <QSignalBlocker>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
@@ -98,6 +99,10 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     draw_->setToolTip(tr("Click two corners on a floor, a table or a wall in the viewport"));
     wholeRoom_ = new QPushButton(tr("Whole room"), this);
     wholeRoom_->setObjectName("gridWholeRoom");
+    areaChoice_ = new QComboBox(this);
+    areaChoice_->setObjectName("gridTaskArea");
+    areaChoice_->setToolTip(tr("The scene's task areas: their own rectangle and spacing, and their activity's "
+                               "requirements checked"));
     area_ = new QLabel(this);
     area_->setObjectName("gridArea");
     area_->setWordWrap(true);
@@ -121,6 +126,7 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     areaButtons->addWidget(draw_);
     areaButtons->addWidget(wholeRoom_);
     auto* form = new QFormLayout;
+    form->addRow(tr("Task area"), areaChoice_);
     form->addRow(tr("Area"), area_);
     form->addRow(QString(), areaButtons);
     form->addRow(tr("Height above the surface"), height_);
@@ -152,6 +158,9 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     connect(quantity_, &QComboBox::currentIndexChanged, this, &GridPanel::quantityChanged);
     quantityChanged();
     connect(doc_, &Document::changed, this, &GridPanel::sceneChanged);
+    listTaskAreas();
+    connect(doc_, &Document::changed, this, &GridPanel::listTaskAreas);
+    connect(areaChoice_, &QComboBox::activated, this, &GridPanel::areaChosen);
     poll_.setInterval(100);
     connect(&poll_, &QTimer::timeout, this, &GridPanel::poll);
 }
@@ -162,7 +171,7 @@ void GridPanel::quantityChanged() {
     const bool ugr = quantity_->currentIndex() == kUgr;
     eyeHeight_->setEnabled(ugr);
     viewAlong_->setEnabled(ugr);
-    height_->setEnabled(!ugr);  // the eyes stand at their own height above the floor
+    height_->setEnabled(!ugr && !taskArea_);  // the eyes stand at their own height above the floor
 }
 
 void GridPanel::sceneChanged() {
@@ -172,8 +181,61 @@ void GridPanel::sceneChanged() {
     status_->setText(tr("The scene changed since this result: Compute again to update it."));
 }
 
+void GridPanel::listTaskAreas() {
+    QStringList names{tr("None: whole room or drawn")};
+    for (const TaskArea& t : doc_->scene().taskAreas)
+        names << (t.activity.empty() ? QString::fromStdString(t.grid.name)
+                                     : tr("%1 (%2)").arg(QString::fromStdString(t.grid.name), QString::fromStdString(t.activity)));
+    QStringList shown;
+    for (int i = 0; i < areaChoice_->count(); ++i) shown << areaChoice_->itemText(i);
+    if (names != shown) {
+        const QSignalBlocker quiet(areaChoice_);
+        areaChoice_->clear();
+        areaChoice_->addItems(names);
+    }
+    // The chosen area keeps its place by name; gone from the scene, the whole room again.
+    int chosen = 0;
+    const std::vector<TaskArea>& areas = doc_->scene().taskAreas;
+    for (size_t i = 0; taskArea_ && i < areas.size(); ++i)
+        if (areas[i].grid.name == *taskArea_) chosen = int(i) + 1;
+    if (taskArea_ && chosen == 0) useWholeRoom();
+    const QSignalBlocker quiet(areaChoice_);
+    areaChoice_->setCurrentIndex(chosen);
+}
+
+void GridPanel::areaChosen() {
+    const int index = areaChoice_->currentIndex() - 1;
+    if (index < 0) useWholeRoom();
+    else useTaskArea(index);
+}
+
+void GridPanel::useTaskArea(int index) {
+    const std::vector<TaskArea>& areas = doc_->scene().taskAreas;
+    if (index < 0 || size_t(index) >= areas.size()) return;
+    const TaskArea& t = areas[size_t(index)];
+    drawn_.reset();
+    taskArea_ = t.grid.name;
+    const ActivityRequirement* activity = t.activity.empty() ? nullptr : findActivity(t.activity);
+    area_->setText(activity ? tr("Task area '%1': %2").arg(QString::fromStdString(t.grid.name),
+                                                            QString::fromStdString(describeRequirement(*activity)))
+                            : tr("Task area '%1' (no activity: nothing to check)").arg(QString::fromStdString(t.grid.name)));
+    wholeRoom_->setEnabled(true);
+    border_->setEnabled(false);
+    height_->setEnabled(false);  // the area lies where it was placed
+    if (spacing_->isEnabled()) userSpacing_ = spacing_->value();
+    spacing_->setValue(t.grid.spacingMeters.value_or(0));  // its own (0: the rule), shown as it is used
+    spacing_->setEnabled(false);
+    const QSignalBlocker quiet(areaChoice_);
+    areaChoice_->setCurrentIndex(index + 1);
+}
+
 void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
     drawn_ = Drawn{a, normal, b};
+    taskArea_.reset();
+    height_->setEnabled(quantity_->currentIndex() != kUgr);
+    if (!spacing_->isEnabled()) spacing_->setValue(userSpacing_);
+    spacing_->setEnabled(true);
+    areaChoice_->setCurrentIndex(0);
     const bool horizontal = std::abs(normal.y) >= 0.7;
     area_->setText(horizontal ? tr("Rectangle drawn on a horizontal surface") : tr("Rectangle drawn on a wall"));
     wholeRoom_->setEnabled(true);
@@ -182,6 +244,11 @@ void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b)
 
 void GridPanel::useWholeRoom() {
     drawn_.reset();
+    taskArea_.reset();
+    height_->setEnabled(quantity_->currentIndex() != kUgr);
+    if (!spacing_->isEnabled()) spacing_->setValue(userSpacing_);
+    spacing_->setEnabled(true);
+    if (areaChoice_) areaChoice_->setCurrentIndex(0);
     area_->setText(tr("Work plane over the whole room"));
     wholeRoom_->setEnabled(false);
     border_->setEnabled(true);
@@ -206,14 +273,21 @@ void GridPanel::compute() {
         scene = std::make_shared<const Scene>(std::move(df.scene));
     }
     CalculationGrid grid;
+    requirement_ = nullptr;
+    const TaskArea* area = nullptr;
+    for (const TaskArea& t : scene->taskAreas)
+        if (taskArea_ && t.grid.name == *taskArea_) area = &t;
     try {
-        if (drawn_) {
+        if (area) {
+            grid = area->grid;  // its own spacing (EN 12464-1's rule unless given), as grid --task-area
+            if (!area->activity.empty()) requirement_ = findActivity(area->activity);
+        } else if (drawn_) {
             grid = gridFromCorners(drawn_->a, drawn_->normal, drawn_->b, scene->metersPerUnit, height_->value());
         } else {
             const SceneBounds b = sceneBounds(*scene);
             grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), border_->value());
         }
-        if (spacing_->value() > 0) grid.spacingMeters = spacing_->value();
+        if (spacing_->value() > 0 && !area) grid.spacingMeters = spacing_->value();
         layout_ = layoutGrid(grid, scene->metersPerUnit);
         grid_ = grid;
     } catch (const std::invalid_argument& e) {
@@ -363,6 +437,7 @@ void GridPanel::showResult() {
     } else {
         lines << text(gridFiguresLine(s));
         lines << maintenance_;
+        lines << requirementLines(s);
     }
     if (s.excluded > 0) lines << text(excludedPointsLine(s, shown_->lux.size(), dfPerLux_.has_value()));
     lines << tr("method %1").arg(QString::fromLatin1(gridMethodName(shown_->method)));
@@ -400,6 +475,19 @@ void GridPanel::showResult() {
         }
     export_->setEnabled(true);
     emit resultChanged();
+}
+
+QStringList GridPanel::requirementLines(const GridStatistics& s) const {
+    if (!requirement_ || !shown_ || !resultScene_ || s.counted == 0) return {};
+    // The figures and verdicts of `lucerna grid --task-area` (app/grid_command.cpp).
+    TaskAreaFigures figures;
+    figures.grid = s;
+    if (!shown_->errorBarUnknown) figures.gridErrors = gridErrorBars(shown_->lux, shown_->errorLux, shown_->insideGeometry);
+    figures.colourRendering = statedColourRendering(*resultScene_);
+    figures.maintainedValues = valuesAreMaintained(maintenanceRange(*resultScene_));
+    QStringList lines{QString::fromStdString(describeRequirement(*requirement_))};
+    for (const RequirementCheck& c : checkRequirements(*requirement_, figures)) lines << "  " + QString::fromStdString(c.describe());
+    return lines;
 }
 
 void GridPanel::showGlareResult() {

@@ -13,8 +13,13 @@
 // The quantity UGR puts an observer over each point, at eye height above the floor (seated 1.2 m
 // or standing 1.7 m), all looking along one edge of the grid, and shows each one's UGR
 // (render/photometry/ugr_grid.h, ui/calculation/ugr_table.h).
+// The scene's task areas (README, "Task areas") are offered as areas too: computed on their own
+// rectangle and spacing, as `lucerna grid --task-area` and the report compute them, with the
+// activity's requirements checked under the figures (core/photometry/lighting_standards.h: met,
+// borderline within the error bar, not met; Em not checked without a maintenance factor).
 
 #include "core/photometry/calculation_grid.h"
+#include "core/photometry/lighting_standards.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/ugr_grid.h"
@@ -49,6 +54,8 @@ public:
     // facing the viewer) and b, lifted by the height field; "Whole room" goes back to the work plane.
     void setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b);
     void useWholeRoom();
+    // The grid becomes the scene's task area `index` (in Scene::taskAreas).
+    void useTaskArea(int index);
     bool isComputing() const { return job_ != nullptr; }
     // The scene changed since the shown result was computed in a way that changes its values.
     bool resultOutOfDate() const { return stale_; }
@@ -83,11 +90,16 @@ private:
     // The UGR grid's calculation over `grid` of `scene` (compute() with the quantity UGR).
     void computeUgr(const SceneSnapshot& scene, const CalculationGrid& grid);
     void exportClicked();
+    // The task areas offered follow the scene's.
+    void listTaskAreas();
+    void areaChosen();
+    // The activity's checks on the shown result (none without a task area with an activity).
+    QStringList requirementLines(const GridStatistics& s) const;
 
     Document* doc_;
     YieldGate gate_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
-    QComboBox *method_, *quantity_, *eyeHeight_, *viewAlong_;
+    QComboBox *method_, *quantity_, *eyeHeight_, *viewAlong_, *areaChoice_;
     QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
     QProgressBar* progress_;
     QLabel *area_, *figures_, *status_;
@@ -98,6 +110,9 @@ private:
         V3d a, normal, b;
     };
     std::optional<Drawn> drawn_;  // nothing: the work plane over the whole room
+    std::optional<std::string> taskArea_;  // the task area's name, when one is chosen
+    double userSpacing_ = 0;               // the spacing field's value while a task area shows its own
+    const ActivityRequirement* requirement_ = nullptr;  // of the newest calculation's task area
     CalculationGrid grid_;
     GridLayout layout_;
     std::shared_ptr<Latest<GridResult>> latest_;
