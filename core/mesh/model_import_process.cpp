@@ -121,7 +121,12 @@ ModelImport importModel(const std::string& path, const ImportOptions& options) {
     }
 
     const std::string sceneFile = QDir(folder.path()).filePath(kSceneFile).toStdString();
-    Scene scene = parseScene(readText(sceneFile), sceneFile);
+    Scene scene;
+    try {
+        scene = parseScene(readText(sceneFile), sceneFile);
+    } catch (const SceneError& e) {
+        throw std::runtime_error(path + ": the scene the importer made would not load: " + e.what());
+    }
     const json::Value report = json::parse(readText(QDir(folder.path()).filePath(kReportFile).toStdString()));
     ModelImport out;
     out.objects = std::move(scene.objects);

@@ -1,13 +1,15 @@
 #include "ui/window/edit_actions.h"
 
+#include "core/read_crash_hook.h"
+#include "ui/commands/import_commands.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/light_group_commands.h"
 #include "ui/commands/object_commands.h"
 #include "ui/io/file_dialogs.h"
 #include "ui/io/luminaire_import.h"
-#include "core/read_crash_hook.h"
 #include "ui/scene_panels/arrangement_dialog.h"
 #include "ui/scene_panels/outliner.h"
+#include "ui/scene_panels/room_dialog.h"
 #include "ui/window/file_actions.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/window_messages.h"
@@ -32,6 +34,10 @@ void EditActions::addTo(QMenu* menu) {
     menu->addAction(undo);
     menu->addAction(redo);
     menu->addSeparator();
+    addMenuEntry(menu, tr("Add &Room..."), "actionAddRoom", QKeySequence(tr("Ctrl+Alt+R")), this, [this] {
+        RoomDialog dialog(roomAroundScene(doc_.scene()), messages_.window());
+        if (dialog.exec() == QDialog::Accepted) addRoom(dialog.spec());
+    });
     addMenuEntry(menu, tr("Add &Point Light"), "actionAddPointLight", QKeySequence(tr("Ctrl+Alt+P")), this,
                  [this] { addLight(LightType::Point); });
     addMenuEntry(menu, tr("Add S&pot Light"), "actionAddSpotLight", QKeySequence(tr("Ctrl+Alt+S")), this,
@@ -53,6 +59,15 @@ void EditActions::addTo(QMenu* menu) {
 int EditActions::selectedLight() const {
     const Outliner::Selection s = outliner_.selection();
     return s.kind == Outliner::Kind::Light ? s.index : -1;
+}
+
+bool EditActions::addRoom(const RoomSpec& spec) {
+    RoomParts room;
+    if (!messages_.attempt([&] { room = makeRoom(spec, doc_.scene()); }, tr("Could not add the room"))) return false;
+    const QString text = tr("Add %1").arg(QString::fromStdString(spec.name.empty() ? "room" : spec.name));
+    doc_.undoStack()->push(new ImportModelCommand(&doc_, std::move(room.materials), std::move(room.objects), {}, text));
+    messages_.show(text, 5000);
+    return true;
 }
 
 void EditActions::addLight(LightType type) {

@@ -1,8 +1,9 @@
 #pragma once
-// The Edit menu: Undo and Redo, adding a point, spot or directional light or a luminaire (an IES
-// or EULUMDAT file), arranging a field of lights (ui/scene_panels/arrangement_dialog.h), and
+// The Edit menu: Undo and Redo, adding a room (ui/scene_panels/room_dialog.h), a point, spot or
+// directional light or a luminaire (an IES or EULUMDAT file), arranging a field of lights (ui/scene_panels/arrangement_dialog.h), and
 // duplicating and deleting what the outliner selects. Every edit is one undo step.
 
+#include "core/scene/room_geometry.h"
 #include "ui/scene_panels/light_arrangement.h"
 
 #include <QObject>
@@ -32,6 +33,9 @@ public:
     void addTo(QMenu* menu);
 
     // The operations behind the menu, without dialogs.
+    // The room's floor, ceiling, walls and materials, one undo step; false with a one-line reason
+    // in the status bar when the dimensions make no room.
+    bool addRoom(const RoomSpec& spec);
     // A light of `type` (point, spot or directional) above the middle of the scene, selected.
     void addLight(LightType type);
     // Adds the IES or EULUMDAT file's luminaire and selects it; false (and a status message)

@@ -84,6 +84,7 @@ public:
     void setImportQuestion(std::function<ImportTarget()> ask) { imports_->setImportQuestion(std::move(ask)); }
     void addLight(LightType type) { edits_->addLight(type); }
     bool addLuminaireFile(const QString& path) { return edits_->addLuminaireFile(path); }
+    bool addRoom(const RoomSpec& spec) { return edits_->addRoom(spec); }
     void arrangeLights(const std::optional<std::array<double, 4>>& rectangle = std::nullopt) {
         edits_->arrangeLights(rectangle);
     }
