@@ -1,5 +1,6 @@
 #include "ui/properties/colour_edit.h"
 
+#include "ui/disconnect_children.h"
 #include "ui/properties/property_rows.h"
 
 #include <QColorDialog>
@@ -19,6 +20,8 @@ double srgbToLinear(double v) {
     v = std::clamp(v, 0.0, 1.0);
     return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4);
 }
+
+ColourEdit::~ColourEdit() { disconnectChildren(this); }
 
 ColourEdit::ColourEdit(double maxValue, QWidget* parent) : QWidget(parent), max_(maxValue) {
     auto* h = new QHBoxLayout(this);

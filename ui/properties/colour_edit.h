@@ -21,6 +21,7 @@ class ColourEdit : public QWidget {
 public:
     // maxValue: the channels' upper bound (1 for reflectances).
     explicit ColourEdit(double maxValue, QWidget* parent = nullptr);
+    ~ColourEdit() override;  // disconnects its children first (ui/disconnect_children.h)
 
     // Shows a value without emitting edited().
     void setValue(const Rgbd& value);

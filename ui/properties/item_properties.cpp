@@ -1,5 +1,6 @@
 #include "ui/properties/item_properties.h"
 
+#include "ui/disconnect_children.h"
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
@@ -7,6 +8,8 @@
 #include <QVBoxLayout>
 
 namespace lucerna {
+
+ItemProperties::~ItemProperties() { disconnectChildren(this); }
 
 ItemProperties::ItemProperties(Document* doc, const QString& none, QWidget* parent) : QWidget(parent), doc_(doc) {
     if (!none.isEmpty()) empty_ = makeWrappingLabel(this, {}, none);

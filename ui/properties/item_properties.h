@@ -28,6 +28,7 @@ protected:
     // Makes fields_, packed at the top, with rows_ as its layout, and empty_, the note `none`
     // shown while no item is (none empty: the panel hides itself then). The panel lays them out.
     ItemProperties(Document* doc, const QString& none, QWidget* parent);
+    ~ItemProperties() override;  // disconnects its children first (ui/disconnect_children.h)
 
     // Shows the item as the document has it now.
     virtual void refresh() = 0;

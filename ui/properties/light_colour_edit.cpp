@@ -1,5 +1,6 @@
 #include "ui/properties/light_colour_edit.h"
 
+#include "ui/disconnect_children.h"
 #include "ui/properties/colour_edit.h"
 #include "ui/properties/property_rows.h"
 
@@ -9,6 +10,8 @@
 #include <QSignalBlocker>
 
 namespace lucerna {
+
+LightColourEdit::~LightColourEdit() { disconnectChildren(this); }
 
 LightColourEdit::LightColourEdit(QWidget* parent) : QWidget(parent) {
     auto* h = new QHBoxLayout(this);

@@ -21,6 +21,7 @@ class LightColourEdit : public QWidget {
     Q_OBJECT
 public:
     explicit LightColourEdit(QWidget* parent = nullptr);
+    ~LightColourEdit() override;  // disconnects its children first (ui/disconnect_children.h)
 
     // Shows a temperature (when given) or a colour (white when neither), without emitting edited().
     void setValue(std::optional<double> temperatureK, const Rgbd& colour);

@@ -1,5 +1,6 @@
 #include "ui/properties/light_set_properties.h"
 
+#include "ui/disconnect_children.h"
 #include "core/photometry/light_output.h"
 #include "core/photometry/luminaire.h"
 #include "ui/commands/light_commands.h"
@@ -112,6 +113,8 @@ void showValue(QDoubleSpinBox* spin, std::optional<double> value) {
     spin->setValue(value ? *value : spin->minimum());
 }
 }  // namespace
+
+LightSetProperties::~LightSetProperties() { disconnectChildren(this); }
 
 LightSetProperties::LightSetProperties(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* rows = new QVBoxLayout(this);

@@ -27,6 +27,7 @@ class LightSetProperties : public QWidget {
     Q_OBJECT
 public:
     explicit LightSetProperties(Document* doc, QWidget* parent = nullptr);
+    ~LightSetProperties() override;  // disconnects its children first (ui/disconnect_children.h)
 
     // A scene group (its lights follow the group as the scene changes) or a fixed set of lights.
     void setGroup(const std::string& group);

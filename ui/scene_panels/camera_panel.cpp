@@ -1,5 +1,6 @@
 #include "ui/scene_panels/camera_panel.h"
 
+#include "ui/disconnect_children.h"
 #include "core/scene/scene_geometry.h"
 #include "ui/viewport/camera_navigation.h"
 #include "ui/commands/scene_commands.h"
@@ -14,6 +15,8 @@
 #include <cmath>
 
 namespace lucerna {
+
+CameraPanel::~CameraPanel() { disconnectChildren(this); }
 
 CameraPanel::CameraPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc), home_(doc->scene().camera) {
     auto* rows = new QVBoxLayout(this);

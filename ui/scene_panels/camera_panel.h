@@ -21,6 +21,7 @@ class CameraPanel : public QWidget {
     Q_OBJECT
 public:
     explicit CameraPanel(Document* doc, QWidget* parent = nullptr);
+    ~CameraPanel() override;  // disconnects its children first (ui/disconnect_children.h)
 
     void viewAll();
     void resetCamera();

@@ -1,5 +1,6 @@
 #include "ui/scene_panels/daylight_panel.h"
 
+#include "ui/disconnect_children.h"
 #include "core/daylight/daylight.h"
 #include "core/daylight/sky_model.h"
 #include "core/daylight/solar_position.h"
@@ -96,6 +97,8 @@ double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
 QString lux(double value) { return QStringLiteral("%L1 lx").arg(value, 0, 'f', 0); }
 
 }  // namespace
+
+DaylightPanel::~DaylightPanel() { disconnectChildren(this); }
 
 DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
     auto* layout = new QVBoxLayout(this);

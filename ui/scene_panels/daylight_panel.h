@@ -30,6 +30,7 @@ class DaylightPanel : public QWidget {
     Q_OBJECT
 public:
     explicit DaylightPanel(Document* doc, QWidget* parent = nullptr);
+    ~DaylightPanel() override;  // disconnects its children first (ui/disconnect_children.h)
 
     // "YYYY-MM-DDTHH:MM" of the date field and the time slider: the sun's time, or the one a
     // sun placed from now on gets.
