@@ -229,13 +229,18 @@ void GridPanel::useTaskArea(int index) {
     areaChoice_->setCurrentIndex(index + 1);
 }
 
-void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
-    drawn_ = Drawn{a, normal, b};
+void GridPanel::leaveTaskArea() {
     taskArea_.reset();
     height_->setEnabled(quantity_->currentIndex() != kUgr);
     if (!spacing_->isEnabled()) spacing_->setValue(userSpacing_);
     spacing_->setEnabled(true);
+    const QSignalBlocker quiet(areaChoice_);
     areaChoice_->setCurrentIndex(0);
+}
+
+void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b) {
+    drawn_ = Drawn{a, normal, b};
+    leaveTaskArea();
     const bool horizontal = std::abs(normal.y) >= 0.7;
     area_->setText(horizontal ? tr("Rectangle drawn on a horizontal surface") : tr("Rectangle drawn on a wall"));
     wholeRoom_->setEnabled(true);
@@ -244,11 +249,7 @@ void GridPanel::setDrawnRectangle(const V3d& a, const V3d& normal, const V3d& b)
 
 void GridPanel::useWholeRoom() {
     drawn_.reset();
-    taskArea_.reset();
-    height_->setEnabled(quantity_->currentIndex() != kUgr);
-    if (!spacing_->isEnabled()) spacing_->setValue(userSpacing_);
-    spacing_->setEnabled(true);
-    if (areaChoice_) areaChoice_->setCurrentIndex(0);
+    leaveTaskArea();
     area_->setText(tr("Work plane over the whole room"));
     wholeRoom_->setEnabled(false);
     border_->setEnabled(true);
@@ -275,7 +276,7 @@ void GridPanel::compute() {
     CalculationGrid grid;
     requirement_ = nullptr;
     const TaskArea* area = nullptr;
-    for (const TaskArea& t : scene->taskAreas)
+    for (const TaskArea& t : current->taskAreas)  // the document's (the daylight-factor scene is derived)
         if (taskArea_ && t.grid.name == *taskArea_) area = &t;
     try {
         if (area) {

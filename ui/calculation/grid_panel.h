@@ -93,6 +93,8 @@ private:
     // The task areas offered follow the scene's.
     void listTaskAreas();
     void areaChosen();
+    // Back to the work plane or a drawn rectangle: the height and spacing fields are the user's again.
+    void leaveTaskArea();
     // The activity's checks on the shown result (none without a task area with an activity).
     QStringList requirementLines(const GridStatistics& s) const;
 
