@@ -52,6 +52,13 @@ private:
     std::vector<uint32_t> firstTriangle_, object_;
 };
 
+using Tally = std::vector<std::pair<uint32_t, int>>;  // per object, a count (few objects per ray)
+void addOne(Tally& tally, uint32_t object) {
+    auto it = std::find_if(tally.begin(), tally.end(), [&](const auto& c) { return c.first == object; });
+    if (it == tally.end()) tally.emplace_back(object, 1);
+    else ++it->second;
+}
+
 // The objects whose surface a ray from `origin` along `d` crosses an odd number of times, and
 // the distance to its first hit (infinity when it meets nothing).
 struct Crossings {
@@ -60,16 +67,13 @@ struct Crossings {
 };
 Crossings crossings(const RenderScene& scene, const TriangleObjects& objects, V3f origin, const V3f& d) {
     Crossings out;
-    std::vector<std::pair<uint32_t, int>> counts;
+    Tally counts;
     for (int k = 0; k < kMaxCrossings; ++k) {
         float t = 0;
         const std::optional<SurfacePoint> hit = scene.intersect(Ray{origin, d}, &t);
         if (!hit) break;
         if (k == 0) out.firstHit = t;
-        const uint32_t o = objects.of(hit->triangle);
-        auto it = std::find_if(counts.begin(), counts.end(), [&](const auto& c) { return c.first == o; });
-        if (it == counts.end()) counts.emplace_back(o, 1);
-        else ++it->second;
+        addOne(counts, objects.of(hit->triangle));
         origin = hit->spawnOrigin(d);
     }
     for (const auto& [o, n] : counts)
@@ -82,15 +86,11 @@ Crossings crossings(const RenderScene& scene, const TriangleObjects& objects, V3
 // hits' distances, for the on-a-surface test.
 std::vector<uint32_t> enclosingObjects(const RenderScene& scene, const TriangleObjects& objects, const V3f& origin,
                                        const std::vector<V3f>& directions, std::vector<float>* firstHits = nullptr) {
-    std::vector<std::pair<uint32_t, int>> votes;
+    Tally votes;
     for (const V3f& d : directions) {
         const Crossings c = crossings(scene, objects, origin, d);
         if (firstHits) firstHits->push_back(c.firstHit);
-        for (uint32_t o : c.oddObjects) {
-            auto it = std::find_if(votes.begin(), votes.end(), [&](const auto& v) { return v.first == o; });
-            if (it == votes.end()) votes.emplace_back(o, 1);
-            else ++it->second;
-        }
+        for (uint32_t o : c.oddObjects) addOne(votes, o);
     }
     std::vector<uint32_t> out;
     for (const auto& [o, n] : votes)
