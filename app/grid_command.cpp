@@ -279,7 +279,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
         std::printf("%s\n", describeRequirement(*setup->requirement).c_str());
         TaskAreaFigures figures;
         figures.grid = s;
-        if (!r.errorBarUnknown) figures.gridErrors = gridErrorBars(r.lux, r.errorLux, r.insideGeometry);
+        if (!r.errorBarUnknown) figures.gridErrors = gridErrorBars(s, r.lux, r.errorLux, r.insideGeometry);
         figures.colourRendering = statedColourRendering(*scene);
         figures.maintainedValues = valuesAreMaintained(maintenance);
         for (const RequirementCheck& c : checkRequirements(*setup->requirement, figures))

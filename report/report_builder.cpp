@@ -28,7 +28,7 @@ namespace {
 TaskAreaFigures taskAreaFigures(const AreaReport& r, bool maintainedValues) {
     TaskAreaFigures f;
     f.grid = r.statistics;
-    if (!r.result.errorBarUnknown) f.gridErrors = gridErrorBars(r.result.lux, r.result.errorLux, r.result.insideGeometry);
+    if (!r.result.errorBarUnknown) f.gridErrors = gridErrorBars(r.statistics, r.result.lux, r.result.errorLux, r.result.insideGeometry);
     f.worstUgr = r.worstUgr;
     f.worstUgrError = r.worstUgrError;
     f.colourRendering = r.colourRendering;

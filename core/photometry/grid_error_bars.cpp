@@ -2,10 +2,9 @@
 
 namespace lucerna {
 
-GridErrorBars gridErrorBars(const std::vector<double>& lux, const std::vector<double>& errorLux,
-                            const std::vector<uint8_t>& excluded) {
+GridErrorBars gridErrorBars(const GridStatistics& s, const std::vector<double>& lux,
+                            const std::vector<double>& errorLux, const std::vector<uint8_t>& excluded) {
     GridErrorBars e;
-    const GridStatistics s = gridStatistics(lux, excluded);
     if (s.counted == 0 || errorLux.size() != lux.size()) return e;
     double sum = 0;
     bool minimumSeen = false;

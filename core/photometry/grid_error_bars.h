@@ -16,9 +16,9 @@ struct GridErrorBars {
     double average = 0, minimum = 0, uniformity = 0;
 };
 
-// `errorLux`: one 95% bar per point, as `lux`; points marked in `excluded` are left out, as
-// gridStatistics leaves them.
-GridErrorBars gridErrorBars(const std::vector<double>& lux, const std::vector<double>& errorLux,
-                            const std::vector<uint8_t>& excluded = {});
+// `stats`: gridStatistics(lux, excluded); `errorLux`: one 95% bar per point, as `lux`; points
+// marked in `excluded` are left out, as gridStatistics leaves them.
+GridErrorBars gridErrorBars(const GridStatistics& stats, const std::vector<double>& lux,
+                            const std::vector<double>& errorLux, const std::vector<uint8_t>& excluded = {});
 
 }  // namespace lucerna

@@ -42,6 +42,17 @@ QString writeScene(const QTemporaryDir& dir, const QString& name, const std::str
     return path;
 }
 
+// The work plane at 0.6 m over the middle 4 m of the cabinet scenes, 0.5 m spacing: 8 x 8 points,
+// the middle 2 x 2 within the cabinet's footprint.
+CalculationGrid cabinetWorkPlane() {
+    CalculationGrid grid;
+    grid.corner = V3d(-2, 0.6, 2);
+    grid.edgeU = V3d(4, 0, 0);
+    grid.edgeV = V3d(0, 0, -4);
+    grid.spacingMeters = 0.5;
+    return grid;
+}
+
 const QStringList kPaneGrid{"--corner", "-0.5,0,0.5", "--u", "1,0,0", "--v", "0,0,-1", "--spacing", "0.5"};
 }  // namespace
 
@@ -70,11 +81,7 @@ private slots:
     // the command line counts them, leaves them out of U0 and marks them in the CSV's last column.
     void pointsInsideACabinetAreExcluded() {
         const SceneSnapshot scene = sceneFromJson(cabinetSceneJson());
-        CalculationGrid grid;
-        grid.corner = V3d(-2, 0.6, 2);
-        grid.edgeU = V3d(4, 0, 0);
-        grid.edgeV = V3d(0, 0, -4);
-        grid.spacingMeters = 0.5;
+        const CalculationGrid grid = cabinetWorkPlane();
         const GridLayout layout = layoutGrid(grid, 1.0);
         const RenderScene renderScene(scene, 8, 8);
         const std::vector<uint8_t> inside = pointsInsideGeometry(renderScene, layout.points, grid.normal());
@@ -119,11 +126,7 @@ private slots:
     // point on the cabinet's face is flagged (its estimate would be half inside the cabinet); one
     // 2 cm off it is not.
     void insideDoesNotDependOnFaceOrientation() {
-        CalculationGrid grid;
-        grid.corner = V3d(-2, 0.6, 2);
-        grid.edgeU = V3d(4, 0, 0);
-        grid.edgeV = V3d(0, 0, -4);
-        grid.spacingMeters = 0.5;
+        const CalculationGrid grid = cabinetWorkPlane();
         const GridLayout layout = layoutGrid(grid, 1.0);
         for (const bool outward : {true, false})
             for (const bool fromOutside : {false, true}) {

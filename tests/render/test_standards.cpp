@@ -256,7 +256,7 @@ void TestStandards::checksRequirementsWithMargins() {
     TaskAreaFigures f;
     const auto withBars = [&](const std::vector<double>& lux, double bar) {
         f.grid = gridStatistics(lux);
-        f.gridErrors = gridErrorBars(lux, std::vector<double>(lux.size(), bar));
+        f.gridErrors = gridErrorBars(f.grid, lux, std::vector<double>(lux.size(), bar));
     };
     withBars({520, 480, 560, 300}, 10);
     QCOMPARE(f.gridErrors->average, 10.0);

@@ -483,7 +483,7 @@ QStringList GridPanel::requirementLines(const GridStatistics& s) const {
     // The figures and verdicts of `lucerna grid --task-area` (app/grid_command.cpp).
     TaskAreaFigures figures;
     figures.grid = s;
-    if (!shown_->errorBarUnknown) figures.gridErrors = gridErrorBars(shown_->lux, shown_->errorLux, shown_->insideGeometry);
+    if (!shown_->errorBarUnknown) figures.gridErrors = gridErrorBars(s, shown_->lux, shown_->errorLux, shown_->insideGeometry);
     figures.colourRendering = statedColourRendering(*resultScene_);
     figures.maintainedValues = valuesAreMaintained(maintenanceRange(*resultScene_));
     QStringList lines{QString::fromStdString(describeRequirement(*requirement_))};
