@@ -7,6 +7,7 @@
 #include "core/photometry/lighting_standards.h"
 #include "core/photometry/luminaire.h"
 #include "core/number_format.h"
+#include "core/scene/scene_energy.h"
 #include "core/scene/scene_io.h"
 #include "core/daylight/sky_model.h"
 #include "core/task_system.h"
@@ -379,6 +380,7 @@ void printLuminaire(const Light& l) {
     else std::cout << "not stated";
     std::cout << "; input " << (d.inputWatts ? formatNumber(*d.inputWatts, 6) + " W" : std::string("not stated"))
               << "; Ra " << (d.colourRenderingIndex ? formatNumber(*d.colourRenderingIndex, 3) : std::string("not stated"))
+              << "; CCT " << (d.colourTemperatureK ? formatNumber(*d.colourTemperatureK, 6) + " K" : std::string("not stated"))
               << "\n";
     if (d.statedFluxLm > 0 && std::abs(integrated - d.statedFluxLm) > 0.02 * d.statedFluxLm) {
         char pct[32];
@@ -474,6 +476,8 @@ int infoImpl(const std::vector<std::string>& args) {
     std::cout << ")\n";
     printPhotometry(scene);
     if (maintenanceRange(scene).maintained()) std::cout << "maintenance: " << describeMaintenance(maintenanceRange(scene)) << "\n";
+    // EN 15193-1 (README, "Energy"): when the scene gives its building type.
+    if (scene.energy) std::cout << "energy: " << describeLeni(sceneEnergy(scene), false) << "\n";
     for (const TaskArea& a : scene.taskAreas) {
         std::cout << "task area '" << a.grid.name << "': ";
         if (const ActivityRequirement* r = findActivity(a.activity)) std::cout << describeRequirement(*r);
@@ -556,9 +560,9 @@ void printUsage() {
                  "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"
                  "                the luminaire's UGR table by the tabular method (CIE 190's layout)\n"
                  "  lucerna report SCENE.json -o OUT.pdf [--method M] [--error F] [--seed N] [--samples N]\n"
-                 "                 [--time SECONDS] [--spp N] [--threads N]\n"
-                 "                 the lighting design report: schedule, task areas (plan, figures, checks,\n"
-                 "                 UGR), renders and method; the grids as `grid` computes them\n"
+                 "                 [--time SECONDS] [--spp N] [--render-error F] [--threads N]\n"
+                 "                 the lighting design report: room, schedule, luminaire data sheets, task areas\n"
+                 "                 (plan, figures, checks, UGR), renders and method; the grids as `grid` computes them\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"
                  "                 OBJ+MTL, glTF, FBX, COLLADA, ... as a scene; prints what was approximated\n"
                  "backends: auto";

@@ -51,6 +51,7 @@ ReportArgs parseReportArgs(const std::vector<std::string>& args) {
         else if (a == "--seed") g.seed = parseNumber<uint64_t>(a, value(), 0, UINT64_MAX);
         else if (a == "--samples") g.samplesPerPass = parseNumber<int>(a, value(), 1, 1 << 20);
         else if (a == "--spp") r.settings.renderSpp = parseNumber<int>(a, value(), 1, 1 << 24);
+        else if (a == "--render-error") r.settings.renderRelmse = parseNumber<double>(a, value(), 0.0, 1.0);
         else if (a == "--threads") r.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (r.scene.empty()) r.scene = a;

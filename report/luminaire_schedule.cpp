@@ -6,6 +6,7 @@
 #include "core/photometry/luminaire.h"
 #include "core/number_format.h"
 #include "core/photometry/photometric_units.h"
+#include "core/scene/scene_energy.h"
 #include "core/scene/scene_geometry.h"
 
 #include <algorithm>
@@ -27,7 +28,6 @@ ScheduleEntry entryOf(const Scene& scene, const Light& l) {
         e.temperatureK = l.luminaire->temperatureK;
         if (const auto& d = l.luminaire->distribution) {
             e.product = d->name;
-            e.wattsEach = d->inputWatts;
             e.colourRenderingIndex = d->colourRenderingIndex;
         }
     } else {
@@ -35,6 +35,7 @@ ScheduleEntry entryOf(const Scene& scene, const Light& l) {
         e.lumensEach = luminousFluxLm(l);
         if (l.photometric) e.temperatureK = l.photometric->temperatureK;
     }
+    e.wattsEach = circuitWatts(l);  // the scene's circuit_watts over the file's (README, "Energy")
     return e;
 }
 
@@ -127,8 +128,7 @@ Schedule luminaireSchedule(const Scene& scene) {
     }
     if (scene.sky) s.daylight.push_back(skyLine(scene));
     if (withWatts > 0) s.totalWatts = watts;
-    const SceneBounds b = sceneBounds(scene);
-    s.floorAreaM2 = (b.hi.x - b.lo.x) * (b.hi.z - b.lo.z) * m2;
+    s.floorAreaM2 = planAreaM2(scene);
     if (s.totalWatts && s.withoutWatts == 0 && s.floorAreaM2 > 0) s.wattsPerM2 = *s.totalWatts / s.floorAreaM2;
     return s;
 }

@@ -95,12 +95,18 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                        .arg(qs(data.maintenance)));
     if (data.renders) {
         flow.subheading(QStringLiteral("Renders"));
-        flow.paragraph(QStringLiteral("The camera's view is rendered by %1 (chosen by auto: %2) with %3 samples per "
-                                      "pixel; its estimated relative error comes from the film's two half-buffers "
-                                      "and reads noise, not bias. The lux view divides that render's luminance by "
-                                      "the reflectance of the surface each pixel sees.")
-                           .arg(qs(data.renders->backend), qs(data.renders->autoReason))
-                           .arg(data.settings.renderSpp));
+        const QString stop = data.settings.renderRelmse > 0
+                                 ? QStringLiteral("until its estimated relative error (relMSE) is at most %1, read every "
+                                                  "8 passes from 16 on, or %2 passes at most: %3 samples per pixel")
+                                       .arg(QString::number(data.settings.renderRelmse, 'g', 3))
+                                       .arg(data.settings.renderSpp)
+                                       .arg(QString::number(data.renders->samplesPerPixel, 'f', 0))
+                                 : QStringLiteral("with %1 samples per pixel").arg(data.settings.renderSpp);
+        flow.paragraph(QStringLiteral("The camera's view is rendered by %1 (chosen by auto: %2) %3; its estimated "
+                                      "relative error comes from the film's two half-buffers and reads noise, not "
+                                      "bias. The lux view divides that render's luminance by the reflectance of the "
+                                      "surface each pixel sees.")
+                           .arg(qs(data.renders->backend), qs(data.renders->autoReason), stop));
     }
     flow.paragraph(QStringLiteral("Calculated by %1 on %2 in %3.")
                        .arg(qs(data.software), qs(data.date), qs(formatDuration(data.seconds))),

@@ -57,11 +57,14 @@ void addRendersPage(PageFlow& flow, const ReportData& data) {
     flow.heading(QStringLiteral("Renders"));
     flow.subheading(QStringLiteral("The camera's view"));
     addPicture(flow, toDisplayImage(r.converged, r.exposureStops), flow.mm(88));
+    const QString target = data.settings.renderRelmse > 0
+                               ? QStringLiteral(" (target %1)").arg(QString::number(data.settings.renderRelmse, 'g', 3))
+                               : QString();
     flow.paragraph(QStringLiteral("Rendered by %1 (%2), %3 samples per pixel in %4, estimated relative error (relMSE) "
                                   "%5; %6 x %7 pixels; %8. Exposure %9 stops, metered on the image's log-average "
                                   "luminance.")
                        .arg(qs(r.backend), qs(r.autoReason), QString::number(r.samplesPerPixel, 'f', 0),
-                            qs(formatDuration(r.seconds)), QString::number(r.estimatedRelmse, 'g', 3))
+                            qs(formatDuration(r.seconds)), QString::number(r.estimatedRelmse, 'g', 3) + target)
                        .arg(r.converged.width)
                        .arg(r.converged.height)
                        .arg(qs(data.maintenance), QString::asprintf("%+.1f", r.exposureStops)),

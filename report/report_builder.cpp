@@ -7,7 +7,9 @@
 #include "render/display/false_colour.h"
 #include "render/engine/backend_table.h"
 #include "render/trace/surface_layers.h"
+#include "report/luminaire_data_sheet.h"
 #include "report/luminaire_schedule.h"
+#include "report/room_summary.h"
 
 #include <QDate>
 #include <QFileInfo>
@@ -145,7 +147,18 @@ ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& set
     const std::unique_ptr<Backend> backend = info->make(sceneAsRendered(scene), rs);
     backend->prepare(ctx);
     if (ctx.isCancelled()) return r;
-    RenderFrame frame = runPasses(*backend, r.backend, rs, ctx);
+    // Stop at the error target. The estimate (a 5 x 5 neighbourhood per pixel, on one thread)
+    // costs a fraction of a pass, so it is read every 8 passes (an even count: both halves of the
+    // film alike), from 16 on, where it has settled.
+    PassLoopOptions options;
+    bool reached = false;
+    if (settings.renderRelmse > 0) {
+        options.afterPass = [&](int passes) {
+            if (passes >= 16 && passes % 8 == 0) reached = backend->film().estimatedRelmse() <= settings.renderRelmse;
+        };
+        options.finishEarly = [&] { return reached; };
+    }
+    RenderFrame frame = runPasses(*backend, r.backend, rs, ctx, nullptr, options);
     r.samplesPerPixel = frame.samplesPerPixel;
     r.seconds = frame.seconds;
     r.estimatedRelmse = frame.estimatedRelmse;
@@ -211,6 +224,10 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     data.software = "Lucerna " LUCERNA_VERSION;
     data.maintenance = maintenanceStatement(*scene);
     data.schedule = luminaireSchedule(*scene);
+    data.dataSheets = luminaireDataSheets(*scene, data.schedule);
+    // A scene with rooms (README, "Rooms") is summarised room by room there, not as one extent.
+    if (scene->rooms.empty()) data.room = roomSummary(*scene, data.schedule);
+    data.energy = sceneEnergy(*scene);
 
     // Everything that can fail on bad input, before any work.
     checkReportInput(*scene, settings);

@@ -9,8 +9,11 @@
 #include "core/image/image.h"
 #include "core/photometry/lighting_standards.h"
 #include "core/scene/scene.h"
+#include "core/scene/scene_energy.h"
 #include "render/photometry/glare_evaluation.h"
 #include "render/photometry/grid_calculation.h"
+#include "report/luminaire_data_sheet.h"
+#include "report/room_summary.h"
 
 #include <optional>
 #include <string>
@@ -22,9 +25,12 @@ namespace lucerna {
 // target, seed, samples per pass, time limit), so that the same settings give the same numbers.
 struct ReportSettings {
     GridSettings grid;            // every task area's grid
-    // The converged render: passes of the auto backend. 64 leave a sunlit room grainy; 256 read
-    // as a picture to hand in.
+    // The converged render: passes of the auto backend, at most renderSpp, until its estimated
+    // relMSE (the film's half-buffers, checked every 8 passes from 16 on) is at most renderRelmse
+    // (0: all renderSpp passes). 64 passes leave a sunlit room grainy (relMSE 0.14); 0.002 reads
+    // as a picture to hand in (the office floor after about 120 passes).
     int renderSpp = 256;
+    double renderRelmse = 0.002;
     bool renders = true;          // leave the renders page out (false)
     bool glare = true;            // compute UGR for the task areas' observers
     bool daylightFactor = true;   // of a scene with daylight: each area's daylight factor too
@@ -40,7 +46,7 @@ struct ScheduleEntry {
     std::vector<std::string> names;  // the lights' names in the scene
     int count = 0;
     double lumensEach = 0;       // luminous flux as installed (new, no maintenance factor), lm
-    std::optional<double> wattsEach;           // the file's input watts
+    std::optional<double> wattsEach;           // the circuit power (circuit_watts, else the file's input watts)
     std::optional<double> colourRenderingIndex;// the file's Ra
     std::optional<double> temperatureK;        // the scene's colour temperature, when given
     double maintenanceFactor = 1;
@@ -112,6 +118,9 @@ struct ReportData {
     std::string maintenance;     // "maintained values, MF 0.80", or the new installation
     SceneSnapshot scene;         // as loaded, for the plans
     Schedule schedule;
+    std::vector<LuminaireDataSheet> dataSheets;  // one per luminaire type of the schedule
+    std::optional<RoomSummary> room;             // absent for a scene with rooms (the `rooms` key)
+    SceneEnergy energy;          // EN 15193-1's LENI (README, "Energy (LENI)")
     std::vector<AreaReport> areas;
     std::optional<ReportRenders> renders;
     ReportSettings settings;

@@ -11,6 +11,13 @@ namespace lucerna {
 
 void addCoverPage(PageFlow& flow, const ReportData& data);
 void addSchedulePage(PageFlow& flow, const ReportData& data);
+// The room's dimensions, main surfaces, maintenance and load (room_summary_page.cpp); none
+// without data.room.
+void addRoomSummaryPage(PageFlow& flow, const ReportData& data);
+// A page (or two) per luminaire type: its figures, polar diagram and UGR tables (data_sheet_pages.cpp).
+void addDataSheetPages(PageFlow& flow, const ReportData& data);
+// EN 15193-1's LENI with its factors (energy_page.cpp), flowing on after the schedule.
+void addEnergySection(PageFlow& flow, const ReportData& data);
 void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& area);
 // Parts of an area's pages: its plan with `values` (at most maxHeight tall with the legend), and
 // the daylight factor.

@@ -32,7 +32,10 @@ int writeReportPdf(const ReportData& data, const std::string& path) {
 
         PageFlow flow(writer);
         addCoverPage(flow, data);
+        addRoomSummaryPage(flow, data);
         addSchedulePage(flow, data);
+        addEnergySection(flow, data);
+        addDataSheetPages(flow, data);
         for (const AreaReport& area : data.areas) addAreaPages(flow, data, area);
         addRendersPage(flow, data);
         addMethodPage(flow, data);

@@ -1,6 +1,8 @@
 #include "report/report_pages.h"
 #include "report/report_text.h"
 
+#include <algorithm>
+
 namespace lucerna {
 
 namespace {
@@ -52,9 +54,10 @@ void addSchedulePage(PageFlow& flow, const ReportData& data) {
         flow.paragraph(QStringLiteral("No electric lighting is switched on in this scene."));
     } else {
         flow.table(scheduleTable(s));
-        flow.paragraph(QStringLiteral("Flux as installed (new); the figures on the task areas' pages are %1. Power "
-                                      "and Ra as the photometric files state them (a file's power is not scaled when "
-                                      "the scene overrides its flux); \"-\": not stated.")
+        flow.paragraph(QStringLiteral("Flux as installed (new); the figures on the task areas' pages are %1. Power: "
+                                      "the light's circuit power where the scene gives it, else as the photometric "
+                                      "file states it (not scaled when the scene overrides its flux); Ra as the file "
+                                      "states it; \"-\": not stated.")
                            .arg(qs(data.maintenance)),
                        flow.fonts().small);
     }
@@ -79,6 +82,10 @@ void addSchedulePage(PageFlow& flow, const ReportData& data) {
         load.emplace_back(QStringLiteral("Switched off"),
                           QStringLiteral("%1 light(s) of the scene, not counted and not lit").arg(s.switchedOff));
     flow.keyValues(load);
+    const bool withoutFile = std::any_of(s.entries.begin(), s.entries.end(), [](const ScheduleEntry& e) { return e.file.empty(); });
+    if (withoutFile)
+        flow.paragraph(QStringLiteral("Point and spot lights and emitting objects have no photometric file: no data sheet."),
+                       flow.fonts().small);
     if (!s.daylight.empty()) {
         flow.subheading(QStringLiteral("Daylight"));
         for (const std::string& line : s.daylight) flow.paragraph(qs(line));

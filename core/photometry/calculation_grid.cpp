@@ -84,9 +84,10 @@ GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int max
     return g;
 }
 
-GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded) {
+GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded,
+                              const std::vector<double>& weights) {
     GridStatistics s;
-    double sum = 0;
+    double sum = 0, weightSum = 0;
     for (size_t i = 0; i < lux.size(); ++i) {
         if (i < excluded.size() && excluded[i]) {
             ++s.excluded;
@@ -94,11 +95,13 @@ GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<
         }
         s.minimum = s.counted == 0 ? lux[i] : std::min(s.minimum, lux[i]);
         s.maximum = s.counted == 0 ? lux[i] : std::max(s.maximum, lux[i]);
-        sum += lux[i];
+        const double w = i < weights.size() ? weights[i] : 1.0;
+        sum += w * lux[i];
+        weightSum += w;
         ++s.counted;
     }
-    if (s.counted == 0) return s;
-    s.average = sum / double(s.counted);
+    if (s.counted == 0 || !(weightSum > 0)) return s;
+    s.average = sum / weightSum;
     s.uniformity = s.average > 0 ? s.minimum / s.average : 0.0;
     return s;
 }

@@ -60,14 +60,16 @@ GridLayout layoutGrid(const CalculationGrid& grid, double metersPerUnit, int max
 
 // The figures of EN 12464-1 over the grid's point values (lux), leaving out the points marked in
 // `excluded` (non-zero: inside closed geometry, where no work is done and a 0 would only pull Emin
-// and U0 to 0; empty: none left out).
+// and U0 to 0; empty: none left out). `weights` (empty: equal) weigh the points in Eavg: the
+// areas of their cells, for points of several grids of different spacing (a room's walls).
 struct GridStatistics {
     double average = 0, minimum = 0, maximum = 0;
     double uniformity = 0;  // U0 = Emin / Eavg (0 when Eavg is 0)
     int counted = 0;        // points in the figures
     int excluded = 0;       // points left out
 };
-GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded = {});
+GridStatistics gridStatistics(const std::vector<double>& lux, const std::vector<uint8_t>& excluded = {},
+                              const std::vector<double>& weights = {});
 
 // The grid as CSV: a header line, then one row per point: i, j, x, y, z (scene units), the
 // illuminance in lux, its error bar in lux ("unknown" where the method cannot back one) and

@@ -57,7 +57,19 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
         lampFlux += f;
         if (!(lampFlux <= FLT_MAX)) in.fail(here, "the lamps' total flux lies beyond single-precision range");
     }
-    for (int i = 0; i < sets; ++i) in.text("the colour temperature");
+    // The CCT when every set states the same number of kelvin ("4000", "4000K", "4000 K"); a
+    // colour code ("840") or words ("warm white") state none.
+    std::optional<double> cct;
+    bool cctAgrees = true;
+    for (int i = 0; i < sets; ++i) {
+        std::string field = trimmed(in.text("the colour temperature"));
+        if (!field.empty() && (field.back() == 'K' || field.back() == 'k')) field = trimmed(field.substr(0, field.size() - 1));
+        const std::optional<double> k = fieldNumber(decimalPoints(field));
+        const bool plausible = k && *k >= 1000 && *k <= 20000;
+        if (!plausible || (cct && *cct != *k)) cctAgrees = false;
+        else cct = k;
+    }
+    if (!cctAgrees) cct.reset();
     // Ra when the field is a number (some files give a group such as "1B": no Ra then).
     std::optional<double> ra;
     for (int i = 0; i < sets; ++i) {
@@ -143,6 +155,7 @@ GoniometricDistribution parseEulumdat(const std::string& text, const std::string
     d.luminous = opening;
     if (watts > 0 && watts <= FLT_MAX) d.inputWatts = watts;
     d.colourRenderingIndex = ra;
+    d.colourTemperatureK = cct;
     if (!(d.integratedFlux() <= FLT_MAX))
         in.fail(cfliLine, "the intensities times the conversion factor " + shortestNumber(cfli) +
                               " (this line) integrate to a flux beyond single-precision range");

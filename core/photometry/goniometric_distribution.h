@@ -48,6 +48,9 @@ struct GoniometricDistribution {
     // The colour rendering index Ra the file states (EULUMDAT's lamp set field, when it is a
     // number; the lowest of several sets); IES files state none.
     std::optional<double> colourRenderingIndex;
+    // The correlated colour temperature the file states, K (EULUMDAT's lamp set field when it is
+    // a number of kelvin, "4000" or "4000 K", the same for every set); IES files state none.
+    std::optional<double> colourTemperatureK;
 
     double at(size_t c, size_t g) const { return candela[c * gammaAngles.size() + g]; }
 

@@ -17,8 +17,9 @@ struct GridErrorBars {
 };
 
 // `stats`: gridStatistics(lux, excluded); `errorLux`: one 95% bar per point, as `lux`; points
-// marked in `excluded` are left out, as gridStatistics leaves them.
+// marked in `excluded` are left out, and `weights` weigh Eavg's bar, as gridStatistics does.
 GridErrorBars gridErrorBars(const GridStatistics& stats, const std::vector<double>& lux,
-                            const std::vector<double>& errorLux, const std::vector<uint8_t>& excluded = {});
+                            const std::vector<double>& errorLux, const std::vector<uint8_t>& excluded = {},
+                            const std::vector<double>& weights = {});
 
 }  // namespace lucerna

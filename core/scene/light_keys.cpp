@@ -17,18 +17,19 @@ Light SceneParser::parseLight(const Value& v, const std::string& place) {
     if (type == "point") {
         l.type = LightType::Point;
         checkKeys(v, place, {"name", "type", "position", "intensity", "lumens", "candela", "color", "temperature", "group", "on",
-                             "maintenance_factor"}, what);
+                             "maintenance_factor", "circuit_watts"}, what);
     } else if (type == "spot") {
         l.type = LightType::Spot;
         checkKeys(v, place, {"name", "type", "position", "direction", "intensity", "cone_angle", "falloff_start",
-                             "lumens", "candela", "color", "temperature", "group", "on", "maintenance_factor"}, what);
+                             "lumens", "candela", "color", "temperature", "group", "on", "maintenance_factor",
+                             "circuit_watts"}, what);
     } else if (type == "directional") {
         l.type = LightType::Directional;
         checkKeys(v, place, {"name", "type", "direction", "irradiance", "group", "on"}, what);
     } else if (type == "luminaire") {
         l.type = LightType::Luminaire;
         checkKeys(v, place, {"name", "type", "file", "position", "direction", "rotation", "lumens", "color",
-                             "temperature", "group", "on", "maintenance_factor", "luminous_area"}, what);
+                             "temperature", "group", "on", "maintenance_factor", "luminous_area", "circuit_watts"}, what);
         l.name = parseName(v, place);
         l.position = vec3(required(v, place, "position"), member(place, "position"));
         l.direction = direction(required(v, place, "direction"), member(place, "direction"));
@@ -36,6 +37,7 @@ Light SceneParser::parseLight(const Value& v, const std::string& place) {
         parseGroupAndSwitch(v, place, l);
         if (const Value* mf = v.find("maintenance_factor"))
             l.maintenance = parseMaintenance(*mf, member(place, "maintenance_factor"));
+        parseCircuitWatts(v, place, l);
         return l;
     } else if (type == "sun") {
         l.type = LightType::Sun;
@@ -67,6 +69,7 @@ Light SceneParser::parseLight(const Value& v, const std::string& place) {
     parseGroupAndSwitch(v, place, l);
     if (const Value* mf = v.find("maintenance_factor"))
         l.maintenance = parseMaintenance(*mf, member(place, "maintenance_factor"));
+    parseCircuitWatts(v, place, l);
     if (l.photometric)
         l.intensity = photometricIntensity(*l.photometric, l.type == LightType::Spot
                                                                ? spotSolidAngle(l.coneAngleDeg, l.falloffStartDeg)
@@ -85,6 +88,11 @@ void SceneParser::parseGroupAndSwitch(const Value& v, const std::string& place, 
         expectType(*on, Type::Boolean, member(place, "on"));
         l.on = on->boolean;
     }
+}
+
+void SceneParser::parseCircuitWatts(const Value& v, const std::string& place, Light& l) const {
+    if (const Value* w = v.find("circuit_watts"))
+        l.circuitWatts = numberIn(*w, member(place, "circuit_watts"), 0, false, 1e6, false, " W");
 }
 
 LuminaireSpec SceneParser::parseLuminaire(const Value& v, const std::string& place) const {

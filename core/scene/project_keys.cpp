@@ -31,7 +31,7 @@ MaintenanceFactor SceneParser::parseMaintenance(const Value& v, const std::strin
 }
 
 TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const {
-    checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "observers"});
+    checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "surrounding_m", "background_m", "observers"});
     TaskArea a;
     const std::string namePlace = member(place, "name");
     a.grid.name = text(required(v, place, "name"), namePlace);
@@ -51,6 +51,15 @@ TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, co
         if (!findActivity(a.activity))
             fail(member(place, "activity"), "unknown activity " + quote(a.activity) +
                                                 " (expected a reference number of EN 12464-1's table: `lucerna standards` lists them)");
+    }
+    // EN 12464-1's bands: the surrounding zone at least 0.5 m wide, the background area at least
+    // 3 m around it (core/photometry/surrounding_zones.h).
+    if (const Value* w = v.find("surrounding_m"))
+        a.surroundingMeters = numberIn(*w, member(place, "surrounding_m"), 0.5, false, 1000, false, " m");
+    if (const Value* w = v.find("background_m")) {
+        a.backgroundMeters = numberIn(*w, member(place, "background_m"), 3, false, 1000, false, " m");
+        if (!a.surroundingMeters)
+            fail(member(place, "background_m"), "needs surrounding_m (the background area lies around the surrounding zone)");
     }
     if (const Value* obs = v.find("observers")) {
         const std::string here = member(place, "observers");
@@ -78,6 +87,32 @@ ProjectInfo SceneParser::parseProject(const Value& v, const std::string& place) 
     field("designer", p.designer);
     field("notes", p.notes);
     return p;
+}
+
+EnergySettings SceneParser::parseEnergy(const Value& v, const std::string& place) const {
+    checkKeys(v, place, {"building_type", "daytime_hours", "night_time_hours", "constant_illuminance_factor",
+                         "occupancy_dependency_factor", "daylight_dependency_factor", "control_parasitic_watts",
+                         "emergency_charging_watts", "emergency_charging_hours", "area_m2"});
+    EnergySettings e;
+    const std::string typePlace = member(place, "building_type");
+    const std::string type = text(required(v, place, "building_type"), typePlace);
+    const BuildingTypeHours* t = findBuildingType(type);
+    if (!t) fail(typePlace, "unknown building type " + quote(type) + " (expected one of: " + buildingTypeKeys() + ")");
+    e.buildingType = t->type;
+    const auto value = [&](const char* key, std::optional<double>& out, double hi, const char* unit) {
+        if (const Value* x = v.find(key)) out = numberIn(*x, member(place, key), 0, false, hi, false, unit);
+    };
+    value("daytime_hours", e.daytimeHours, kHoursPerYear, " h");
+    value("night_time_hours", e.nightHours, kHoursPerYear, " h");
+    value("constant_illuminance_factor", e.constantIlluminanceFactor, 1, "");
+    value("occupancy_dependency_factor", e.occupancyFactor, 1, "");
+    value("daylight_dependency_factor", e.daylightFactor, 1, "");
+    value("control_parasitic_watts", e.controlParasiticWatts, 1e6, " W");
+    value("emergency_charging_watts", e.emergencyChargingWatts, 1e6, " W");
+    value("emergency_charging_hours", e.emergencyChargingHours, kHoursPerYear, " h");
+    if (const Value* a = v.find("area_m2")) e.areaM2 = numberIn(*a, member(place, "area_m2"), 0, true, 1e9, false, " m2");
+    if (const std::string problem = energySettingsProblem(e); !problem.empty()) fail(place, problem);
+    return e;
 }
 
 }  // namespace lucerna

@@ -3,6 +3,7 @@
 // save(load(file)) loses nothing, plus the resolved world-space triangle meshes that backends use.
 
 #include "core/photometry/calculation_grid.h"
+#include "core/photometry/lighting_energy.h"
 #include "core/math.h"
 #include "core/photometry/photometric_units.h"
 
@@ -82,6 +83,9 @@ struct Object {
     std::string material;  // key into Scene::materials
     MeshSource mesh;
     std::optional<Transform> transform;
+    // An addition (README, "Rooms"): the room this object is a surface of (a key of
+    // Scene::rooms); empty: none.
+    std::string room;
 
     // World-space triangles after the transform, degenerate triangles dropped. Filled by the
     // loader (resolveMeshes); shared between scene copies, never mutated once set.
@@ -89,7 +93,8 @@ struct Object {
 
     // Equality compares what the file says, not the cache.
     bool operator==(const Object& o) const {
-        return name == o.name && material == o.material && mesh == o.mesh && transform == o.transform;
+        return name == o.name && material == o.material && mesh == o.mesh && transform == o.transform &&
+               room == o.room;
     }
 };
 
@@ -168,6 +173,9 @@ struct Light {
     // Point, spot, luminaire (README, "Maintained values"): this light's maintenance factor,
     // which replaces the scene's for it. Absent: the scene's, or none.
     std::optional<MaintenanceFactor> maintenance;
+    // Point, spot, luminaire (README, "Energy"): the light's circuit power, W, for the lighting
+    // energy; a luminaire without it takes the power its file states. Absent: not given.
+    std::optional<double> circuitWatts;
 
     bool operator==(const Light&) const = default;
 };
@@ -216,16 +224,53 @@ struct GlareObserver {
 // A task area (EN 12464-1:2021, 5.3; README, "Task areas"; an addition): a rectangle on the work
 // plane, as a calculation grid, with the activity whose requirements it is checked against (a
 // reference number of the bundled table, resources/standards/en12464-1.json; empty: none) and
-// the observers whose UGR is checked (none given: four, README).
+// the observers whose UGR is checked (none given: four, README). Optionally the widths of
+// EN 12464-1's surrounding zone (a band around the area, at least 0.5 m) and of its background
+// area (a band around that zone, at least 3 m; only with a surrounding zone), in metres
+// (core/photometry/surrounding_zones.h).
 struct TaskArea {
     CalculationGrid grid;   // grid.name is the area's name
     std::string activity;
     std::vector<GlareObserver> observers;
+    std::optional<double> surroundingMeters;  // "surrounding_m"; absent: no surrounding zone
+    std::optional<double> backgroundMeters;   // "background_m"; absent: no background area
     bool operator==(const TaskArea& o) const {
         return grid.name == o.grid.name && grid.corner == o.grid.corner && grid.edgeU == o.grid.edgeU &&
                grid.edgeV == o.grid.edgeV && grid.spacingMeters == o.grid.spacingMeters && activity == o.activity &&
-               observers == o.observers;
+               observers == o.observers && surroundingMeters == o.surroundingMeters &&
+               backgroundMeters == o.backgroundMeters;
     }
+};
+
+// An opening in a room's wall (README, "Rooms"; an addition): a window holds a glazing pane, a
+// door reaches down to the floor, a plain opening is a hole. Lengths in scene units.
+enum class OpeningType { Window, Door, Opening };
+
+struct RoomOpening {
+    OpeningType type = OpeningType::Window;
+    int wall = 1;         // 1-based: wall k runs from outline corner k-1 to corner k (the last back to the first)
+    double offset = 0;    // along the wall from its first corner to the opening's near edge
+    double sill = 0;      // above the floor level (a door's is 0)
+    double width = 1, height = 1;
+    std::string glazing;  // a window's pane: a glazing material's name
+
+    bool operator==(const RoomOpening&) const = default;
+};
+
+// A room (README, "Rooms"; an addition): a parametric room has an outline in plan, a floor level
+// and a height, the materials of floor, walls and ceiling, and openings in its walls; its
+// generated surfaces are ordinary objects tagged with its name (Object::room). A room without an
+// outline was marked on existing objects (a closed shell): its surfaces are never regenerated.
+struct Room {
+    std::string name;
+    std::vector<V2d> outline;  // corners (x, z), scene units, either orientation; empty: marked
+    double floorLevel = 0;     // y of the floor, scene units
+    double height = 3;         // floor to ceiling, scene units
+    std::string floorMaterial, wallMaterial, ceilingMaterial;
+    std::vector<RoomOpening> openings;
+
+    bool parametric() const { return !outline.empty(); }
+    bool operator==(const Room&) const = default;
 };
 
 struct Scene {
@@ -242,6 +287,8 @@ struct Scene {
     std::optional<MaintenanceFactor> maintenance;  // every electric light's without its own
     std::vector<TaskArea> taskAreas;
     std::optional<ProjectInfo> project;
+    std::optional<EnergySettings> energy;  // README, "Energy (LENI)"; absent: LENI not computed
+    std::vector<Room> rooms;  // README, "Rooms"; an addition
     std::string baseDir;  // folder that relative mesh paths resolve against (absolute)
 
     const Material* findMaterial(const std::string& name) const;
@@ -250,7 +297,8 @@ struct Scene {
     bool operator==(const Scene& s) const {
         return version == s.version && metersPerUnit == s.metersPerUnit && camera == s.camera &&
                materials == s.materials && objects == s.objects && lights == s.lights && site == s.site &&
-               sky == s.sky && maintenance == s.maintenance && taskAreas == s.taskAreas && project == s.project;
+               sky == s.sky && maintenance == s.maintenance && taskAreas == s.taskAreas && project == s.project &&
+               energy == s.energy && rooms == s.rooms;
     }
 };
 

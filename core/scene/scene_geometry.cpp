@@ -30,6 +30,11 @@ SceneBounds sceneBounds(const Scene& scene) {
     return b;
 }
 
+double planAreaM2(const Scene& scene) {
+    const SceneBounds b = sceneBounds(scene);
+    return (b.hi.x - b.lo.x) * (b.hi.z - b.lo.z) * scene.metersPerUnit * scene.metersPerUnit;
+}
+
 Object resolvedObject(const Scene& scene, Object object) {
     // resolveMeshes works on whole scenes; a scene of this one object reads only its mesh.
     Scene single;

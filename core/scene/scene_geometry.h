@@ -17,6 +17,9 @@ struct SceneBounds {
 // Bounds of all world meshes and the positions of lights that have one (not directional lights
 // or suns, at infinity); a unit box when the scene is empty.
 SceneBounds sceneBounds(const Scene& scene);
+// The floor area the report and the lighting energy take by default: the extent in plan (x by z,
+// y up) of sceneBounds, in m² (through meters_per_unit).
+double planAreaM2(const Scene& scene);
 
 // `object` with its worldMesh recomputed (transform or mesh edited). Mesh files are read relative
 // to scene.baseDir; the object's material must be one of scene's. Throws SceneError with a

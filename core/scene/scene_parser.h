@@ -93,6 +93,16 @@ private:
     // and its glare observers.
     TaskArea parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const;
     ProjectInfo parseProject(const Value& v, const std::string& place) const;
+    // Rooms (room_keys.cpp; README, "Rooms"): a room's name, outline, levels, materials and
+    // openings (core/scene/room_geometry.h's roomProblem), its name unique among rooms; after
+    // the objects, that every room without an outline has objects tagged with it.
+    Room parseRoom(const Value& v, const std::string& place, const Scene& scene) const;
+    void checkRooms(const Scene& scene) const;
+    // The lighting energy's settings (README, "Energy (LENI)"): the building type and the
+    // factors over its defaults, each in its range, the hours of a year at most 8760 together.
+    EnergySettings parseEnergy(const Value& v, const std::string& place) const;
+    // A point, spot or luminaire's "circuit_watts", W, at least 0.
+    void parseCircuitWatts(const Value& v, const std::string& place, Light& l) const;
 
     std::string file_;
     std::unordered_map<std::string, std::string> names_;  // name -> where it was first used

@@ -11,6 +11,7 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
 #include <cmath>
 
 namespace lucerna {
@@ -30,7 +31,7 @@ Scene SceneParser::parse(const Value& root) {
     const double v = integer(version, "lucerna");
     if (v != 1) fail("lucerna", "unsupported format version " + shortestNumber(v) + " (this reader reads version 1)");
     checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights", "site", "sky",
-                         "maintenance_factor", "task_areas", "project"});
+                         "maintenance_factor", "task_areas", "project", "energy", "rooms"});
     scene.version = 1;
     if (const Value* mpu = root.find("meters_per_unit")) {
         scene.metersPerUnit = number(*mpu, "meters_per_unit");
@@ -40,10 +41,16 @@ Scene SceneParser::parse(const Value& root) {
     }
     scene.camera = parseCamera(required(root, top, "camera"), "camera");
     parseMaterials(required(root, top, "materials"), "materials", scene);
+    // Before the objects, which name their room.
+    if (const Value* rooms = root.find("rooms")) {
+        expectType(*rooms, Type::Array, "rooms");
+        for (size_t i = 0; i < rooms->array.size(); ++i) scene.rooms.push_back(parseRoom(rooms->array[i], item("rooms", i), scene));
+    }
     const Value& objects = required(root, top, "objects");
     expectType(objects, Type::Array, "objects");
     for (size_t i = 0; i < objects.array.size(); ++i)
         scene.objects.push_back(parseObject(objects.array[i], item("objects", i), scene));
+    checkRooms(scene);
     if (const Value* lights = root.find("lights")) {
         expectType(*lights, Type::Array, "lights");
         for (size_t i = 0; i < lights->array.size(); ++i)
@@ -59,6 +66,7 @@ Scene SceneParser::parse(const Value& root) {
             scene.taskAreas.push_back(parseTaskArea(areas->array[i], item("task_areas", i), scene.taskAreas));
     }
     if (const Value* project = root.find("project")) scene.project = parseProject(*project, "project");
+    if (const Value* energy = root.find("energy")) scene.energy = parseEnergy(*energy, "energy");
     return scene;
 }
 
@@ -138,7 +146,7 @@ void SceneParser::parseMaterials(const Value& v, const std::string& place, Scene
 }
 
 Object SceneParser::parseObject(const Value& v, const std::string& place, const Scene& scene) {
-    checkKeys(v, place, {"name", "material", "mesh", "transform"});
+    checkKeys(v, place, {"name", "material", "mesh", "transform", "room"});
     Object o;
     o.name = parseName(v, place);
     o.material = text(required(v, place, "material"), member(place, "material"));
@@ -146,6 +154,11 @@ Object SceneParser::parseObject(const Value& v, const std::string& place, const 
         fail(member(place, "material"), "unknown material " + quote(o.material));
     o.mesh = parseMesh(required(v, place, "mesh"), member(place, "mesh"));
     if (const Value* t = v.find("transform")) o.transform = parseTransform(*t, member(place, "transform"));
+    if (const Value* room = v.find("room")) {
+        o.room = text(*room, member(place, "room"));
+        if (std::none_of(scene.rooms.begin(), scene.rooms.end(), [&](const Room& r) { return r.name == o.room; }))
+            fail(member(place, "room"), "unknown room " + quote(o.room) + " (rooms are listed under \"rooms\")");
+    }
     return o;
 }
 

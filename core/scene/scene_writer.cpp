@@ -180,6 +180,7 @@ std::string light(const Light& l) {
     if (!l.group.empty()) out += ", \"group\": " + str(l.group);
     if (!l.on) out += ", \"on\": false";
     if (l.maintenance) out += ", \"maintenance_factor\": " + maintenance(*l.maintenance);
+    if (l.circuitWatts) out += ", \"circuit_watts\": " + num(*l.circuitWatts);
     return out + "}";
 }
 
@@ -211,6 +212,8 @@ std::string taskArea(const TaskArea& a) {
                       ", \"v\": " + vec(g.edgeV);
     if (g.spacingMeters) out += ", \"spacing\": " + num(*g.spacingMeters);
     if (!a.activity.empty()) out += ", \"activity\": " + str(a.activity);
+    if (a.surroundingMeters) out += ", \"surrounding_m\": " + num(*a.surroundingMeters);
+    if (a.backgroundMeters) out += ", \"background_m\": " + num(*a.backgroundMeters);
     if (!a.observers.empty()) {
         out += ",\n     \"observers\": [";
         for (size_t i = 0; i < a.observers.size(); ++i)
@@ -231,6 +234,49 @@ std::string project(const ProjectInfo& p) {
     field("designer", p.designer);
     field("notes", p.notes);
     return "{" + out + "}";
+}
+
+std::string energy(const EnergySettings& e) {
+    std::string out = "{\"building_type\": " + str(buildingTypeHours(e.buildingType).key);
+    const auto value = [&](const char* key, const std::optional<double>& x) {
+        if (x) out += std::string(", \"") + key + "\": " + num(*x);
+    };
+    value("daytime_hours", e.daytimeHours);
+    value("night_time_hours", e.nightHours);
+    value("constant_illuminance_factor", e.constantIlluminanceFactor);
+    value("occupancy_dependency_factor", e.occupancyFactor);
+    value("daylight_dependency_factor", e.daylightFactor);
+    value("control_parasitic_watts", e.controlParasiticWatts);
+    value("emergency_charging_watts", e.emergencyChargingWatts);
+    value("emergency_charging_hours", e.emergencyChargingHours);
+    value("area_m2", e.areaM2);
+    return out + "}";
+}
+
+// README, "Rooms": a parametric room's parameters, or a marked room's name alone.
+std::string room(const Room& r) {
+    std::string out = "{\"name\": " + str(r.name);
+    if (!r.parametric()) return out + "}";
+    out += ", \"outline\": [";
+    for (size_t i = 0; i < r.outline.size(); ++i) out += (i ? ", [" : "[") + num(r.outline[i].x) + ", " + num(r.outline[i].y) + "]";
+    out += "], \"floor_level\": " + num(r.floorLevel) + ", \"height\": " + num(r.height) +
+           ",\n     \"materials\": {\"floor\": " + str(r.floorMaterial) + ", \"walls\": " + str(r.wallMaterial) +
+           ", \"ceiling\": " + str(r.ceilingMaterial) + "}";
+    if (!r.openings.empty()) {
+        out += ",\n     \"openings\": [";
+        for (size_t i = 0; i < r.openings.size(); ++i) {
+            const RoomOpening& o = r.openings[i];
+            out += std::string(i ? ",\n                   " : "") + "{\"type\": \"" +
+                   (o.type == OpeningType::Window ? "window" : o.type == OpeningType::Door ? "door" : "opening") +
+                   "\", \"wall\": " + std::to_string(o.wall) + ", \"offset\": " + num(o.offset);
+            if (o.type != OpeningType::Door) out += ", \"sill\": " + num(o.sill);
+            out += ", \"width\": " + num(o.width) + ", \"height\": " + num(o.height);
+            if (o.type == OpeningType::Window) out += ", \"glazing\": " + str(o.glazing);
+            out += "}";
+        }
+        out += "]";
+    }
+    return out + "}";
 }
 
 }  // namespace
@@ -254,7 +300,9 @@ std::string saveSceneToString(const Scene& scene) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const Object& o = scene.objects[i];
         out += (i ? ",\n    " : "\n    ");
-        out += "{\"name\": " + str(o.name) + ", \"material\": " + str(o.material) + ",\n     \"mesh\": ";
+        out += "{\"name\": " + str(o.name) + ", \"material\": " + str(o.material);
+        if (!o.room.empty()) out += ", \"room\": " + str(o.room);
+        out += ",\n     \"mesh\": ";
         appendMesh(out, o.mesh);
         if (o.transform) out += ",\n     \"transform\": " + transform(*o.transform);
         out += "}";
@@ -275,6 +323,12 @@ std::string saveSceneToString(const Scene& scene) {
         out += "\n  ]";
     }
     if (scene.project) out += ",\n  \"project\": " + project(*scene.project);
+    if (scene.energy) out += ",\n  \"energy\": " + energy(*scene.energy);
+    if (!scene.rooms.empty()) {
+        out += ",\n  \"rooms\": [";
+        for (size_t i = 0; i < scene.rooms.size(); ++i) out += (i ? ",\n    " : "\n    ") + room(scene.rooms[i]);
+        out += "\n  ]";
+    }
     return out + "\n}\n";
 }
 

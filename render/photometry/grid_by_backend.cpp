@@ -16,7 +16,12 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
     GridResult result = std::move(before);
     if (points.empty()) return result;
 
-    const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
+    // The cylinder: four vertical sensors a point, turned by a random azimuth per replica, their
+    // mean without the delta lights plus the delta lights' exact cylindrical part.
+    const bool cylindrical = settings.quantity == GridQuantity::Cylindrical;
+    const int sensorsPerPoint = cylindrical ? 4 : 1;
+    const std::vector<double> cylinderDeltaLux =
+        cylindrical ? cylindricalDeltaLux(scene, points, normal, /*throughPanes=*/true) : std::vector<double>{};
     const std::map<std::string, std::string>& options = settings.backendOptions;
     const int replicaCount = std::max(2, settings.replicas);
     // Shared among processes, each makes the replicas it owns (replica r's seed is r's wherever
@@ -24,9 +29,13 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
     std::vector<std::unique_ptr<SensorRender>> replicas(static_cast<size_t>(replicaCount));
     for (int r = 0; r < replicaCount && !ctx.isCancelled(); ++r) {
         if (!ownsBlock(settings.processes, r)) continue;
+        const uint64_t seed = hashSeed(settings.seed, uint64_t(r), 0x67726964);
+        const std::vector<IrradianceSensor> sensors =
+            cylindrical ? cylinderSensorsAt(points, normal, 0.5f * kPi * Rng(seed, 0x617a).next1D())
+                        : sensorsAt(points, normal);
         replicas[size_t(r)] = std::make_unique<SensorRender>(scene, gridMethodName(settings.method), sensors,
                                                              settings.sensorPixelsPerSide,
-                                                             hashSeed(settings.seed, uint64_t(r), 0x67726964), options);
+                                                             seed, options);
         replicas[size_t(r)]->prepare(ctx);
     }
 
@@ -42,8 +51,13 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
             std::vector<double> values(size_t(replicaCount) * points.size(), 0.0);
             for (int r = 0; r < replicaCount && !ctx.isCancelled(); ++r)
                 if (replicas[size_t(r)]) {
-                    const std::vector<double> lux = replicas[size_t(r)]->lux();
-                    std::copy(lux.begin(), lux.end(), values.begin() + std::ptrdiff_t(size_t(r) * points.size()));
+                    const std::vector<double> lux = replicas[size_t(r)]->lux(/*withDeltaLights=*/!cylindrical);
+                    for (size_t i = 0; i < points.size(); ++i) {
+                        double& value = values[size_t(r) * points.size() + i];
+                        for (int k = 0; k < sensorsPerPoint; ++k) value += lux[i * size_t(sensorsPerPoint) + size_t(k)];
+                        value /= sensorsPerPoint;
+                        if (cylindrical) value += cylinderDeltaLux[i];
+                    }
                 }
             return values;
         },
@@ -52,7 +66,8 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
             for (int r = 0; r < replicaCount; ++r)
                 for (size_t i = 0; i < points.size(); ++i) means[i].add(values[size_t(r) * points.size() + i]);
             result.passes = first + passes;
-            result.samplesPerPoint = static_cast<long long>(result.passes) * pixelsPerSensor * replicaCount;
+            result.samplesPerPoint =
+                static_cast<long long>(result.passes) * pixelsPerSensor * sensorsPerPoint * replicaCount;
             result.seconds = seconds;
             return finishRound(means, true, settings, ctx, result, onPass);
         });

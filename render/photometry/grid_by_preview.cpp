@@ -19,6 +19,12 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
     if (points.empty()) return result;
 
     const PreparedSensors sensors = prepareSensors(scene, sensorsAt(points, normal));
+    // The cylinder: four vertical sensors a point turned by a random azimuth each pass, their mean
+    // plus the delta lights' exact cylindrical part (grid_statistics.h).
+    const bool cylindrical = settings.quantity == GridQuantity::Cylindrical;
+    const std::vector<double> cylinderDeltaLux =
+        cylindrical ? cylindricalDeltaLux(scene, points, normal, /*throughPanes=*/false) : std::vector<double>{};
+    const IrradianceEstimator lifter(scene);
     RenderSettings options;  // the preview backend's options (vpls, pattern, clamp, ...)
     options.seed = settings.seed;
     options.options = settings.backendOptions;
@@ -29,10 +35,21 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
         const uint64_t passSeed = hashSeed(settings.seed, uint64_t(pass), 0x9e1d);
         preview.regenerate(passSeed);
         const V2f jitter = uniformJitter(passSeed);  // the faces' pixels, box-filtered over the passes
-        for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i)
-            if (ownsBlock(settings.processes, int(i / kPointsPerBlock)))
+        const std::vector<IrradianceSensor> vertical =
+            cylindrical ? cylinderSensorsAt(points, normal, 0.5f * kPi * Rng(passSeed, 0x617a).next1D())
+                        : std::vector<IrradianceSensor>{};
+        for (size_t i = 0; i < points.size() && !ctx.isCancelled(); ++i) {
+            if (!ownsBlock(settings.processes, int(i / kPointsPerBlock))) continue;
+            if (!cylindrical) {
                 passLux[i] = kLumensPerWatt * double(luminance(preview.irradiance(sensors.lifted[i], jitter.x, jitter.y))) +
                              sensors.deltaLux[i];
+                continue;
+            }
+            double sum = 0;
+            for (size_t k = 0; k < 4; ++k)
+                sum += double(luminance(preview.irradiance(lifter.lifted(vertical[4 * i + k]), jitter.x, jitter.y)));
+            passLux[i] = kLumensPerWatt * sum / 4 + cylinderDeltaLux[i];
+        }
     }, onPass, result);
     return result;
 }

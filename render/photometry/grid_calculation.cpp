@@ -37,16 +37,25 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
                                   const std::function<void(const GridResult&)>& onPass, GridResult result) {
     const IrradianceEstimator estimator(scene);
     const std::vector<IrradianceSensor> sensors = sensorsAt(points, normal);
+    const bool cylindrical = settings.quantity == GridQuantity::Cylindrical;
+    const Frame axisFrame(toFloat(normal).normalized());
     const int count = int(points.size());
     const int pointsPerTask = 16;
     const int samples =
         settings.samplesPerPass > 0 ? settings.samplesPerPass : settings.method == GridMethod::Path ? 16 : 1;
     const int tasks = (count + pointsPerTask - 1) / pointsPerTask;
-    // The delta lights' direct part is exact and the same every sample: once per point.
-    std::vector<Rgb> deltaE(points.size());
+    // The delta lights' direct part is exact and the same every sample: once per point. For the
+    // cylinder it is added to the pass means, the vertical planes' samples leaving it out.
+    std::vector<Rgb> deltaE(points.size(), Rgb(0, 0, 0));
+    std::vector<double> cylinderDeltaLux(points.size(), 0.0);
     ctx.parallelFor(0, tasks, [&](int task) {
-        for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i)
-            deltaE[size_t(i)] = estimator.deltaLightsIrradiance(sensors[size_t(i)]);
+        for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
+            if (cylindrical)
+                cylinderDeltaLux[size_t(i)] = kLumensPerWatt * double(luminance(estimator.deltaLightsCylindrical(
+                                                                   sensors[size_t(i)].position, axisFrame.n)));
+            else
+                deltaE[size_t(i)] = estimator.deltaLightsIrradiance(sensors[size_t(i)]);
+        }
     });
 
     runPointPasses(points.size(), samples, settings, ctx, [&](int pass, std::span<double> passMean) {
@@ -56,16 +65,20 @@ GridResult computeGridByEstimator(const RenderScene& scene, const std::vector<V3
         ctx.parallelFor(0, tasks, [&](int task) {
             if (!ownsBlock(settings.processes, task)) return;  // another process's points
             for (int i = task * pointsPerTask; i < std::min(count, (task + 1) * pointsPerTask); ++i) {
-                const IrradianceSensor& sensor = sensors[size_t(i)];
+                IrradianceSensor sensor = sensors[size_t(i)];
                 Rng rng(hashSeed(settings.seed, uint64_t(pass)), uint64_t(i));
+                // The cylinder: a vertical plane per sample, azimuths stratified over the circle.
+                const float azimuthOffset = cylindrical ? rng.next1D() : 0.0f;
                 double sum = 0;
                 for (int s = 0; s < samples; ++s) {
+                    if (cylindrical)
+                        sensor.normal = azimuthDirection(axisFrame, 2.0f * kPi * (float(s) + azimuthOffset) / float(samples));
                     const Rgb* exact = &deltaE[size_t(i)];
                     const Rgb E = settings.method == GridMethod::Path ? estimator.samplePath(sensor, rng, exact)
                                                                       : estimator.sampleVpl(sensor, rng, vpls, exact);
                     if (isFinite(E)) sum += kLumensPerWatt * double(luminance(E));
                 }
-                passMean[size_t(i)] = sum / samples;
+                passMean[size_t(i)] = sum / samples + cylinderDeltaLux[size_t(i)];
             }
         });
     }, onPass, result);

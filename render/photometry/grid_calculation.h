@@ -39,8 +39,15 @@ inline constexpr GridMethod kGridMethods[] = {GridMethod::Path, GridMethod::Vpl,
 std::optional<GridMethod> gridMethodFromName(const std::string& name);
 const char* gridMethodName(GridMethod method);
 
+// What a grid's points measure: the illuminance on the side the normal faces, or the
+// cylindrical illuminance about it (EN 12464-1:2021's Ez, the normal then the cylinder's axis,
+// up: the mean over azimuths of the illuminance on a vertical plane; estimated by planes at
+// random azimuths, the delta lights' part exactly; irradiance_estimator.h).
+enum class GridQuantity { Planar, Cylindrical };
+
 struct GridSettings {
     GridMethod method = GridMethod::Path;
+    GridQuantity quantity = GridQuantity::Planar;
     // Auto: the method chosen from the points (grid_diagnosis.h): bdpt when a delta light reaches
     // some point only through glass, else path. `method` is then ignored.
     bool autoMethod = false;

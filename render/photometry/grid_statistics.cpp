@@ -69,6 +69,27 @@ std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3
     return sensors;
 }
 
+std::vector<IrradianceSensor> cylinderSensorsAt(const std::vector<V3d>& points, const V3d& axis, float offsetRadians) {
+    const Frame frame(toFloat(axis).normalized());
+    std::vector<IrradianceSensor> sensors;
+    sensors.reserve(4 * points.size());
+    for (const V3d& p : points)
+        for (int k = 0; k < 4; ++k)
+            sensors.push_back({toFloat(p), azimuthDirection(frame, offsetRadians + float(k) * 0.5f * kPi)});
+    return sensors;
+}
+
+std::vector<double> cylindricalDeltaLux(const RenderScene& scene, const std::vector<V3d>& points, const V3d& axis,
+                                        bool throughPanes) {
+    const IrradianceEstimator estimator(scene);
+    std::vector<double> lux;
+    lux.reserve(points.size());
+    for (const V3d& p : points)
+        lux.push_back(kLumensPerWatt *
+                      double(luminance(estimator.deltaLightsCylindrical(toFloat(p), toFloat(axis), throughPanes))));
+    return lux;
+}
+
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass) {
     result.lux.resize(points.size());

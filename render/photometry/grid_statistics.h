@@ -6,6 +6,7 @@
 #include "render/photometry/grid_calculation.h"
 
 #include <chrono>
+#include <cmath>
 #include <span>
 #include <vector>
 
@@ -36,6 +37,19 @@ GridResult emptyGridResult(size_t points, const std::vector<uint8_t>& insideGeom
 
 // A sensor at each point (scene units, as float), all facing `normal` (normalised here).
 std::vector<IrradianceSensor> sensorsAt(const std::vector<V3d>& points, const V3d& normal);
+
+// Cylindrical illuminance (GridQuantity::Cylindrical) about `axis`: four vertical sensors per
+// point, point-major (sensor 4 i + k faces azimuth offsetRadians + k pi / 2 about the axis), and
+// the delta lights' exact part per point in lux (through glass panes with throughPanes). The mean
+// of the four sensors' irradiance is an unbiased estimate of Ez when the offset is uniform in
+// [0, pi / 2): the grid methods draw it afresh per pass or replica.
+std::vector<IrradianceSensor> cylinderSensorsAt(const std::vector<V3d>& points, const V3d& axis, float offsetRadians);
+std::vector<double> cylindricalDeltaLux(const RenderScene& scene, const std::vector<V3d>& points, const V3d& axis,
+                                        bool throughPanes);
+// The horizontal unit direction at `azimuth` (radians) about frame.n.
+inline V3f azimuthDirection(const Frame& frame, float azimuth) {
+    return frame.s * std::cos(azimuth) + frame.t * std::sin(azimuth);
+}
 
 // Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
 // the caller), decides convergence (only once `trusted`: every point's error bar within the

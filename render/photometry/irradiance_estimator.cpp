@@ -2,6 +2,7 @@
 
 #include "render/trace/warp.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -65,12 +66,20 @@ float thinPaneTransmittance(const RenderScene& scene, const Ray& shadowRay) {
 
 Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r, bool throughPanes) const {
     const Frame frame(r.x.ng);
-    Rgb Lo(0, 0, 0);
+    // The white Lambertian surface reflects E cos(theta) / pi toward its normal.
+    return deltaLightsWeighted(r, throughPanes, [&](const V3f& wi) {
+        return std::max(0.0f, frame.toLocal(wi).z) / float(std::numbers::pi);
+    });
+}
+
+template <class Response>
+Rgb IrradianceEstimator::deltaLightsWeighted(const VplReceiver& r, bool throughPanes, const Response& response) const {
+    Rgb sum(0, 0, 0);
     for (size_t i = 0; i < scene_.lights().deltaLights().size(); ++i) {
         LightSample ls;
         if (!scene_.lights().sampleDeltaLight(i, r.x, ls)) continue;
-        const float cosTheta = frame.toLocal(ls.wi).z;
-        if (cosTheta <= 0.0f) continue;
+        const float weight = response(ls.wi);
+        if (weight <= 0.0f) continue;
         float transmittance = 1.0f;
         const Rgb through = scene_.transmittance(ls.shadowRay);  // glazing on the way
         if (isBlack(through)) {
@@ -78,14 +87,22 @@ Rgb IrradianceEstimator::deltaLightsReflected(const VplReceiver& r, bool through
             transmittance = thinPaneTransmittance(scene_, ls.shadowRay);
             if (transmittance <= 0.0f) continue;
         }
-        Lo += white_.albedo * ls.value * (isBlack(through) ? Rgb(1, 1, 1) : through) *
-              float(transmittance * cosTheta / std::numbers::pi);
+        sum += white_.albedo * ls.value * (isBlack(through) ? Rgb(1, 1, 1) : through) * (transmittance * weight);
     }
-    return Lo;
+    return sum;
 }
 
 Rgb IrradianceEstimator::deltaLightsIrradiance(const IrradianceSensor& sensor, bool throughPanes) const {
     return deltaLightsReflected(receiver(sensor), throughPanes) * float(std::numbers::pi);
+}
+
+Rgb IrradianceEstimator::deltaLightsCylindrical(const V3f& position, const V3f& axis, bool throughPanes) const {
+    const V3f a = axis.normalized();
+    // Ez = (1/pi) sum E_normal sin(theta): the mean over azimuths of the vertical illuminance.
+    return deltaLightsWeighted(receiver({position, a}), throughPanes, [&](const V3f& wi) {
+        const float c = std::clamp(wi.dot(a), -1.0f, 1.0f);
+        return std::sqrt(std::max(0.0f, 1.0f - c * c)) / float(std::numbers::pi);
+    });
 }
 
 IrradianceSensor IrradianceEstimator::lifted(const IrradianceSensor& sensor) const {

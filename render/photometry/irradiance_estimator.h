@@ -52,6 +52,11 @@ public:
     // glass passes, scaled by thinPaneTransmittance (the sensor methods' answer to a lamp behind
     // a window, which no random path can reach: a delta light seen through a delta interface).
     Rgb deltaLightsIrradiance(const IrradianceSensor& sensor, bool throughPanes = false) const;
+    // The delta lights' cylindrical irradiance at `position` about `axis` (EN 12464-1's Ez: the
+    // irradiance on a small vertical cylinder, that is the mean over azimuths of the irradiance
+    // on a vertical plane), exactly: each light's irradiance normal to its direction times
+    // sin(theta) / pi, theta its angle from the axis. throughPanes as above.
+    Rgb deltaLightsCylindrical(const V3f& position, const V3f& axis, bool throughPanes = false) const;
     // The sensor moved off a surface it may lie on, along its normal, by more than the error
     // bound of a surface point there: a position a backend's rays can start from.
     IrradianceSensor lifted(const IrradianceSensor& sensor) const;
@@ -62,6 +67,10 @@ private:
     float errorBound(const V3f& p) const;
     // Radiance the white surface reflects toward its normal from all delta lights together.
     Rgb deltaLightsReflected(const VplReceiver& r, bool throughPanes = false) const;
+    // Sum over the delta lights that reach r of the white albedo times their value times
+    // response(wi) (wi toward the light), with glazing on the way as above.
+    template <class Response>
+    Rgb deltaLightsWeighted(const VplReceiver& r, bool throughPanes, const Response& response) const;
 
     const RenderScene& scene_;
     ShadingMaterial white_;

@@ -35,10 +35,10 @@ SensorRender::SensorRender(const RenderScene& scene, const std::string& backend,
     backend_ = info->make(scene.snapshot(), rs);
 }
 
-std::vector<double> SensorRender::lux() const {
+std::vector<double> SensorRender::lux(bool withDeltaLights) const {
     const Image image = backend_->film().image();
     const int side = sensor_->pixelsPerSide();
-    std::vector<double> lux(deltaLux_);
+    std::vector<double> lux = withDeltaLights ? deltaLux_ : std::vector<double>(deltaLux_.size(), 0.0);
     for (size_t i = 0; i < lux.size(); ++i) {
         double sum = 0;
         for (int y = 0; y < side; ++y)

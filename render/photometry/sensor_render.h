@@ -37,8 +37,8 @@ public:
     void renderPass(TaskContext& ctx, int pass) { backend_->renderPass(ctx, pass); }
     int pixelsPerSensor() const { return sensor_->pixelsPerSide() * sensor_->pixelsPerSide(); }
     // Illuminance (lux) at each sensor so far: 683 Y of pi times its block's mean pixel (E / pi,
-    // sensor.h), plus the delta lights' exact part.
-    std::vector<double> lux() const;
+    // sensor.h), plus the delta lights' exact part unless left out.
+    std::vector<double> lux(bool withDeltaLights = true) const;
 
 private:
     std::shared_ptr<const Sensor> sensor_;

@@ -196,6 +196,7 @@ private slots:
     void rendersAgainstClosedForm();
     void rotationTurnsTheImage();
     void infoComparesFluxes();
+    void eulumdatColourTemperature();
 
 private:
     QTemporaryDir dir_;
@@ -594,6 +595,26 @@ void TestLuminaire::infoComparesFluxes() {
     QVERIFY(out.contains("in the scene 500 lm"));
     QVERIFY(out.contains("warning: luminaire 'boast': file states 392.699 lm, distribution integrates to 314.109 lm (-20%)"));
     QCOMPARE(out.count("warning:"), 1);
+}
+
+// EULUMDAT's colour temperature field states a CCT when it is a number of kelvin (the report's
+// data sheets print it); a colour code or words state none.
+void TestLuminaire::eulumdatColourTemperature() {
+    const std::string text = ldtText(1, 24, steps(0, 180, 15), kIsotropic, 1000, 100);
+    const std::string field = "\n3000\n90\n";  // the colour temperature, then Ra
+    QVERIFY(text.find(field) != std::string::npos);
+    const auto cct = [&](const std::string& value) {
+        std::string t = text;
+        t.replace(t.find(field), field.size(), "\n" + value + "\n90\n");
+        return parseEulumdat(t, "cct.ldt").colourTemperatureK;
+    };
+    QCOMPARE(cct("3000"), std::optional<double>(3000.0));
+    QCOMPARE(cct("4000 K"), std::optional<double>(4000.0));
+    QCOMPARE(cct("2700k"), std::optional<double>(2700.0));
+    QCOMPARE(cct("3500,0"), std::optional<double>(3500.0));
+    QCOMPARE(cct("840"), std::optional<double>());  // a colour code: Ra 80+, 4000 K, but no number of kelvin
+    QCOMPARE(cct("warm white"), std::optional<double>());
+    QCOMPARE(cct(""), std::optional<double>());
 }
 
 QTEST_MAIN(TestLuminaire)

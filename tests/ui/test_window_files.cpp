@@ -295,7 +295,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
         // Docks dragged wide: the viewport squeezed, and saved so at the close.
         w.resizeDocks({w.findChild<QDockWidget*>("outlinerDock"), w.findChild<QDockWidget*>("renderDock")},
                       {w.width() / 3, w.width() / 2}, Qt::Horizontal);
-        QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->width() < w.width() / 2, kTimeout);
+        QTRY_VERIFY2_WITH_TIMEOUT(w.viewport()->width() < w.width() / 2, qPrintable(widths(w)), kTimeout);
         QVERIFY(w.close());
     }
     MainWindow w(cornellPath());

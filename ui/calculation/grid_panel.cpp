@@ -275,6 +275,8 @@ void GridPanel::compute() {
     }
     CalculationGrid grid;
     requirement_ = nullptr;
+    zones_ = {};
+    all_.reset();
     const TaskArea* area = nullptr;
     for (const TaskArea& t : current->taskAreas)  // the document's (the daylight-factor scene is derived)
         if (taskArea_ && t.grid.name == *taskArea_) area = &t;
@@ -291,6 +293,7 @@ void GridPanel::compute() {
         if (spacing_->value() > 0 && !area) grid.spacingMeters = spacing_->value();
         layout_ = layoutGrid(grid, scene->metersPerUnit);
         grid_ = grid;
+        if (area && quantity_->currentIndex() == kIlluminance) zones_ = ZoneFigures(*area, *current, layout_.points.size());
     } catch (const std::invalid_argument& e) {
         status_->setText(QString::fromStdString(e.what()));
         return;
@@ -312,7 +315,9 @@ void GridPanel::compute() {
     latest_ = std::make_shared<Latest<GridResult>>();
     shownVersion_ = 0;
     stale_ = false;
-    job_ = tasks_.submit([scene, points = layout_.points, normal = grid.normal(), settings,
+    std::vector<V3d> points = layout_.points;  // and the task area's zones' after them
+    points.insert(points.end(), zones_.points().begin(), zones_.points().end());
+    job_ = tasks_.submit([scene, points = std::move(points), normal = grid.normal(), settings,
                           latest = latest_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
         // As `lucerna grid` and the report compute it (the maintained values among others).
@@ -380,6 +385,10 @@ void GridPanel::poll() {
     if (latest_ && latest_->version() != shownVersion_) {
         shownVersion_ = latest_->version();
         shown_ = latest_->get();
+        if (!zones_.empty() && shown_) {
+            all_ = shown_;
+            shown_ = std::make_shared<const GridResult>(zones_.taskPart(*all_));
+        }
         showResult();
     }
     if (latestGlare_ && latestGlare_->version() != shownVersion_) {
@@ -439,6 +448,7 @@ void GridPanel::showResult() {
         lines << text(gridFiguresLine(s));
         lines << maintenance_;
         lines << requirementLines(s);
+        if (all_ && resultScene_) lines << text(zones_.lines(*all_, valuesAreMaintained(maintenanceRange(*resultScene_))));
     }
     if (s.excluded > 0) lines << text(excludedPointsLine(s, shown_->lux.size(), dfPerLux_.has_value()));
     lines << tr("method %1").arg(QString::fromLatin1(gridMethodName(shown_->method)));

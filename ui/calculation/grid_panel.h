@@ -16,13 +16,16 @@
 // The scene's task areas (README, "Task areas") are offered as areas too: computed on their own
 // rectangle and spacing, as `lucerna grid --task-area` and the report compute them, with the
 // activity's requirements checked under the figures (core/photometry/lighting_standards.h: met,
-// borderline within the error bar, not met; Em not checked without a maintenance factor).
+// borderline within the error bar, not met; Em not checked without a maintenance factor). A task
+// area's surrounding zone and background area are computed with it and their figures and checks
+// follow its own (ui/calculation/zone_figures.h).
 
 #include "core/photometry/calculation_grid.h"
 #include "core/photometry/lighting_standards.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/ugr_grid.h"
+#include "ui/calculation/zone_figures.h"
 #include "ui/document/document.h"
 #include "ui/rendering/yield_gate.h"
 
@@ -121,6 +124,8 @@ private:
     TaskSystem tasks_;  // before job_: the job ends before its arena goes
     std::shared_ptr<TaskHandle> job_;
     std::shared_ptr<const GridResult> shown_;
+    ZoneFigures zones_;                      // the chosen task area's zones (empty: none)
+    std::shared_ptr<const GridResult> all_;  // with zones: the result over the task area's points and theirs
     uint64_t shownVersion_ = 0;
     SceneSnapshot resultScene_;  // the document's scene when the calculation started
     bool stale_ = false;

@@ -103,6 +103,21 @@ void Document::setObject(int index, Object object) {
 void Document::insertObject(int index, Object object) { insertInto(&Scene::objects, index, std::move(object)); }
 void Document::removeObject(int index) { removeFrom(&Scene::objects, index); }
 
+void Document::setTaskArea(int index, TaskArea area) {
+    // The outliner shows each task area's name and activity.
+    const bool listed = area.grid.name != taskArea(index).grid.name || area.activity != taskArea(index).activity;
+    replaceIn(&Scene::taskAreas, index, std::move(area), listed);
+}
+
+void Document::insertTaskArea(int index, TaskArea area) { insertInto(&Scene::taskAreas, index, std::move(area)); }
+void Document::removeTaskArea(int index) { removeFrom(&Scene::taskAreas, index); }
+
+bool Document::taskAreaNameInUse(const std::string& name, int except) const {
+    for (size_t i = 0; i < scene_->taskAreas.size(); ++i)
+        if (int(i) != except && scene_->taskAreas[i].grid.name == name) return true;
+    return false;
+}
+
 void Document::setCamera(const Camera& camera) {
     modify([&](Scene& s) { s.camera = camera; });
     emit cameraChanged();
@@ -116,6 +131,19 @@ void Document::setSite(std::optional<Site> site) {
 void Document::setSky(std::optional<Sky> sky) {
     modify([&](Scene& s) { s.sky = std::move(sky); });
     emit daylightChanged();
+}
+
+void Document::setProjectSettings(ProjectSettings settings) {
+    modify([&](Scene& s) {
+        s.project = std::move(settings.project);
+        s.maintenance = std::move(settings.maintenance);
+    });
+    emit projectChanged();
+}
+
+void Document::setEnergy(std::optional<EnergySettings> energy) {
+    modify([&](Scene& s) { s.energy = std::move(energy); });
+    emit energyChanged();
 }
 
 bool Document::nameInUse(const std::string& name) const {

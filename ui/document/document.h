@@ -15,6 +15,15 @@
 
 namespace lucerna {
 
+// What File > Project Settings edits, as one value so that its OK is one undo step: the project's
+// details for the report (README, "Reports") and the scene's maintenance factor (README,
+// "Maintained values"); absent: none.
+struct ProjectSettings {
+    std::optional<ProjectInfo> project;
+    std::optional<MaintenanceFactor> maintenance;
+    bool operator==(const ProjectSettings&) const = default;
+};
+
 class Document : public QObject {
     Q_OBJECT
 public:
@@ -43,11 +52,14 @@ public:
     const Light& light(int index) const { return scene_->lights.at(size_t(index)); }
     const Material& material(int index) const { return scene_->materials.at(size_t(index)); }
     const Object& object(int index) const { return scene_->objects.at(size_t(index)); }
+    const TaskArea& taskArea(int index) const { return scene_->taskAreas.at(size_t(index)); }
     const std::vector<Light>& lights() const { return scene_->lights; }
     std::vector<Light> lightsAt(const std::vector<int>& indices) const;
     const Camera& camera() const { return scene_->camera; }
     const std::optional<Site>& site() const { return scene_->site; }
     const std::optional<Sky>& sky() const { return scene_->sky; }
+    ProjectSettings projectSettings() const { return {scene_->project, scene_->maintenance}; }
+    const std::optional<EnergySettings>& energy() const { return scene_->energy; }
 
     void setLight(int index, Light light);
     void insertLight(int index, Light light);
@@ -64,15 +76,24 @@ public:
     void setObject(int index, Object object);
     void insertObject(int index, Object object);
     void removeObject(int index);
+    // Task areas (README, "Task areas"); names unique among them (taskAreaNameInUse).
+    void setTaskArea(int index, TaskArea area);
+    void insertTaskArea(int index, TaskArea area);
+    void removeTaskArea(int index);
     void setCamera(const Camera& camera);
     // SPEC.md section 5; absent: none. The sun is a light (setLight).
     void setSite(std::optional<Site> site);
     void setSky(std::optional<Sky> sky);
+    void setProjectSettings(ProjectSettings settings);
+    // The lighting energy's settings (README, "Energy (LENI)"); absent: LENI not computed.
+    void setEnergy(std::optional<EnergySettings> energy);
 
     // A name not used by any object or light (SPEC.md: names are unique across both): base,
     // or base-2, base-3, ...
     std::string uniqueName(const std::string& base) const;
     bool nameInUse(const std::string& name) const;
+    // A task area other than `except` (an index, -1: none) is named `name`.
+    bool taskAreaNameInUse(const std::string& name, int except = -1) const;
 
 signals:
     void changed(uint64_t version);
@@ -88,6 +109,10 @@ signals:
     // must be rebuilt.
     void structureChanged();
     void pathChanged();
+    // The project settings (the project's details, the scene's maintenance factor).
+    void projectChanged();
+    // The energy settings (setEnergy).
+    void energyChanged();
 
 private:
     void publish(std::shared_ptr<Scene> copy);

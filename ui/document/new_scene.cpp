@@ -33,6 +33,10 @@ Scene newSceneWithFloor(const std::string& folder) {
     return parseScene(kJson, (std::filesystem::path(folder) / "untitled.json").string());
 }
 
+bool isNewScenesFloor(const Object& object) {
+    return object == newSceneWithFloor(".").objects.front();
+}
+
 void arrangeAroundModel(Scene& scene, size_t firstModelObject, size_t modelLights) {
     V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
     for (size_t i = firstModelObject; i < scene.objects.size(); ++i)

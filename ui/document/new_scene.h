@@ -14,6 +14,9 @@ namespace lucerna {
 // looking at its middle, and one point light 2.5 m above it so that the preview shows something.
 // Untitled: relative mesh paths would resolve against `folder` (the user's documents folder).
 Scene newSceneWithFloor(const std::string& folder);
+// Whether `object` is that floor as File > New made it (its name, material and square, untouched
+// and in no room): what a room whose floor lies on it replaces (README, "Rooms").
+bool isNewScenesFloor(const Object& object);
 
 // File > Import Model into a new scene: `scene` is newSceneWithFloor's with a model's objects
 // (from `firstModelObject` on, world meshes resolved) and lights added. The floor moves under

@@ -6,6 +6,9 @@
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"
 #include "ui/plan/plan_interaction.h"
+#include "ui/plan/room_drawing.h"
+#include "ui/plan/task_area_drawing.h"
+#include "ui/plan/task_area_outlines.h"
 
 #include <QCheckBox>
 #include <QDoubleSpinBox>
@@ -32,7 +35,9 @@ QString nameOf(const Light& light) { return QString::fromStdString(light.name); 
 
 PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     : QWidget(parent), doc_(doc), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
-      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)), interaction_(new PlanInteraction(this, doc, gate)) {
+      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)), interaction_(new PlanInteraction(this, doc, gate)),
+      taskAreaDrawing_(new TaskAreaDrawing(this, doc)), taskAreaOutlines_(std::make_unique<TaskAreaOutlines>()),
+      roomDrawing_(new RoomDrawing(this, doc)) {
     setMouseTracking(false);
     setFocusPolicy(Qt::ClickFocus);
     setAutoFillBackground(false);
@@ -56,6 +61,12 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     drawField_->setCheckable(true);
     drawField_->setToolTip(tr("Drag a rectangle in the plan for a field of luminaires (Edit > Arrange Lights)"));
     bar->addWidget(drawField_);
+    bar->addWidget(taskAreaDrawing_->button());
+    bar->addWidget(roomDrawing_->button());
+    // The draw buttons give way to a narrow plan (their text clipped) rather than widen the
+    // window's central area past what the docks leave it.
+    for (QToolButton* b : {drawField_, taskAreaDrawing_->button(), roomDrawing_->button()})
+        b->setMinimumWidth(1);
     bar->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(8, 6, 8, 6);
@@ -66,6 +77,13 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
         if (on) emit message(tr("Drag the field's rectangle in the plan (Esc cancels)"));
         update();
     });
+    // One drawing tool at a time.
+    connect(drawField_, &QToolButton::toggled, this, [this](bool on) { if (on) taskAreaDrawing_->button()->setChecked(false); });
+    connect(taskAreaDrawing_->button(), &QToolButton::toggled, this, [this](bool on) { if (on) drawField_->setChecked(false); });
+    for (QToolButton* other : {drawField_, taskAreaDrawing_->button()}) {
+        connect(other, &QToolButton::toggled, this, [this](bool on) { if (on) roomDrawing_->button()->setChecked(false); });
+        connect(roomDrawing_->button(), &QToolButton::toggled, other, [other](bool on) { if (on) other->setChecked(false); });
+    }
     connect(snap_, &QCheckBox::toggled, this, [this] { update(); });
     connect(snapStep_, &QDoubleSpinBox::valueChanged, this, [this] { update(); });
     connect(doc_, &Document::changed, this, [this] { update(); });
@@ -76,6 +94,7 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
         selected_ = -1;
         selectedSet_.clear();
         selectedCount_ = 0;
+        selectedTaskArea_ = -1;
     });
 }
 
@@ -94,6 +113,8 @@ void PlanView::setProjection(Projection projection) {
     // A field lies on the ceiling: it is drawn in the plan only.
     drawField_->setEnabled(projection == Projection::Top);
     if (projection != Projection::Top) drawField_->setChecked(false);
+    taskAreaDrawing_->projectionChanged();
+    roomDrawing_->projectionChanged();
     update();
 }
 
@@ -104,6 +125,13 @@ void PlanView::setSelectedLights(const std::vector<int>& lights) {
         if (i >= 0 && size_t(i) < selectedSet_.size()) selectedSet_[size_t(i)] = 1, ++selectedCount_;
     update();
 }
+
+void PlanView::setSelectedTaskArea(int index) {
+    selectedTaskArea_ = index;
+    update();
+}
+
+QToolButton* PlanView::drawTaskAreaButton() const { return taskAreaDrawing_->button(); }
 
 void PlanView::setDrawingField(bool on) { drawField_->setChecked(on && projection_ == Projection::Top); }
 
@@ -428,10 +456,15 @@ void PlanView::paintEvent(QPaintEvent*) {
     paintCalculationGrid(painter);
     // Walls and furniture sides stay visible over the grid.
     paintPlanWalls(painter, faces_, toWidget, QPen(kWallColour, 1.6), QPen(kWallColour, 1.6));
+    roomDrawing_->paintRooms(painter);
+    if (projection_ == Projection::Top)
+        taskAreaOutlines_->paint(painter, doc_->snapshot(), [this](const V3d& p) { return widgetOf(p); }, selectedTaskArea_);
     paintCamera(painter);
     paintLights(painter);
     paintGroups(painter);
     paintField(painter);
+    taskAreaDrawing_->paint(painter);
+    roomDrawing_->paint(painter);
     paintScaleBar(painter);
 }
 

@@ -16,6 +16,9 @@
 // - Left drag elsewhere, or a right or middle drag, pans; the wheel zooms about the cursor.
 // - Draw field (the bar's button, the plan only): a left drag draws the rectangle of a field of
 //   luminaires (snapped like a move), which the window's arrangement dialog then fills.
+// - Draw task area (the bar's button, the plan only; ui/plan/task_area_drawing.h): two corners
+//   give a task area's rectangle. The scene's task areas are drawn in the plan
+//   (ui/plan/task_area_outlines.h); a click on one selects it.
 // Lights of a group carry no name each: the group's name stands once by the box around them,
 // so a field of thousands draws as a field.
 
@@ -39,6 +42,9 @@ class QToolButton;
 namespace lucerna {
 
 class PlanInteraction;
+class TaskAreaDrawing;
+class RoomDrawing;
+class TaskAreaOutlines;
 
 class PlanView : public QWidget {
     Q_OBJECT
@@ -56,10 +62,18 @@ public:
     void setSelectedLight(int index);
     // Lights shown selected together (a group or a multi-selection), besides the one above.
     void setSelectedLights(const std::vector<int>& lights);
+    // The task area shown selected (-1: none).
+    void setSelectedTaskArea(int index);
+    int selectedTaskArea() const { return selectedTaskArea_; }
 
     // The field tool: the next left drag in the plan draws a field's rectangle.
     QToolButton* drawFieldButton() const { return drawField_; }
     void setDrawingField(bool on);
+    // The task area tool: two corners clicked in the plan give a task area's rectangle.
+    QToolButton* drawTaskAreaButton() const;
+    // The room tool (ui/plan/room_drawing.h): a rectangle or polygon drawn in the plan gives a
+    // room's outline; it also draws the scene's rooms.
+    RoomDrawing* roomDrawing() const { return roomDrawing_; }
     // The calculation grid to draw (its rectangle, layout and newest result; null: none).
     void setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result);
 
@@ -74,6 +88,8 @@ public:
     QPointF widgetOf(const V3d& world) const;
     // The plan coordinates (planPoint's) under a widget position.
     QPointF planOfWidget(const QPointF& widget) const;
+    // The widget position of plan coordinates.
+    QPointF widgetOfPlanPoint(const QPointF& plan) const { return widgetOfPlan(plan); }
     // The user frames the view (the mouse's pan and zoom): it is fitted to the scene again only
     // when the projection, the widget's size or the scene changes.
     void panBy(const QPointF& pixels);
@@ -97,6 +113,9 @@ signals:
     void lightClicked(int index);
     // A field's rectangle drawn in the plan: corners (x0, z0) and (x1, z1), scene units.
     void fieldDrawn(double x0, double z0, double x1, double z1);
+    // A task area's rectangle drawn in the plan: corners (x0, z0) and (x1, z1), scene units.
+    void taskAreaDrawn(double x0, double z0, double x1, double z1);
+    void taskAreaClicked(int index);
     void message(const QString& text);
 
 protected:
@@ -142,6 +161,10 @@ private:
     PlanScale gridScale_;        // the result's legend and iso-lux levels
 
     PlanInteraction* interaction_;  // the mouse and keys (a child)
+    TaskAreaDrawing* taskAreaDrawing_;  // the task area tool (a child; sees the mouse first)
+    std::unique_ptr<TaskAreaOutlines> taskAreaOutlines_;
+    RoomDrawing* roomDrawing_;  // the room tool (a child; sees the mouse before the plan's own)
+    int selectedTaskArea_ = -1;
 };
 
 }  // namespace lucerna

@@ -1,12 +1,14 @@
 #include "ui/properties/light_properties.h"
 
 #include "core/photometry/light_output.h"
+#include "core/number_format.h"
 #include "core/photometry/luminaire.h"
 #include "core/scene/scene_geometry.h"
 #include "ui/properties/colour_edit.h"
 #include "ui/commands/light_commands.h"
 #include "ui/properties/light_colour_edit.h"
 #include "ui/properties/luminaire_polar_plot.h"
+#include "ui/scene_panels/maintenance_factor_edit.h"
 #include "ui/viewport/viewport.h"
 
 #include <QComboBox>
@@ -14,6 +16,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -104,8 +107,26 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     falloff_ = makeSpin(Field::Falloff, 0.1, 179.9, 2);
     falloff_->setSuffix(QStringLiteral(" °"));
     falloff_->setObjectName("lightFalloff");
+    // The circuit power, for the lighting energy (README, "Energy").
+    circuit_ = new QLineEdit(fields_);
+    circuit_->setObjectName("lightCircuitWatts");
+    circuit_->setClearButtonEnabled(true);
+    circuit_->setToolTip(tr("The light's circuit power in W, for the lighting energy (LENI); empty: a luminaire's "
+                            "file's power, or none"));
+    auto* watts = new QLabel(tr("W"), fields_);
+    circuitRow_ = addPropertyRow(rows_, tr("Circuit power"), {circuit_, watts});
+    static_cast<QHBoxLayout*>(circuitRow_->layout())->setStretchFactor(watts, 0);
+    connect(circuit_, &QLineEdit::editingFinished, this, &LightProperties::applyCircuitWatts);
+
     coneRow_ = addPropertyRow(rows_, tr("Cone half-angle"), {cone_});
     falloffRow_ = addPropertyRow(rows_, tr("Falloff start"), {falloff_});
+
+    maintenance_ = new MaintenanceFactorEdit(MaintenanceFactorEdit::Absent::SceneFactor, fields_);
+    maintenance_->setObjectName("lightMaintenance");
+    connect(maintenance_, &MaintenanceFactorEdit::edited, this, [this](const void* source) { apply(Field::Maintenance, source); });
+    connect(maintenance_, &MaintenanceFactorEdit::editingFinished, this, [this] { merge_.finish(); });
+    maintenanceRow_ = addPropertyRow(rows_, tr("Maintenance"), {maintenance_});
+    maintenanceRow_->layout()->setAlignment(rowLabel(maintenanceRow_), Qt::AlignTop);  // beside the mode list
 
     sunNote_ = makeWrappingLabel(fields_, "lightSunNote",
                                  tr("The sun's illuminance, disc, date and time are in the Daylight panel."));
@@ -154,6 +175,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
         if (i == index_) refresh();
     });
     connect(doc_, &Document::structureChanged, this, &LightProperties::refresh);
+    connect(doc_, &Document::projectChanged, this, &LightProperties::refresh);  // the scene's factor
     refresh();
 }
 
@@ -201,6 +223,20 @@ void LightProperties::refresh() {
     rotationRow_->setVisible(luminaire);
     lumensRow_->setVisible(luminaire);
     polarRow_->setVisible(luminaire);
+    // A sun, a sky or a directional light takes no maintenance factor.
+    maintenanceRow_->setVisible(pointOrSpot || luminaire);
+    maintenance_->setSceneFactor(scene.maintenance ? std::optional(scene.maintenance->factor()) : std::nullopt);
+    maintenance_->setValue(l.maintenance);
+    circuitRow_->setVisible(pointOrSpot || luminaire);
+    if (pointOrSpot || luminaire) {
+        const std::optional<double> fromFile = l.luminaire && l.luminaire->distribution
+                                                   ? l.luminaire->distribution->inputWatts
+                                                   : std::nullopt;
+        circuit_->setPlaceholderText(fromFile ? tr("%1 (the file's)").arg(QString::fromStdString(shortestNumber(*fromFile)))
+                                              : tr("not stated"));
+        if (!circuit_->hasFocus())
+            circuit_->setText(l.circuitWatts ? QString::fromStdString(shortestNumber(*l.circuitWatts)) : QString());
+    }
     // A luminaire's output is its file's distribution: no radiometric view of it.
     advanced_->setVisible(!luminaire && !sun);
     powerRow_->setVisible(!luminaire && !sun && advanced_->isChecked());
@@ -348,6 +384,11 @@ void LightProperties::apply(Field field, const void* sender) {
         l.luminaire->rotationDeg = rotation_->value();
         what = tr("Turn %1");
         break;
+    case Field::Maintenance:
+        if (!pointOrSpot && !l.luminaire) return;
+        l.maintenance = maintenance_->value();
+        what = tr("Change maintenance factor of %1");
+        break;
     case Field::Lumens:
         if (!l.luminaire) return;
         // The flux shown is after the tilt multiplier; "lumens" is the flux before it.
@@ -368,6 +409,31 @@ void LightProperties::apply(Field field, const void* sender) {
 void LightProperties::renameLight() {
     if (index_ >= 0 && index_ < int(doc_->scene().lights.size()))
         rename<EditLightCommand>(name_, doc_->light(index_));
+}
+
+void LightProperties::applyCircuitWatts() {
+    const Scene& scene = doc_->scene();
+    if (index_ < 0 || index_ >= int(scene.lights.size())) return;
+    Light l = scene.lights[size_t(index_)];
+    const QString text = circuit_->text().trimmed();
+    std::optional<double> watts;
+    if (!text.isEmpty()) {
+        bool ok = false;
+        double x = QLocale::c().toDouble(text, &ok);
+        if (!ok) x = QLocale().toDouble(text, &ok);
+        // The scene file's range (core/scene/light_keys.cpp): refused, the field shows the light.
+        if (!ok || !(x >= 0 && x <= 1e6)) {
+            circuit_->setText(l.circuitWatts ? QString::fromStdString(shortestNumber(*l.circuitWatts)) : QString());
+            return;
+        }
+        watts = x;
+    }
+    if (watts == l.circuitWatts) return;
+    l.circuitWatts = watts;
+    const QString name = QString::fromStdString(l.name);
+    doc_->undoStack()->push(new EditLightCommand(doc_, index_, l, 0,
+                                                 watts ? tr("Change circuit power of %1").arg(name)
+                                                       : tr("Clear circuit power of %1").arg(name)));
 }
 
 void LightProperties::regroupLight() {

@@ -3,7 +3,9 @@
 // light's luminous flux (lm) or on-axis intensity (cd) and its colour temperature (K) or colour,
 // written into the light's photometric keys so that the file keeps what was typed; a spot's cone
 // and falloff half-angles; a directional light's illuminance (lx) on a surface facing it; a
-// luminaire's file, rotation, flux, colour and its distribution as a polar plot. The radiometric
+// luminaire's file, rotation, flux, colour and its distribution as a polar plot; a point, spot or
+// luminaire's circuit power (W, for the lighting energy; empty: a luminaire's file's) and its own
+// maintenance factor or the scene's (ui/scene_panels/maintenance_factor_edit.h). The radiometric
 // values (W/sr, W/m²) are an advanced view behind a toggle. A sun shows its name, group and (when
 // placed by direction) its direction; the rest of it is the daylight panel's. Lengths are in the scene's unit.
 // Every edit of a field is one EditLightCommand holding the whole light before and after; the
@@ -23,6 +25,7 @@ namespace lucerna {
 
 class LightColourEdit;
 class LuminairePolarPlot;
+class MaintenanceFactorEdit;
 
 class LightProperties : public ItemProperties {
     Q_OBJECT
@@ -52,27 +55,36 @@ public:
     QDoubleSpinBox* rotationField() const { return rotation_; }
     QDoubleSpinBox* lumensField() const { return lumens_; }
     LuminairePolarPlot* polarPlot() const { return polar_; }
+    // The circuit power in W (circuit_watts); empty: not given (a luminaire: its file's power,
+    // shown in grey). Counts when the field is left or Enter is pressed.
+    QLineEdit* circuitWattsField() const { return circuit_; }
+    // Point, spot, luminaire: the light's own maintenance factor, or the scene's (README,
+    // "Maintained values"); one undo step per edit.
+    MaintenanceFactorEdit* maintenanceField() const { return maintenance_; }
 
 private:
-    enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens };
+    enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens, Maintenance };
     std::array<QDoubleSpinBox*, 3> makeTriple(Field field);
     QDoubleSpinBox* makeSpin(Field field, double lo, double hi, int decimals);
     void refresh() override;
     void apply(Field field, const void* sender);
     void renameLight();
     void regroupLight();
+    void applyCircuitWatts();
 
     QLabel *type_, *outputOther_, *file_, *sunNote_;
     QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
-    QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_;
+    QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_, *circuitRow_, *maintenanceRow_;
     QLineEdit* name_;
     QLineEdit* group_;
+    QLineEdit* circuit_;
     std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
     QDoubleSpinBox *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
     QComboBox* outputUnit_;
     LightColourEdit* colour_;
     QToolButton* advanced_;
     LuminairePolarPlot* polar_;
+    MaintenanceFactorEdit* maintenance_;
 };
 
 }  // namespace lucerna

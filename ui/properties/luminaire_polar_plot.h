@@ -1,8 +1,9 @@
 #pragma once
-// A luminaire's light distribution as catalogues draw it: the C0-C180 and C90-C270 planes as two
-// curves in polar coordinates, gamma 0 (the nadir) at the bottom, in candela as the scene uses the
-// luminaire (its lumens, tilt and the file's table), with rings labelled in cd; under it the peak
-// intensity in cd and in cd/klm (per 1000 lm of the luminaire's flux).
+// A luminaire's light distribution as catalogues draw it (render/display/polar_diagram.h, the
+// report's data sheets draw the same): the C0-C180 and C90-C270 planes as two curves in polar
+// coordinates, gamma 0 (the nadir) at the bottom, in candela as the scene uses the luminaire (its
+// lumens, tilt and the file's table), with rings labelled in cd; under it the peak intensity in
+// cd and in cd/klm (per 1000 lm of the luminaire's flux).
 
 #include <QWidget>
 
@@ -34,12 +35,9 @@ private:
     void paintPlot(QWidget* on) const;
 
     std::shared_ptr<const GoniometricDistribution> distribution_;
-    double scale_ = 1, peakCd_ = 0, ringStep_ = 0, outerCd_ = 0;
+    double scale_ = 1, peakCd_ = 0;
     QWidget* canvas_;
     QLabel* peak_;
 };
-
-// Ring spacing for a polar plot up to `peak`: 1, 2, 2.5 or 5 times a power of ten, giving at most 5 rings.
-double polarRingStep(double peak);
 
 }  // namespace lucerna

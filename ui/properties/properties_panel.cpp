@@ -4,6 +4,7 @@
 #include "ui/properties/light_set_properties.h"
 #include "ui/properties/material_properties.h"
 #include "ui/properties/object_properties.h"
+#include "ui/properties/task_area_properties.h"
 
 #include <QFrame>
 #include <QVBoxLayout>
@@ -30,6 +31,9 @@ PropertiesPanel::PropertiesPanel(Document* doc, LightProperties* lights, QWidget
     addWidget(lights_);
     addWidget(surfacePage_);
     addWidget(sets_);
+    taskAreas_ = new TaskAreaProperties(doc, this);
+    taskAreas_->setObjectName("taskAreaProperties");
+    addWidget(taskAreas_);
     connect(objects_, &ObjectProperties::materialAssigned, materials_, &MaterialProperties::setMaterial);
     // Undo of an assignment, or a rename of the object's material: the panel follows the object.
     connect(doc_, &Document::changed, this, &PropertiesPanel::followObjectMaterial);
@@ -46,6 +50,11 @@ void PropertiesPanel::showSelection(const Outliner::Selection& s) {
     if (s.kind == Outliner::Kind::Group) sets_->setGroup(s.group);
     else if (s.kind == Outliner::Kind::Lights) sets_->setLights(s.lights);
     else sets_->setLights({});
+    taskAreas_->setTaskArea(s.kind == Outliner::Kind::TaskArea ? s.index : -1);
+    if (s.kind == Outliner::Kind::TaskArea) {
+        setCurrentWidget(taskAreas_);
+        return;
+    }
     const bool set = s.kind == Outliner::Kind::Group || s.kind == Outliner::Kind::Lights;
     setCurrentWidget(set ? static_cast<QWidget*>(sets_) : s.kind == Outliner::Kind::Light ? static_cast<QWidget*>(lights_) : surfacePage_);
 }

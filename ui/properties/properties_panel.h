@@ -1,7 +1,7 @@
 #pragma once
 // The properties dock: the panel of what the outliner selects. A light shows the light panel; a
 // group or several lights the panel of a set of lights; an object shows the object panel above
-// its material's panel; a material shows the material panel.
+// its material's panel; a material shows the material panel; a task area its page.
 
 #include "ui/document/document.h"
 #include "ui/scene_panels/outliner.h"
@@ -16,6 +16,7 @@ class LightProperties;
 class LightSetProperties;
 class MaterialProperties;
 class ObjectProperties;
+class TaskAreaProperties;
 
 class PropertiesPanel : public QStackedWidget {
     Q_OBJECT
@@ -28,6 +29,7 @@ public:
     MaterialProperties* materialProperties() const { return materials_; }
     ObjectProperties* objectProperties() const { return objects_; }
     LightSetProperties* lightSetProperties() const { return sets_; }
+    TaskAreaProperties* taskAreaProperties() const { return taskAreas_; }
 
 private:
     void followObjectMaterial();
@@ -39,6 +41,7 @@ private:
     ObjectProperties* objects_;
     MaterialProperties* materials_;
     LightSetProperties* sets_;
+    TaskAreaProperties* taskAreas_;
 };
 
 }  // namespace lucerna

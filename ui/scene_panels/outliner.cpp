@@ -13,6 +13,7 @@ namespace lucerna {
 
 namespace {
 constexpr int kKindRole = Qt::UserRole, kIndexRole = Qt::UserRole + 1, kGroupRole = Qt::UserRole + 2;
+constexpr int kRoomRole = Qt::UserRole + 3;  // an opening's room
 
 Outliner::Kind kindOf(const QTreeWidgetItem* item) {
     const QVariant v = item->data(0, kKindRole);
@@ -55,6 +56,8 @@ QTreeWidgetItem* Outliner::heading(Kind kind) const {
     case Kind::Object: return objects_;
     case Kind::Light: return lights_;
     case Kind::Material: return materials_;
+    case Kind::TaskArea: return taskAreas_;
+    case Kind::Room: return rooms_;
     default: break;
     }
     return nullptr;
@@ -64,6 +67,18 @@ QTreeWidgetItem* Outliner::groupItem(const std::string& group) const {
     for (const auto& [name, item] : groupItems_)
         if (name == group) return item;
     return nullptr;
+}
+
+QTreeWidgetItem* Outliner::roomItem(int room) const {
+    return room >= 0 && size_t(room) < roomItems_.size() ? roomItems_[size_t(room)] : nullptr;
+}
+
+QTreeWidgetItem* Outliner::newItem(Kind kind, int index, const std::string& name, const QString& type, int room) {
+    auto* item = new QTreeWidgetItem(QStringList{QString::fromStdString(name), type});
+    item->setData(0, kKindRole, int(kind));
+    item->setData(0, kIndexRole, index);
+    if (room >= 0) item->setData(0, kRoomRole, room);
+    return item;
 }
 
 QTreeWidgetItem* Outliner::lightItem(int index) const {
@@ -83,7 +98,10 @@ Outliner::Selection Outliner::selection() const {
             return {Kind::Group, -1, groupMembers(scene, name), name};
         }
         const int index = item->data(0, kIndexRole).toInt();
-        return {kind, index, kind == Kind::Light ? std::vector<int>{index} : std::vector<int>{}, {}};
+        Selection s{kind, index, kind == Kind::Light ? std::vector<int>{index} : std::vector<int>{}, {}};
+        if (kind == Kind::Object) s.objects = {index};
+        if (kind == Kind::Opening) s.room = item->data(0, kRoomRole).toInt();
+        return s;
     }
     // Several items: the lights among them, a group standing for all its lights.
     std::vector<int> lights;
@@ -98,9 +116,19 @@ Outliner::Selection Outliner::selection() const {
     std::sort(lights.begin(), lights.end());
     lights.erase(std::unique(lights.begin(), lights.end()), lights.end());
     if (lights.empty()) {
-        // Objects or materials only: the first one (their panels edit one at a time).
+        // Objects or materials only: the first one (their panels edit one at a time); every
+        // object selected for Mark as Room.
+        std::vector<int> objects;
         for (QTreeWidgetItem* item : items)
-            if (kindOf(item) != Kind::None) return {kindOf(item), item->data(0, kIndexRole).toInt(), {}, {}};
+            if (kindOf(item) == Kind::Object) objects.push_back(item->data(0, kIndexRole).toInt());
+        std::sort(objects.begin(), objects.end());
+        for (QTreeWidgetItem* item : items)
+            if (kindOf(item) != Kind::None) {
+                Selection s{kindOf(item), item->data(0, kIndexRole).toInt(), {}, {}};
+                if (s.kind == Kind::Object) s.objects = objects;
+                if (s.kind == Kind::Opening) s.room = item->data(0, kRoomRole).toInt();
+                return s;
+            }
         return {};
     }
     if (lights.size() == 1 && groups.empty()) return {Kind::Light, lights.front(), lights, {}};
@@ -112,6 +140,8 @@ void Outliner::select(Kind kind, int index) {
     QTreeWidgetItem* item = nullptr;
     if (kind == Kind::Light) {
         item = lightItem(index);
+    } else if (kind == Kind::Object) {
+        item = index >= 0 && size_t(index) < objectItems_.size() ? objectItems_[size_t(index)] : nullptr;
     } else if (QTreeWidgetItem* parent = heading(kind); parent && index >= 0 && index < parent->childCount()) {
         item = parent->child(index);
     }
@@ -121,8 +151,24 @@ void Outliner::select(Kind kind, int index) {
     }
     // A light inside a group: its group opens so that the selection shows.
     if (QTreeWidgetItem* parent = item->parent(); parent && kindOf(parent) == Kind::Group) parent->setExpanded(true);
+    // A room's surface likewise.
+    if (QTreeWidgetItem* parent = item->parent(); parent && kindOf(parent) == Kind::Room) parent->setExpanded(true);
     setCurrentItem(item);
     scrollToItem(item);
+}
+
+void Outliner::selectOpening(int room, int opening) {
+    QTreeWidgetItem* node = roomItem(room);
+    for (int i = 0; node && i < node->childCount(); ++i) {
+        QTreeWidgetItem* item = node->child(i);
+        if (kindOf(item) == Kind::Opening && item->data(0, kIndexRole).toInt() == opening) {
+            node->setExpanded(true);
+            setCurrentItem(item);
+            scrollToItem(item);
+            return;
+        }
+    }
+    clearSelection();
 }
 
 void Outliner::selectGroup(const std::string& group) {
@@ -166,6 +212,7 @@ void Outliner::restore(const Selection& keep) {
         for (int i : keep.lights)
             if (QTreeWidgetItem* item = lightItem(i)) item->setSelected(true);
         break;
+    case Kind::Opening: selectOpening(keep.room, keep.index); break;
     default: select(keep.kind, keep.index); break;
     }
 }
@@ -196,10 +243,15 @@ void Outliner::rebuild() {
             item->setData(0, kIndexRole, index);
             return item;
         };
+        // Rooms first, their surfaces under them; the other objects under Objects.
+        objectItems_.assign(scene.objects.size(), nullptr);
+        addRooms(scene);
         objects_ = addHeading(tr("Objects"));
         QList<QTreeWidgetItem*> children;
         for (size_t i = 0; i < scene.objects.size(); ++i)
-            children.append(makeItem(Kind::Object, int(i), scene.objects[i].name, QString::fromStdString(scene.objects[i].material)));
+            if (!objectItems_[i])
+                children.append(objectItems_[i] = makeItem(Kind::Object, int(i), scene.objects[i].name,
+                                                            QString::fromStdString(scene.objects[i].material)));
         objects_->addChildren(children);
 
         // Lights: a group's node stands where its first light comes; its lights go under it, added
@@ -249,7 +301,15 @@ void Outliner::rebuild() {
         for (size_t i = 0; i < scene.materials.size(); ++i)
             children.append(makeItem(Kind::Material, int(i), scene.materials[i].name, materialTypeName(scene.materials[i].type)));
         materials_->addChildren(children);
-        for (auto* h : {objects_, lights_, materials_}) h->setExpanded(true);
+        taskAreas_ = addHeading(tr("Task areas"));
+        children.clear();
+        for (size_t i = 0; i < scene.taskAreas.size(); ++i) {
+            const TaskArea& t = scene.taskAreas[i];
+            children.append(makeItem(Kind::TaskArea, int(i), t.grid.name,
+                                     t.activity.empty() ? tr("Task area") : tr("Task area, %1").arg(QString::fromStdString(t.activity))));
+        }
+        taskAreas_->addChildren(children);
+        for (auto* h : {objects_, lights_, materials_, taskAreas_}) h->setExpanded(true);
         updating_ = false;
         restore(keep);
     }

@@ -1,5 +1,5 @@
 #pragma once
-// The outliner: the scene's objects, lights and materials under three headings. Lights of a
+// The outliner: the scene's objects, lights, materials and task areas under four headings. Lights of a
 // group (the lights' "group" key) sit under a node of their group, collapsed until opened, so a
 // field of 10,000 luminaires is one line; every light and group has a check box that switches it
 // on and off (one undo step for a whole group). Several lights and groups can be selected at once
@@ -20,12 +20,17 @@ class Outliner : public QTreeWidget {
     Q_OBJECT
 public:
     // Group: one group node; Lights: several lights and groups together.
-    enum class Kind { None, Object, Light, Material, Group, Lights };
+    // TaskArea: one of the scene's task areas (README, "Task areas"), under their own heading.
+    // Room: one of the scene's rooms, its surfaces (objects) and openings under it (README,
+    // "Rooms"; outliner_rooms.cpp); Opening: one of a room's openings.
+    enum class Kind { None, Object, Light, Material, Group, Lights, TaskArea, Room, Opening };
     struct Selection {
         Kind kind = Kind::None;
-        int index = -1;           // Object, Light, Material
+        int index = -1;           // Object, Light, Material, TaskArea
         std::vector<int> lights;  // Light, Group, Lights: the lights selected (a group's members), ascending
         std::string group;        // Group: its name
+        int room = -1;            // Opening: its room (index is the opening's)
+        std::vector<int> objects; // Object: every object selected, ascending
         bool operator==(const Selection&) const = default;
     };
 
@@ -34,6 +39,9 @@ public:
     Selection selection() const;
     void select(Kind kind, int index);
     void selectGroup(const std::string& group);
+    void selectOpening(int room, int opening);
+    // The node of a room, or null.
+    QTreeWidgetItem* roomItem(int room) const;
     void selectLights(const std::vector<int>& lights);
     // The heading item of a kind (tests walk its children).
     QTreeWidgetItem* heading(Kind kind) const;
@@ -48,14 +56,20 @@ signals:
 
 private:
     void rebuild();
+    // The Rooms heading: each room with its surfaces and openings (outliner_rooms.cpp).
+    void addRooms(const Scene& scene);
+    // An item of `kind` for the item at `index` (an opening's: of room `room`).
+    static QTreeWidgetItem* newItem(Kind kind, int index, const std::string& name, const QString& type, int room = -1);
     void refreshChecks();
     void checkToggled(QTreeWidgetItem* item);
     void restore(const Selection& keep);
     void announce();
 
     Document* doc_;
-    QTreeWidgetItem *objects_ = nullptr, *lights_ = nullptr, *materials_ = nullptr;
+    QTreeWidgetItem *objects_ = nullptr, *lights_ = nullptr, *materials_ = nullptr, *taskAreas_ = nullptr;
     std::vector<QTreeWidgetItem*> lightItems_;           // by light index
+    QTreeWidgetItem* rooms_ = nullptr;
+    std::vector<QTreeWidgetItem*> objectItems_, roomItems_;  // by object and room index
     std::vector<std::pair<std::string, QTreeWidgetItem*>> groupItems_;
     std::set<std::string> expandedGroups_;               // kept open across rebuilds
     bool updating_ = false;                              // check states set by the outliner itself

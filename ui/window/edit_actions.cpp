@@ -1,22 +1,26 @@
 #include "ui/window/edit_actions.h"
 
 #include "core/read_crash_hook.h"
-#include "ui/commands/import_commands.h"
 #include "ui/commands/light_commands.h"
 #include "ui/commands/light_group_commands.h"
 #include "ui/commands/object_commands.h"
+#include "ui/commands/task_area_commands.h"
 #include "ui/io/file_dialogs.h"
 #include "ui/io/luminaire_import.h"
 #include "ui/scene_panels/arrangement_dialog.h"
+#include "ui/scene_panels/energy_panel.h"
 #include "ui/scene_panels/outliner.h"
-#include "ui/scene_panels/room_dialog.h"
 #include "ui/window/file_actions.h"
+#include "ui/window/room_actions.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/window_messages.h"
 
+#include <QDialog>
+#include <QDialogButtonBox>
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMenu>
+#include <QVBoxLayout>
 
 namespace lucerna {
 
@@ -34,10 +38,7 @@ void EditActions::addTo(QMenu* menu) {
     menu->addAction(undo);
     menu->addAction(redo);
     menu->addSeparator();
-    addMenuEntry(menu, tr("Add &Room..."), "actionAddRoom", QKeySequence(tr("Ctrl+Alt+R")), this, [this] {
-        RoomDialog dialog(roomAroundScene(doc_.scene()), messages_.window());
-        if (dialog.exec() == QDialog::Accepted) addRoom(dialog.spec());
-    });
+    if (rooms_) rooms_->addTo(menu);
     addMenuEntry(menu, tr("Add &Point Light"), "actionAddPointLight", QKeySequence(tr("Ctrl+Alt+P")), this,
                  [this] { addLight(LightType::Point); });
     addMenuEntry(menu, tr("Add S&pot Light"), "actionAddSpotLight", QKeySequence(tr("Ctrl+Alt+S")), this,
@@ -51,6 +52,7 @@ void EditActions::addTo(QMenu* menu) {
     });
     addMenuEntry(menu, tr("Arrange Li&ghts..."), "actionArrangeLights", QKeySequence(tr("Ctrl+Alt+F")), this,
                  [this] { arrangeLights(); });
+    addMenuEntry(menu, tr("&Energy..."), "actionEnergy", QKeySequence(), this, [this] { showEnergy(); });
     addMenuEntry(menu, tr("D&uplicate"), "actionDuplicate", QKeySequence(tr("Ctrl+D")), this,
                  [this] { duplicateSelection(); });
     addMenuEntry(menu, tr("&Delete"), "actionDelete", QKeySequence::Delete, this, [this] { deleteSelection(); });
@@ -59,15 +61,6 @@ void EditActions::addTo(QMenu* menu) {
 int EditActions::selectedLight() const {
     const Outliner::Selection s = outliner_.selection();
     return s.kind == Outliner::Kind::Light ? s.index : -1;
-}
-
-bool EditActions::addRoom(const RoomSpec& spec) {
-    RoomParts room;
-    if (!messages_.attempt([&] { room = makeRoom(spec, doc_.scene()); }, tr("Could not add the room"))) return false;
-    const QString text = tr("Add %1").arg(QString::fromStdString(spec.name.empty() ? "room" : spec.name));
-    doc_.undoStack()->push(new ImportModelCommand(&doc_, std::move(room.materials), std::move(room.objects), {}, text));
-    messages_.show(text, 5000);
-    return true;
 }
 
 void EditActions::addLight(LightType type) {
@@ -132,7 +125,25 @@ bool EditActions::arrangeField(const FieldArrangement& field, const Light& proto
     return true;
 }
 
+void EditActions::showEnergy() {
+    if (!energy_) {
+        energy_ = new QDialog(messages_.window());
+        energy_->setObjectName("energyDialog");
+        energy_->setWindowTitle(tr("Energy (EN 15193-1, LENI)"));
+        auto* layout = new QVBoxLayout(energy_);
+        layout->addWidget(new EnergyPanel(&doc_, energy_));
+        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, energy_);
+        connect(buttons, &QDialogButtonBox::rejected, energy_, &QDialog::close);
+        layout->addWidget(buttons);
+        energy_->resize(560, 620);
+    }
+    energy_->show();
+    energy_->raise();
+    energy_->activateWindow();
+}
+
 void EditActions::deleteSelection() {
+    if (rooms_ && rooms_->deleteSelection()) return;  // a room or an opening
     const Outliner::Selection s = outliner_.selection();
     if (s.kind == Outliner::Kind::Group || s.kind == Outliner::Kind::Lights) {
         std::vector<char> gone(doc_.scene().lights.size(), 0);
@@ -147,6 +158,8 @@ void EditActions::deleteSelection() {
         doc_.undoStack()->push(new DeleteLightCommand(&doc_, s.index));
     else if (s.kind == Outliner::Kind::Object)
         doc_.undoStack()->push(new DeleteObjectCommand(&doc_, s.index));
+    else if (s.kind == Outliner::Kind::TaskArea)
+        doc_.undoStack()->push(TaskAreaListCommand::remove(&doc_, s.index));
 }
 
 }  // namespace lucerna

@@ -1,17 +1,18 @@
 #pragma once
-// The Edit menu: Undo and Redo, adding a room (ui/scene_panels/room_dialog.h), a point, spot or
+// The Edit menu: Undo and Redo, the rooms' entries (ui/window/room_actions.h), adding a point, spot or
 // directional light or a luminaire (an IES or EULUMDAT file), arranging a field of lights (ui/scene_panels/arrangement_dialog.h), and
 // duplicating and deleting what the outliner selects. Every edit is one undo step.
 
-#include "core/scene/room_geometry.h"
 #include "ui/scene_panels/light_arrangement.h"
 
 #include <QObject>
+#include <QPointer>
 #include <QString>
 
 #include <array>
 #include <optional>
 
+class QDialog;
 class QMenu;
 
 namespace lucerna {
@@ -20,6 +21,7 @@ class Document;
 class FileDialogs;
 class FileActions;
 class Outliner;
+class RoomActions;
 class WindowMessages;
 
 class EditActions : public QObject {
@@ -33,9 +35,8 @@ public:
     void addTo(QMenu* menu);
 
     // The operations behind the menu, without dialogs.
-    // The room's floor, ceiling, walls and materials, one undo step; false with a one-line reason
-    // in the status bar when the dimensions make no room.
-    bool addRoom(const RoomSpec& spec);
+    // The rooms' actions: their menu entries after Undo and Redo, Delete on a room or opening.
+    void setRoomActions(RoomActions* rooms) { rooms_ = rooms; }
     // A light of `type` (point, spot or directional) above the middle of the scene, selected.
     void addLight(LightType type);
     // Adds the IES or EULUMDAT file's luminaire and selects it; false (and a status message)
@@ -49,10 +50,13 @@ public:
     bool arrangeField(const FieldArrangement& field, const Light& prototype, const QString& group);
     // The selected light, after it (not a sun: a scene has one at most).
     void duplicateSelection();
-    // The selected light, object, group or lights.
+    // The selected light, object, group, lights or task area.
     void deleteSelection();
     // The selected light's index, or -1.
     int selectedLight() const;
+    // Edit > Energy...: the Energy page (ui/scene_panels/energy_panel.h) in a dialog of its own
+    // that stays open beside the window, raised when it is open already.
+    void showEnergy();
 
 private:
     // Adds `light` after the others, one undo step, and selects it.
@@ -63,6 +67,8 @@ private:
     Outliner& outliner_;
     FileDialogs& dialogs_;
     WindowMessages& messages_;
+    QPointer<QDialog> energy_;
+    RoomActions* rooms_ = nullptr;
 };
 
 }  // namespace lucerna

@@ -8,6 +8,7 @@
 #include "ui/compare/compare_view.h"
 #include "ui/io/file_dialogs.h"
 #include "ui/plan/plan_view.h"
+#include "ui/plan/room_drawing.h"
 #include "ui/properties/light_properties.h"
 #include "ui/properties/light_set_properties.h"
 #include "ui/properties/properties_panel.h"
@@ -18,9 +19,12 @@
 #include "ui/scene_panels/camera_panel.h"
 #include "ui/scene_panels/daylight_panel.h"
 #include "ui/scene_panels/outliner.h"
+#include "ui/scene_panels/project_dialog.h"
 #include "ui/viewport/viewport.h"
 #include "ui/window/layout_state.h"
 #include "ui/window/menu_entry.h"
+#include "ui/window/room_actions.h"
+#include "ui/window/task_area_actions.h"
 #include "ui/window/view_area.h"
 
 #include <QCloseEvent>
@@ -153,6 +157,7 @@ void MainWindow::createDocks() {
         viewport_->setSelectedLight(light);
         plan_->setSelectedLight(light);
         plan_->setSelectedLights(s.lights);
+        plan_->setSelectedTaskArea(s.kind == Outliner::Kind::TaskArea ? s.index : -1);
         viewport_->setSelectedObject(s.kind == Outliner::Kind::Object ? s.index : -1);
     });
     connect(render_.get(), &ConvergingRender::frameReady, this, [this] {
@@ -174,6 +179,9 @@ void MainWindow::createDocks() {
     connect(plan_, &PlanView::message, this, [this](const QString& text) { statusBar()->showMessage(text, 5000); });
     connect(plan_, &PlanView::fieldDrawn, this,
             [this](double x0, double z0, double x1, double z1) { edits_->arrangeLights(std::array<double, 4>{x0, z0, x1, z1}); });
+    connect(plan_, &PlanView::taskAreaDrawn, this,
+            [this](double x0, double z0, double x1, double z1) { taskAreas_->addDrawnTaskArea(x0, z0, x1, z1); });
+    connect(plan_, &PlanView::taskAreaClicked, this, [this](int i) { outliner_->select(Outliner::Kind::TaskArea, i); });
     LightSetProperties* sets = propertiesPanel_->lightSetProperties();
     sets->setFileQuestion([this] {
         return dialogs_->open(tr("Luminaire file for the lights"), tr("Photometric files (*.ies *.IES *.ldt *.LDT);;All files (*)"));
@@ -205,9 +213,26 @@ void MainWindow::createMenus() {
     exports_ = std::make_unique<ExportActions>(*doc_, *render_, *preview_, *report_, *compare_, *dialogs_, messages_);
     imports_ = std::make_unique<ImportActions>(*doc_, *files_, *outliner_, *cameraPanel_, *dialogs_, messages_);
     edits_ = std::make_unique<EditActions>(*doc_, *files_, *outliner_, *dialogs_, messages_);
+    taskAreas_ = std::make_unique<TaskAreaActions>(*doc_, *outliner_, messages_);
+    rooms_ = std::make_unique<RoomActions>(*doc_, *outliner_, messages_);
+    edits_->setRoomActions(rooms_.get());
+    connect(plan_->roomDrawing(), &RoomDrawing::outlineDrawn, this,
+            [this](const PlanPolygon& outline) { rooms_->addRoomInteractively(outline); });
+    // A double click on a room or an opening opens its dialog.
+    connect(outliner_, &QTreeWidget::itemDoubleClicked, this, [this] {
+        const Outliner::Kind kind = outliner_->selection().kind;
+        if (kind == Outliner::Kind::Room) rooms_->editRoomInteractively();
+        else if (kind == Outliner::Kind::Opening) rooms_->editOpeningInteractively();
+    });
 
     QMenu* file = menuBar()->addMenu(tr("&File"));
     files_->addTo(file);
+    file->addSeparator();
+    // The project's details and the scene's maintenance factor, one undo step on OK.
+    addMenuEntry(file, tr("Project Se&ttings..."), "actionProjectSettings", {}, this, [this] {
+        ProjectDialog dialog(doc_.get(), this);
+        dialog.exec();
+    });
     file->addSeparator();
     exports_->addTo(file);
     imports_->addTo(file);
@@ -216,6 +241,7 @@ void MainWindow::createMenus() {
 
     QMenu* edit = menuBar()->addMenu(tr("&Edit"));
     edits_->addTo(edit);
+    taskAreas_->addTo(edit);
     // Placing and aiming by clicking a surface: the viewport's tools, also on a tool bar.
     edit->addSeparator();
     edit->addActions(viewport_->toolActions());

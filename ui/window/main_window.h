@@ -43,6 +43,8 @@ class PlanView;
 class PropertiesPanel;
 class RecentFilesMenu;
 class RenderPanel;
+class TaskAreaActions;
+class RoomActions;
 class ReportExport;
 class ViewArea;
 class Viewport;
@@ -84,7 +86,6 @@ public:
     void setImportQuestion(std::function<ImportTarget()> ask) { imports_->setImportQuestion(std::move(ask)); }
     void addLight(LightType type) { edits_->addLight(type); }
     bool addLuminaireFile(const QString& path) { return edits_->addLuminaireFile(path); }
-    bool addRoom(const RoomSpec& spec) { return edits_->addRoom(spec); }
     void arrangeLights(const std::optional<std::array<double, 4>>& rectangle = std::nullopt) {
         edits_->arrangeLights(rectangle);
     }
@@ -114,6 +115,8 @@ public:
     CameraPanel* cameraPanel() const { return cameraPanel_; }
     DaylightPanel* daylightPanel() const { return daylightPanel_; }
     ReportExport* reportExport() const { return report_.get(); }
+    TaskAreaActions* taskAreaActions() const { return taskAreas_.get(); }
+    RoomActions* roomActions() const { return rooms_.get(); }
 
 protected:
     void closeEvent(QCloseEvent* event) override;
@@ -139,6 +142,8 @@ private:
     std::unique_ptr<ExportActions> exports_;
     std::unique_ptr<ImportActions> imports_;
     std::unique_ptr<EditActions> edits_;
+    std::unique_ptr<TaskAreaActions> taskAreas_;  // Add Task Area, the plan's drawn ones
+    std::unique_ptr<RoomActions> rooms_;          // Add Room, openings, Mark as Room, the plan's drawn rooms
     Viewport* viewport_ = nullptr;
     PlanView* plan_ = nullptr;
     ViewArea* viewArea_ = nullptr;  // the viewport or the plan view

@@ -1,0 +1,52 @@
+#pragma once
+// File > Project Settings: the project's details for the report's cover and the scene's
+// maintenance factor, one tab each (ui/scene_panels/project_pages.h). OK is one undo step for
+// everything the tabs changed (EditProjectSettingsCommand); Cancel changes nothing.
+//
+// A tab is a ProjectSettingsPage: it shows the settings and writes its part back. Another tab
+// (the lighting energy's, say) is added with addPage; a part of the scene a new tab edits is a
+// member of ProjectSettings, so that it joins the same undo step.
+
+#include "ui/document/document.h"
+
+#include <QDialog>
+#include <QWidget>
+
+#include <vector>
+
+class QTabWidget;
+
+namespace lucerna {
+
+class ProjectSettingsPage : public QWidget {
+    Q_OBJECT
+public:
+    using QWidget::QWidget;
+    // Shows `settings` (the document's, when the dialog opens).
+    virtual void load(const ProjectSettings& settings) = 0;
+    // Writes what the page shows into `settings`, leaving the rest of it as it is.
+    virtual void store(ProjectSettings& settings) const = 0;
+};
+
+class ProjectDialog : public QDialog {
+    Q_OBJECT
+public:
+    // Opens with the tabs "Project" and "Maintenance", showing `doc`'s settings.
+    explicit ProjectDialog(Document* doc, QWidget* parent = nullptr);
+
+    // Adds a tab after the others; the dialog owns it, loads it now and stores it on OK.
+    void addPage(ProjectSettingsPage* page, const QString& title);
+    QTabWidget* tabs() const { return tabs_; }
+    // The settings the tabs show now (what OK would set).
+    ProjectSettings settings() const;
+
+    // OK: pushes one command when the settings changed, then closes.
+    void accept() override;
+
+private:
+    Document* doc_;
+    QTabWidget* tabs_;
+    std::vector<ProjectSettingsPage*> pages_;
+};
+
+}  // namespace lucerna
