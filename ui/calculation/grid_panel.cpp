@@ -1,5 +1,6 @@
 #include "ui/calculation/grid_panel.h"
 
+#include "ui/properties/number_fields.h"
 #include "core/daylight/daylight.h"
 #include "core/daylight/daylight_provision.h"
 
@@ -42,14 +43,7 @@ QStringList text(const std::vector<std::string>& lines) {
 }
 
 QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(lo, hi);
-    box->setDecimals(2);
-    box->setSingleStep(0.05);
-    box->setValue(value);
-    box->setSuffix(suffix);
-    return box;
+    return makeNumberField(parent, name, value, lo, hi, suffix, 2, 0.05);
 }
 }  // namespace
 

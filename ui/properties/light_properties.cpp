@@ -1,5 +1,6 @@
 #include "ui/properties/light_properties.h"
 
+#include "ui/properties/number_fields.h"
 #include "core/photometry/light_output.h"
 #include "core/number_format.h"
 #include "core/photometry/luminaire.h"
@@ -16,7 +17,6 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
 #include <QSignalBlocker>
 #include <QToolButton>
 #include <QVBoxLayout>
@@ -418,15 +418,12 @@ void LightProperties::applyCircuitWatts() {
     const QString text = circuit_->text().trimmed();
     std::optional<double> watts;
     if (!text.isEmpty()) {
-        bool ok = false;
-        double x = QLocale::c().toDouble(text, &ok);
-        if (!ok) x = QLocale().toDouble(text, &ok);
+        watts = typedNumber(text);
         // The scene file's range (core/scene/light_keys.cpp): refused, the field shows the light.
-        if (!ok || !(x >= 0 && x <= 1e6)) {
+        if (!watts || !(*watts >= 0 && *watts <= 1e6)) {
             circuit_->setText(l.circuitWatts ? QString::fromStdString(shortestNumber(*l.circuitWatts)) : QString());
             return;
         }
-        watts = x;
     }
     if (watts == l.circuitWatts) return;
     l.circuitWatts = watts;

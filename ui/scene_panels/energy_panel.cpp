@@ -1,5 +1,6 @@
 #include "ui/scene_panels/energy_panel.h"
 
+#include "ui/properties/number_fields.h"
 #include "core/number_format.h"
 #include "core/scene/scene_energy.h"
 #include "ui/commands/energy_commands.h"
@@ -10,7 +11,6 @@
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QLocale>
 #include <QSignalBlocker>
 #include <QVBoxLayout>
 
@@ -47,14 +47,6 @@ const std::array<FactorSpec, EnergyPanel::kFactors> kSpecs = {{
 }};
 
 QString number(double x, int decimals) { return QString::number(x, 'f', decimals); }
-
-// A number as typed: the C locale's, or the system's (a decimal comma).
-std::optional<double> typedNumber(const QString& text) {
-    bool ok = false;
-    double x = QLocale::c().toDouble(text, &ok);
-    if (!ok) x = QLocale().toDouble(text, &ok);
-    return ok ? std::optional<double>(x) : std::nullopt;
-}
 
 const QString kPerM2Year = QStringLiteral("kWh/(m\u00b2\u00b7a)");
 

@@ -1,5 +1,6 @@
 #include "ui/scene_panels/maintenance_assistant_dialog.h"
 
+#include "ui/properties/number_fields.h"
 #include "core/scene/scene_geometry.h"
 
 #include <QCheckBox>
@@ -18,18 +19,6 @@
 namespace lucerna {
 
 namespace {
-
-QDoubleSpinBox* field(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix,
-                      int decimals, double step = 1) {
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(lo, hi);
-    box->setDecimals(decimals);
-    box->setSingleStep(step);
-    box->setValue(value);
-    box->setSuffix(suffix);
-    return box;
-}
 
 // A list of an enumeration's values by their names, the item's data its value.
 template <class Enum, size_t N>
@@ -67,11 +56,11 @@ MaintenanceAssistantDialog::MaintenanceAssistantDialog(const MaintenanceChoices&
         lamp_->addItem(QString::fromStdString(f.name), QString::fromStdString(f.name));
     lamp_->addItem(tr("Other (the lamp maker's data)"), QString::fromUtf8(kMakersDataLamp));
     lamp_->setCurrentIndex(std::max(0, lamp_->findData(QString::fromStdString(initial.lamp))));
-    ledRating_ = field(lampBox, "assistantLedRating", 100 * initial.ledLumenFraction, 1, 99, {}, 0);
+    ledRating_ = makeNumberField(lampBox, "assistantLedRating", 100 * initial.ledLumenFraction, 1, 99, {}, 0);
     ledRating_->setPrefix(QStringLiteral("L"));
     ledRating_->setToolTip(tr("The flux left at the rated life: L80 keeps 80%"));
-    ledLife_ = field(lampBox, "assistantLedLife", initial.ledRatedLifeHours, 1, 1e6, tr(" h"), 0, 1000);
-    hours_ = field(lampBox, "assistantHours", initial.operatingHours, 1, 1e6, tr(" h"), 0, 1000);
+    ledLife_ = makeNumberField(lampBox, "assistantLedLife", initial.ledRatedLifeHours, 1, 1e6, tr(" h"), 0, 1000);
+    hours_ = makeNumberField(lampBox, "assistantHours", initial.operatingHours, 1, 1e6, tr(" h"), 0, 1000);
     hours_->setToolTip(tr("Operating hours between group replacements, or to the end of the maintenance period"));
     spotReplacement_ = new QCheckBox(tr("Failed lamps are replaced at once (spot replacement)"), lampBox);
     spotReplacement_->setObjectName("assistantSpotReplacement");
@@ -90,7 +79,7 @@ MaintenanceAssistantDialog::MaintenanceAssistantDialog(const MaintenanceChoices&
     luminaire_ = enumList(luminaireBox, "assistantLuminaire", kLuminaires, luminaireClassName, initial.luminaire);
     luminaireEnvironment_ = enumList(luminaireBox, "assistantLuminaireEnvironment", kEnvironments, cleanlinessName,
                                      initial.luminaireEnvironment);
-    luminaireCleaning_ = field(luminaireBox, "assistantLuminaireCleaning", initial.luminaireCleaningYears, 0.5, 3,
+    luminaireCleaning_ = makeNumberField(luminaireBox, "assistantLuminaireCleaning", initial.luminaireCleaningYears, 0.5, 3,
                                tr(" years"), 2, 0.5);
     auto* luminaireForm = new QFormLayout(luminaireBox);
     luminaireForm->addRow(tr("Luminaire type"), luminaire_);
@@ -99,16 +88,16 @@ MaintenanceAssistantDialog::MaintenanceAssistantDialog(const MaintenanceChoices&
 
     // The room: K and RSMF.
     auto* roomBox = new QGroupBox(tr("Room (RSMF, CIE 97:2005 Table 4)"), this);
-    length_ = field(roomBox, "assistantRoomLength", initial.roomLengthM, 0.1, 1e4, tr(" m"), 2);
-    width_ = field(roomBox, "assistantRoomWidth", initial.roomWidthM, 0.1, 1e4, tr(" m"), 2);
-    height_ = field(roomBox, "assistantMountingHeight", initial.mountingHeightM, 0.1, 1e3, tr(" m"), 2, 0.1);
+    length_ = makeNumberField(roomBox, "assistantRoomLength", initial.roomLengthM, 0.1, 1e4, tr(" m"), 2);
+    width_ = makeNumberField(roomBox, "assistantRoomWidth", initial.roomWidthM, 0.1, 1e4, tr(" m"), 2);
+    height_ = makeNumberField(roomBox, "assistantMountingHeight", initial.mountingHeightM, 0.1, 1e3, tr(" m"), 2, 0.1);
     height_->setToolTip(tr("The luminaires' height above the work plane"));
     roomIndex_ = new QLabel(roomBox);
     roomIndex_->setObjectName("assistantRoomIndex");
     distribution_ = enumList(roomBox, "assistantDistribution", kDistributions, distributionName, initial.distribution);
     roomEnvironment_ =
         enumList(roomBox, "assistantRoomEnvironment", kEnvironments, cleanlinessName, initial.roomEnvironment);
-    roomCleaning_ = field(roomBox, "assistantRoomCleaning", initial.roomCleaningYears, 0.5, 3, tr(" years"), 2, 0.5);
+    roomCleaning_ = makeNumberField(roomBox, "assistantRoomCleaning", initial.roomCleaningYears, 0.5, 3, tr(" years"), 2, 0.5);
     auto* roomForm = new QFormLayout(roomBox);
     roomForm->addRow(tr("Length"), length_);
     roomForm->addRow(tr("Width"), width_);

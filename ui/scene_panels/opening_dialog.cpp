@@ -1,5 +1,7 @@
 #include "ui/scene_panels/opening_dialog.h"
 
+#include "ui/properties/number_fields.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -10,26 +12,6 @@
 #include <algorithm>
 
 namespace lucerna {
-
-namespace {
-
-QDoubleSpinBox* field(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix,
-                      int decimals = 3) {
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(lo, hi);
-    box->setDecimals(decimals);
-    box->setValue(value);
-    box->setSuffix(suffix);
-    return box;
-}
-
-double sceneValue(const QDoubleSpinBox* box, double original, double metersPerUnit) {
-    if (box->value() == QString::number(original * metersPerUnit, 'f', box->decimals()).toDouble()) return original;
-    return box->value() / metersPerUnit;
-}
-
-}  // namespace
 
 OpeningDialog::OpeningDialog(const Room& room, const RoomOpening& opening, double transmittance, double metersPerUnit,
                              const QString& title, QWidget* parent)
@@ -49,11 +31,11 @@ OpeningDialog::OpeningDialog(const Room& room, const RoomOpening& opening, doubl
         wall_->addItem(tr("Wall %1 (%2 m)").arg(k + 1).arg(walls[k].length * metersPerUnit, 0, 'f', 2), int(k + 1));
     wall_->setCurrentIndex(std::clamp(opening.wall - 1, 0, std::max(0, wall_->count() - 1)));
     const double m = metersPerUnit;
-    offset_ = field(this, "openingOffset", opening.offset * m, 0, 1e5, tr(" m"));
-    sill_ = field(this, "openingSill", opening.sill * m, 0, 1e4, tr(" m"));
-    width_ = field(this, "openingWidth", opening.width * m, 0.001, 1e5, tr(" m"));
-    height_ = field(this, "openingHeight", opening.height * m, 0.001, 1e4, tr(" m"));
-    transmittance_ = field(this, "openingTransmittance", 100 * transmittance, 0, 100, tr(" %"), 0);
+    offset_ = makeNumberField(this, "openingOffset", opening.offset * m, 0, 1e5, tr(" m"), 3);
+    sill_ = makeNumberField(this, "openingSill", opening.sill * m, 0, 1e4, tr(" m"), 3);
+    width_ = makeNumberField(this, "openingWidth", opening.width * m, 0.001, 1e5, tr(" m"), 3);
+    height_ = makeNumberField(this, "openingHeight", opening.height * m, 0.001, 1e4, tr(" m"), 3);
+    transmittance_ = makeNumberField(this, "openingTransmittance", 100 * transmittance, 0, 100, tr(" %"), 0);
     transmittance_->setToolTip(tr("The glazing's transmittance at every angle (SPEC.md's glazing material)"));
     problem_ = new QLabel(this);
     problem_->setObjectName("openingProblem");

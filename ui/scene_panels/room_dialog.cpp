@@ -1,5 +1,6 @@
 #include "ui/scene_panels/room_dialog.h"
 
+#include "ui/properties/number_fields.h"
 #include "core/scene/scene_geometry.h"
 
 #include <QDialogButtonBox>
@@ -20,25 +21,6 @@ namespace lucerna {
 namespace {
 
 constexpr int kDecimals = 3;  // millimetres
-
-QDoubleSpinBox* field(QWidget* parent, const QString& name, double value, double lo, double hi, const QString& suffix,
-                      int decimals = kDecimals) {
-    auto* box = new QDoubleSpinBox(parent);
-    box->setObjectName(name);
-    box->setRange(lo, hi);
-    box->setDecimals(decimals);
-    box->setValue(value);
-    box->setSuffix(suffix);
-    return box;
-}
-
-// The field's value in scene units: the value it was opened on while it still shows that (so a
-// room opened and accepted keeps every coordinate to the last bit), else what was typed.
-double sceneValue(const QDoubleSpinBox* box, std::optional<double> original, double metersPerUnit) {
-    if (original && box->value() == QString::number(*original * metersPerUnit, 'f', box->decimals()).toDouble())
-        return *original;
-    return box->value() / metersPerUnit;
-}
 
 std::string freeRoomName(const Scene& scene) {
     std::set<std::string> names;
@@ -79,11 +61,11 @@ RoomDialog::RoomDialog(const Room& room, const std::array<std::optional<double>,
     connect(addCorner_, &QPushButton::clicked, this, &RoomDialog::insertCorner);
     connect(removeCorner_, &QPushButton::clicked, this, &RoomDialog::removeCorner);
 
-    floorLevel_ = field(this, "roomFloorLevel", room.floorLevel * metersPerUnit, -1e5, 1e5, tr(" m"));
-    height_ = field(this, "roomHeight", room.height * metersPerUnit, 0.1, 1e3, tr(" m"));
+    floorLevel_ = makeNumberField(this, "roomFloorLevel", room.floorLevel * metersPerUnit, -1e5, 1e5, tr(" m"), kDecimals);
+    height_ = makeNumberField(this, "roomHeight", room.height * metersPerUnit, 0.1, 1e3, tr(" m"), kDecimals);
     const char* names[] = {"roomFloorReflectance", "roomWallReflectance", "roomCeilingReflectance"};
     for (size_t k = 0; k < 3; ++k) {
-        reflectance_[k] = field(this, names[k], 100 * reflectances[k].value_or(0), 0, 100, tr(" %"), 0);
+        reflectance_[k] = makeNumberField(this, names[k], 100 * reflectances[k].value_or(0), 0, 100, tr(" %"), 0);
         if (!reflectances[k]) {
             reflectance_[k]->setEnabled(false);
             reflectance_[k]->setToolTip(tr("The material is not diffuse or glossy: edit it in the material panel"));
@@ -121,7 +103,7 @@ RoomDialog::RoomDialog(const Room& room, const std::array<std::optional<double>,
 void RoomDialog::addCornerRow(int row, const V2d& metres) {
     corners_->insertRow(row);
     for (int column = 0; column < 2; ++column) {
-        QDoubleSpinBox* box = field(corners_, QString(), column == 0 ? metres.x : metres.y, -1e5, 1e5, QString());
+        QDoubleSpinBox* box = makeNumberField(corners_, QString(), column == 0 ? metres.x : metres.y, -1e5, 1e5, QString(), kDecimals);
         box->setFrame(false);
         connect(box, &QDoubleSpinBox::valueChanged, this, &RoomDialog::updateSummary);
         // Typing into a corner chooses its row for Add and Remove Corner.
