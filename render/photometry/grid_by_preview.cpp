@@ -9,6 +9,7 @@
 #include "render/preview/hemicube_irradiance.h"
 
 #include <chrono>
+#include <optional>
 
 namespace lucerna {
 
@@ -24,7 +25,8 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
     const bool cylindrical = settings.quantity == GridQuantity::Cylindrical;
     const std::vector<double> cylinderDeltaLux =
         cylindrical ? cylindricalDeltaLux(scene, points, normal, /*throughPanes=*/false) : std::vector<double>{};
-    const IrradianceEstimator lifter(scene);
+    std::optional<IrradianceEstimator> lifter;  // moves the turned sensors off surfaces
+    if (cylindrical) lifter.emplace(scene);
     RenderSettings options;  // the preview backend's options (vpls, pattern, clamp, ...)
     options.seed = settings.seed;
     options.options = settings.backendOptions;
@@ -47,7 +49,7 @@ GridResult computeGridByPreview(const RenderScene& scene, const std::vector<V3d>
             }
             double sum = 0;
             for (size_t k = 0; k < 4; ++k)
-                sum += double(luminance(preview.irradiance(lifter.lifted(vertical[4 * i + k]), jitter.x, jitter.y)));
+                sum += double(luminance(preview.irradiance(lifter->lifted(vertical[4 * i + k]), jitter.x, jitter.y)));
             passLux[i] = kLumensPerWatt * sum / 4 + cylinderDeltaLux[i];
         }
     }, onPass, result);
