@@ -480,7 +480,8 @@ int infoImpl(const std::vector<std::string>& args) {
     if (scene.energy) std::cout << "energy: " << describeLeni(sceneEnergy(scene), false) << "\n";
     for (const TaskArea& a : scene.taskAreas) {
         std::cout << "task area '" << a.grid.name << "': ";
-        if (const ActivityRequirement* r = findActivity(a.activity)) std::cout << describeRequirement(*r);
+        if (const ActivityRequirement* r = findActivity(a.activity, lightingStandardOf(scene)))
+            std::cout << describeRequirement(*r, lightingStandardOf(scene));
         else std::cout << "no activity";
         std::cout << "\n";
     }
@@ -499,11 +500,35 @@ int infoImpl(const std::vector<std::string>& args) {
 }
 
 int standardsImpl(const std::vector<std::string>& args) {
-    if (!args.empty()) throw UsageError("usage: lucerna standards");
-    std::cout << "EN 12464-1:2011 (a selection): reference, area: activity; Em lx, UGR_L, U0, Ra\n";
-    for (const ActivityRequirement& a : en12464Activities())
-        std::cout << a.reference << "  " << a.area << ": " << a.activity << "; Em " << a.maintainedLux << ", UGR_L "
-                  << a.ugrLimit << ", U0 " << fixedNumber(a.uniformity, 2) << ", Ra " << a.colourRendering << "\n";
+    const char* usage = "usage: lucerna standards [--edition 2011|2021]";
+    StandardEdition edition = kDefaultStandardEdition;
+    if (!args.empty()) {
+        if (args.size() != 2 || args[0] != "--edition") throw UsageError(usage);
+        if (args[1] == "2011") edition = StandardEdition::En12464_2011;
+        else if (args[1] == "2021") edition = StandardEdition::En12464_2021;
+        else throw UsageError("--edition: expected 2011 or 2021, got '" + args[1] + "'");
+    }
+    const bool with2021 = edition == StandardEdition::En12464_2021;
+    std::cout << standardEditionName(edition) << " (a selection): reference, area: activity; Em lx, UGR_L, U0, Ra";
+    if (with2021)
+        std::cout << "; Em,u lx; Ez, walls, ceiling lx (U0)\n"
+                     "  \"2011 entry\": the bundled 2021 table lacks the activity; it is checked against its 2011 figures";
+    std::cout << "\n";
+    // A 2021 figure, "-" where the entry states none.
+    const auto lux = [](double x, double u0) {
+        if (!(x > 0)) return std::string("-");
+        return fixedNumber(x, 0) + (u0 > 0 ? " (" + fixedNumber(u0, 2) + ")" : std::string());
+    };
+    for (const ActivityRequirement* a : activitiesOf(edition)) {
+        std::cout << a->reference << "  " << a->area << ": " << a->activity << "; Em " << a->maintainedLux << ", UGR_L "
+                  << a->ugrLimit << ", U0 " << fixedNumber(a->uniformity, 2) << ", Ra " << a->colourRendering;
+        if (with2021 && a->edition != edition) std::cout << "; 2011 entry";
+        else if (with2021)
+            std::cout << "; Em,u " << lux(a->modifiedLux, 0) << "; Ez " << lux(a->cylindricalLux, a->cylindricalUniformity)
+                      << ", walls " << lux(a->wallLux, a->wallUniformity) << ", ceiling "
+                      << lux(a->ceilingLux, a->ceilingUniformity);
+        std::cout << "\n";
+    }
     return 0;
 }
 
@@ -554,7 +579,10 @@ void printUsage() {
                  "               [--daylight-factor [--median-diffuse-illuminance LX]]   the daylight factor under\n"
                  "               the CIE overcast sky instead, with EN 17037's daylight provision\n"
                  "               [--task-area NAME]   the scene's task area, checked against its EN 12464-1 activity\n"
-                 "  lucerna standards                         the bundled EN 12464-1 activities\n"
+                 "               with its zones and the 2021 figures it asks: Ez at 1.2/1.6 m, walls, ceiling\n"
+                 "               [--cylindrical] [--room-surfaces] (each whatever it asks) | [--horizontal-only]\n"
+                 "               [--cylindrical] without --task-area: the points measure Ez about the grid's normal\n"
+                 "  lucerna standards [--edition 2011|2021]   the bundled EN 12464-1 activities (default 2021)\n"
                  "  lucerna glare SCENE.json --observer X,Y,Z --view X,Y,Z [--method M] [--error F] [--time SECONDS]\n"
                  "                [--seed N] [--threads N]   discomfort glare (UGR, CIE 117) at an eye, per luminaire\n"
                  "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"

@@ -1,5 +1,6 @@
 #include "app/grid_command.h"
 #include "app/cli_support.h"
+#include "app/grid_task_area.h"
 
 #include "core/atomic_file.h"
 #include "core/photometry/calculation_grid.h"
@@ -17,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <optional>
 #include <span>
@@ -36,6 +38,10 @@ struct GridArgs {
     bool daylightFactor = false;                    // SPEC.md section 5's DF instead of lux
     std::optional<double> medianDiffuseIlluminance; // lx, EN 17037's site value
     std::string taskArea;                           // the scene's task area (README, "Task areas")
+    // --cylindrical: with a task area, Ez over it whatever its activity asks; else the grid's
+    // points measure Ez. --room-surfaces: the walls and ceiling whatever it asks.
+    // --horizontal-only: neither, whatever it asks.
+    bool cylindrical = false, roomSurfaces = false, horizontalOnly = false;
 };
 
 GridArgs parseGridArgs(const std::vector<std::string>& args) {
@@ -67,6 +73,9 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
         else if (a == "--threads") g.threads = parseNumber<int>(a, value(), 1, 4096);
         else if (a == "--csv") g.csv = value();
         else if (a == "--daylight-factor") g.daylightFactor = true;
+        else if (a == "--cylindrical") g.cylindrical = true;
+        else if (a == "--room-surfaces") g.roomSurfaces = true;
+        else if (a == "--horizontal-only") g.horizontalOnly = true;
         else if (a == "--task-area") {
             g.taskArea = value();
             if (g.taskArea.empty()) throw UsageError("--task-area: the name is empty");
@@ -84,6 +93,14 @@ GridArgs parseGridArgs(const std::vector<std::string>& args) {
     if (!g.taskArea.empty() && g.daylightFactor)
         throw UsageError("--task-area: not with --daylight-factor (a task area is checked in lux; give its rectangle)");
     if (rectangle && !(g.corner && g.u && g.v)) throw UsageError("grid: --corner, --u and --v go together");
+    if (g.taskArea.empty() && (g.roomSurfaces || g.horizontalOnly))
+        throw UsageError(std::string(g.roomSurfaces ? "--room-surfaces" : "--horizontal-only") +
+                         ": only with --task-area NAME (the room is the task area's)");
+    if (g.horizontalOnly && (g.cylindrical || g.roomSurfaces))
+        throw UsageError("--horizontal-only: not with --cylindrical or --room-surfaces");
+    if (g.cylindrical && g.daylightFactor)
+        throw UsageError("--cylindrical: not with --daylight-factor (the daylight factor is on a plane)");
+    if (g.cylindrical && g.taskArea.empty()) g.settings.quantity = GridQuantity::Cylindrical;
     if (g.medianDiffuseIlluminance && !g.daylightFactor)
         throw UsageError("--median-diffuse-illuminance: only with --daylight-factor");
     return g;
@@ -103,6 +120,8 @@ struct GridSetup {
     double medianDiffuseIlluminance = kDefaultMedianDiffuseIlluminance;
     bool medianGiven = false;        // by the option or the site (else EN 17037's usual value)
     const ActivityRequirement* requirement = nullptr;  // --task-area with an activity
+    std::optional<TaskArea> area;    // --task-area: the area, with --spacing's spacing when given
+    GridZones zones;                 // its zones, whose points go after the grid's
 };
 
 // Everything that can fail on bad input before any work; of a distributed grid, every rank does
@@ -131,6 +150,7 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
     }
     const SceneSnapshot scene = std::make_shared<const Scene>(std::move(loaded));
     const ActivityRequirement* requirement = nullptr;
+    std::optional<TaskArea> taskArea;
     if (!g.taskArea.empty()) {
         const auto area = std::find_if(scene->taskAreas.begin(), scene->taskAreas.end(),
                                        [&](const TaskArea& a) { return a.grid.name == g.taskArea; });
@@ -143,7 +163,9 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         const auto spacing = g.grid.spacingMeters;
         g.grid = area->grid;
         if (spacing) g.grid.spacingMeters = spacing;
-        requirement = findActivity(area->activity);
+        if (!area->activity.empty()) requirement = findActivity(area->activity, lightingStandardOf(*scene));
+        taskArea = *area;
+        taskArea->grid.spacingMeters = g.grid.spacingMeters;
     }
     if (g.workPlaneM) {
         const SceneBounds b = sceneBounds(*scene);
@@ -162,6 +184,15 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         layout = layoutGrid(g.grid, scene->metersPerUnit);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
+    }
+    GridZones zones;
+    if (taskArea) {
+        try {
+            zones = GridZones(*taskArea, requirement, scene->metersPerUnit, taskAreaRoom(*scene, *taskArea),
+                              layout.points.size());
+        } catch (const std::invalid_argument& e) {
+            throw UsageError("--task-area: " + std::string(e.what()));
+        }
     }
 
     // light_sampler is every tracing method's, the estimators of path and ir included.
@@ -192,7 +223,8 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         throw UsageError("--option: method " + std::string(gridMethodName(g.settings.method)) +
                          " takes no backend options but light_sampler (path and ir are set with --samples and --vpl-paths)");
     }
-    return {std::move(g), scene, std::move(layout), skyEh, median, medianGiven, requirement};
+    return {std::move(g), scene, std::move(layout), skyEh, median, medianGiven, requirement, std::move(taskArea),
+            std::move(zones)};
 }
 
 // --daylight-factor: DF = 100 E / Eh,sky per point (SPEC.md section 5), its average, minimum and
@@ -227,6 +259,51 @@ int reportDaylightFactor(const GridSetup& setup, const GridResult& r) {
     return 0;
 }
 
+// Runs `work` (true when it finished) as a job, showing its progress; whether it stopped short
+// (Ctrl-C), every process of a distributed grid agreeing.
+bool runStoppable(TaskSystem& tasks, const std::string& label, ProcessGroup* processes,
+                  const std::function<bool(TaskContext&)>& work) {
+    bool finished = false;
+    auto job = tasks.submit([&](TaskContext& ctx) { finished = work(ctx) && !ctx.isCancelled(); });
+    std::exception_ptr failure;
+    try {
+        const bool speaks = rankOf(processes) == 0;
+        waitShowingProgress(*job, label, 1,
+                            !processes ? ProgressLines::TerminalOnly : speaks ? ProgressLines::Also : ProgressLines::Never);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);
+    bool stopped = interrupted() || !finished;
+    if (sizeOf(processes) > 1) {  // every rank stopped with the others (runRounds), but say so together
+        const double mine = stopped ? 1.0 : 0.0;
+        for (double theirs : processes->allGather(std::span(&mine, 1))) stopped = stopped || theirs > 0;
+    }
+    return stopped;
+}
+
+// The task area's part of the output after its figures: the 2021 figures computed, the
+// requirement and every check in one list, then the zones.
+void reportTaskArea(const GridSetup& setup, const GridResult& all, const GridStatistics& s, const GridResult& r,
+                    const std::optional<TaskAreaExtras>& extras, const MaintenanceRange& maintenance) {
+    const Scene& scene = *setup.scene;
+    if (extras) printLines(extrasLines(*extras, s));
+    if (setup.requirement && s.counted > 0) {
+        std::printf("%s\n", describeRequirement(*setup.requirement, lightingStandardOf(scene)).c_str());
+        TaskAreaFigures figures;
+        figures.grid = s;
+        if (!r.errorBarUnknown) figures.gridErrors = gridErrorBars(s, r.lux, r.errorLux, r.insideGeometry);
+        figures.colourRendering = statedColourRendering(scene);
+        figures.maintainedValues = valuesAreMaintained(maintenance);
+        if (extras) addExtras(figures, *extras);
+        for (const RequirementCheck& c : checkRequirements(*setup.requirement, figures))
+            std::printf("  %s\n", c.describe().c_str());
+    } else if (!setup.requirement) {
+        std::printf("task area '%s' names no activity: nothing to check\n", setup.g.taskArea.c_str());
+    }
+    printLines(setup.zones.lines(all, valuesAreMaintained(maintenance)));
+}
+
 int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     // Ctrl-C while the scene loads: nothing is written yet (catchInterrupts() takes over below).
     exitOnInterrupt("grid interrupted; no file written\n");
@@ -236,27 +313,32 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     const GridLayout& layout = setup->layout;
     g.settings.processes = processes;
     const bool speaks = rankOf(processes) == 0;  // of a distributed grid, rank 0 prints and writes
+    const std::string method = g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method);
 
     catchInterrupts();
     TaskSystem tasks(g.threads);
-    std::optional<GridResult> result;
-    auto job = tasks.submit([&](TaskContext& ctx) {
+    // The zones' points after the grid's own, in the same calculation (as the dock computes them).
+    std::vector<V3d> points = layout.points;
+    points.insert(points.end(), setup->zones.points().begin(), setup->zones.points().end());
+    std::optional<GridResult> all;
+    bool stopped = runStoppable(tasks, "grid " + method, processes, [&](TaskContext& ctx) {
         // The report's path too (report/report_builder.cpp), so that their figures agree.
-        GridResult r = computeSceneGrid(scene, layout.points, g.grid.normal(), g.settings, ctx);
-        if (!ctx.isCancelled()) result = std::move(r);
+        all = computeSceneGrid(scene, points, g.grid.normal(), g.settings, ctx);
+        return true;
     });
-    std::exception_ptr failure;
-    try {
-        waitShowingProgress(*job, std::string("grid ") + (g.settings.autoMethod ? "auto" : gridMethodName(g.settings.method)),
-                            1, !processes ? ProgressLines::TerminalOnly : speaks ? ProgressLines::Also : ProgressLines::Never);
-    } catch (...) {
-        failure = std::current_exception();
-    }
-    agreeOnOutcome(processes, failure);
-    bool stopped = interrupted() || !result;
-    if (sizeOf(processes) > 1) {  // every rank stopped with the others (runRounds), but say so together
-        const double mine = stopped ? 1.0 : 0.0;
-        for (double theirs : processes->allGather(std::span(&mine, 1))) stopped = stopped || theirs > 0;
+    // Then the 2021 figures the area's activity asks for, with the same method and settings.
+    std::optional<TaskAreaExtras> extras;
+    const TaskAreaExtrasRequest request =
+        setup->area ? requestedExtras(setup->requirement, g.cylindrical, g.roomSurfaces, g.horizontalOnly)
+                    : TaskAreaExtrasRequest{false, false};
+    if (!stopped && (request.cylindrical || request.roomSurfaces)) {
+        const std::string what = request.cylindrical && request.roomSurfaces ? "Ez and room surfaces"
+                                 : request.cylindrical                        ? "Ez"
+                                                                              : "room surfaces";
+        stopped = runStoppable(tasks, what + " " + method, processes, [&](TaskContext& ctx) {
+            extras = computeTaskAreaExtras(scene, *setup->area, g.settings, request, ctx);
+            return extras->complete;
+        });
     }
     if (stopped) {
         if (speaks) std::cerr << "grid interrupted; no file written\n";
@@ -264,29 +346,20 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     }
     if (!speaks) return 0;
 
-    if (g.daylightFactor) return reportDaylightFactor(*setup, *result);
-    const GridResult& r = *result;
+    if (g.daylightFactor) return reportDaylightFactor(*setup, *all);
+    const GridResult r = setup->zones.taskPart(*all);
     const GridStatistics s = gridStatistics(r.lux, r.insideGeometry);
-    std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(), layout.nu,
+    const bool cylindrical = g.settings.quantity == GridQuantity::Cylindrical;
+    std::printf("grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s%s\n", g.grid.name.c_str(), layout.nu,
                 layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
-                g.settings.autoMethod ? " (auto)" : "");
+                g.settings.autoMethod ? " (auto)" : "",
+                cylindrical ? "; cylindrical illuminance Ez about the grid's normal" : "");
     const MaintenanceRange maintenance = maintenanceRange(*scene);
     std::printf("%s\n", describeMaintenance(maintenance).c_str());
     if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size()).c_str());
-    std::printf("%s\n", gridFiguresLine(s).c_str());
+    std::printf("%s%s\n", cylindrical ? "Ez: " : "", gridFiguresLine(s).c_str());
     printLines(gridErrorLines(r, s.counted));
-    if (setup->requirement && s.counted > 0) {
-        std::printf("%s\n", describeRequirement(*setup->requirement).c_str());
-        TaskAreaFigures figures;
-        figures.grid = s;
-        if (!r.errorBarUnknown) figures.gridErrors = gridErrorBars(s, r.lux, r.errorLux, r.insideGeometry);
-        figures.colourRendering = statedColourRendering(*scene);
-        figures.maintainedValues = valuesAreMaintained(maintenance);
-        for (const RequirementCheck& c : checkRequirements(*setup->requirement, figures))
-            std::printf("  %s\n", c.describe().c_str());
-    } else if (!g.taskArea.empty()) {
-        std::printf("task area '%s' names no activity: nothing to check\n", g.taskArea.c_str());
-    }
+    if (setup->area) reportTaskArea(*setup, *all, s, r, extras, maintenance);
     std::printf("%s", gridTableText(layout, r).c_str());
     if (!g.csv.empty()) {
         writeTextAtomically(g.csv, gridCsv(layout, r.lux, r.errorLux, r.insideGeometry, r.errorBarUnknown));
@@ -294,7 +367,6 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     }
     return 0;
 }
-
 }  // namespace
 
 int grid(const std::vector<std::string>& args, ProcessGroup* processes) {

@@ -110,6 +110,9 @@ int reportImpl(const std::vector<std::string>& args, int& argc, char** argv) {
         std::printf("%s\n", gridFiguresLine(a.statistics).c_str());
         if (a.worstUgr) std::printf("UGR %.1f (worst of %zu observers)\n", *a.worstUgr, a.glare.size());
         for (const RequirementCheck& c : a.checks) std::printf("%s\n", c.describe().c_str());
+        if (a.modellingRatio) std::printf("%s\n", describeModelling(*a.modellingRatio).c_str());
+        for (const ZoneReport& z : a.zones)
+            for (const RequirementCheck& c : z.checks) std::printf("%s: %s\n", z.name.c_str(), c.describe().c_str());
     }
     std::fprintf(stderr, "wrote %s: %d pages, %zu task area%s, %s\n", r.output.c_str(), pages, data->areas.size(),
                  data->areas.size() == 1 ? "" : "s", formatDuration(data->seconds).c_str());

@@ -30,12 +30,25 @@ QString direction(const V3d& d) {
     return QString::asprintf("(%.2f, %.2f, %.2f)", n.x, n.y, n.z);
 }
 
-QString requirementsText(const ActivityRequirement& a) {
-    return QStringLiteral("Em \u2265 %1 lx, U0 \u2265 %2, UGR \u2264 %3, Ra \u2265 %4")
-        .arg(a.maintainedLux)
-        .arg(QString::number(a.uniformity, 'f', 2))
-        .arg(a.ugrLimit)
-        .arg(a.colourRendering);
+// `asked`: the scene's edition; an entry of another (the 2021 table lacks it) says so.
+QString requirementsText(const ActivityRequirement& a, StandardEdition asked) {
+    QString text = QStringLiteral("Em \u2265 %1 lx, U0 \u2265 %2, UGR \u2264 %3, Ra \u2265 %4")
+                       .arg(a.maintainedLux)
+                       .arg(QString::number(a.uniformity, 'f', 2))
+                       .arg(a.ugrLimit)
+                       .arg(a.colourRendering);
+    if (a.modifiedLux > 0) text += QStringLiteral(" (Em,u %1 lx where the context asks more: stated, not checked)").arg(a.modifiedLux);
+    const auto surface = [&](const char* name, const char* u0, double lux, double uniformity) {
+        if (lux > 0) text += QStringLiteral(", %1 \u2265 %2 lx").arg(QLatin1String(name)).arg(lux);
+        if (uniformity > 0) text += QStringLiteral(", %1 \u2265 %2").arg(QLatin1String(u0), QString::number(uniformity, 'f', 2));
+    };
+    surface("Ez", "U0,z", a.cylindricalLux, a.cylindricalUniformity);
+    surface("Ewall", "U0,wall", a.wallLux, a.wallUniformity);
+    surface("Eceiling", "U0,ceiling", a.ceilingLux, a.ceilingUniformity);
+    text += QStringLiteral(" (%1").arg(QLatin1String(standardEditionName(a.edition)));
+    if (a.edition != asked)
+        text += QStringLiteral("; %1 asked, whose table here lacks this activity").arg(QLatin1String(standardEditionName(asked)));
+    return text + QStringLiteral(")");
 }
 
 QString gridText(const AreaReport& a, double mpu) {
@@ -53,34 +66,56 @@ QString gridText(const AreaReport& a, double mpu) {
     return text;
 }
 
-// Achieved, required, margin, outcome of each check.
+// A check's quantity as the table names it.
+QString quantityText(const std::string& q) {
+    if (q == "Em") return QStringLiteral("Em (maintained, Eavg)");
+    if (q == "U0") return QStringLiteral("U0 = Emin / Eavg");
+    if (q == "UGR") return QStringLiteral("UGR (worst observer)");
+    if (q == "Ra") return QStringLiteral("Ra (lowest luminaire)");
+    if (q == "Ez") return QStringLiteral("Ez (cylindrical, mean)");
+    if (q == "U0,z") return QStringLiteral("U0,z of Ez");
+    if (q == "Ewall") return QStringLiteral("Ewall (walls, mean)");
+    if (q == "U0,wall") return QStringLiteral("U0,wall");
+    if (q == "Eceiling") return QStringLiteral("Eceiling (ceiling, mean)");
+    if (q == "U0,ceiling") return QStringLiteral("U0,ceiling");
+    return qs(q);
+}
+
+void addCheckRow(ReportTable& t, const RequirementCheck& c, const QString& prefix) {
+    const bool lx = !c.quantity.empty() && c.quantity[0] == 'E';
+    const bool u0 = c.quantity.rfind("U0", 0) == 0;
+    const int decimals = c.quantity == "U0" ? 3 : u0 ? 2 : c.quantity == "UGR" ? 1 : 0;
+    const auto figure = [&](double x) { return lx ? lux(x) + QStringLiteral(" lx") : QString::number(x, 'f', decimals); };
+    const QString required = QString(c.upperLimit ? QStringLiteral("\u2264 ") : QStringLiteral("\u2265 ")) +
+                             (lx ? QString::number(c.required, 'f', 0) + QStringLiteral(" lx")
+                                 : QString::number(c.required, 'f', u0 ? 2 : 0));
+    QString margin = QStringLiteral("-");
+    if (c.achieved) {
+        margin = (c.margin >= 0 ? QStringLiteral("+") : QString()) + figure(c.margin);
+        if (lx && c.required > 0) margin += QString::asprintf(" (%+.1f%%)", 100 * c.margin / c.required);
+    }
+    QString achieved = c.achieved ? figure(*c.achieved) : QStringLiteral("-");
+    if (c.achieved && c.error > 0) achieved += QStringLiteral(" \u00b1 ") + figure(c.error);
+    // "not checked: no maintenance factor" without its parenthesis, which the note under the
+    // table gives once for every lux figure.
+    QString outcome = outcomeText(c);
+    if (const qsizetype cut = outcome.indexOf(QStringLiteral(" (")); c.outcome == CheckOutcome::NotChecked && cut > 0)
+        outcome.truncate(cut);
+    t.rows.push_back({prefix + quantityText(c.quantity), achieved, required, margin, outcome});
+}
+
+// Achieved, required, margin, outcome of each check: the area's, then its zones'.
 ReportTable checksTable(const AreaReport& a) {
     ReportTable t;
     t.header = {QStringLiteral("Quantity"), QStringLiteral("Calculated"), QStringLiteral("Required"),
                 QStringLiteral("Margin"), QStringLiteral("Outcome")};
-    t.weights = {1.6, 1.1, 1.1, 1.5, 1.0};
+    t.weights = {1.9, 1.2, 0.8, 1.3, 1.4};
     t.alignment = {Qt::AlignLeft, Qt::AlignRight, Qt::AlignRight, Qt::AlignRight, Qt::AlignLeft};
-    for (const RequirementCheck& c : a.checks) {
-        const bool lx = c.quantity == "Em";
-        const int decimals = c.quantity == "U0" ? 3 : c.quantity == "UGR" ? 1 : 0;
-        const auto figure = [&](double x) {
-            return lx ? lux(x) + QStringLiteral(" lx") : QString::number(x, 'f', decimals);
-        };
-        const QString name = c.quantity == "Em"    ? QStringLiteral("Em (maintained, Eavg)")
-                             : c.quantity == "U0"  ? QStringLiteral("U0 = Emin / Eavg")
-                             : c.quantity == "UGR" ? QStringLiteral("UGR (worst observer)")
-                                                   : QStringLiteral("Ra (lowest luminaire)");
-        const QString required = QString(c.upperLimit ? QStringLiteral("\u2264 ") : QStringLiteral("\u2265 ")) +
-                                 (lx ? QString::number(c.required, 'f', 0) + QStringLiteral(" lx")
-                                     : QString::number(c.required, 'f', c.quantity == "U0" ? 2 : 0));
-        QString margin = QStringLiteral("-");
-        if (c.achieved) {
-            margin = (c.margin >= 0 ? QStringLiteral("+") : QString()) + figure(c.margin);
-            if (lx && c.required > 0) margin += QString::asprintf(" (%+.1f%%)", 100 * c.margin / c.required);
-        }
-        QString achieved = c.achieved ? figure(*c.achieved) : QStringLiteral("-");
-        if (c.achieved && c.error > 0) achieved += QStringLiteral(" \u00b1 ") + figure(c.error);
-        t.rows.push_back({name, achieved, required, margin, outcomeText(c)});
+    for (const RequirementCheck& c : a.checks) addCheckRow(t, c, QString());
+    for (const ZoneReport& z : a.zones) {
+        QString name = qs(z.name) + QStringLiteral(": ");
+        name[0] = name[0].toUpper();
+        for (const RequirementCheck& c : z.checks) addCheckRow(t, c, name);
     }
     return t;
 }
@@ -234,7 +269,7 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     std::vector<std::pair<QString, QString>> facts;
     facts.emplace_back(QStringLiteral("Activity"), a.requirement ? activityText(*a.requirement)
                                                                  : QStringLiteral("none given: no requirements checked"));
-    if (a.requirement) facts.emplace_back(QStringLiteral("Requirements"), requirementsText(*a.requirement));
+    if (a.requirement) facts.emplace_back(QStringLiteral("Requirements"), requirementsText(*a.requirement, lightingStandardOf(scene)));
     facts.emplace_back(QStringLiteral("Grid"), gridText(a, mpu));
     if (a.defaultWorkPlane)
         facts.emplace_back(QStringLiteral("Area"), QStringLiteral("the scene names no task areas: the work plane 0.8 m "
@@ -259,7 +294,23 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
                            .arg(QString::number(*data.schedule.wattsPerM2, 'f', 2),
                                 QString::number(*data.schedule.wattsPerM2 * 100 / a.statistics.average, 'f', 2)),
                        flow.fonts().small);
-    if (!a.checks.empty()) flow.table(checksTable(a));
+    addAreaExtras(flow, data, a);
+    const ReportTable checks = checksTable(a);
+    if (!checks.rows.empty()) {
+        flow.ensure(std::min(flow.subheadingHeight() + flow.tableHeight(checks), flow.pageHeight()));
+        flow.subheading(QStringLiteral("Checks against %1").arg(a.requirement ? QLatin1String(standardEditionName(a.requirement->edition))
+                                                                               : QLatin1String("EN 12464-1")));
+        flow.table(checks);
+        const auto unmaintained = [](const RequirementCheck& c) {
+            return c.outcome == CheckOutcome::NotChecked && c.notCheckedBecause.rfind("no maintenance factor", 0) == 0;
+        };
+        bool any = std::any_of(a.checks.begin(), a.checks.end(), unmaintained);
+        for (const ZoneReport& z : a.zones) any = any || std::any_of(z.checks.begin(), z.checks.end(), unmaintained);
+        if (any)
+            flow.paragraph(QStringLiteral("Not checked, no maintenance factor: EN 12464-1's lux requirements are "
+                                          "maintained values, and these are the values of the new installation."),
+                           flow.fonts().small);
+    }
     addGlare(flow, data, a);
     addValues(flow, data, a);
     if (a.daylightFactor) addDaylightFactor(flow, data, a);

@@ -2,6 +2,8 @@
 #include "report/report_text.h"
 #include "core/number_format.h"
 
+#include <QLatin1String>
+
 #include <algorithm>
 
 namespace lucerna {
@@ -26,6 +28,119 @@ QString gridCommand(const ReportData& data, const AreaReport& a) {
     const QString where = a.defaultWorkPlane ? QStringLiteral(" --work-plane 0.8")
                                              : QStringLiteral(" --task-area \"%1\"").arg(qs(a.name));
     return QStringLiteral("lucerna grid %1%2%3").arg(scene, where, gridOptions(data.settings));
+}
+
+// One calculated grid's row: its points, spacing, passes, time and largest error bar.
+QStringList gridRow(const QString& name, size_t points, const QString& spacing, const GridResult& r, double target) {
+    return {name,
+            QString::number(points),
+            spacing,
+            QString(gridMethodName(r.method)),
+            QString::number(r.passes),
+            qs(formatDuration(r.seconds)),
+            r.errorBarUnknown ? QStringLiteral("unknown") : QString::asprintf("%.2f%%", 100 * r.maxRelativeError),
+            QString::number(100 * target, 'g', 3) + QStringLiteral("%") +
+                (r.converged ? QString() : QStringLiteral(" (not reached)"))};
+}
+
+QString spacingText(const GridLayout& l) {
+    return l.spacingUMeters == l.spacingVMeters
+               ? QString::number(l.spacingUMeters, 'g', 3)
+               : QString::number(l.spacingUMeters, 'g', 3) + QStringLiteral(" x ") + QString::number(l.spacingVMeters, 'g', 3);
+}
+
+// The edition the requirements come from, with the activities its table lacks.
+QString editionText(const ReportData& data) {
+    const StandardEdition asked = lightingStandardOf(*data.scene);
+    QStringList fallback;
+    for (const AreaReport& a : data.areas)
+        if (a.requirement && a.requirement->edition != asked && !fallback.contains(QLatin1String(a.requirement->reference)))
+            fallback << QLatin1String(a.requirement->reference);
+    QString text = QLatin1String(standardEditionName(asked));
+    if (!fallback.isEmpty())
+        text += QStringLiteral(" (fallback to %1 for %2: the 2021 table here lacks %3)")
+                    .arg(QLatin1String(standardEditionName(StandardEdition::En12464_2011)), fallback.join(QStringLiteral(", ")),
+                         fallback.size() == 1 ? QStringLiteral("it") : QStringLiteral("them"));
+    return text;
+}
+
+// An error factor as the page states it ("2.5"; 0 means the grid's own: "1").
+QString factorText(double factor) { return QString::number(factor > 0 ? factor : 1.0, 'g', 3); }
+
+// How Ez, the walls and ceiling, and the zones were computed, and each of their grids.
+void addExtrasMethod(PageFlow& flow, const ReportData& data) {
+    const bool cylindrical = std::any_of(data.areas.begin(), data.areas.end(), [](const AreaReport& a) { return a.cylindrical.has_value(); });
+    const bool zones = std::any_of(data.areas.begin(), data.areas.end(), [](const AreaReport& a) { return !a.zones.empty(); });
+    if (!cylindrical && data.roomSurfaces.empty() && !zones) return;
+    flow.subheading(QStringLiteral("Cylindrical illuminance, walls, ceiling and zones"));
+    QStringList text;
+    if (cylindrical)
+        text << QStringLiteral("Ez (EN 12464-1:2021, 5.2.6) is the mean cylindrical illuminance: at each point the "
+                               "illuminance on a vertical plane averaged over all azimuths, estimated by planes at random "
+                               "azimuths (lamps without size exactly), by the grid's method and settings, its error "
+                               "target %1 times the grid's (%2% of each point's value). Its grid is the task area's "
+                               "rectangle and spacing, at 1.2 m above the floor of the area's room (below) for seated "
+                               "work or 1.6 m for standing (the area's posture), facing up. Eavg, Emin and U0,z as for "
+                               "the area.")
+                    .arg(factorText(data.settings.cylindricalErrorFactor))
+                    .arg(QString::number(100 * data.settings.grid.targetRelativeError *
+                                             (data.settings.cylindricalErrorFactor > 0 ? data.settings.cylindricalErrorFactor : 1),
+                                         'g', 3));
+    if (!data.roomSurfaces.empty())
+        text << QStringLiteral(
+                    "The walls' and ceiling's illuminance (EN 12464-1:2021, 5.2.4) is computed in the box of the room "
+                    "the area lies in: a drawn room's outline from floor to ceiling, a marked room's surfaces' bounds, "
+                    "else the scene's bounds (its lowest point the floor), once per box however many areas lie in it. "
+                    "Each of its four side faces and its top face gets a grid at EN 12464-1's spacing for that face "
+                    "(p = 0.2 x 5^log10(d), d its longer side); each point is moved along the face's normal onto the "
+                    "first opaque surface within %1 m (a wall, a reveal) and set just in front of it, facing into the "
+                    "room. A point whose surface is glass (a dielectric window) is left out; where nothing opaque is "
+                    "that near (an opening, a glazing pane, which rays cross), the point stays on the box's face and "
+                    "counts. The walls' Eavg weighs each point by its cell's area; U0 = Emin / Eavg. Their "
+                    "error target is %2 times the grid's (%3% of each point's value): their requirements lie far "
+                    "from what a lit room achieves, and their dark corners converge slowest; the error bars stated "
+                    "are those reached.")
+                    .arg(kSurfaceDepthMeters)
+                    .arg(factorText(data.settings.roomSurfaceErrorFactor))
+                    .arg(QString::number(100 * data.roomSurfaces.front().settings.targetRelativeError, 'g', 3));
+    if (zones)
+        text << QStringLiteral("The surrounding zone and background area (EN 12464-1, 4.3.2 and 4.3.3) are bands in the "
+                               "area's plane around it, clipped to its room box, computed as one grid by the area's "
+                               "settings; their requirements follow from the area's Em (table 1), U0 0.40 and 0.10.");
+    for (const QString& t : text) flow.paragraph(t);
+
+    ReportTable t = tableOf({{QStringLiteral("Grid"), 2.0},
+                             {QStringLiteral("Points"), 0.7, Qt::AlignRight},
+                             {QStringLiteral("Spacing [m]"), 0.9, Qt::AlignRight},
+                             {QStringLiteral("Method"), 0.7},
+                             {QStringLiteral("Passes"), 0.7, Qt::AlignRight},
+                             {QStringLiteral("Time"), 0.8, Qt::AlignRight},
+                             {QStringLiteral("Largest error bar"), 1.0, Qt::AlignRight},
+                             {QStringLiteral("Target"), 1.0}});
+    const double target = data.settings.grid.targetRelativeError;
+    for (const AreaReport& a : data.areas) {
+        if (a.cylindrical)
+            t.rows.push_back(gridRow(qs(a.name) + QStringLiteral(": Ez"), a.cylindrical->layout.points.size(),
+                                     spacingText(a.cylindrical->layout), a.cylindrical->result,
+                                     target * (data.settings.cylindricalErrorFactor > 0 ? data.settings.cylindricalErrorFactor : 1)));
+        if (!a.zones.empty()) {
+            size_t points = 0;
+            for (const ZoneReport& z : a.zones) points += z.grid.points.size();
+            const ZoneReport& z = a.zones.front();
+            if (points > 0)
+                t.rows.push_back(gridRow(qs(a.name) + QStringLiteral(": zones"), points,
+                                         QString::number(z.grid.spacingMeters, 'g', 3), z.result, target));
+        }
+    }
+    for (const RoomSurfacesReport& r : data.roomSurfaces)
+        for (size_t g = 0; g < r.result.grids.size() && g < r.result.results.size(); ++g)
+            t.rows.push_back(gridRow(qs(r.room.description) + QStringLiteral(": ") + qs(r.result.grids[g].name),
+                                     r.result.grids[g].points.size(), spacingText(r.result.grids[g].layout),
+                                     r.result.results[g], r.settings.targetRelativeError));
+    // The caption stays with its table.
+    flow.ensure(std::min(flow.lineHeight(flow.fonts().small) + flow.tableHeight(t), flow.pageHeight()));
+    flow.paragraph(QStringLiteral("Their grids, as the area's grids above:"), flow.fonts().small);
+    flow.table(t);
 }
 
 }  // namespace
@@ -87,12 +202,21 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
             "error bar, from which the UGR's \u00b1 follows. Computed for the new installation (no maintenance "
             "factor), as CIE 117 asks. The requirement check takes the worst observer's UGR."));
     }
+    addExtrasMethod(flow, data);
     flow.subheading(QStringLiteral("Maintenance, standard and data"));
-    flow.paragraph(QStringLiteral("The figures are %1. Requirements are EN 12464-1:2011's (tables 5.1 to 5.36, a "
-                                  "selection): maintained illuminance Em on the area's average, uniformity U0 = Emin "
-                                  "/ Eavg, UGR limit and colour rendering Ra; check a design against the edition in "
-                                  "force. Luminaire data (flux, power, Ra, luminous area) are the photometric files'.")
-                       .arg(qs(data.maintenance)));
+    flow.paragraph(QStringLiteral("The figures are %1. Requirements are from %2, a selection of its tables: maintained "
+                                  "illuminance Em on the area's average, uniformity U0 = Emin / Eavg, UGR limit and "
+                                  "colour rendering Ra, and where the 2021 edition states them Ez, the walls' and the "
+                                  "ceiling's Em with their U0; check a design against the edition in force. Luminaire "
+                                  "data (flux, power, Ra, luminous area) are the photometric files'.")
+                       .arg(qs(data.maintenance), editionText(data)));
+    std::vector<std::string> lines;
+    for (const AreaReport& a : data.areas)
+        if (a.requirement) {
+            const std::string line = describeRequirement(*a.requirement, lightingStandardOf(*data.scene));
+            if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
+        }
+    for (const std::string& line : lines) flow.paragraph(qs(line), flow.fonts().small, flow.mm(4));
     if (data.renders) {
         flow.subheading(QStringLiteral("Renders"));
         const QString stop = data.settings.renderRelmse > 0

@@ -7,6 +7,7 @@
 #include "render/display/false_colour.h"
 #include "render/engine/backend_table.h"
 #include "render/trace/surface_layers.h"
+#include "report/area_extras.h"
 #include "report/luminaire_data_sheet.h"
 #include "report/luminaire_schedule.h"
 #include "report/room_summary.h"
@@ -25,18 +26,6 @@
 namespace lucerna {
 
 namespace {
-
-// The figures an area's requirements are checked on, with their error bars.
-TaskAreaFigures taskAreaFigures(const AreaReport& r, bool maintainedValues) {
-    TaskAreaFigures f;
-    f.grid = r.statistics;
-    if (!r.result.errorBarUnknown) f.gridErrors = gridErrorBars(r.statistics, r.result.lux, r.result.errorLux, r.result.insideGeometry);
-    f.worstUgr = r.worstUgr;
-    f.worstUgrError = r.worstUgrError;
-    f.colourRendering = r.colourRendering;
-    f.maintainedValues = maintainedValues;
-    return f;
-}
 
 constexpr double kWorkPlaneM = 0.8, kBorderM = 0.5;  // EN 12464-1's usual work plane
 
@@ -197,11 +186,16 @@ std::vector<ReportArea> reportAreas(const Scene& scene) {
     return areas;
 }
 
-void checkReportInput(const Scene& scene, const ReportSettings&) {
+void checkReportInput(const Scene& scene, const ReportSettings& settings) {
+    std::vector<RoomSurfacesReport> rooms;
     for (const ReportArea& a : reportAreas(scene)) {
         layoutGrid(a.area.grid, scene.metersPerUnit);
-        if (!a.area.activity.empty() && !findActivity(a.area.activity))
+        if (!a.area.activity.empty() && !findActivity(a.area.activity, lightingStandardOf(scene)))
             throw std::invalid_argument("task area '" + a.area.grid.name + "': unknown activity " + a.area.activity);
+        AreaReport r;
+        r.name = a.area.grid.name;
+        if (!a.area.activity.empty()) r.requirement = findActivity(a.area.activity, lightingStandardOf(scene));
+        planAreaExtras(scene, a.area, settings, r, rooms);
     }
 }
 
@@ -227,6 +221,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     data.dataSheets = luminaireDataSheets(*scene, data.schedule);
     // A scene with rooms (README, "Rooms") is summarised room by room there, not as one extent.
     if (scene->rooms.empty()) data.room = roomSummary(*scene, data.schedule);
+    else data.rooms = roomsSummary(*scene);
     data.energy = sceneEnergy(*scene);
 
     // Everything that can fail on bad input, before any work.
@@ -239,22 +234,27 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
         r.defaultWorkPlane = a.defaultWorkPlane;
         r.grid = a.area.grid;
         r.layout = layoutGrid(a.area.grid, scene->metersPerUnit);
-        if (!a.area.activity.empty()) r.requirement = findActivity(a.area.activity);
+        if (!a.area.activity.empty()) r.requirement = findActivity(a.area.activity, lightingStandardOf(*scene));
         r.colourRendering = statedColourRendering(*scene);
+        planAreaExtras(*scene, a.area, settings, r, data.roomSurfaces);
         data.areas.push_back(std::move(r));
     }
 
-    // Shares of the progress: a grid 1, an area's glare 0.5, its daylight factor 1, the render 2.
+    // Shares of the progress: a grid 1, an area's glare 0.5, its daylight factor 1, its Ez 1 and
+    // its zones 0.5, a room's walls and ceiling 1 (five small grids, once per room box), the
+    // render 2.
     const bool daylightFactor = settings.daylightFactor && analyseFeatures(*scene).hasDaylight();
     const double glareShare = settings.glare ? 0.5 : 0.0, dfShare = daylightFactor ? 1.0 : 0.0;
-    const double renderShare = settings.renders ? 2.0 : 0.0;
-    const double total = double(areas.size()) * (1 + glareShare + dfShare) + renderShare;
+    const double renderShare = settings.renders ? 2.0 : 0.0, zoneShare = 0.5;
+    double total = double(areas.size()) * (1 + glareShare + dfShare) + renderShare + double(data.roomSurfaces.size());
+    for (const AreaReport& r : data.areas) total += (wantsCylindrical(r) ? 1.0 : 0.0) + (r.zones.empty() ? 0.0 : zoneShare);
     double done = 0;
     const auto stage = [&](double share) {
         const double base = done / total;
         done += share;
         return std::make_unique<Stage>(ctx, base, share / total);
     };
+    std::vector<bool> roomDone(data.roomSurfaces.size(), false);
     for (size_t i = 0; i < areas.size(); ++i) {
         AreaReport& r = data.areas[i];
         {
@@ -268,8 +268,29 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
             computeGlare(*scene, areas[i].area, settings, r, s->context());
             if (ctx.isCancelled()) return data;
         }
-        if (r.requirement)
-            r.checks = checkRequirements(*r.requirement, taskAreaFigures(r, maintainedValues));
+        if (wantsCylindrical(r)) {
+            {
+                auto s = stage(1.0);
+                computeCylindrical(scene, areas[i].area, settings, r, s->context());
+            }
+            if (ctx.isCancelled()) return data;
+        }
+        if (r.roomSurfaces && !roomDone[*r.roomSurfaces]) {
+            {
+                auto s = stage(1.0);
+                computeWallsAndCeiling(scene, areas[i].area, data.roomSurfaces[*r.roomSurfaces], s->context());
+            }
+            if (ctx.isCancelled()) return data;
+            roomDone[*r.roomSurfaces] = true;
+        }
+        if (!r.zones.empty()) {
+            {
+                auto s = stage(zoneShare);
+                computeZones(scene, settings, maintainedValues, r, s->context());
+            }
+            if (ctx.isCancelled()) return data;
+        }
+        checkArea(r, data.roomSurfaces, maintainedValues);
         if (daylightFactor) {
             DaylightFactorReport df;
             {
@@ -280,6 +301,7 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
             r.daylightFactor = std::move(df);
         }
     }
+    if (data.rooms) addRoomIlluminance(*data.rooms, data.roomSurfaces);
     if (settings.renders) {
         ReportRenders renders;
         {

@@ -1,7 +1,8 @@
 #pragma once
 // Computes what a report states (report_data.h) from a scene: the schedule, each task area's grid
 // (by `lucerna grid`'s path, computeSceneGrid, so that the same settings give the same figures),
-// its checks against EN 12464-1 and its observers' UGR, and the renders. Runs as a background
+// its checks against EN 12464-1 and its observers' UGR, the 2021 edition's Ez, walls, ceiling and
+// zones as its requirement and keys ask (area_extras.h), and the renders. Runs as a background
 // job: progress and cancellation through the TaskContext.
 
 #include "core/task_system.h"

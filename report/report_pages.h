@@ -11,8 +11,8 @@ namespace lucerna {
 
 void addCoverPage(PageFlow& flow, const ReportData& data);
 void addSchedulePage(PageFlow& flow, const ReportData& data);
-// The room's dimensions, main surfaces, maintenance and load (room_summary_page.cpp); none
-// without data.room.
+// The room's dimensions, main surfaces, maintenance and load (room_summary_page.cpp); for a scene
+// with rooms (data.rooms), room by room; none without either.
 void addRoomSummaryPage(PageFlow& flow, const ReportData& data);
 // A page (or two) per luminaire type: its figures, polar diagram and UGR tables (data_sheet_pages.cpp).
 void addDataSheetPages(PageFlow& flow, const ReportData& data);
@@ -23,6 +23,9 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& area
 // the daylight factor.
 void addPlan(PageFlow& flow, const ReportData& data, const AreaReport& area, PlanValues values, double maxHeight);
 void addDaylightFactor(PageFlow& flow, const ReportData& data, const AreaReport& area);
+// Ez, the walls and ceiling of its room and its zones, with the modelling ratio
+// (area_extras_section.cpp); nothing where none was computed.
+void addAreaExtras(PageFlow& flow, const ReportData& data, const AreaReport& area);
 void addRendersPage(PageFlow& flow, const ReportData& data);
 void addMethodPage(PageFlow& flow, const ReportData& data);
 

@@ -25,19 +25,13 @@ bool hasDiffusePart(const Material& m) { return m.type == MaterialType::Diffuse 
 
 }  // namespace
 
-RoomSummary roomSummary(const Scene& scene, const Schedule& schedule) {
-    RoomSummary r;
+std::array<MainSurface, 3> mainSurfaces(const Scene& scene, const std::function<bool(const Object&)>& include) {
     const double mpu = scene.metersPerUnit, m2 = mpu * mpu;
-    const SceneBounds b = sceneBounds(scene);
-    r.widthM = (b.hi.x - b.lo.x) * mpu;
-    r.depthM = (b.hi.z - b.lo.z) * mpu;
-    r.heightM = (b.hi.y - b.lo.y) * mpu;
-
     // Area per material per facing, m².
     std::array<std::map<std::string, double>, 3> areas;
     for (const Object& o : scene.objects) {
         const Material* m = scene.findMaterial(o.material);
-        if (!m || !hasDiffusePart(*m) || !o.worldMesh) continue;
+        if (!m || !hasDiffusePart(*m) || !o.worldMesh || !include(o)) continue;
         const TriangleMesh& mesh = *o.worldMesh;
         for (const V3i& t : mesh.triangles) {
             const V3d& a = mesh.vertices[size_t(t.x)];
@@ -47,9 +41,10 @@ RoomSummary roomSummary(const Scene& scene, const Schedule& schedule) {
             areas[facingOf(n / twice)][m->name] += 0.5 * twice * m2;
         }
     }
+    std::array<MainSurface, 3> surfaces;
     const char* roles[3] = {"Floor", "Walls", "Ceiling"};
     for (int f = 0; f < 3; ++f) {
-        MainSurface& s = r.surfaces[size_t(f)];
+        MainSurface& s = surfaces[size_t(f)];
         s.role = roles[f];
         for (const auto& [name, area] : areas[size_t(f)]) {
             s.facingAreaM2 += area;
@@ -57,6 +52,17 @@ RoomSummary roomSummary(const Scene& scene, const Schedule& schedule) {
         }
         if (const Material* m = scene.findMaterial(s.material)) s.reflectance = luminance(m->albedo);
     }
+    return surfaces;
+}
+
+RoomSummary roomSummary(const Scene& scene, const Schedule& schedule) {
+    RoomSummary r;
+    const double mpu = scene.metersPerUnit;
+    const SceneBounds b = sceneBounds(scene);
+    r.widthM = (b.hi.x - b.lo.x) * mpu;
+    r.depthM = (b.hi.z - b.lo.z) * mpu;
+    r.heightM = (b.hi.y - b.lo.y) * mpu;
+    r.surfaces = mainSurfaces(scene, [](const Object&) { return true; });
 
     r.maintenance = maintenanceRange(scene);
     r.sceneMaintenance = scene.maintenance;

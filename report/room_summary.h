@@ -6,6 +6,7 @@
 #include "core/scene/scene.h"
 
 #include <array>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,9 @@ struct RoomSummary {
     int withoutWatts = 0;                        // lights that state none
     double floorAreaM2 = 0;                      // the schedule's (the extent in plan)
 };
+
+// The floor, walls and ceiling by that rule, among the objects `include` accepts (all: the summary's).
+std::array<MainSurface, 3> mainSurfaces(const Scene& scene, const std::function<bool(const Object&)>& include);
 
 // The summary of `scene` (as loaded: its meshes in world space) with `schedule`'s lights.
 RoomSummary roomSummary(const Scene& scene, const Schedule& schedule);

@@ -1,5 +1,6 @@
 // The lighting designer's keys of a scene file: maintenance factors, task areas with their
-// activities and glare observers, and the project's details for the report.
+// activities and glare observers, the EN 12464-1 edition they are checked against, and the
+// project's details for the report.
 
 #include "core/scene/scene_parser.h"
 
@@ -31,7 +32,8 @@ MaintenanceFactor SceneParser::parseMaintenance(const Value& v, const std::strin
 }
 
 TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const {
-    checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "surrounding_m", "background_m", "observers"});
+    checkKeys(v, place, {"name", "corner", "u", "v", "spacing", "activity", "surrounding_m", "background_m", "posture",
+                         "observers"});
     TaskArea a;
     const std::string namePlace = member(place, "name");
     a.grid.name = text(required(v, place, "name"), namePlace);
@@ -48,7 +50,7 @@ TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, co
         a.grid.spacingMeters = numberIn(*sp, member(place, "spacing"), 0, true, 1e6, false, " m");
     if (const Value* act = v.find("activity")) {
         a.activity = text(*act, member(place, "activity"));
-        if (!findActivity(a.activity))
+        if (!findActivity(a.activity, StandardEdition::En12464_2021))  // either table
             fail(member(place, "activity"), "unknown activity " + quote(a.activity) +
                                                 " (expected a reference number of EN 12464-1's table: `lucerna standards` lists them)");
     }
@@ -60,6 +62,13 @@ TaskArea SceneParser::parseTaskArea(const Value& v, const std::string& place, co
         a.backgroundMeters = numberIn(*w, member(place, "background_m"), 3, false, 1000, false, " m");
         if (!a.surroundingMeters)
             fail(member(place, "background_m"), "needs surrounding_m (the background area lies around the surrounding zone)");
+    }
+    // EN 12464-1:2021's Ez height: 1.2 m above the floor seated, 1.6 m standing.
+    if (const Value* p = v.find("posture")) {
+        const std::string posture = text(*p, member(place, "posture"));
+        if (posture == "standing") a.standing = true;
+        else if (posture != "seated")
+            fail(member(place, "posture"), "unknown posture " + quote(posture) + " (expected \"seated\" or \"standing\")");
     }
     if (const Value* obs = v.find("observers")) {
         const std::string here = member(place, "observers");
@@ -87,6 +96,15 @@ ProjectInfo SceneParser::parseProject(const Value& v, const std::string& place) 
     field("designer", p.designer);
     field("notes", p.notes);
     return p;
+}
+
+StandardEdition SceneParser::parseLightingStandard(const Value& v, const std::string& place) const {
+    const std::string name = text(v, place);
+    const std::optional<StandardEdition> edition = standardEditionFromName(name);
+    if (!edition)
+        fail(place, "unknown edition " + quote(name) + " (expected " + quote(standardEditionName(StandardEdition::En12464_2021)) +
+                        " or " + quote(standardEditionName(StandardEdition::En12464_2011)) + ")");
+    return *edition;
 }
 
 EnergySettings SceneParser::parseEnergy(const Value& v, const std::string& place) const {

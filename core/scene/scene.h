@@ -6,6 +6,7 @@
 #include "core/photometry/lighting_energy.h"
 #include "core/math.h"
 #include "core/photometry/photometric_units.h"
+#include "core/photometry/standard_edition.h"
 
 #include <memory>
 #include <optional>
@@ -234,11 +235,14 @@ struct TaskArea {
     std::vector<GlareObserver> observers;
     std::optional<double> surroundingMeters;  // "surrounding_m"; absent: no surrounding zone
     std::optional<double> backgroundMeters;   // "background_m"; absent: no background area
+    // "posture": "standing" puts the cylindrical illuminance at 1.6 m above the floor instead of
+    // seated's 1.2 m (EN 12464-1:2021, 5.2.6); written back only when standing.
+    bool standing = false;
     bool operator==(const TaskArea& o) const {
         return grid.name == o.grid.name && grid.corner == o.grid.corner && grid.edgeU == o.grid.edgeU &&
                grid.edgeV == o.grid.edgeV && grid.spacingMeters == o.grid.spacingMeters && activity == o.activity &&
                observers == o.observers && surroundingMeters == o.surroundingMeters &&
-               backgroundMeters == o.backgroundMeters;
+               backgroundMeters == o.backgroundMeters && standing == o.standing;
     }
 };
 
@@ -285,6 +289,9 @@ struct Scene {
     std::optional<Sky> sky;
     // Additions (README, "Maintained values", "Task areas", "Reports").
     std::optional<MaintenanceFactor> maintenance;  // every electric light's without its own
+    // "lighting_standard": the EN 12464-1 edition task areas are checked against; absent:
+    // kDefaultStandardEdition (and nothing written back).
+    std::optional<StandardEdition> lightingStandard;
     std::vector<TaskArea> taskAreas;
     std::optional<ProjectInfo> project;
     std::optional<EnergySettings> energy;  // README, "Energy (LENI)"; absent: LENI not computed
@@ -297,7 +304,7 @@ struct Scene {
     bool operator==(const Scene& s) const {
         return version == s.version && metersPerUnit == s.metersPerUnit && camera == s.camera &&
                materials == s.materials && objects == s.objects && lights == s.lights && site == s.site &&
-               sky == s.sky && maintenance == s.maintenance && taskAreas == s.taskAreas && project == s.project &&
+               sky == s.sky && maintenance == s.maintenance && lightingStandard == s.lightingStandard && taskAreas == s.taskAreas && project == s.project &&
                energy == s.energy && rooms == s.rooms;
     }
 };
@@ -310,6 +317,10 @@ using SceneSnapshot = std::shared_ptr<const Scene>;
 // what renders from a scene (the tracing backends, the preview, the grids) goes through it.
 SceneSnapshot withoutLightsSwitchedOff(SceneSnapshot scene);
 
+// The edition the scene's task areas are checked against: its own, else kDefaultStandardEdition.
+inline StandardEdition lightingStandardOf(const Scene& scene) {
+    return scene.lightingStandard.value_or(kDefaultStandardEdition);
+}
 // A light's maintenance factor (its own, else the scene's, else 1); daylight (sun, directional)
 // has none: 1. Emitter materials take the scene's.
 double maintenanceFactor(const Scene& scene, const Light& light);

@@ -93,6 +93,8 @@ private:
     // and its glare observers.
     TaskArea parseTaskArea(const Value& v, const std::string& place, const std::vector<TaskArea>& earlier) const;
     ProjectInfo parseProject(const Value& v, const std::string& place) const;
+    // "lighting_standard" (README, "Task areas"): "EN 12464-1:2021" or "EN 12464-1:2011".
+    StandardEdition parseLightingStandard(const Value& v, const std::string& place) const;
     // Rooms (room_keys.cpp; README, "Rooms"): a room's name, outline, levels, materials and
     // openings (core/scene/room_geometry.h's roomProblem), its name unique among rooms; after
     // the objects, that every room without an outline has objects tagged with it.

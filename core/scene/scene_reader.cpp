@@ -31,7 +31,7 @@ Scene SceneParser::parse(const Value& root) {
     const double v = integer(version, "lucerna");
     if (v != 1) fail("lucerna", "unsupported format version " + shortestNumber(v) + " (this reader reads version 1)");
     checkKeys(root, top, {"lucerna", "meters_per_unit", "camera", "materials", "objects", "lights", "site", "sky",
-                         "maintenance_factor", "task_areas", "project", "energy", "rooms"});
+                         "maintenance_factor", "lighting_standard", "task_areas", "project", "energy", "rooms"});
     scene.version = 1;
     if (const Value* mpu = root.find("meters_per_unit")) {
         scene.metersPerUnit = number(*mpu, "meters_per_unit");
@@ -60,6 +60,8 @@ Scene SceneParser::parse(const Value& root) {
     if (const Value* sky = root.find("sky")) scene.sky = parseSky(*sky, "sky");
     checkDaylight(scene);
     if (const Value* mf = root.find("maintenance_factor")) scene.maintenance = parseMaintenance(*mf, "maintenance_factor");
+    if (const Value* standard = root.find("lighting_standard"))
+        scene.lightingStandard = parseLightingStandard(*standard, "lighting_standard");
     if (const Value* areas = root.find("task_areas")) {
         expectType(*areas, Type::Array, "task_areas");
         for (size_t i = 0; i < areas->array.size(); ++i)

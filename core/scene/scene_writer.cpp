@@ -214,6 +214,7 @@ std::string taskArea(const TaskArea& a) {
     if (!a.activity.empty()) out += ", \"activity\": " + str(a.activity);
     if (a.surroundingMeters) out += ", \"surrounding_m\": " + num(*a.surroundingMeters);
     if (a.backgroundMeters) out += ", \"background_m\": " + num(*a.backgroundMeters);
+    if (a.standing) out += ", \"posture\": \"standing\"";
     if (!a.observers.empty()) {
         out += ",\n     \"observers\": [";
         for (size_t i = 0; i < a.observers.size(); ++i)
@@ -317,6 +318,7 @@ std::string saveSceneToString(const Scene& scene) {
     if (scene.site) out += ",\n  \"site\": " + site(*scene.site);
     if (scene.sky) out += ",\n  \"sky\": " + sky(*scene.sky);
     if (scene.maintenance) out += ",\n  \"maintenance_factor\": " + maintenance(*scene.maintenance);
+    if (scene.lightingStandard) out += ",\n  \"lighting_standard\": " + str(standardEditionName(*scene.lightingStandard));
     if (!scene.taskAreas.empty()) {
         out += ",\n  \"task_areas\": [";
         for (size_t i = 0; i < scene.taskAreas.size(); ++i) out += (i ? ",\n    " : "\n    ") + taskArea(scene.taskAreas[i]);

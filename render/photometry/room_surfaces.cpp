@@ -94,7 +94,8 @@ SurfaceFigures combinedSurfaceFigures(const std::vector<const RoomSurfaceGrid*>&
 }
 
 RoomSurfaceResult computeRoomSurfaces(const SceneSnapshot& scene, const V3d& lo, const V3d& hi,
-                                      const GridSettings& requested, TaskContext& ctx) {
+                                      const GridSettings& requested, TaskContext& ctx, double progressBase,
+                                      double progressShare) {
     const auto start = std::chrono::steady_clock::now();
     GridSettings settings = requested;
     settings.quantity = GridQuantity::Planar;
@@ -106,7 +107,7 @@ RoomSurfaceResult computeRoomSurfaces(const SceneSnapshot& scene, const V3d& lo,
         TaskContext part(ctx.token());
         out.results.push_back(computeGridIlluminance(renderScene, out.grids[g].points, out.grids[g].grid.normal(),
                                                      settings, part, [&](const GridResult&) {
-                                                         ctx.setProgress((double(g) + part.progress()) / count);
+                                                         ctx.setProgress(progressBase + progressShare * (double(g) + part.progress()) / count);
                                                      }));
     }
     out.complete = out.results.size() == out.grids.size() && !ctx.isCancelled();

@@ -55,7 +55,8 @@ SurfaceFigures combinedSurfaceFigures(const std::vector<const RoomSurfaceGrid*>&
 
 // The walls' and the ceiling's figures of a scene as rendered (computeSceneGrid's scene: lights
 // switched off left out, maintenance factors applied), each grid computed with `settings`
-// (quantity planar) in turn; progress in ctx over the five grids. Cancelled: what was computed.
+// (quantity planar) in turn; progress in ctx over the five grids, mapped onto [progressBase,
+// progressBase + progressShare]. Cancelled: what was computed.
 struct RoomSurfaceResult {
     std::vector<RoomSurfaceGrid> grids;
     std::vector<GridResult> results;  // one per grid (fewer when cancelled)
@@ -64,6 +65,7 @@ struct RoomSurfaceResult {
     bool complete = false;
 };
 RoomSurfaceResult computeRoomSurfaces(const SceneSnapshot& scene, const V3d& lo, const V3d& hi,
-                                      const GridSettings& settings, TaskContext& ctx);
+                                      const GridSettings& settings, TaskContext& ctx, double progressBase = 0,
+                                      double progressShare = 1);
 
 }  // namespace lucerna

@@ -21,6 +21,7 @@
 #include "window_test_helpers.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -392,8 +393,9 @@ private slots:
     void taskAreasAreComputedAndChecked() {
         for (const bool maintained : {true, false}) {
             std::string json = cabinetSceneJson();
+            // Checked against the 2011 edition, which asks no Ez, walls or ceiling (2021's: test_grid_panel_extras).
             json.insert(json.rfind('}'), std::string(maintained ? R"(, "maintenance_factor": 0.8)" : "") +
-                                             R"(, "task_areas": [{"name": "desk", "corner": [-1.5, 0.8, 1.5], "u": [1, 0, 0],
+                                             R"(, "lighting_standard": "EN 12464-1:2011", "task_areas": [{"name": "desk", "corner": [-1.5, 0.8, 1.5], "u": [1, 0, 0],
                                              "v": [0, 0, -1], "spacing": 0.25, "activity": "5.26.2"}])");
             const QString path = dir_.filePath(maintained ? "task-maintained.json" : "task-new.json");
             std::ofstream(path.toStdString()) << json;
@@ -411,6 +413,7 @@ private slots:
             QVERIFY(!child<QDoubleSpinBox>(*panel, "gridSpacing")->isEnabled());
             QCOMPARE(child<QDoubleSpinBox>(*panel, "gridSpacing")->value(), 0.25);  // the area's own
             QVERIFY(child<QLabel>(*panel, "gridArea")->text().contains("Task area 'desk': EN 12464-1:2011 5.26.2"));
+            QVERIFY(!child<QCheckBox>(*panel, "gridCylindrical")->isChecked() && !child<QCheckBox>(*panel, "gridRoomSurfaces")->isChecked());
             auto* method = child<QComboBox>(*panel, "gridMethod");
             method->setCurrentIndex(method->findText("path"));
             child<QDoubleSpinBox>(*panel, "gridTarget")->setValue(5);

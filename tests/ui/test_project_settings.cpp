@@ -2,11 +2,16 @@
 // designer and notes and the scene's maintenance factor (none, one number or CIE 97's four
 // factors, once filled by the assistant) are set by one OK, one undo step; undo restores the
 // scene; Cancel changes nothing; setting none says that Em is left unchecked. The light panel's
-// own maintenance factor: the scene's, or one number, one undo step per edit. Screenshots of the
-// dialog, the assistant and the light panel go to the working directory.
+// own maintenance factor: the scene's, or one number, one undo step per edit. The Standard tab's
+// EN 12464-1 edition, in the same undo step as the rest, followed by the task area's page.
+// Screenshots of the dialog, the assistant and the light panel go to the working directory.
 
 #include "core/photometry/maintenance_assistant.h"
+#include "core/scene/scene_io.h"
 #include "ui/properties/light_properties.h"
+#include "ui/properties/properties_panel.h"
+#include "ui/properties/task_area_fields.h"
+#include "ui/properties/task_area_properties.h"
 #include "ui/scene_panels/maintenance_assistant_dialog.h"
 #include "ui/scene_panels/maintenance_factor_edit.h"
 #include "ui/scene_panels/outliner.h"
@@ -251,6 +256,84 @@ private slots:
         QCOMPARE(*mf->luminaireMaintenance, 0.9);
         QCOMPARE(*mf->roomSurfaceMaintenance, 0.95);
         QVERIFY(std::abs(mf->factor() - 0.9 * 0.9 * 0.95) < 1e-12);
+    }
+
+    // The Standard tab: absent, the scene is checked against 2021 (an activity its bundled table
+    // lacks says it falls back to 2011); 2011 chosen with a project name is one step, written to
+    // the file, undone as one; the selected task area's page follows each change.
+    void editionIsOneStepWithTheRest() {
+        MainWindow w(interiorPath());
+        w.setSaveQuestion([] { return QMessageBox::Discard; });
+        w.resize(1400, 900);
+        w.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&w));
+        Document* doc = w.document();
+        TaskArea archive;
+        archive.grid.name = "filing";
+        archive.grid.corner = V3d(0, 0.8, 0);
+        archive.grid.edgeU = V3d(1, 0, 0);
+        archive.grid.edgeV = V3d(0, 0, -1);
+        archive.activity = "5.26.1";  // not among the bundled 2021 entries
+        doc->insertTaskArea(0, archive);
+        w.outliner()->select(Outliner::Kind::TaskArea, 0);
+        TaskAreaFields* f = w.propertiesPanel()->taskAreaProperties()->fields();
+        auto* requirement = f->findChild<QLabel*>("taskAreaRequirement");
+        const QString filing2011 = "EN 12464-1:2011 5.26.1, Offices: Filing, copying, etc.: Em 300 lx, U0 0.40, UGR_L 19, Ra 80";
+        QVERIFY(!doc->scene().lightingStandard);
+        QCOMPARE(requirement->text(), filing2011 + " (EN 12464-1:2021 asked; its table here lacks this activity)");
+        QCOMPARE(f->activityField()->currentText(), QString("5.26.1 Filing, copying, etc. (2011)"));
+        QCOMPARE(f->activityField()->itemText(f->activityField()->findData("5.26.2")),
+                 QString("5.26.2 Writing, typing, reading, data processing"));  // bundled: no mark
+        const int steps = doc->undoStack()->count();
+        withProjectDialog(w, [](ProjectDialog* dialog) {
+            QCOMPARE(dialog->tabs()->tabText(2), QString("Standard"));
+            dialog->tabs()->setCurrentIndex(2);
+            auto* edition = dialog->findChild<QComboBox*>("lightingStandard");
+            QCOMPARE(edition->currentText(), QString("EN 12464-1:2021"));  // absent: the default
+            const QString help = dialog->findChild<QLabel*>("standardHelp")->text();
+            QVERIFY2(help.contains("5.26.2 Writing, typing, reading, data processing") && help.contains("2011 figures"),
+                     qPrintable(help));
+            QCoreApplication::processEvents();  // laid out as shown
+            QVERIFY(dialog->grab().save("project_dialog_standard.png"));
+            choose(edition, edition->findText("EN 12464-1:2011"));
+            dialog->tabs()->setCurrentIndex(0);
+            typeText(dialog->findChild<QLineEdit*>("projectName"), "Archive wing");
+            press(dialog, QDialogButtonBox::Ok);
+        });
+        QCOMPARE(doc->undoStack()->count(), steps + 1);
+        QVERIFY(doc->scene().lightingStandard == StandardEdition::En12464_2011);
+        QCOMPARE(doc->scene().project->name, std::string("Archive wing"));
+        QVERIFY(saveSceneToString(doc->scene()).find(R"("lighting_standard": "EN 12464-1:2011")") != std::string::npos);
+        QCOMPARE(requirement->text(), filing2011);
+        QCOMPARE(f->activityField()->currentText(), QString("5.26.1 Filing, copying, etc."));
+        doc->undoStack()->undo();
+        QVERIFY(!doc->scene().lightingStandard && !doc->scene().project);
+        QVERIFY(requirement->text().endsWith("(EN 12464-1:2021 asked; its table here lacks this activity)"));
+        doc->undoStack()->redo();
+        QCOMPARE(requirement->text(), filing2011);
+
+        // Back to 2021, now written as chosen; OK without a change is no step.
+        withProjectDialog(w, [](ProjectDialog* dialog) {
+            auto* edition = dialog->findChild<QComboBox*>("lightingStandard");
+            QCOMPARE(edition->currentText(), QString("EN 12464-1:2011"));
+            choose(edition, edition->findText("EN 12464-1:2021"));
+            press(dialog, QDialogButtonBox::Ok);
+        });
+        QCOMPARE(doc->undoStack()->count(), steps + 2);
+        QVERIFY(doc->scene().lightingStandard == StandardEdition::En12464_2021);
+        withProjectDialog(w, [](ProjectDialog* dialog) { press(dialog, QDialogButtonBox::Ok); });
+        QCOMPARE(doc->undoStack()->count(), steps + 2);
+        // A bundled 2021 entry chosen on the page: its line has the 2021 figures.
+        QComboBox* areas = f->activityAreaField();
+        choose(areas, areas->findText("Offices"));
+        choose(f->activityField(), f->activityField()->findData("5.26.2"));
+        QCOMPARE(doc->scene().taskAreas[0].activity, std::string("5.26.2"));
+        QVERIFY2(requirement->text().startsWith("EN 12464-1:2021 5.26.2, Offices: Writing, typing, reading, data processing: "
+                                                "Em 500 lx (Em,u 1000 lx)") &&
+                     requirement->text().endsWith("Eceiling 100 lx (U0 0.10)"),
+                 qPrintable(requirement->text()));
+        QCoreApplication::processEvents();  // laid out as shown
+        QVERIFY(w.propertiesPanel()->grab().save("task_area_page_2021.png"));
     }
 
     // The light panel: the scene's factor by default; one number is one step, the number typed

@@ -343,8 +343,10 @@ private slots:
             dialog->findChild<QTableWidget*>("roomCorners")->selectRow(3);
             dialog->findChild<QPushButton*>("roomAddCorner")->click();
             QCOMPARE(dialog->cornerField(4, 0)->value(), -5.0);
-            typeAndTab(dialog->cornerField(4, 0), 2);
+            // z first: Tab from x goes on to z of the same corner, which stays chosen (Tab from the
+            // table's last field goes round to the first corner, as in any table).
             typeAndTab(dialog->cornerField(4, 1), 8);
+            typeAndTab(dialog->cornerField(4, 0), 2);
             pressOk(dialog);
             QVERIFY(dialog->isVisible());
             QVERIFY2(dialog->findChild<QLabel*>("roomSummary")->text().contains("crosses itself"),

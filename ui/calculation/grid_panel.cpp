@@ -12,6 +12,7 @@
 #include "render/photometry/grid_text.h"
 #include "ui/calculation/ugr_table.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QSignalBlocker>
 #include <QDoubleSpinBox>
@@ -42,6 +43,8 @@ QStringList text(const std::vector<std::string>& lines) {
     return list;
 }
 
+QString outOfDateText() { return GridPanel::tr("The scene changed since this result: Compute again to update it."); }
+
 QDoubleSpinBox* lengthField(QWidget* parent, const char* name, double value, double lo, double hi, const QString& suffix) {
     return makeNumberField(parent, name, value, lo, hi, suffix, 2, 0.05);
 }
@@ -70,6 +73,15 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     quantity_->setItemData(kUgr, tr("An observer over each point at eye height, looking along the grid (CIE 117), "
                                     "for the new installation"),
                            Qt::ToolTipRole);
+    cylindrical_ = new QCheckBox(tr("Cylindrical illuminance (Ez)"), this);
+    cylindrical_->setObjectName("gridCylindrical");
+    cylindrical_->setToolTip(tr("After the Em grid: the mean cylindrical illuminance over the task area at 1.2 m "
+                                "above the floor (seated) or 1.6 m (standing), EN 12464-1:2021. Task areas only: "
+                                "a drawn rectangle or the whole room has no posture"));
+    roomSurfaces_ = new QCheckBox(tr("Walls and ceiling"), this);
+    roomSurfaces_->setObjectName("gridRoomSurfaces");
+    roomSurfaces_->setToolTip(tr("After the Em grid: the average illuminance of the walls and of the ceiling of the "
+                                 "task area's room (else the scene's bounds), EN 12464-1:2021. Task areas only"));
     eyeHeight_ = new QComboBox(this);
     eyeHeight_->setObjectName("gridEyeHeight");
     eyeHeight_->addItem(tr("Seated, 1.2 m"), 1.2);
@@ -129,6 +141,10 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     form->addRow(tr("Error bar (95%)"), target_);
     form->addRow(tr("Estimator"), method_);
     form->addRow(tr("Quantity"), quantity_);
+    auto* extras = new QVBoxLayout;
+    extras->addWidget(cylindrical_);
+    extras->addWidget(roomSurfaces_);
+    form->addRow(tr("Also compute"), extras);
     form->addRow(tr("UGR observers' eyes"), eyeHeight_);
     form->addRow(tr("UGR observers look"), viewAlong_);
     auto* buttons = new QHBoxLayout;
@@ -166,13 +182,20 @@ void GridPanel::quantityChanged() {
     eyeHeight_->setEnabled(ugr);
     viewAlong_->setEnabled(ugr);
     height_->setEnabled(!ugr && !taskArea_);  // the eyes stand at their own height above the floor
+    enableExtras();
+}
+
+void GridPanel::enableExtras() {
+    const bool on = taskArea_ && quantity_->currentIndex() == kIlluminance;
+    cylindrical_->setEnabled(on);
+    roomSurfaces_->setEnabled(on);
 }
 
 void GridPanel::sceneChanged() {
     if (!(shown_ || shownGlare_) || stale_ || !resultScene_) return;
     if (!diff(*resultScene_, doc_->scene()).changesIlluminance()) return;  // the camera moved, say
     stale_ = true;
-    status_->setText(tr("The scene changed since this result: Compute again to update it."));
+    status_->setText(outOfDateText());
 }
 
 void GridPanel::listTaskAreas() {
@@ -209,9 +232,9 @@ void GridPanel::useTaskArea(int index) {
     const TaskArea& t = areas[size_t(index)];
     drawn_.reset();
     taskArea_ = t.grid.name;
-    const ActivityRequirement* activity = t.activity.empty() ? nullptr : findActivity(t.activity);
+    const ActivityRequirement* activity = t.activity.empty() ? nullptr : findActivity(t.activity, lightingStandardOf(doc_->scene()));
     area_->setText(activity ? tr("Task area '%1': %2").arg(QString::fromStdString(t.grid.name),
-                                                            QString::fromStdString(describeRequirement(*activity)))
+                                                            QString::fromStdString(describeRequirement(*activity, lightingStandardOf(doc_->scene()))))
                             : tr("Task area '%1' (no activity: nothing to check)").arg(QString::fromStdString(t.grid.name)));
     wholeRoom_->setEnabled(true);
     border_->setEnabled(false);
@@ -219,6 +242,10 @@ void GridPanel::useTaskArea(int index) {
     if (spacing_->isEnabled()) userSpacing_ = spacing_->value();
     spacing_->setValue(t.grid.spacingMeters.value_or(0));  // its own (0: the rule), shown as it is used
     spacing_->setEnabled(false);
+    const TaskAreaExtrasRequest asked = extrasFor(activity);  // the designer may add or leave them out
+    cylindrical_->setChecked(asked.cylindrical);
+    roomSurfaces_->setChecked(asked.roomSurfaces);
+    enableExtras();
     const QSignalBlocker quiet(areaChoice_);
     areaChoice_->setCurrentIndex(index + 1);
 }
@@ -228,6 +255,9 @@ void GridPanel::leaveTaskArea() {
     height_->setEnabled(quantity_->currentIndex() != kUgr);
     if (!spacing_->isEnabled()) spacing_->setValue(userSpacing_);
     spacing_->setEnabled(true);
+    cylindrical_->setChecked(false);  // not computed for these: unticked, not only greyed
+    roomSurfaces_->setChecked(false);
+    enableExtras();
     const QSignalBlocker quiet(areaChoice_);
     areaChoice_->setCurrentIndex(0);
 }
@@ -270,6 +300,8 @@ void GridPanel::compute() {
     CalculationGrid grid;
     requirement_ = nullptr;
     zones_ = {};
+    extras_ = {};
+    doneText_.clear();
     all_.reset();
     const TaskArea* area = nullptr;
     for (const TaskArea& t : current->taskAreas)  // the document's (the daylight-factor scene is derived)
@@ -277,7 +309,7 @@ void GridPanel::compute() {
     try {
         if (area) {
             grid = area->grid;  // its own spacing (EN 12464-1's rule unless given), as grid --task-area
-            if (!area->activity.empty()) requirement_ = findActivity(area->activity);
+            if (!area->activity.empty()) requirement_ = findActivity(area->activity, lightingStandardOf(*current));
         } else if (drawn_) {
             grid = gridFromCorners(drawn_->a, drawn_->normal, drawn_->b, scene->metersPerUnit, height_->value());
         } else {
@@ -287,7 +319,10 @@ void GridPanel::compute() {
         if (spacing_->value() > 0 && !area) grid.spacingMeters = spacing_->value();
         layout_ = layoutGrid(grid, scene->metersPerUnit);
         grid_ = grid;
-        if (area && quantity_->currentIndex() == kIlluminance) zones_ = ZoneFigures(*area, *current, layout_.points.size());
+        if (area && quantity_->currentIndex() == kIlluminance) {
+            zones_ = ZoneFigures(*area, *current, layout_.points.size());
+            extras_ = TaskAreaExtrasFigures(*area, *current, {cylindrical_->isChecked(), roomSurfaces_->isChecked()});
+        }
     } catch (const std::invalid_argument& e) {
         status_->setText(QString::fromStdString(e.what()));
         return;
@@ -306,6 +341,7 @@ void GridPanel::compute() {
     settings.autoMethod = method == kAutoMethod;
     if (!settings.autoMethod) settings.method = GridMethod(method);
     settings.targetRelativeError = target_->value() / 100.0;
+    settings_ = settings;
     latest_ = std::make_shared<Latest<GridResult>>();
     shownVersion_ = 0;
     stale_ = false;
@@ -365,8 +401,13 @@ void GridPanel::cancel() {
     poll_.stop();
     compute_->setEnabled(true);
     cancel_->setEnabled(false);
+    const bool extras = extras_.state() == TaskAreaExtrasFigures::State::Computing;
+    extras_.cancel();  // none of them shown, not even a cancelled job's partial figures
+    showFigures();
     if ((shown_ && !shown_->converged) || (shownGlare_ && !shownGlare_->converged))
         status_->setText(tr("Cancelled: the figures are those of the last pass."));
+    else if (extras)
+        status_->setText(doneText_ + "\n" + tr("Cancelled: the EN 12464-1:2021 figures are not computed."));
 }
 
 void GridPanel::poll() {
@@ -393,35 +434,55 @@ void GridPanel::poll() {
     if (!jobDone) return;
     poll_.stop();
     QString error;
-    try {
-        job_->rethrowIfFailed();
-    } catch (const std::exception& e) {
-        error = QString::fromStdString(e.what());
+    if (extras_.state() == TaskAreaExtrasFigures::State::Computing) {
+        extras_.finish(*job_);  // a failure is told in its lines
+        job_.reset();
+        showFigures();
+    } else {
+        try {
+            job_->rethrowIfFailed();
+        } catch (const std::exception& e) {
+            error = QString::fromStdString(e.what());
+        }
+        job_.reset();
+        if (shownGlare_)
+            doneText_ = tr("Done: %1 passes of the background, %2%3.")
+                            .arg(shownGlare_->passes)
+                            .arg(text(formatDuration(shownGlare_->seconds)))
+                            .arg(shownGlare_->converged ? QString() : tr(" (error target not reached)"));
+        else if (shown_)
+            doneText_ = tr("Done: %1 passes, %2 samples per point, %3.")
+                            .arg(shown_->passes)
+                            .arg(shown_->samplesPerPoint)
+                            .arg(text(formatDuration(shown_->seconds)));
+        if (error.isEmpty() && startExtras()) return;
+        extras_.cancel();  // the Em grid failed: not started
     }
-    job_.reset();
     compute_->setEnabled(true);
     cancel_->setEnabled(false);
     progress_->setValue(1000);
-    if (!error.isEmpty()) status_->setText(tr("The calculation failed: %1").arg(error));
-    else if (shownGlare_)
-        status_->setText(tr("Done: %1 passes of the background, %2%3.")
-                             .arg(shownGlare_->passes)
-                             .arg(text(formatDuration(shownGlare_->seconds)))
-                             .arg(shownGlare_->converged ? QString() : tr(" (error target not reached)")));
-    else if (shown_)
-        status_->setText(tr("Done: %1 passes, %2 samples per point, %3.")
-                             .arg(shown_->passes)
-                             .arg(shown_->samplesPerPoint)
-                             .arg(text(formatDuration(shown_->seconds))));
+    QString status = error.isEmpty() ? doneText_ : tr("The calculation failed: %1").arg(error);
+    if (!extras_.doneText().empty()) status += "\n" + tr("%1.").arg(text(extras_.doneText()));
+    if (stale_) status += "\n" + outOfDateText();  // changed while it ran
+    status_->setText(status);
     emit finished();
 }
 
-void GridPanel::showResult() {
+bool GridPanel::startExtras() {
+    if (extras_.state() != TaskAreaExtrasFigures::State::Waiting || !shown_ || !resultScene_) return false;
+    job_ = extras_.start(tasks_, resultScene_, settings_, gate_.counter());
+    progress_->setValue(0);
+    status_->setText(doneText_ + "\n" + tr("Computing %1...").arg(text(extras_.computingText())));
+    showFigures();
+    poll_.start();
+    return true;
+}
+
+void GridPanel::showFigures() {
     if (!shown_) return;
     // Daylight factor: every value is lux times 100 / Eh,sky, in %.
-    const double scale = dfPerLux_.value_or(1.0);
     std::vector<double> values = shown_->lux;
-    for (double& v : values) v *= scale;
+    for (double& v : values) v *= dfPerLux_.value_or(1.0);
     const GridStatistics s = gridStatistics(values, shown_->insideGeometry);
     QStringList lines;
     if (dfPerLux_) {
@@ -440,6 +501,7 @@ void GridPanel::showResult() {
                          .arg(l.minimumMargin, 0, 'f', 2);
     } else {
         lines << text(gridFiguresLine(s));
+        lines << text(extras_.lines(s));
         lines << maintenance_;
         lines << requirementLines(s);
         if (all_ && resultScene_) lines << text(zones_.lines(*all_, valuesAreMaintained(maintenanceRange(*resultScene_))));
@@ -448,6 +510,15 @@ void GridPanel::showResult() {
     lines << tr("method %1").arg(QString::fromLatin1(gridMethodName(shown_->method)));
     lines << text(gridErrorLines(*shown_, s.counted));
     figures_->setText(lines.join('\n'));
+}
+
+void GridPanel::showResult() {
+    if (!shown_) return;
+    showFigures();
+    const double scale = dfPerLux_.value_or(1.0);
+    std::vector<double> values = shown_->lux;
+    for (double& v : values) v *= scale;
+    const GridStatistics s = gridStatistics(values, shown_->insideGeometry);
     // Rows from the far side (largest j) down, as the plane is seen from above with u to the right.
     table_->setRowCount(layout_.nv);
     table_->setColumnCount(layout_.nu);
@@ -490,7 +561,8 @@ QStringList GridPanel::requirementLines(const GridStatistics& s) const {
     if (!shown_->errorBarUnknown) figures.gridErrors = gridErrorBars(s, shown_->lux, shown_->errorLux, shown_->insideGeometry);
     figures.colourRendering = statedColourRendering(*resultScene_);
     figures.maintainedValues = valuesAreMaintained(maintenanceRange(*resultScene_));
-    QStringList lines{QString::fromStdString(describeRequirement(*requirement_))};
+    extras_.addTo(figures);
+    QStringList lines{QString::fromStdString(describeRequirement(*requirement_, lightingStandardOf(*resultScene_)))};
     for (const RequirementCheck& c : checkRequirements(*requirement_, figures)) lines << "  " + QString::fromStdString(c.describe());
     return lines;
 }

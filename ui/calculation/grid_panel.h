@@ -18,13 +18,17 @@
 // activity's requirements checked under the figures (core/photometry/lighting_standards.h: met,
 // borderline within the error bar, not met; Em not checked without a maintenance factor). A task
 // area's surrounding zone and background area are computed with it and their figures and checks
-// follow its own (ui/calculation/zone_figures.h).
+// follow its own (ui/calculation/zone_figures.h). After a task area's Em grid, the figures
+// EN 12464-1:2021 adds (Ez at the posture's height, the room's walls and ceiling) are computed
+// as a second job, with progress and Cancel, where its requirement asks for them or the designer
+// ticks them (task areas only), and checked with the rest (ui/calculation/task_area_extras.h).
 
 #include "core/photometry/calculation_grid.h"
 #include "core/photometry/lighting_standards.h"
 #include "core/task_system.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/ugr_grid.h"
+#include "ui/calculation/task_area_extras.h"
 #include "ui/calculation/zone_figures.h"
 #include "ui/document/document.h"
 #include "ui/rendering/yield_gate.h"
@@ -36,6 +40,7 @@
 #include <optional>
 #include <string>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -60,6 +65,8 @@ public:
     // The grid becomes the scene's task area `index` (in Scene::taskAreas).
     void useTaskArea(int index);
     bool isComputing() const { return job_ != nullptr; }
+    // The running job is the task area's 2021 figures' (its Em grid has finished).
+    bool isComputingExtras() const { return job_ && extras_.state() == TaskAreaExtrasFigures::State::Computing; }
     // The scene changed since the shown result was computed in a way that changes its values.
     bool resultOutOfDate() const { return stale_; }
     // The newest result and its layout (null before the first pass of a calculation).
@@ -86,7 +93,11 @@ signals:
 
 private:
     void poll();
+    // The Em grid's job finished: the task area's 2021 figures start, if asked (true).
+    bool startExtras();
     void showResult();
+    // The figures' text of the shown result (showResult, and the 2021 figures' lines as they change).
+    void showFigures();
     void showGlareResult();
     void quantityChanged();
     void sceneChanged();
@@ -98,6 +109,8 @@ private:
     void areaChosen();
     // Back to the work plane or a drawn rectangle: the height and spacing fields are the user's again.
     void leaveTaskArea();
+    // The 2021 figures' boxes: for a task area's illuminance only.
+    void enableExtras();
     // The activity's checks on the shown result (none without a task area with an activity).
     QStringList requirementLines(const GridStatistics& s) const;
 
@@ -105,6 +118,7 @@ private:
     YieldGate gate_;
     QDoubleSpinBox *height_, *border_, *spacing_, *target_;
     QComboBox *method_, *quantity_, *eyeHeight_, *viewAlong_, *areaChoice_;
+    QCheckBox *cylindrical_, *roomSurfaces_;  // the task area's 2021 figures to compute
     QPushButton *compute_, *cancel_, *export_, *draw_, *wholeRoom_;
     QProgressBar* progress_;
     QLabel *area_, *figures_, *status_;
@@ -125,6 +139,9 @@ private:
     std::shared_ptr<TaskHandle> job_;
     std::shared_ptr<const GridResult> shown_;
     ZoneFigures zones_;                      // the chosen task area's zones (empty: none)
+    TaskAreaExtrasFigures extras_;           // its 2021 figures, after its Em grid
+    GridSettings settings_;                  // the Em grid's, for the 2021 figures
+    QString doneText_;                       // the Em grid's "Done: ..."
     std::shared_ptr<const GridResult> all_;  // with zones: the result over the task area's points and theirs
     uint64_t shownVersion_ = 0;
     SceneSnapshot resultScene_;  // the document's scene when the calculation started

@@ -26,7 +26,7 @@ GridResult part(const GridResult& all, size_t begin, size_t end) {
 ZoneFigures::ZoneFigures(const TaskArea& area, const Scene& scene, size_t taskPoints) : taskPoints_(taskPoints) {
     const SceneBounds room = sceneBounds(scene);
     const TaskAreaZones zones = taskAreaZones(area, scene.metersPerUnit, room.lo, room.hi);
-    const ActivityRequirement* activity = area.activity.empty() ? nullptr : findActivity(area.activity);
+    const ActivityRequirement* activity = area.activity.empty() ? nullptr : findActivity(area.activity, lightingStandardOf(scene));
     if (activity) taskEm_ = activity->maintainedLux;
     const auto add = [&](const char* name, double width, const ZoneGrid& grid, std::optional<ZoneRequirement> requirement) {
         Zone z{name, width, taskPoints_ + points_.size(), 0, requirement};

@@ -137,6 +137,7 @@ void Document::setProjectSettings(ProjectSettings settings) {
     modify([&](Scene& s) {
         s.project = std::move(settings.project);
         s.maintenance = std::move(settings.maintenance);
+        s.lightingStandard = settings.lightingStandard;
     });
     emit projectChanged();
 }

@@ -16,11 +16,13 @@
 namespace lucerna {
 
 // What File > Project Settings edits, as one value so that its OK is one undo step: the project's
-// details for the report (README, "Reports") and the scene's maintenance factor (README,
-// "Maintained values"); absent: none.
+// details for the report (README, "Reports"), the scene's maintenance factor (README,
+// "Maintained values") and the EN 12464-1 edition its task areas are checked against (README,
+// "Task areas"); absent: none (the edition: the default, and no key written).
 struct ProjectSettings {
     std::optional<ProjectInfo> project;
     std::optional<MaintenanceFactor> maintenance;
+    std::optional<StandardEdition> lightingStandard;
     bool operator==(const ProjectSettings&) const = default;
 };
 
@@ -58,7 +60,7 @@ public:
     const Camera& camera() const { return scene_->camera; }
     const std::optional<Site>& site() const { return scene_->site; }
     const std::optional<Sky>& sky() const { return scene_->sky; }
-    ProjectSettings projectSettings() const { return {scene_->project, scene_->maintenance}; }
+    ProjectSettings projectSettings() const { return {scene_->project, scene_->maintenance, scene_->lightingStandard}; }
     const std::optional<EnergySettings>& energy() const { return scene_->energy; }
 
     void setLight(int index, Light light);
@@ -109,7 +111,7 @@ signals:
     // must be rebuilt.
     void structureChanged();
     void pathChanged();
-    // The project settings (the project's details, the scene's maintenance factor).
+    // The project settings (the project's details, the scene's maintenance factor, the EN 12464-1 edition).
     void projectChanged();
     // The energy settings (setEnergy).
     void energyChanged();

@@ -29,6 +29,7 @@ namespace lucerna {
 
 namespace {
 constexpr int kObserverColumns = 6;  // x, y, z, view x, view y, view z
+constexpr int kNarrowLabelWidth = 230;  // px: a full-width note in a narrow properties dock
 
 QString exact(double v) { return QString::fromStdString(shortestNumber(v)); }
 
@@ -75,9 +76,7 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
                                           "is kept as the scene file gives it."));
     activityArea_ = new QComboBox(this);
     activityArea_->setObjectName("taskAreaActivityArea");
-    activityArea_->addItem(tr("None"));
-    for (const ActivityRequirement& a : en12464Activities())
-        if (activityArea_->findText(QString::fromUtf8(a.area)) < 0) activityArea_->addItem(QString::fromUtf8(a.area));
+    listAreas();
     activity_ = new QComboBox(this);
     activity_->setObjectName("taskAreaActivity");
     // Narrow enough for the properties dock: the lists' long names are read when opened.
@@ -87,6 +86,15 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
         box->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     }
     requirement_ = makeWrappingLabel(this, "taskAreaRequirement");
+    posture_ = new QComboBox(this);
+    posture_->setObjectName("taskAreaPosture");
+    posture_->addItem(tr("Seated"));
+    posture_->addItem(tr("Standing"));
+    posture_->setToolTip(tr("Where EN 12464-1:2021's cylindrical illuminance Ez is computed: 1.2 m above the floor "
+                            "for seated work, 1.6 m for standing"));
+    posture_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);  // as the activity's, for the dock
+    posture_->setMinimumContentsLength(8);
+    posture_->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
     spacing_ = makeSpin("taskAreaSpacing", 0, 100, 3, tr(" m"));
     spacing_->setToolTip(tr("The calculation grid's spacing; at its lowest, EN 12464-1's rule for the area's longer side"));
     surrounding_ = new QCheckBox(tr("Surrounding zone"), this);
@@ -130,6 +138,7 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
     form->addRow(tr("Area"), activityArea_);
     form->addRow(tr("Activity"), activity_);
     form->addRow(requirement_);
+    form->addRow(tr("Posture"), posture_);
     form->addRow(tr("Spacing"), spacing_);
     form->addRow(surrounding_, surroundingWidth_);
     form->addRow(surroundingNote_);
@@ -143,6 +152,16 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
     // Notes that change length keep room for two lines, so that none is squeezed over its neighbour.
     for (QLabel* note : {requirement_, surroundingNote_, backgroundNote_, observersNote_})
         note->setMinimumHeight(2 * note->fontMetrics().lineSpacing());
+    // A 2021 requirement line runs to several lines: room from the start for the longest of either
+    // edition at a narrow dock's width, since a dialog once shown does not grow for a longer one.
+    requirementReserve_ = requirement_->minimumHeight();
+    for (StandardEdition e : {StandardEdition::En12464_2011, StandardEdition::En12464_2021})
+        for (const ActivityRequirement* r : activitiesOf(e))
+            requirementReserve_ =
+                std::max(requirementReserve_, requirement_->fontMetrics()
+                                                  .boundingRect(QRect(0, 0, kNarrowLabelWidth, 100000), Qt::TextWordWrap,
+                                                                QString::fromStdString(describeRequirement(*r, e)))
+                                                  .height());
     form->addRow(observers_);
     form->addRow(observersNote_);
 
@@ -153,7 +172,7 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
         // The area the activity is already of: nothing changes (its list is shown).
         const QString area = activityArea_->currentIndex() == 0 ? QString() : activityArea_->currentText();
         const QString reference = activity_->isEnabled() ? activity_->currentData().toString() : QString();
-        const ActivityRequirement* now = reference.isEmpty() ? nullptr : findActivity(reference.toStdString());
+        const ActivityRequirement* now = reference.isEmpty() ? nullptr : findActivity(reference.toStdString(), edition_);
         if ((now ? QString::fromUtf8(now->area) : QString()) == area) return;
         listActivities(area);
         updateNotes();
@@ -163,6 +182,7 @@ TaskAreaFields::TaskAreaFields(QWidget* parent) : QWidget(parent) {
         updateNotes();
         discreteEdit(activity_);
     });
+    connect(posture_, &QComboBox::activated, this, [this] { discreteEdit(posture_); });
     for (QCheckBox* box : {surrounding_, background_})
         connect(box, &QCheckBox::toggled, this, [this, box] {
             updateNotes();
@@ -203,17 +223,28 @@ void TaskAreaFields::discreteEdit(const QObject* field) {
     emit finished();
 }
 
+void TaskAreaFields::listAreas() {
+    const QSignalBlocker quiet(activityArea_);
+    activityArea_->clear();
+    activityArea_->addItem(tr("None"));
+    for (const ActivityRequirement* a : activitiesOf(edition_))
+        if (activityArea_->findText(QString::fromUtf8(a->area)) < 0) activityArea_->addItem(QString::fromUtf8(a->area));
+}
+
 void TaskAreaFields::listActivities(const QString& area) {
     activity_->clear();
-    for (const ActivityRequirement& a : en12464Activities())
-        if (QString::fromUtf8(a.area) == area)
-            activity_->addItem(QStringLiteral("%1 %2").arg(QString::fromUtf8(a.reference), QString::fromUtf8(a.activity)),
-                               QString::fromUtf8(a.reference));
+    for (const ActivityRequirement* a : activitiesOf(edition_)) {
+        if (QString::fromUtf8(a->area) != area) continue;
+        // Under 2021, an activity its bundled table lacks is checked against the 2011 figures: say so.
+        const QString fallback = a->edition != edition_ ? tr(" (2011)") : QString();
+        activity_->addItem(QStringLiteral("%1 %2%3").arg(QString::fromUtf8(a->reference), QString::fromUtf8(a->activity), fallback),
+                           QString::fromUtf8(a->reference));
+    }
     activity_->setEnabled(activity_->count() > 0);
 }
 
 void TaskAreaFields::showActivity(const std::string& reference) {
-    const ActivityRequirement* a = reference.empty() ? nullptr : findActivity(reference);
+    const ActivityRequirement* a = reference.empty() ? nullptr : findActivity(reference, edition_);
     activityArea_->setCurrentIndex(a ? activityArea_->findText(QString::fromUtf8(a->area)) : 0);
     listActivities(a ? QString::fromUtf8(a->area) : QString());
     if (a) activity_->setCurrentIndex(activity_->findData(QString::fromUtf8(a->reference)));
@@ -232,6 +263,10 @@ void TaskAreaFields::setArea(const TaskArea& area, const Scene& scene) {
     base_ = area;
     metersPerUnit_ = scene.metersPerUnit;
     floorY_ = taskAreaFloor(scene);
+    if (lightingStandardOf(scene) != edition_) {
+        edition_ = lightingStandardOf(scene);
+        listAreas();
+    }
     const std::optional<PlanRectangle> r = planRectangle(area.grid);
     rectangleEditable_ = r.has_value();
     for (QDoubleSpinBox* s : {x_, z_, width_, depth_, height_}) s->setEnabled(rectangleEditable_);
@@ -260,6 +295,7 @@ void TaskAreaFields::setArea(const TaskArea& area, const Scene& scene) {
     name_->setText(QString::fromStdString(area.grid.name));
     shownName_ = QString::fromStdString(area.grid.name);
     showActivity(area.activity);
+    posture_->setCurrentIndex(area.standing ? 1 : 0);
     {
         const QSignalBlocker quiet(observers_);
         observers_->setRowCount(0);
@@ -320,6 +356,7 @@ TaskArea TaskAreaFields::area() const {
     a.surroundingMeters = band(surrounding_, surroundingWidth_, shown_.surrounding, base_.surroundingMeters);
     a.backgroundMeters = a.surroundingMeters ? band(background_, backgroundWidth_, shown_.background, base_.backgroundMeters)
                                              : std::nullopt;
+    a.standing = posture_->currentIndex() == 1;
     a.observers = observers(nullptr).value_or(base_.observers);
     return a;
 }
@@ -336,14 +373,14 @@ void TaskAreaFields::updateNotes() {
     const double longer = std::max(width_->value(), depth_->value());
     spacing_->setSpecialValueText(tr("EN 12464-1: %1 m").arg(en12464Spacing(longer), 0, 'f', 2));
     const QString reference = activity_->isEnabled() ? activity_->currentData().toString() : QString();
-    const ActivityRequirement* a = reference.isEmpty() ? nullptr : findActivity(reference.toStdString());
-    requirement_->setText(a ? tr("Required: Em %1 lx, U0 %2, UGR_L %3, Ra %4")
-                                  .arg(a->maintainedLux, 0, 'f', 0)
-                                  .arg(a->uniformity, 0, 'f', 2)
-                                  .arg(a->ugrLimit, 0, 'f', 0)
-                                  .arg(a->colourRendering, 0, 'f', 0)
+    const ActivityRequirement* a = reference.isEmpty() ? nullptr : findActivity(reference.toStdString(), edition_);
+    requirement_->setText(a ? QString::fromStdString(describeRequirement(*a, edition_))
                             : tr("No activity: nothing is checked."));
-    requirement_->setToolTip(a ? QString::fromStdString(describeRequirement(*a)) : QString());
+    // Room for this line at the width the label has once shown (a narrower dock than reserved for).
+    requirement_->setMinimumHeight(
+        std::max(requirementReserve_, requirement_->isVisible() ? requirement_->heightForWidth(requirement_->width()) : 0));
+    requirement_->setToolTip(tr("Checked against %1 (File > Project Settings > Standard)")
+                                 .arg(QString::fromUtf8(standardEditionName(edition_))));
     surroundingWidth_->setEnabled(surrounding_->isChecked());
     background_->setEnabled(surrounding_->isChecked());
     backgroundWidth_->setEnabled(surrounding_->isChecked() && background_->isChecked());

@@ -4,7 +4,9 @@
 // (ui/properties/task_area_properties.h): its name; its rectangle in the plan (the corner of
 // least x and z in the scene's unit, width along x and depth along z in metres) and the work
 // plane's height above the floor (the scene's lowest geometry) in metres; the activity, chosen by
-// area and activity from EN 12464-1's bundled table, with its requirements; the grid spacing
+// area and activity from EN 12464-1's bundled table of the scene's edition (2021: the 2021 entries
+// and the 2011 ones it falls back to, marked "(2011)"), with its requirements; the posture
+// (seated or standing: where EN 12464-1:2021's Ez is computed, 1.2 m or 1.6 m); the grid spacing
 // (EN 12464-1's rule unless set, the rule's spacing shown); the surrounding zone and the
 // background area (core/photometry/surrounding_zones.h), each a check box with its width and the
 // requirement that follows; and the glare observers, a list of eye positions (scene units) and
@@ -38,7 +40,7 @@ public:
     explicit TaskAreaFields(QWidget* parent = nullptr);
     ~TaskAreaFields() override;  // disconnects its children first (ui/disconnect_children.h)
 
-    // Shows `area`, placed in `scene` (its unit and its floor).
+    // Shows `area`, placed in `scene` (its unit, its floor and its EN 12464-1 edition).
     void setArea(const TaskArea& area, const Scene& scene);
     // The area as the fields give it now (observer rows that do not parse left out: problem()).
     TaskArea area() const;
@@ -49,6 +51,8 @@ public:
     // The floor and unit the fields were last shown with.
     double floorY() const { return floorY_; }
     double metersPerUnit() const { return metersPerUnit_; }
+    // The edition whose activities the fields list.
+    StandardEdition edition() const { return edition_; }
 
     QLineEdit* nameField() const { return name_; }
     QDoubleSpinBox* xField() const { return x_; }
@@ -58,6 +62,7 @@ public:
     QDoubleSpinBox* heightField() const { return height_; }
     QComboBox* activityAreaField() const { return activityArea_; }
     QComboBox* activityField() const { return activity_; }
+    QComboBox* postureField() const { return posture_; }  // 0 seated, 1 standing
     QDoubleSpinBox* spacingField() const { return spacing_; }
     QCheckBox* surroundingBox() const { return surrounding_; }
     QDoubleSpinBox* surroundingWidthField() const { return surroundingWidth_; }
@@ -77,6 +82,7 @@ signals:
 
 private:
     QDoubleSpinBox* makeSpin(const char* name, double lo, double hi, int decimals, const QString& suffix);
+    void listAreas();
     void listActivities(const QString& area);
     void showActivity(const std::string& reference);
     void addObserverRow(const GlareObserver& o);
@@ -88,6 +94,7 @@ private:
     QLineEdit* name_;
     QDoubleSpinBox *x_, *z_, *width_, *depth_, *height_, *spacing_, *surroundingWidth_, *backgroundWidth_;
     QComboBox *activityArea_, *activity_;
+    QComboBox* posture_;
     QCheckBox *surrounding_, *background_;
     QLabel *rectangleNote_, *requirement_, *surroundingNote_, *backgroundNote_, *observersNote_;
     QTableWidget* observers_;
@@ -95,6 +102,8 @@ private:
 
     TaskArea base_;  // the area shown: what the untouched fields keep
     double metersPerUnit_ = 1, floorY_ = 0;
+    StandardEdition edition_ = kDefaultStandardEdition;
+    int requirementReserve_ = 0;  // px: the requirement note's height for the longest line
     bool rectangleEditable_ = true;
     // The spin boxes' values as shown (rounded), to tell a field left alone from one edited.
     struct Shown {

@@ -45,10 +45,11 @@ void TaskAreaProperties::refresh() {
     fields_->setVisible(valid);
     if (!valid) return;
     const TaskArea& area = scene.taskAreas[size_t(index_)];
-    // Only when it differs from what the fields give (an undo, another view's edit) or the floor
-    // moved: a refresh while the user types would take the field from under the keys.
+    // Only when it differs from what the fields give (an undo, another view's edit), the floor
+    // moved or the edition changed: a refresh while the user types would take the field from
+    // under the keys.
     if (!(fields_->area() == area) || fields_->floorY() != taskAreaFloor(scene) ||
-        fields_->metersPerUnit() != scene.metersPerUnit)
+        fields_->metersPerUnit() != scene.metersPerUnit || fields_->edition() != lightingStandardOf(scene))
         fields_->setArea(area, scene);
 }
 

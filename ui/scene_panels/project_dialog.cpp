@@ -23,6 +23,7 @@ ProjectDialog::ProjectDialog(Document* doc, QWidget* parent) : QDialog(parent), 
     layout->addWidget(buttons);
     addPage(new ProjectInfoPage(this), tr("Project"));
     addPage(new MaintenancePage(choicesForScene(doc->scene()), this), tr("Maintenance"));
+    addPage(new StandardEditionPage(this), tr("Standard"));
     resize(680, 600);  // room for the assistant's lines under the factors
 }
 

@@ -1,7 +1,8 @@
 #pragma once
-// File > Project Settings: the project's details for the report's cover and the scene's
-// maintenance factor, one tab each (ui/scene_panels/project_pages.h). OK is one undo step for
-// everything the tabs changed (EditProjectSettingsCommand); Cancel changes nothing.
+// File > Project Settings: the project's details for the report's cover, the scene's
+// maintenance factor and the EN 12464-1 edition, one tab each (ui/scene_panels/project_pages.h).
+// OK is one undo step for everything the tabs changed (EditProjectSettingsCommand); Cancel
+// changes nothing.
 //
 // A tab is a ProjectSettingsPage: it shows the settings and writes its part back. Another tab
 // (the lighting energy's, say) is added with addPage; a part of the scene a new tab edits is a
@@ -31,7 +32,7 @@ public:
 class ProjectDialog : public QDialog {
     Q_OBJECT
 public:
-    // Opens with the tabs "Project" and "Maintenance", showing `doc`'s settings.
+    // Opens with the tabs "Project", "Maintenance" and "Standard", showing `doc`'s settings.
     explicit ProjectDialog(Document* doc, QWidget* parent = nullptr);
 
     // Adds a tab after the others; the dialog owns it, loads it now and stores it on OK.

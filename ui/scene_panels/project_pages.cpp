@@ -1,8 +1,10 @@
 #include "ui/scene_panels/project_pages.h"
 
+#include "core/photometry/lighting_standards.h"
 #include "ui/properties/property_rows.h"
 #include "ui/scene_panels/maintenance_factor_edit.h"
 
+#include <QComboBox>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
@@ -79,5 +81,37 @@ MaintenancePage::MaintenancePage(const MaintenanceChoices& choices, QWidget* par
 void MaintenancePage::load(const ProjectSettings& settings) { edit_->setValue(settings.maintenance); }
 
 void MaintenancePage::store(ProjectSettings& settings) const { settings.maintenance = edit_->value(); }
+
+StandardEditionPage::StandardEditionPage(QWidget* parent) : ProjectSettingsPage(parent) {
+    setObjectName("standardPage");
+    edition_ = new QComboBox(this);
+    edition_->setObjectName("lightingStandard");
+    for (StandardEdition e : {StandardEdition::En12464_2021, StandardEdition::En12464_2011})
+        edition_->addItem(QString::fromUtf8(standardEditionName(e)), int(e));
+    // Which 2021 figures are bundled, from the table itself, so that the note cannot go stale.
+    QStringList bundled;
+    for (const ActivityRequirement& a : en12464Activities(StandardEdition::En12464_2021))
+        bundled << QStringLiteral("%1 %2").arg(QString::fromUtf8(a.reference), QString::fromUtf8(a.activity));
+    auto* form = new QFormLayout(this);
+    form->addRow(tr("Task areas are checked against"), edition_);
+    form->addRow(makeWrappingLabel(
+        this, "standardHelp",
+        tr("EN 12464-1 gives each activity its maintained illuminance Em, uniformity U0, glare limit UGR_L and "
+           "colour rendering Ra; the 2021 edition adds a modified Em,u for demanding contexts and the cylindrical "
+           "illuminance Ez and the walls' and ceiling's illuminance, each with U0 0.10.\n"
+           "Bundled 2021 figures: %1. Every other activity is checked against its 2011 figures under 2021, "
+           "and its requirement line says so. Without a choice in the scene file: 2021.")
+            .arg(bundled.join(tr("; ")))));
+}
+
+void StandardEditionPage::load(const ProjectSettings& settings) {
+    loaded_ = settings.lightingStandard;
+    edition_->setCurrentIndex(edition_->findData(int(settings.lightingStandard.value_or(kDefaultStandardEdition))));
+}
+
+void StandardEditionPage::store(ProjectSettings& settings) const {
+    const auto shown = StandardEdition(edition_->currentData().toInt());
+    settings.lightingStandard = shown == loaded_.value_or(kDefaultStandardEdition) ? loaded_ : std::optional(shown);
+}
 
 }  // namespace lucerna

@@ -1,12 +1,14 @@
 #pragma once
-// The two tabs of File > Project Settings (ui/scene_panels/project_dialog.h): the project's name,
-// client, designer and notes (the `project` key, the report's cover), and the scene's maintenance
-// factor (the top-level `maintenance_factor` key).
+// The tabs of File > Project Settings (ui/scene_panels/project_dialog.h): the project's name,
+// client, designer and notes (the `project` key, the report's cover), the scene's maintenance
+// factor (the top-level `maintenance_factor` key) and the EN 12464-1 edition its task areas are
+// checked against (the top-level `lighting_standard` key).
 
 #include "ui/scene_panels/project_dialog.h"
 
 #include "core/photometry/maintenance_assistant.h"
 
+class QComboBox;
 class QLineEdit;
 class QPlainTextEdit;
 
@@ -41,6 +43,21 @@ public:
 
 private:
     MaintenanceFactorEdit* edit_;
+};
+
+class StandardEditionPage : public ProjectSettingsPage {
+    Q_OBJECT
+public:
+    explicit StandardEditionPage(QWidget* parent = nullptr);
+    void load(const ProjectSettings& settings) override;
+    // The edition left as loaded keeps the scene's key as it was (absent stays absent); another
+    // one is written.
+    void store(ProjectSettings& settings) const override;
+    QComboBox* editionField() const { return edition_; }
+
+private:
+    QComboBox* edition_;
+    std::optional<StandardEdition> loaded_;
 };
 
 }  // namespace lucerna

@@ -106,13 +106,20 @@ void RoomDialog::addCornerRow(int row, const V2d& metres) {
         QDoubleSpinBox* box = makeNumberField(corners_, QString(), column == 0 ? metres.x : metres.y, -1e5, 1e5, QString(), kDecimals);
         box->setFrame(false);
         connect(box, &QDoubleSpinBox::valueChanged, this, &RoomDialog::updateSummary);
-        // Typing into a corner chooses its row for Add and Remove Corner.
-        const auto choose = [this, box] {
+        // Typing into a corner chooses its row for Add and Remove Corner: its own cell becomes the
+        // current one (the view then keeps the focus in it, and Tab goes on from it). On
+        // editingFinished only while it has the focus (Return): on the way out the view has made
+        // the field the focus went to current, and taking the old row back sent the focus back,
+        // without end under a window system.
+        const auto choose = [this, box, column] {
             for (int r = 0; r < corners_->rowCount(); ++r)
-                if (corners_->cellWidget(r, 0) == box || corners_->cellWidget(r, 1) == box) corners_->selectRow(r);
+                if (corners_->cellWidget(r, column) == box)
+                    corners_->setCurrentCell(r, column, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
         };
         connect(box, &QDoubleSpinBox::valueChanged, this, choose);
-        connect(box, &QDoubleSpinBox::editingFinished, this, choose);
+        connect(box, &QDoubleSpinBox::editingFinished, this, [box, choose] {
+            if (box->hasFocus()) choose();
+        });
         corners_->setCellWidget(row, column, box);
     }
     nameCornerRows();
