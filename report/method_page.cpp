@@ -24,7 +24,8 @@ QString gridOptions(const ReportSettings& s) {
 
 // The command that computes an area's grid alone, with the same figures.
 QString gridCommand(const ReportData& data, const AreaReport& a) {
-    const QString scene = qs(data.sceneFile);
+    // An unsaved scene has no file to name: the command then reads as a template.
+    const QString scene = data.sceneFile == "untitled scene" ? QStringLiteral("SCENE.json") : qs(data.sceneFile);
     const QString where = a.defaultWorkPlane ? QStringLiteral(" --work-plane 0.8")
                                              : QStringLiteral(" --task-area \"%1\"").arg(qs(a.name));
     return QStringLiteral("lucerna grid %1%2%3").arg(scene, where, gridOptions(data.settings));
