@@ -34,15 +34,21 @@ ReportTable summaryTable(const ReportData& data) {
     for (const AreaReport& a : data.areas) {
         QString outcome = QStringLiteral("none given");
         if (a.requirement) {
+            // The area's own checks and its zones', as its checks page lists them.
+            std::vector<const RequirementCheck*> checks;
+            for (const RequirementCheck& c : a.checks) checks.push_back(&c);
+            for (const ZoneReport& z : a.zones)
+                for (const RequirementCheck& c : z.checks) checks.push_back(&c);
             int met = 0, notMet = 0, borderline = 0, open = 0;
-            for (const RequirementCheck& c : a.checks) {
+            for (const RequirementCheck* check : checks) {
+                const RequirementCheck& c = *check;
                 if (c.outcome == CheckOutcome::Met) ++met;
                 else if (c.outcome == CheckOutcome::NotMet) ++notMet;
                 else if (c.outcome == CheckOutcome::Borderline) ++borderline;
                 else ++open;  // not stated, not computed, not checked
             }
-            outcome = notMet > 0 ? QStringLiteral("%1 of %2 not met").arg(notMet).arg(a.checks.size())
-                                 : QStringLiteral("%1 of %2 met").arg(met).arg(a.checks.size());
+            outcome = notMet > 0 ? QStringLiteral("%1 of %2 not met").arg(notMet).arg(checks.size())
+                                 : QStringLiteral("%1 of %2 met").arg(met).arg(checks.size());
             if (borderline > 0) outcome += QStringLiteral(", %1 borderline").arg(borderline);
             if (open > 0) outcome += QStringLiteral(", %1 open").arg(open);
         }
