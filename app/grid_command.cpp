@@ -121,7 +121,7 @@ struct GridSetup {
     bool medianGiven = false;        // by the option or the site (else EN 17037's usual value)
     const ActivityRequirement* requirement = nullptr;  // --task-area with an activity
     std::optional<TaskArea> area;    // --task-area: the area, with --spacing's spacing when given
-    GridZones zones;                 // its zones, whose points go after the grid's
+    ZoneGrids zones;                 // its zones, whose points go after the grid's
 };
 
 // Everything that can fail on bad input before any work; of a distributed grid, every rank does
@@ -185,11 +185,11 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
-    GridZones zones;
+    ZoneGrids zones;
     if (taskArea) {
         try {
-            zones = GridZones(*taskArea, requirement, scene->metersPerUnit, taskAreaRoom(*scene, *taskArea),
-                              layout.points.size());
+            const TaskAreaRoom room = taskAreaRoom(*scene, *taskArea);
+            zones = ZoneGrids(*taskArea, requirement, scene->metersPerUnit, room.lo, room.hi, layout.points.size());
         } catch (const std::invalid_argument& e) {
             throw UsageError("--task-area: " + std::string(e.what()));
         }

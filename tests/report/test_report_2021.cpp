@@ -181,7 +181,8 @@ void TestReport2021::boxRoomCarriesThe2021Figures() {
 
     // The pages: the figures with their error bars, the checks, the modelling ratio as guidance,
     // the edition and how the figures were computed.
-    if (QStandardPaths::findExecutable("pdftotext").isEmpty()) QSKIP("pdftotext (poppler-utils) is missing");
+    QVERIFY2(!QStandardPaths::findExecutable("pdftotext").isEmpty(),
+             "pdftotext (poppler-utils) is missing: packaging/install-deps.sh installs it");
     const QString text = pdfText(data, dir);
     for (const char* s : {"Cylindrical illuminance, walls, ceiling and zones", "Ez (cylindrical)", "(seated)",
                           "Ez (cylindrical, mean)", "Ewall (walls, mean)", "Eceiling (ceiling, mean)", "U0,ceiling",
@@ -253,7 +254,8 @@ void TestReport2021::roomsSceneIsSummarisedRoomByRoom() {
     QCOMPARE(r.walls->grid.average, data.roomSurfaces[0].result.walls.stats.average);
     QCOMPARE(r.ceiling->grid.average, data.roomSurfaces[0].result.ceiling.stats.average);
 
-    if (QStandardPaths::findExecutable("pdftotext").isEmpty()) QSKIP("pdftotext (poppler-utils) is missing");
+    QVERIFY2(!QStandardPaths::findExecutable("pdftotext").isEmpty(),
+             "pdftotext (poppler-utils) is missing: packaging/install-deps.sh installs it");
     const QString text = pdfText(data, dir);
     for (const char* s : {"Room summary", "Dimensions, openings and maintenance", "1 window, 1 door", "0.75 (1 light)",
                           "room 'office': ceiling"})

@@ -320,7 +320,11 @@ void GridPanel::compute() {
         layout_ = layoutGrid(grid, scene->metersPerUnit);
         grid_ = grid;
         if (area && quantity_->currentIndex() == kIlluminance) {
-            zones_ = ZoneFigures(*area, *current, layout_.points.size());
+            // The dock lays the zones out in the scene's bounds (the CLI and the report in the area's room).
+            const SceneBounds bounds = sceneBounds(*current);
+            const ActivityRequirement* activity =
+                area->activity.empty() ? nullptr : findActivity(area->activity, lightingStandardOf(*current));
+            zones_ = ZoneGrids(*area, activity, current->metersPerUnit, bounds.lo, bounds.hi, layout_.points.size());
             extras_ = TaskAreaExtrasFigures(*area, *current, {cylindrical_->isChecked(), roomSurfaces_->isChecked()});
         }
     } catch (const std::invalid_argument& e) {

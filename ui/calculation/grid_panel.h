@@ -18,7 +18,7 @@
 // activity's requirements checked under the figures (core/photometry/lighting_standards.h: met,
 // borderline within the error bar, not met; Em not checked without a maintenance factor). A task
 // area's surrounding zone and background area are computed with it and their figures and checks
-// follow its own (ui/calculation/zone_figures.h). After a task area's Em grid, the figures
+// follow its own (render/photometry/zone_grids.h). After a task area's Em grid, the figures
 // EN 12464-1:2021 adds (Ez at the posture's height, the room's walls and ceiling) are computed
 // as a second job, with progress and Cancel, where its requirement asks for them or the designer
 // ticks them (task areas only), and checked with the rest (ui/calculation/task_area_extras.h).
@@ -29,7 +29,7 @@
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/ugr_grid.h"
 #include "ui/calculation/task_area_extras.h"
-#include "ui/calculation/zone_figures.h"
+#include "render/photometry/zone_grids.h"
 #include "ui/document/document.h"
 #include "ui/rendering/yield_gate.h"
 
@@ -138,7 +138,7 @@ private:
     TaskSystem tasks_;  // before job_: the job ends before its arena goes
     std::shared_ptr<TaskHandle> job_;
     std::shared_ptr<const GridResult> shown_;
-    ZoneFigures zones_;                      // the chosen task area's zones (empty: none)
+    ZoneGrids zones_;                      // the chosen task area's zones (empty: none)
     TaskAreaExtrasFigures extras_;           // its 2021 figures, after its Em grid
     GridSettings settings_;                  // the Em grid's, for the 2021 figures
     QString doneText_;                       // the Em grid's "Done: ..."

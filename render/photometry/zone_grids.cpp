@@ -1,13 +1,13 @@
-#include "ui/calculation/zone_figures.h"
+#include "render/photometry/zone_grids.h"
 
 #include "core/number_format.h"
 #include "core/photometry/grid_error_bars.h"
-#include "core/scene/scene_geometry.h"
 #include "render/photometry/grid_text.h"
 
 namespace lucerna {
 
 namespace {
+
 // Elements [begin, end) of a per-point vector (empty stays empty).
 template <class T> std::vector<T> slice(const std::vector<T>& v, size_t begin, size_t end) {
     if (v.size() < end) return {};
@@ -21,12 +21,13 @@ GridResult part(const GridResult& all, size_t begin, size_t end) {
     r.insideGeometry = slice(all.insideGeometry, begin, end);
     return r;
 }
+
 }  // namespace
 
-ZoneFigures::ZoneFigures(const TaskArea& area, const Scene& scene, size_t taskPoints) : taskPoints_(taskPoints) {
-    const SceneBounds room = sceneBounds(scene);
-    const TaskAreaZones zones = taskAreaZones(area, scene.metersPerUnit, room.lo, room.hi);
-    const ActivityRequirement* activity = area.activity.empty() ? nullptr : findActivity(area.activity, lightingStandardOf(scene));
+ZoneGrids::ZoneGrids(const TaskArea& area, const ActivityRequirement* activity, double metersPerUnit,
+                     const V3d& lo, const V3d& hi, size_t taskPoints)
+    : taskPoints_(taskPoints) {
+    const TaskAreaZones zones = taskAreaZones(area, metersPerUnit, lo, hi);
     if (activity) taskEm_ = activity->maintainedLux;
     const auto add = [&](const char* name, double width, const ZoneGrid& grid, std::optional<ZoneRequirement> requirement) {
         Zone z{name, width, taskPoints_ + points_.size(), 0, requirement};
@@ -42,12 +43,15 @@ ZoneFigures::ZoneFigures(const TaskArea& area, const Scene& scene, size_t taskPo
             surrounding ? std::optional(backgroundAreaRequirement(surrounding->maintainedLux)) : std::nullopt);
 }
 
-GridResult ZoneFigures::taskPart(const GridResult& all) const { return part(all, 0, taskPoints_); }
+GridResult ZoneGrids::taskPart(const GridResult& all) const {
+    return points_.empty() ? all : part(all, 0, taskPoints_);
+}
 
-std::vector<std::string> ZoneFigures::lines(const GridResult& all, bool maintainedValues) const {
+std::vector<std::string> ZoneGrids::lines(const GridResult& all, bool maintainedValues) const {
     std::vector<std::string> out;
     for (const Zone& z : zones_) {
-        const std::string head = z.name + " (" + shortestNumber(z.widthMeters) + " m, " + std::to_string(z.end - z.begin) + " points)";
+        const std::string head =
+            z.name + " (" + shortestNumber(z.widthMeters) + " m, " + std::to_string(z.end - z.begin) + " points)";
         if (z.end == z.begin) {
             out.push_back(head + ": none (the room leaves no band)");
             continue;
@@ -60,7 +64,8 @@ std::vector<std::string> ZoneFigures::lines(const GridResult& all, bool maintain
             out.push_back("  no activity: nothing to check");
             continue;
         }
-        out.push_back("  required" + std::string(taskEm_ ? " (EN 12464-1, task Em " + fixedNumber(*taskEm_, 0) + " lx)" : "") +
+        out.push_back("  required" +
+                      std::string(taskEm_ ? " (EN 12464-1, task Em " + fixedNumber(*taskEm_, 0) + " lx)" : "") +
                       ": Em " + fixedNumber(z.requirement->maintainedLux, 0) + " lx, U0 " +
                       fixedNumber(z.requirement->uniformity, 2));
         if (s.counted == 0) continue;
