@@ -95,9 +95,9 @@ void addExtrasMethod(PageFlow& flow, const ReportData& data) {
                     "Each of its four side faces and its top face gets a grid at EN 12464-1's spacing for that face "
                     "(p = 0.2 x 5^log10(d), d its longer side); each point is moved along the face's normal onto the "
                     "first opaque surface within %1 m (a wall, a reveal) and set just in front of it, facing into the "
-                    "room. A point whose surface is glass (a dielectric window) is left out; where nothing opaque is "
-                    "that near (an opening, a glazing pane, which rays cross), the point stays on the box's face and "
-                    "counts. The walls' Eavg weighs each point by its cell's area; U0 = Emin / Eavg. Their "
+                    "room. A point in a window (its ray crosses a glazing pane or meets glass) or where nothing opaque is "
+                    "that near (an opening, or no wall there) is left out, as the standard asks for the walls' "
+                    "surfaces, not their openings. The walls' Eavg weighs each point by its cell's area; U0 = Emin / Eavg. Their "
                     "error target is %2 times the grid's (%3% of each point's value): their requirements lie far "
                     "from what a lit room achieves, and their dark corners converge slowest; the error bars stated "
                     "are those reached.")

@@ -58,12 +58,16 @@ std::vector<RoomSurfaceGrid> roomSurfaceGrids(const RenderScene& scene, const V3
         for (const V3d& p : s.layout.points) {
             const V3d origin = p + n * inward;
             float t = 0;
+            Rgb panes(1, 1, 1);
             const Ray ray{toFloat(origin), toFloat(-n), 0.0f, float(inward + standOff)};
-            const std::optional<SurfacePoint> hit = scene.intersect(ray, &t);
+            const std::optional<SurfacePoint> hit = scene.intersect(ray, &t, &panes);
             const bool glass = hit && scene.material(hit->material).type == MaterialType::Dielectric;
+            // A pane crossed before the surface is a window (a pane that lets everything through
+            // cannot be told from air); nothing within reach is an opening or no wall at all.
+            const bool throughPane = std::max({panes.x, panes.y, panes.z}) < 1.0f;
             const V3d surface = hit ? origin - n * double(t) : p;
             s.points.push_back(surface + n * standOff);
-            s.opening.push_back(glass ? 1 : 0);
+            s.opening.push_back(glass || throughPane || !hit ? 1 : 0);
         }
         grids.push_back(std::move(s));
     }

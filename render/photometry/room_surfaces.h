@@ -9,10 +9,10 @@
 // the face's normal onto the first opaque surface a ray from inside the room meets within
 // kSurfaceDepthMeters of the face (a wall's inner face, thick or thin, a window reveal), and set
 // a little in front of it: the sensor measures the light that reaches the surface there. A point
-// where the ray meets nothing that close (an opening, a window: glazing is crossed, never hit;
-// furniture further in) keeps its place on the box's face, and a point where the ray meets glass
-// (a dielectric object) is left out of the figures as a window, as EN 12464-1 computes the
-// walls' surfaces, not their openings.
+// whose ray meets nothing that close (an opening, or no wall there at all), crosses a glazing
+// pane before its surface (a window) or meets glass (a dielectric object) keeps its place on the
+// box's face and is left out of the figures, as EN 12464-1 computes the walls' surfaces, not
+// their openings.
 
 #include "core/photometry/grid_error_bars.h"
 #include "render/photometry/grid_calculation.h"
@@ -31,7 +31,7 @@ struct RoomSurfaceGrid {
     CalculationGrid grid;    // on the box's face, facing into the room
     GridLayout layout;
     std::vector<V3d> points; // the sensors: in front of the surfaces found (scene units)
-    std::vector<uint8_t> opening;  // per point, 1 where the surface is glass: left out
+    std::vector<uint8_t> opening;  // per point, 1 at a window, an opening or no surface: left out
     double cellAreaM2 = 0;
 };
 

@@ -8,6 +8,7 @@
 // the Ez grid's height for each posture, and the `posture` key both ways.
 
 #include "core/photometry/lighting_standards.h"
+#include "core/scene/room_geometry.h"
 #include "core/scene/scene_io.h"
 #include "render/photometry/grid_calculation.h"
 #include "render/photometry/task_area_figures.h"
@@ -120,6 +121,7 @@ private slots:
     void cylindricalOfADiscWithinItsErrorBar();
     void roomSurfacesOfAClosedCube();
     void roomSurfacesDirectOnly();
+    void roomSurfacesLeaveOutWindowsAndDoors();
     void taskAreaRoomIsTheRoomThatHoldsIt();
     void cylindricalGridStandsAtThePosturesHeight();
     void postureKeyBothWays();
@@ -279,6 +281,51 @@ void TestTaskAreaFigures::roomSurfacesDirectOnly() {
     // The ceiling is a wall turned: the same sensors about the light, the same figures.
     QVERIFY(std::abs(r.walls.stats.minimum / r.ceiling.stats.minimum - 1) < 1e-5);
     QVERIFY(std::abs(r.walls.stats.maximum / r.ceiling.stats.maximum - 1) < 1e-5);
+}
+
+void TestTaskAreaFigures::roomSurfacesLeaveOutWindowsAndDoors() {
+    // A drawn 5 x 4 x 2.8 m room, its surfaces generated as the window generates them, with a
+    // glazed window in wall 1 (z = 0) and a door, a hole, in wall 2 (x = 5): EN 12464-1 asks for
+    // the walls' surfaces, so exactly the points in front of the window and the door are left out.
+    Scene loaded = parseScene(sceneJson(
+        R"("grey": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}, "pane": {"type": "glazing", "transmittance": [0.7, 0.7, 0.7]})",
+        "", R"({"name": "bulb", "type": "point", "position": [2.5, 2.5, 2], "intensity": [1, 1, 1]})",
+        R"(, "rooms": [{"name": "office", "outline": [[0, 0], [5, 0], [5, 4], [0, 4]], "floor_level": 0, "height": 2.8,
+                        "materials": {"floor": "grey", "walls": "grey", "ceiling": "grey"},
+                        "openings": [{"type": "window", "wall": 1, "offset": 1.5, "sill": 0.9, "width": 2, "height": 1.4, "glazing": "pane"},
+                                     {"type": "door", "wall": 2, "offset": 1, "width": 0.9, "height": 2.1}]}])"),
+        kResources + "/scenes/case.json");
+    std::set<std::string> taken;
+    const std::vector<Object> surfaces = roomSurfaces(loaded.rooms[0], loaded, taken);
+    loaded.objects.insert(loaded.objects.end(), surfaces.begin(), surfaces.end());
+    const RenderScene scene(std::make_shared<const Scene>(std::move(loaded)), 16, 16);
+    const std::vector<RoomSurfaceGrid> grids = roomSurfaceGrids(scene, V3d(0, 0, 0), V3d(5, 2.8, 4), 1.0);
+    QCOMPARE(grids.size(), size_t(5));
+    // Where each point's cell centre lies on the box's face: in the window (x 1.5..3.5, y 0.9..2.3
+    // on z = 0) or the door (z 1..1.9, y 0..2.1 on x = 5).
+    const auto inWindow = [](const V3d& p) { return p.z < 1e-9 && p.x > 1.5 && p.x < 3.5 && p.y > 0.9 && p.y < 2.3; };
+    const auto inDoor = [](const V3d& p) { return p.x > 5 - 1e-9 && p.z > 1 && p.z < 1.9 && p.y < 2.1; };
+    // A point on an opening's edge may go either way.
+    const auto onEdge = [](const V3d& p) {
+        for (double c : {p.x - 1.5, p.x - 3.5, p.y - 0.9, p.y - 2.3, p.z - 1, p.z - 1.9, p.y - 2.1})
+            if (std::abs(c) < 1e-6) return true;
+        return false;
+    };
+    int window = 0, door = 0, wall = 0;
+    for (const RoomSurfaceGrid& g : grids)
+        for (size_t i = 0; i < g.layout.points.size(); ++i) {
+            const V3d& p = g.layout.points[i];
+            if (onEdge(p)) continue;
+            const bool opening = inWindow(p) || inDoor(p);
+            QVERIFY2(bool(g.opening[i]) == opening,
+                     qPrintable(QString("%1 point (%2, %3, %4): opening %5").arg(QString::fromStdString(g.name))
+                                    .arg(p.x).arg(p.y).arg(p.z).arg(int(g.opening[i]))));
+            window += inWindow(p);
+            door += inDoor(p);
+            wall += !opening;
+        }
+    QVERIFY2(window >= 4 && door >= 2 && wall > 100,
+             qPrintable(QString("window %1, door %2, wall %3 points").arg(window).arg(door).arg(wall)));
 }
 
 void TestTaskAreaFigures::taskAreaRoomIsTheRoomThatHoldsIt() {

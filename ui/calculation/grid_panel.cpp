@@ -10,6 +10,7 @@
 #include "core/scene/scene_geometry.h"
 #include "render/display/display.h"
 #include "render/photometry/grid_text.h"
+#include "render/photometry/task_area_figures.h"
 #include "ui/calculation/ugr_table.h"
 
 #include <QCheckBox>
@@ -320,11 +321,11 @@ void GridPanel::compute() {
         layout_ = layoutGrid(grid, scene->metersPerUnit);
         grid_ = grid;
         if (area && quantity_->currentIndex() == kIlluminance) {
-            // The dock lays the zones out in the scene's bounds (the CLI and the report in the area's room).
-            const SceneBounds bounds = sceneBounds(*current);
+            // The zones are clipped to the area's room, as in grid --task-area and the report.
+            const TaskAreaRoom room = taskAreaRoom(*current, *area);
             const ActivityRequirement* activity =
                 area->activity.empty() ? nullptr : findActivity(area->activity, lightingStandardOf(*current));
-            zones_ = ZoneGrids(*area, activity, current->metersPerUnit, bounds.lo, bounds.hi, layout_.points.size());
+            zones_ = ZoneGrids(*area, activity, current->metersPerUnit, room.lo, room.hi, layout_.points.size());
             extras_ = TaskAreaExtrasFigures(*area, *current, {cylindrical_->isChecked(), roomSurfaces_->isChecked()});
         }
     } catch (const std::invalid_argument& e) {
