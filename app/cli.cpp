@@ -18,6 +18,7 @@
 #include "render/display/display.h"
 #include "render/engine/backend_table.h"
 #include "render/photometry/illuminance_layer.h"
+#include "render/trace/render_scene.h"
 #include "render/trace/surface_layers.h"
 
 #include <QSaveFile>
@@ -494,6 +495,10 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasDeltaLights()) needs += " delta-lights";
     if (f.hasDaylight()) needs += " daylight";
     if (f.hasGlazing) needs += " glazing";
+    if (f.hasDaylight() && f.hasGlazing) {  // the panes daylight particles go through (which side is outside: traced)
+        const RenderScene traced(std::make_shared<const Scene>(scene));
+        std::cout << "portals: " << traced.lights().particlePortals().describe(float(scene.metersPerUnit)) << "\n";
+    }
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
     std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";
     return 0;

@@ -241,13 +241,29 @@ void addValues(PageFlow& flow, const ReportData& data, const AreaReport& a) {
             while (r.size() < t.header.size()) r << QString();
         tables.push_back(std::move(t));
     }
-    // The heading stays with the table (the first block).
-    flow.ensure(std::min(flow.subheadingHeight() + flow.tableHeight(tables.front()), flow.pageHeight()));
+    // A page the values continue onto says whose they are, above the header row repeated.
+    const QString title = QStringLiteral("%1: illuminance at the grid points [lx]").arg(qs(a.name));
+    for (int b = 0; b < blocks; ++b) {
+        const int c0 = b * kColumnsPerBlock, c1 = std::min(across, c0 + kColumnsPerBlock);
+        const QString columnsText = QStringLiteral("columns %1 to %2 of %3").arg(c0 + 1).arg(c1).arg(across);
+        tables[size_t(b)].continuedTitle =
+            (blocks > 1 ? QStringLiteral("%1, %2").arg(title, columnsText) : title) + QStringLiteral(" (continued)");
+    }
+    // The heading stays with the table (the first block, and its "Columns" line).
+    const double columnsLine = blocks > 1 ? flow.lineHeight(flow.fonts().small) : 0;
+    flow.ensure(std::min(flow.subheadingHeight() + columnsLine + flow.tableHeight(tables.front()), flow.pageHeight()));
     flow.subheading(QStringLiteral("Illuminance at the grid points [lx]"));
     for (int b = 0; b < blocks; ++b) {
         if (blocks > 1) {
             const int c0 = b * kColumnsPerBlock, c1 = std::min(across, c0 + kColumnsPerBlock);
-            flow.ensure(std::min(flow.lineHeight(flow.fonts().small) + flow.tableHeight(tables[size_t(b)]), flow.pageHeight()));
+            const double needed = std::min(columnsLine + flow.tableHeight(tables[size_t(b)]), flow.pageHeight());
+            if (b > 0 && flow.y() > flow.top() && flow.remaining() < needed) {
+                // A later block on a page of its own: the title, as for a split table.
+                flow.newPage();
+                flow.paragraph(QStringLiteral("%1 (continued)").arg(title), flow.fonts().bodyBold);
+            } else if (b > 0) {
+                flow.ensure(needed);
+            }  // the first block: under its heading, which kept room for it
             flow.paragraph(QStringLiteral("Columns %1 to %2 of %3").arg(c0 + 1).arg(c1).arg(across), flow.fonts().small);
         }
         flow.table(tables[size_t(b)]);
@@ -317,7 +333,12 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
 }
 
 void addPlan(PageFlow& flow, const ReportData& data, const AreaReport& a, PlanValues values, double maxHeight) {
-    const double aspect = planAspect(*data.scene, a.grid);
+    for (const ZoneReport& z : a.zones) {
+        QString label = QStringLiteral("%1 (%2 m)").arg(qs(z.name), QString::number(z.widthMeters, 'g', 3));
+        label[0] = label[0].toUpper();
+        values.zones.push_back({label, z.grid.strips, z.name == "background area"});
+    }
+    const double aspect = planAspect(*data.scene, a.grid, values.zones);
     const double height = std::min(flow.width() * aspect + flow.mm(kPlanLegendMm), maxHeight);
     const QFont font = flow.fonts().figure;
     const double dpmm = flow.mm(1);

@@ -249,7 +249,9 @@ void PageFlow::table(const ReportTable& t) {
         const double h = tableRowHeight(t, t.rows[r], widths, bold);
         if (y_ + h > bottom_) {
             newPage();
-            tableRow(t, t.header, widths, true, true, false);  // the header again on the next page
+            // The title and the header again: a continuation page says what its rows are.
+            if (!t.continuedTitle.isEmpty()) paragraph(t.continuedTitle, fonts_.bodyBold);
+            tableRow(t, t.header, widths, true, true, false);
         }
         tableRow(t, t.rows[r], widths, false, bold, r % 2 == 1);
     }

@@ -31,6 +31,9 @@ struct ReportTable {
     std::vector<Qt::Alignment> alignment; // one per column (left when absent)
     std::vector<int> boldRows;            // rows set in bold (a total)
     bool compact = false;                 // the small font (tables of values)
+    // A table split between pages: this line, when given, above the repeated header row on
+    // each page it continues onto ("desk: illuminance at the grid points [lx] (continued)").
+    QString continuedTitle;
 };
 
 // A column of a table: its heading, its share of the width and how its cells align.
@@ -73,7 +76,8 @@ public:
     // "Key" and "value" pairs: keys in a column of `keyShare` of the width, values wrapped.
     void keyValues(const std::vector<std::pair<QString, QString>>& pairs, double keyShare = 0.3);
     // A table that fits on a page is kept whole (a new page when it does not fit below the
-    // cursor); a longer one splits between rows.
+    // cursor); a longer one splits between rows, each page after the first starting with its
+    // continuedTitle (if any) and its header row.
     void table(const ReportTable& table);
     double tableHeight(const ReportTable& table) const;
     double pageHeight() const { return bottom_ - top_; }

@@ -14,6 +14,7 @@
 #include <QTransform>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace lucerna {
@@ -26,6 +27,7 @@ const QColor kGlass(70, 150, 230);
 const QColor kObserver(110, 20, 140);
 const QColor kIsoLine(0, 0, 0);
 const QColor kLuminaire(20, 30, 110);
+const QColor kZone(0, 125, 90);  // the window's plan draws task areas and their zones in it
 
 // How the figure maps the world: the plan (x right, z down, seen from above) for a horizontal
 // grid, else the grid's own frame (u right, v up).
@@ -46,10 +48,15 @@ struct PlanFrame {
     }
 };
 
-// The view's extent in the frame's coordinates: the area and 1 m around it, within the room's
-// plan.
-void viewExtent(const Scene& scene, const CalculationGrid& g, const PlanFrame& frame, double& u0, double& u1, double& v0,
-                double& v1) {
+// The four corners of a grid's rectangle, in order around it.
+std::array<V3d, 4> cornersOf(const CalculationGrid& g) {
+    return {g.corner, g.corner + g.edgeU, g.corner + g.edgeU + g.edgeV, g.corner + g.edgeV};
+}
+
+// The view's extent in the frame's coordinates: the area, 1 m around it and its surrounding
+// zone (not the background area, whose 3 m would shrink the area), within the room's plan.
+void viewExtent(const Scene& scene, const CalculationGrid& g, const std::vector<PlanZone>& zones, const PlanFrame& frame,
+                double& u0, double& u1, double& v0, double& v1) {
     const V3d corners[4] = {g.corner, g.corner + g.edgeU, g.corner + g.edgeV, g.corner + g.edgeU + g.edgeV};
     u0 = 1e300, u1 = -1e300, v0 = 1e300, v1 = -1e300;
     for (const V3d& c : corners) {
@@ -59,10 +66,66 @@ void viewExtent(const Scene& scene, const CalculationGrid& g, const PlanFrame& f
     if (frame.plan) {
         // A little beyond the room's bounds, so that its outer walls show whole.
         const double margin = 1.0 / scene.metersPerUnit, beyond = 0.15 / scene.metersPerUnit;
+        const double pad = 0.25 / scene.metersPerUnit;  // beyond the surrounding zone's edge
+        double lo0 = u0 - margin, hi0 = u1 + margin, lo1 = v0 - margin, hi1 = v1 + margin;
+        for (const PlanZone& z : zones)
+            for (const CalculationGrid& strip : z.strips)
+                for (const V3d& c : cornersOf(strip)) {
+                    if (z.background) continue;
+                    const QPointF q = frame.coordinate(c);
+                    lo0 = std::min(lo0, q.x() - pad), hi0 = std::max(hi0, q.x() + pad);
+                    lo1 = std::min(lo1, q.y() - pad), hi1 = std::max(hi1, q.y() + pad);
+                }
         const SceneBounds b = sceneBounds(scene);
-        u0 = std::max(u0 - margin, std::min(u0, b.lo.x - beyond)), u1 = std::min(u1 + margin, std::max(u1, b.hi.x + beyond));
-        v0 = std::max(v0 - margin, std::min(v0, b.lo.z - beyond)), v1 = std::min(v1 + margin, std::max(v1, b.hi.z + beyond));
+        u0 = std::max(lo0, std::min(u0, b.lo.x - beyond)), u1 = std::min(hi0, std::max(u1, b.hi.x + beyond));
+        v0 = std::max(lo1, std::min(v0, b.lo.z - beyond)), v1 = std::min(hi1, std::max(v1, b.hi.z + beyond));
     }
+}
+
+// A zone's outer edge: the rectangle, in the task area's directions, around its strips.
+QPolygonF zoneOutline(const CalculationGrid& task, const PlanZone& zone, const PlanFrame& frame) {
+    const V3d uHat = task.edgeU.normalized(), vHat = task.edgeV.normalized();
+    double s0 = 1e300, s1 = -1e300, t0 = 1e300, t1 = -1e300;
+    for (const CalculationGrid& strip : zone.strips)
+        for (const V3d& c : cornersOf(strip)) {
+            const V3d d = c - task.corner;
+            s0 = std::min(s0, d.dot(uHat)), s1 = std::max(s1, d.dot(uHat));
+            t0 = std::min(t0, d.dot(vHat)), t1 = std::max(t1, d.dot(vHat));
+        }
+    if (s0 > s1) return {};
+    const auto at = [&](double s, double t) { return frame.at(task.corner + uHat * s + vHat * t); };
+    return QPolygonF({at(s0, t0), at(s1, t0), at(s1, t1), at(s0, t1)});
+}
+
+QPen zonePen(const PlanZone& zone, double dpmm) {
+    QPen pen(kZone, 0.3 * dpmm);
+    pen.setDashPattern(zone.background ? QList<qreal>{1.2, 2.5} : QList<qreal>{6, 3});  // in pen widths
+    return pen;
+}
+
+QColor zoneTint(const PlanZone& zone) { return QColor(kZone.red(), kZone.green(), kZone.blue(), zone.background ? 22 : 50); }
+
+// The zones as the window's plan draws them: each band tinted, its outer edge dashed (the
+// background area's dotted), the background first, within the view.
+void paintZones(QPainter& p, const QRectF& view, const CalculationGrid& task, const std::vector<PlanZone>& zones,
+                const PlanFrame& frame, double dpmm) {
+    p.save();
+    p.setClipRect(view, Qt::IntersectClip);
+    for (int pass = 0; pass < 2; ++pass)
+        for (const PlanZone& z : zones) {
+            if (z.background != (pass == 0)) continue;
+            p.setPen(Qt::NoPen);
+            p.setBrush(zoneTint(z));
+            for (const CalculationGrid& strip : z.strips) {
+                QPolygonF band;
+                for (const V3d& c : cornersOf(strip)) band << frame.at(c);
+                p.drawPolygon(band);
+            }
+            p.setPen(zonePen(z, dpmm));
+            p.setBrush(Qt::NoBrush);
+            p.drawPolygon(zoneOutline(task, z, frame));
+        }
+    p.restore();
 }
 
 PlanFrame frameOf(const CalculationGrid& g) {
@@ -145,11 +208,37 @@ QImage roomRaster(const Scene& scene, const PlanFrame& frame, const QRectF& view
 
 QString levelText(double level) { return QString::number(level, 'g', 6); }
 
+// The zones' entries at the right of the legend's band, one under the other: a sample of the
+// band and its edge, and the zone's name. Returns their width.
+double paintZoneEntries(QPainter& p, const QRectF& band, const std::vector<PlanZone>& zones, const QFont& font, double dpmm) {
+    if (zones.empty()) return 0;
+    const QFontMetricsF fm(font, p.device());
+    const double sample = 5 * dpmm, gap = 1.5 * dpmm;
+    double textWidth = 0;
+    for (const PlanZone& z : zones) textWidth = std::max(textWidth, fm.horizontalAdvance(z.label));
+    const double width = sample + gap + textWidth, left = band.right() - width;
+    double y = band.top() + 1.5 * dpmm;
+    p.setFont(font);
+    for (const PlanZone& z : zones) {
+        const QRectF box(left, y + (fm.height() - 2.5 * dpmm) / 2, sample, 2.5 * dpmm);
+        p.fillRect(box, zoneTint(z));
+        p.setPen(zonePen(z, dpmm));
+        p.setBrush(Qt::NoBrush);
+        p.drawRect(box);
+        p.setPen(Qt::black);
+        p.drawText(QPointF(left + sample + gap, y + fm.ascent()), z.label);
+        y += fm.height() * 1.25;
+    }
+    return width + 4 * dpmm;
+}
+
 void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QString& unit, const QFont& font,
-                 double dpmm) {
+                 double dpmm, const std::vector<PlanZone>& zones) {
     const QFontMetricsF fm(font, p.device());
     const double unitWidth = fm.horizontalAdvance(unit) + 3 * dpmm;
-    const QRectF ramp(band.left() + unitWidth, band.top() + 2 * dpmm, band.width() - unitWidth - 8 * dpmm, 4 * dpmm);
+    const double zonesWidth = paintZoneEntries(p, band, zones, font, dpmm);
+    const QRectF ramp(band.left() + unitWidth, band.top() + 2 * dpmm,
+                      band.width() - unitWidth - std::max(8 * dpmm, zonesWidth), 4 * dpmm);
     const Legend legend = s.legend(QStringLiteral("lx"));
     const int steps = 200;
     for (int i = 0; i < steps; ++i) {
@@ -166,12 +255,13 @@ void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QStr
     ticks.insert(ticks.end(), s.levels.begin(), s.levels.end());
     ticks.push_back(s.hi);
     double lastRight = -1e300;
+    const double labelsRight = zonesWidth > 0 ? ramp.right() + 2 * dpmm : band.right();  // clear of the zones' entries
     for (size_t i = 0; i < ticks.size(); ++i) {
         const double x = ramp.left() + legendPosition(legend, ticks[i]) * ramp.width();
         p.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + 1.2 * dpmm));
         const QString text = levelText(ticks[i]);
         const double w = fm.horizontalAdvance(text);
-        const double left = std::clamp(x - w / 2, band.left(), band.right() - w);
+        const double left = std::clamp(x - w / 2, band.left(), labelsRight - w);
         if (left < lastRight + 1.5 * dpmm) continue;  // labels never overlap
         p.drawText(QPointF(left, ramp.bottom() + 1.6 * dpmm + fm.ascent()), text);
         lastRight = left + w;
@@ -251,9 +341,9 @@ void paintNorthArrow(QPainter& p, const QRectF& plan, const PlanFrame& frame, co
 
 }  // namespace
 
-double planAspect(const Scene& scene, const CalculationGrid& grid) {
+double planAspect(const Scene& scene, const CalculationGrid& grid, const std::vector<PlanZone>& zones) {
     double u0, u1, v0, v1;
-    viewExtent(scene, grid, frameOf(grid), u0, u1, v0, v1);
+    viewExtent(scene, grid, zones, frameOf(grid), u0, u1, v0, v1);
     return (v1 - v0) / std::max(u1 - u0, 1e-9);
 }
 
@@ -261,7 +351,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
                      const GridLayout& layout, const PlanValues& plan, const QFont& font, double dpmm) {
     PlanFrame frame = frameOf(g);
     double u0, u1, v0, v1;
-    viewExtent(scene, g, frame, u0, u1, v0, v1);
+    viewExtent(scene, g, plan.zones, frame, u0, u1, v0, v1);
     const V3d corners[4] = {g.corner, g.corner + g.edgeU, g.corner + g.edgeV, g.corner + g.edgeU + g.edgeV};
     const QRectF planArea(rect.left(), rect.top(), rect.width(), rect.height() - kPlanLegendMm * dpmm);
     frame.scale = std::min(planArea.width() / std::max(u1 - u0, 1e-9), planArea.height() / std::max(v1 - v0, 1e-9));
@@ -272,6 +362,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
 
     if (frame.plan) p.drawImage(view, roomRaster(scene, frame, view, dpmm));
     else p.fillRect(view, Qt::white);
+    paintZones(p, view, g, plan.zones, frame, dpmm);  // under the area's values
 
     // The grid: each point's value over its cell.
     const PlanScale scale = planScale(plan.statistics);
@@ -375,7 +466,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
     p.drawRect(view);
 
     paintLegend(p, QRectF(rect.left(), rect.bottom() - (kPlanLegendMm - 2) * dpmm, rect.width(), (kPlanLegendMm - 2) * dpmm),
-                scale, plan.quantity, font, dpmm);
+                scale, plan.quantity, font, dpmm, plan.zones);
 }
 
 }  // namespace lucerna

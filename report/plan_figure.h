@@ -17,6 +17,16 @@ class QRectF;
 
 namespace lucerna {
 
+// A zone around the task area (EN 12464-1's surrounding zone or background area,
+// core/photometry/surrounding_zones.h): its strips in the area's plane, drawn as a tinted band
+// with its outer edge dashed (the background area's dotted), as the window's plan draws them, and
+// named in the legend.
+struct PlanZone {
+    QString label;                        // "Surrounding zone (0.5 m)"
+    std::vector<CalculationGrid> strips;  // ZoneGrid::strips (clipped to the room)
+    bool background = false;
+};
+
 // What the plan shows on the grid: a value per point (row-major, as the layout's points) in
 // the legend's quantity.
 struct PlanValues {
@@ -25,13 +35,15 @@ struct PlanValues {
     GridStatistics statistics;
     QString quantity = QStringLiteral("E [lx]");
     std::vector<GlareObserver> observers;  // drawn numbered from 1, looking along their view
+    std::vector<PlanZone> zones;           // around the area, under its values
 };
 
 // `dpmm`: device pixels per millimetre, for line widths and the raster of the room.
 void paintPlanFigure(QPainter& painter, const QRectF& rect, const Scene& scene, const CalculationGrid& grid,
                      const GridLayout& layout, const PlanValues& values, const QFont& font, double dpmm);
-// The plan's height over its width (the legend's band not included).
-double planAspect(const Scene& scene, const CalculationGrid& grid);
+// The plan's height over its width (the legend's band not included). The view takes in the area,
+// 1 m around it and its surrounding zone (a background area may run beyond the view's edge).
+double planAspect(const Scene& scene, const CalculationGrid& grid, const std::vector<PlanZone>& zones = {});
 // The legend's band under the plan, mm.
 inline constexpr double kPlanLegendMm = 15;
 

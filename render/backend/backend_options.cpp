@@ -41,6 +41,14 @@ void readOption(const RenderSettings& settings, const char* key, float& value, d
     value = float(v);
 }
 
+bool daylightPortalsOption(const RenderSettings& settings, bool byDefault) {
+    const auto it = settings.options.find("daylight_portals");
+    if (it == settings.options.end()) return byDefault;
+    if (it->second == "on") return true;
+    if (it->second == "off") return false;
+    throw std::invalid_argument("option daylight_portals must be on or off, got '" + it->second + "'");
+}
+
 LightSelection lightSelectionOption(const RenderSettings& settings) {
     const auto it = settings.options.find("light_sampler");
     if (it == settings.options.end()) return kDefaultLightSelection;

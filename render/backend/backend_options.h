@@ -18,5 +18,8 @@ void readOption(const RenderSettings& settings, const char* key, float& value, d
 
 // options["light_sampler"]: power or tree; kDefaultLightSelection when absent.
 LightSelection lightSelectionOption(const RenderSettings& settings);
+// Option daylight_portals=on|off: whether sky and sun particles travel through the windows
+// (daylight_portals.h) or from the disc around the scene; byDefault where not given.
+bool daylightPortalsOption(const RenderSettings& settings, bool byDefault);
 
 }  // namespace lucerna

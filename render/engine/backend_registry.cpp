@@ -18,18 +18,22 @@ namespace {
 // The option keys each backend's settings read (fromOptions): a test checks that every key listed
 // here is read, and the command line refuses a key not listed, so a new option goes in both
 // places. mlt reads bdpt's, cmlt mlt's, mir ir's gathering options;
-// path, ir and mir read light_sampler (TracingBackend; bdpt, mlt and cmlt choose by power).
+// every tracing backend reads light_sampler and daylight_portals (TracingBackend; path sends no
+// particles, so its list leaves daylight_portals out).
 constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth", "light_sampler"};
-constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies"};
-constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounces", "clamp", "compensate", "light_sampler"};
+constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies", "light_sampler", "daylight_portals"};
+constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounces", "clamp", "compensate", "light_sampler",
+                                          "daylight_portals"};
 constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples", "importance_points", "defensive",
                                             "max_bounces", "clamp",   "compensate",
-                                            "light_sampler"};
+                                            "light_sampler", "daylight_portals"};
 constexpr std::string_view kMltOptions[] = {"bootstrap", "chains",    "mutations", "large_step", "sigma",
-                                            "caustic",   "max_depth", "rr_depth",  "strategies"};
+                                            "caustic",   "max_depth", "rr_depth",  "strategies", "light_sampler",
+                                            "daylight_portals"};
 constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
                                              "caustic_steps",   "bootstrap", "chains",       "mutations",     "large_step",
-                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies"};
+                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies",
+                                             "light_sampler", "daylight_portals"};
 constexpr std::string_view kPreviewOptions[] = {"vpls",       "clamp", "area_samples", "unroll",        "pattern",
                                                 "visibility", "blur",  "split",        "vpl_source",    "shaded_lights",
                                                 "proxy_triangles", "sky_samples", "sky_shadow_size"};

@@ -24,16 +24,17 @@ public:
 protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.
     // lightSelection: how next-event estimation chooses lights; by default the option
-    // light_sampler (backend_options.h).
+    // light_sampler (backend_options.h). portalsByDefault: daylight_portals where not given.
     TracingBackend(SceneSnapshot scene, const RenderSettings& settings,
-                   std::optional<LightSelection> lightSelection = std::nullopt)
+                   std::optional<LightSelection> lightSelection = std::nullopt, bool portalsByDefault = true)
         : snapshot_(sceneAsRendered(std::move(scene))), settings_(settings),
-          lightSelection_(lightSelection ? *lightSelection : lightSelectionOption(settings)) {}
+          lightSelection_(lightSelection ? *lightSelection : lightSelectionOption(settings)),
+          daylightPortals_(daylightPortalsOption(settings, portalsByDefault)) {}
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {
         scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get(),
-                                               lightSelection_);
+                                               lightSelection_, daylightPortals_);
         scene_->setRayRecorder(settings_.rayRecorder);
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
@@ -42,6 +43,7 @@ protected:
     RenderSettings settings_;
     // How next-event estimation chooses lights (option light_sampler).
     LightSelection lightSelection_;
+    bool daylightPortals_;  // option daylight_portals
     std::unique_ptr<RenderScene> scene_;
     std::unique_ptr<Film> film_;
 };

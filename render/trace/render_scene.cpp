@@ -4,8 +4,34 @@
 
 namespace lucerna {
 
+namespace {
+
+// Which side of each pane is outside: the side from which rays leave the scene (other panes do
+// not stop them) while none leaves from the other, tried along the normal and eight directions
+// 60 degrees off it; neither (a pane between two rooms, or standing free) stays unknown.
+void markOutsides(const EmbreeScene& accel, std::vector<Portal>& portals, float sceneRadius) {
+    const float offset = 1e-4f * sceneRadius;
+    const auto escapes = [&](const V3f& centre, const V3f& n) {
+        const Frame frame(n);
+        int count = 0;
+        for (int k = 0; k < 9; ++k) {
+            const float phi = float(k) * kPi / 4, sinTheta = k == 8 ? 0.0f : 0.866f, cosTheta = k == 8 ? 1.0f : 0.5f;
+            const V3f d = n * cosTheta + (frame.s * std::cos(phi) + frame.t * std::sin(phi)) * sinTheta;
+            count += accel.occluded(Ray{centre + n * offset, d}) ? 0 : 1;
+        }
+        return count;
+    };
+    for (Portal& p : portals) {
+        const V3f centre = (p.p0 + p.p1 + p.p2) / 3.0f;
+        const int front = escapes(centre, p.normal), back = escapes(centre, -p.normal);
+        p.outside = front > 0 && back == 0 ? int8_t(1) : back > 0 && front == 0 ? int8_t(-1) : int8_t(0);
+    }
+}
+
+}  // namespace
+
 RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Sensor* sensor,
-                         LightSelection lightSelection)
+                         LightSelection lightSelection, bool daylightPortals)
     : scene_(std::move(scene)), features_(analyseFeatures(*scene_)) {
     const Scene& s = *scene_;
     camera_ = sensor ? *sensor
@@ -76,10 +102,12 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         sun.intensity = toFloat(daylight.sun->irradiance());
         if (!isBlack(sun.intensity)) deltas.push_back(sun);
     }
-    lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
-                           triangles_.size(), lightSelection, EnvironmentLight::fromDaylight(daylight), std::move(portals));
     if (panes.empty()) panes.paneOfTriangle.clear();
     accel_ = std::make_unique<EmbreeScene>(positions_, triangles_, std::move(panes));
+    std::optional<EnvironmentLight> environment = EnvironmentLight::fromDaylight(daylight);
+    if (environment && portals.size() <= kMaxPortalTriangles) markOutsides(*accel_, portals, boundsRadius_);
+    lights_ = LightSampler(std::move(emitters), std::move(deltas), metersPerUnit_, boundsCenter_, boundsRadius_,
+                           triangles_.size(), lightSelection, std::move(environment), std::move(portals), daylightPortals);
 }
 
 SurfacePoint RenderScene::surfacePoint(uint32_t tri, float b1, float b2) const {

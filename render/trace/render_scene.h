@@ -21,8 +21,9 @@ class RenderScene {
 public:
     // width/height: the film resolution (the camera's own when <= 0). With `sensor`, the film
     // measures that sensor instead of the scene's camera (irradiance sensors; sensor.h).
+    // daylightPortals: daylight particles through the glazing panes (daylight_portals.h).
     RenderScene(SceneSnapshot scene, int width = 0, int height = 0, const Sensor* sensor = nullptr,
-                LightSelection lightSelection = kDefaultLightSelection);
+                LightSelection lightSelection = kDefaultLightSelection, bool daylightPortals = true);
 
     const Scene& scene() const { return *scene_; }
     const SceneSnapshot& snapshot() const { return scene_; }

@@ -1,6 +1,7 @@
 // The bdpt backend on its own: light tracing alone (the t = 1 strategies, splatted) against path
 // tracing, the full estimator against path tracing on a scene with every material and light type
-// (a check of the MIS weights: a wrong weight is a bias there), the Pc estimate against a closed
+// and on one with many lights, next-event estimation choosing by the light tree and by power (a
+// check of the MIS weights: a wrong weight, a tree probability left out, is a bias there), the Pc estimate against a closed
 // form, reproducibility, no NaN or infinity on the hard cases, and no roulette at delta bounces
 // (an emitter seen through a stack of glass panes is never brighter than itself).
 
@@ -85,6 +86,36 @@ const char* kDeltaLightScene = R"({"lucerna": 1, "meters_per_unit": 0.01,
      "cone_angle": 25, "falloff_start": 15},
     {"name": "sun", "type": "directional", "direction": [0.4, -1, 0.5], "irradiance": [0.3, 0.3, 0.35]}]})";
 
+// Many lights where the tree matters: a row of twelve small downlight panels and six bare lamps
+// over a floor, a wall and a glossy plate (no glass: a path tracer misses a bare lamp's caustic):
+// next-event estimation chooses among them by the tree, light subpaths by power.
+std::string manyLightScene() {
+    std::string lamps;
+    for (int i = 0; i < 12; ++i) {
+        const int x = -180 + 30 * i, y = 60 + 10 * (i % 4);
+        lamps += R"({"name": "panel)" + std::to_string(i) + R"(", "material": "lamp", "mesh": {"quad": [[)" +
+                 std::to_string(x) + "," + std::to_string(y) + ",-60],[" + std::to_string(x + 28) + "," + std::to_string(y) +
+                 ",-60],[" + std::to_string(x + 28) + "," + std::to_string(y) + ",140],[" + std::to_string(x) + "," +
+                 std::to_string(y) + ",140]]}},";
+    }
+    std::string bulbs;
+    for (int i = 0; i < 6; ++i)
+        bulbs += std::string(i ? "," : "") + R"({"name": "bulb)" + std::to_string(i) + R"(", "type": "point", "position": [)" +
+                 std::to_string(-150 + 60 * i) + ", 60, " + std::to_string(-80 + 30 * (i % 3)) +
+                 R"(], "intensity": [0.02, 0.02, 0.02]})";
+    return R"({"lucerna": 1, "meters_per_unit": 0.01,
+  "camera": {"position": [0, 120, -300], "target": [0, 60, 0], "fov_y": 50, "resolution": [48, 48]},
+  "materials": {"white": {"type": "diffuse", "albedo": [0.7, 0.7, 0.7]},
+                "red": {"type": "diffuse", "albedo": [0.7, 0.2, 0.1]},
+                "satin": {"type": "glossy", "albedo": [0.2, 0.3, 0.5], "specular": [0.6, 0.6, 0.6], "roughness": 0.3},
+                "lamp": {"type": "emitter", "radiance": [1.5, 1.2, 1]}},
+  "objects": [)" + lamps + R"(
+    {"name": "floor", "material": "white", "mesh": {"quad": [[-200,0,-200],[-200,0,200],[200,0,200],[200,0,-200]]}},
+    {"name": "back", "material": "red", "mesh": {"quad": [[-200,0,150],[-200,200,150],[200,200,150],[200,0,150]]}},
+    {"name": "plate", "material": "satin", "mesh": {"quad": [[-150,1,-50],[-150,1,80],[-40,1,80],[-40,1,-50]]}}],
+  "lights": [)" + bulbs + "]}";
+}
+
 }  // namespace
 
 class TestBdpt : public QObject {
@@ -120,15 +151,24 @@ void TestBdpt::lightTracingMatchesPathTracing() {
 
 void TestBdpt::agreesWithPathOnEveryMaterialAndLight_data() {
     QTest::addColumn<QString>("json");
-    QTest::newRow("specular materials") << QString(kSpecularScene);
-    QTest::newRow("delta lights") << QString(kDeltaLightScene);
+    QTest::addColumn<QString>("lightSampler");  // bdpt's light_sampler
+    QTest::newRow("specular materials") << QString(kSpecularScene) << "tree";
+    QTest::newRow("delta lights") << QString(kDeltaLightScene) << "tree";
+    QTest::newRow("delta lights, by power") << QString(kDeltaLightScene) << "power";
+    QTest::newRow("many lights") << QString::fromStdString(manyLightScene()) << "tree";
+    QTest::newRow("many lights, by power") << QString::fromStdString(manyLightScene()) << "power";
 }
 
 void TestBdpt::agreesWithPathOnEveryMaterialAndLight() {
     QFETCH(QString, json);
+    QFETCH(QString, lightSampler);
     const auto scene = sceneFromJson(json.toStdString());
     const Image path = render("path", scene, 1024, 11);
-    const Image bdpt = render("bdpt", scene, 256, 12);
+    RenderSettings settings;
+    settings.spp = 256;
+    settings.seed = 12;
+    settings.options["light_sampler"] = lightSampler.toStdString();
+    const Image bdpt = renderFrame("bdpt", scene, settings).image;
     const BlockComparison c = compareBlocks(bdpt, path, 12);
     qInfo("bdpt against path: mean %+.3f%%, worst 12x12 block %.3f%%", 100 * c.mean, 100 * c.worst);
     QCOMPARE(nonFinitePixels(bdpt), 0L);
@@ -140,7 +180,7 @@ void TestBdpt::cameraPowerOfClosedSphere() {
     // Inside a closed sphere every pixel sees the same radiance, so Pc is that radiance.
     SphereWithEmittingCap sphere;
     const auto snapshot = sceneFromJson(sphere.json());
-    const RenderScene scene(snapshot, 16, 16, nullptr, LightSelection::Power);  // as bdpt's backends
+    const RenderScene scene(snapshot, 16, 16, nullptr);  // the light tree, as bdpt's backends
     TaskSystem tasks(0);
     CameraPower pc;
     auto job = tasks.submit([&](TaskContext& ctx) { pc = estimateCameraPower(scene, BdptSettings{}, 3, 64, ctx); });
@@ -207,7 +247,7 @@ void TestBdpt::deltaBouncesAreNotRouletted() {
       "camera": {"position": [0, 0, -1], "target": [0, 0, 1], "fov_y": 30, "resolution": [16, 16]},
       "materials": {"glass": {"type": "dielectric", "ior": 1.5}, "lamp": {"type": "emitter", "radiance": [10, 10, 10]}},
       "objects": [)" + panes + R"({"name": "lamp", "material": "lamp", "mesh": {"quad": [[-3,-3,2],[-3,3,2],[3,3,2],[3,-3,2]]}}]})");
-    const RenderScene scene(snapshot, 0, 0, nullptr, LightSelection::Power);  // as bdpt's backends
+    const RenderScene scene(snapshot, 0, 0, nullptr);  // the light tree, as bdpt's backends
     BdptTracer tracer(scene, BdptSettings{});
     SampledPaths paths;
     tracer.recordPaths(&paths);

@@ -1,10 +1,13 @@
 // The light tree (render/trace/lights/light_tree.h): its probabilities sum to one at any point, the
 // lights it chooses follow them (chi-square), what sample() reports is what pmf() computes, and
 // its bounds are conservative: no light that reaches a point has probability 0 there (an uplight,
-// a wide spot, one-sided emitters seen from the front).
+// a wide spot, one-sided emitters seen from the front). Then next-event estimation's choice
+// (tree_selection.h) over emitter clusters, delta lights, directional lights and the
+// environment beside the tree: the same, for the probability bdpt's MIS weights read (pmf()).
 
 #include "chi_square.h"
 #include "render/trace/lights/light_tree.h"
+#include "render/trace/lights/tree_selection.h"
 #include "render/trace/rng.h"
 
 #include <QtTest>
@@ -71,6 +74,33 @@ MixedLights mixedLights(int count, uint64_t seed) {
         }
     }
     return m;
+}
+
+// Pearson's chi-square of `counts` (of n draws) against probabilities `expected`, cells with
+// fewer than 5 expected pooled into one: true where the p-value exceeds `significance`.
+bool frequenciesFollow(const std::vector<int64_t>& counts, const std::vector<double>& expected, int n,
+                       double significance) {
+    double stat = 0, pooledExpected = 0;
+    int64_t pooledCount = 0;
+    int cells = 0;
+    for (size_t i = 0; i < counts.size(); ++i) {
+        const double e = expected[i] * n;
+        if (e < 5) {
+            pooledExpected += e;
+            pooledCount += counts[i];
+            continue;
+        }
+        stat += (counts[i] - e) * (counts[i] - e) / e;
+        ++cells;
+    }
+    if (pooledExpected > 0) {
+        stat += (pooledCount - pooledExpected) * (pooledCount - pooledExpected) / std::max(pooledExpected, 1e-9);
+        ++cells;
+    }
+    const double pValue = regularizedGammaQ(0.5 * (cells - 1), 0.5 * stat);
+    if (pValue > significance) return true;
+    qWarning("X^2 %g, %d cells, p %g", stat, cells, pValue);
+    return false;
 }
 
 }  // namespace
@@ -146,27 +176,66 @@ private slots:
                 QVERIFY(std::abs(choice->pmf - expected[choice->light]) <= 1e-5f * expected[choice->light]);
                 ++counts[choice->light];
             }
-            // Pearson's chi-square, cells with fewer than 5 expected pooled into one.
-            double stat = 0, pooledExpected = 0;
-            int64_t pooledCount = 0;
-            int cells = 0;
-            for (size_t i = 0; i < counts.size(); ++i) {
-                const double e = expected[i] * n;
-                if (e < 5) {
-                    pooledExpected += e;
-                    pooledCount += counts[i];
-                    continue;
-                }
-                stat += (counts[i] - e) * (counts[i] - e) / e;
-                ++cells;
-            }
-            if (pooledExpected > 0) {
-                stat += (pooledCount - pooledExpected) * (pooledCount - pooledExpected) / std::max(pooledExpected, 1e-9);
-                ++cells;
-            }
-            const double pValue = regularizedGammaQ(0.5 * (cells - 1), 0.5 * stat);
-            QVERIFY2(pValue > 0.001 / 3, qPrintable(QString("X^2 %1, %2 cells, p %3").arg(stat).arg(cells).arg(pValue)));
+            QVERIFY(frequenciesFollow(counts, expected, n, 0.001 / 3));
         }
+    }
+
+    void selectionPmfIsWhatSelectChooses() {
+        // Two clusters of emissive triangles (a quad lamp facing down, a wall panel facing +x),
+        // a point light, a spot, a directional light and the environment beside the tree.
+        const auto triangle = [](uint32_t index, V3f a, V3f b, V3f c) {
+            EmitterTriangle e;
+            e.triangle = index;
+            e.p0 = a;
+            e.p1 = b;
+            e.p2 = c;
+            e.normal = (b - a).cross(c - a).normalized();
+            e.area = 0.5f * (b - a).cross(c - a).length();
+            e.radiance = Rgb(5, 5, 5);
+            return e;
+        };
+        const std::vector<EmitterTriangle> emitters = {
+            triangle(0, V3f(0, 3, 0), V3f(1, 3, 0), V3f(1, 3, 1)), triangle(1, V3f(0, 3, 0), V3f(1, 3, 1), V3f(0, 3, 1)),
+            triangle(2, V3f(-4, 1, 0), V3f(-4, 1, 2), V3f(-4, 2, 0))};
+        std::vector<DeltaLight> deltas(3);
+        deltas[0].position = V3f(3, 2.5f, 3);
+        deltas[0].intensity = Rgb(2, 2, 2);
+        deltas[1].type = LightType::Spot;
+        deltas[1].position = V3f(-2, 2.8f, -2);
+        deltas[1].direction = V3f(0, -1, 0);
+        deltas[1].cosCone = std::cos(radians(40.0f));
+        deltas[1].intensity = Rgb(8, 8, 8);
+        deltas[2].type = LightType::Directional;
+        deltas[2].direction = V3f(0.3f, -1, 0.2f).normalized();
+        deltas[2].intensity = Rgb(1, 1, 1);
+        const size_t lights = emitters.size() + deltas.size() + 1;  // the environment last
+        const TreeSelection selection(emitters, deltas, true, 1.0f, emitters.size());
+        QVERIFY(!selection.empty());
+        const struct {
+            V3f p, n;
+        } receivers[] = {{V3f(0.5f, 0, 0.5f), V3f(0, 1, 0)}, {V3f(-3, 1.5f, 1), V3f(-1, 0, 0)},
+                         {V3f(2, 1, -1), V3f(0, 0, 0)}};
+        for (const auto& r : receivers) {
+            std::vector<double> expected(lights);
+            double sum = 0;
+            for (size_t i = 0; i < lights; ++i) sum += expected[i] = selection.pmf(i, r.p, r.n);
+            QVERIFY2(std::abs(sum - 1) < 1e-5, qPrintable(QString("pmf sums to %1").arg(sum)));
+            std::vector<int64_t> counts(lights, 0);
+            const int n = 100000;
+            Rng rng(7);
+            for (int k = 0; k < n; ++k) {
+                size_t index = 0;
+                float pdf = 0;
+                QVERIFY(selection.select(r.p, r.n, rng.next1D(), index, pdf));
+                QVERIFY2(std::abs(pdf - expected[index]) <= 1e-5f * expected[index],
+                         qPrintable(QString("light %1: select says %2, pmf %3").arg(index).arg(pdf).arg(expected[index])));
+                ++counts[index];
+            }
+            QVERIFY(frequenciesFollow(counts, expected, n, 0.001 / 3));
+        }
+        // The quad lamp's two triangles (equal areas) share a leaf and split it by area.
+        const V3f p(0.5f, 0, 0.5f), n(0, 1, 0);
+        QVERIFY(selection.pmf(0, p, n) > 0 && selection.pmf(0, p, n) == selection.pmf(1, p, n));
     }
 
     void nearLightsFirst() {

@@ -385,7 +385,7 @@ void TestMlt::reusedLightSubpathMatchesFreshSample() {
     // Glossy, diffuse, mirror and glass under a small area light: long subpaths of every kind.
     const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
     const Sensor sensor({{V3f(0, 0.01f, 0), V3f(0, 1, 0)}, {V3f(1, 0.01f, -1), V3f(0, 1, 0)}, {V3f(0, 1, 1.99f), V3f(0, 0, -1)}}, 4);
-    const RenderScene scene(snapshot, 0, 0, sensors ? &sensor : nullptr, LightSelection::Power);  // as bdpt's backends
+    const RenderScene scene(snapshot, 0, 0, sensors ? &sensor : nullptr);  // the light tree, as bdpt's backends
     const Sensor& camera = scene.camera();
     BdptSettings settings;
     BdptTracer reusing(scene, settings), fresh(scene, settings);
@@ -462,7 +462,7 @@ bool isGlass(const RenderScene& scene, const PathVertex& v) {
 // probabilities would join p.
 void checkRecordedPaths(const std::string& json, int samples, RecordedPathCounts& n) {
     const SceneSnapshot snapshot = sceneFromJson(json);
-    const RenderScene scene(snapshot, 0, 0, nullptr, LightSelection::Power);  // as bdpt's backends
+    const RenderScene scene(snapshot, 0, 0, nullptr);  // the light tree, as bdpt's backends
     const Sensor& camera = scene.camera();
     BdptSettings settings;
     settings.rouletteStartDepth = settings.maxDepth;
@@ -620,7 +620,7 @@ void TestMlt::cmltMatchesBdptThroughMirrorsAndGlass() {
 // ray, misses included.
 void TestMlt::coherentRaysMatchSingleRays() {
     const SceneSnapshot snapshot = sceneFromJson(kColouredSpecularScene);
-    const RenderScene scene(snapshot, 64, 48, nullptr, LightSelection::Power);  // as bdpt's backends
+    const RenderScene scene(snapshot, 64, 48, nullptr);  // the light tree, as bdpt's backends
     const Sensor& camera = scene.camera();
     Rng rng(11, 0);
     int hits = 0, misses = 0;

@@ -9,10 +9,14 @@
 #include "process_run.h"
 #include "core/scene/room_geometry.h"
 #include "core/scene/scene_io.h"
+#include "report/plan_figure.h"
 #include "report/report_builder.h"
+#include "report/report_text.h"
 #include "report/report_writer.h"
 
 #include <QFile>
+#include <QImage>
+#include <QPainter>
 #include <QRegularExpression>
 #include <QStandardPaths>
 #include <QTemporaryDir>
@@ -111,6 +115,7 @@ private slots:
     void boxRoomCarriesThe2021Figures();
     void roomsSceneIsSummarisedRoomByRoom();
     void extrasAreAStageThatCancels();
+    void valuesContinueUnderTheirHeading();
 };
 
 void TestReport2021::boxRoomCarriesThe2021Figures() {
@@ -191,6 +196,37 @@ void TestReport2021::boxRoomCarriesThe2021Figures() {
                           "EN 12464-1:2021 5.26.2, Offices", "the scene's bounds: wall 1", "They are the room's, computed once for",
                           "EN 12464-1:2021 (fallback to EN 12464-1:2011 for 5.26.1"})
         QVERIFY2(text.contains(QString::fromUtf8(s)), s);
+    // The desk's plan draws its zones (a band, its edge dashed; the background area's dotted)
+    // and names them in its legend; the reading area has none.
+    for (const char* s : {"Surrounding zone (0.5 m)", "Background area (3 m)"})
+        QCOMPARE(text.count(QString::fromUtf8(s)), 1);
+    {
+        PlanValues values;
+        values.values = desk.result.lux;
+        values.insideGeometry = desk.result.insideGeometry;
+        values.statistics = desk.statistics;
+        const auto paint = [&](const PlanValues& v) {
+            QImage image(600, 700, QImage::Format_RGB32);
+            image.fill(Qt::white);
+            QPainter p(&image);
+            paintPlanFigure(p, QRectF(0, 0, 600, 700), *scene, desk.grid, desk.layout, v, QFont(), 3);
+            return image;
+        };
+        const QImage without = paint(values);
+        for (const ZoneReport& z : desk.zones) values.zones.push_back({qs(z.name), z.grid.strips, z.name == "background area"});
+        const QImage with = paint(values);
+        // The plan's pixels the zones changed: their bands and edges, tinted with the window's
+        // zone colour (0, 125, 90) over the room's greys.
+        int changed = 0, zoneColoured = 0;
+        for (int y = 0; y < with.height() - kPlanLegendMm * 3; ++y)  // the plan, not its legend
+            for (int x = 0; x < with.width(); ++x) {
+                const QColor a = with.pixelColor(x, y), b = without.pixelColor(x, y);
+                if (a == b) continue;
+                ++changed;
+                if (a.green() > a.red() + 5 && a.green() > a.blue()) ++zoneColoured;
+            }
+        QVERIFY2(changed > 2000 && zoneColoured > changed / 2, qPrintable(QStringLiteral("%1 %2").arg(changed).arg(zoneColoured)));
+    }
     // Eavg of the walls with its error bar, as computed.
     const QString walls = QStringLiteral("%1 \u00b1 %2").arg(QString::asprintf("%.1f", room.result.walls.stats.average),
                                                              QString::asprintf("%.1f", room.result.walls.errors.average));
@@ -300,6 +336,36 @@ void TestReport2021::extrasAreAStageThatCancels() {
     QVERIFY2(seconds < 30, qPrintable(QString::number(seconds)));
     QVERIFY(!data.areas.empty() && !data.areas[0].result.lux.empty());  // the grid was done
     QVERIFY(!data.areas[0].cylindrical);                               // Ez was not
+}
+
+// A table of values longer than a page (a bench 0.45 x 2.9 m at 3 cm: 15 x 97 points, two
+// blocks of columns) says on each page it continues onto whose values they are, above its
+// header row repeated; so does its second block, which starts a page of its own.
+void TestReport2021::valuesContinueUnderTheirHeading() {
+    QTemporaryDir dir;
+    QFile box(writeBoxRoom(dir));
+    QVERIFY(box.open(QIODevice::ReadOnly));
+    QString json = QString::fromUtf8(box.readAll());
+    json.truncate(json.indexOf(QStringLiteral("\"task_areas\"")));
+    json += QStringLiteral(R"("task_areas": [{"name": "Bench", "corner": [1.0, 0.75, 0.05], "u": [0.45, 0, 0],
+                                              "v": [0, 0, 2.9], "spacing": 0.03}]})");
+    const SceneSnapshot scene =
+        std::make_shared<const Scene>(loadScene(writeFile(dir, "bench.json", json).toStdString()));
+    ReportSettings s = quickSettings();
+    s.grid.targetRelativeError = 0.3;  // the pages are checked, not the figures
+    const ReportData data = build(scene, s);
+    QCOMPARE(data.areas.size(), size_t(1));
+    QCOMPARE(data.areas[0].layout.nu, 15);
+    QVERIFY(data.areas[0].layout.nv > 90);
+    const QString text = pdfText(data, dir);
+    const QString title = QStringLiteral("Bench: illuminance at the grid points [lx]");
+    QVERIFY2(text.contains(title + QStringLiteral(", columns 1 to 12 of 15 (continued) [m] x ")), qPrintable(text));
+    QVERIFY2(text.contains(title + QStringLiteral(" (continued) Columns 13 to 15 of 15 [m] x ")), qPrintable(text));
+    QVERIFY2(text.contains(title + QStringLiteral(", columns 13 to 15 of 15 (continued) [m] x ")), qPrintable(text));
+    // Every continuation title is followed by the table's header row.
+    const int continued = int(text.count(QStringLiteral(" (continued) ")));
+    const int withHeader = int(text.count(QRegularExpression(R"(\(continued\) (Columns 13 to 15 of 15 )?\[m\] x [0-9.]+ x )")));
+    QVERIFY2(continued >= 3 && withHeader == continued, qPrintable(QStringLiteral("%1 %2").arg(continued).arg(withHeader)));
 }
 
 QTEST_MAIN(TestReport2021)

@@ -28,15 +28,19 @@
 #include <QDialogButtonBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
+#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProcess>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTabWidget>
+#include <QTableWidget>
 #include <QTemporaryDir>
 #include <QTimer>
 #include <QtTest>
@@ -305,6 +309,17 @@ private slots:
                 const QRegularExpression zoneEm(R"(\n  Em [0-9]+ lx \+- [0-9.e+-]+ lx >= 300 lx: (met|borderline|not met)\b)");
                 QVERIFY2(zoneEm.match(figures).hasMatch(), qPrintable(figures));
             }
+            // At the window's size the figures scroll in their pane and the table of values
+            // shows its header and three rows at least within the dock (the text once pressed it
+            // to a strip a few pixels tall).
+            auto* table = child<QTableWidget>(*panel, "gridTable");
+            QVERIFY(table->rowCount() >= 3);
+            const int shownHeight = table->visibleRegion().boundingRect().height();
+            const int needed = table->horizontalHeader()->height() + 3 * table->rowHeight(0);
+            QVERIFY2(shownHeight >= needed, qPrintable(QString("the table shows %1 px of %2").arg(shownHeight).arg(needed)));
+            auto* figuresPane = child<QScrollArea>(*panel, "gridFiguresScroll");
+            QVERIFY(figuresPane->viewport()->height() >= 4 * figuresPane->fontMetrics().lineSpacing());
+            QVERIFY(figuresPane->verticalScrollBar()->maximum() > 0);  // its thirty lines and more scroll there
             QVERIFY(w.findChild<QDockWidget*>("gridDock")->grab().save(QString("project_workflow_dock_%1.png").arg(i + 1)));
         }
         QVERIFY(w.grab().save("project_workflow_window.png"));

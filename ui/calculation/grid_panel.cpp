@@ -25,6 +25,8 @@
 #include <QMessageBox>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QSplitter>
 #include <QTableWidget>
 #include <QVBoxLayout>
 
@@ -152,13 +154,38 @@ GridPanel::GridPanel(Document* doc, const YieldGate& gate, QWidget* parent) : QW
     buttons->addWidget(compute_);
     buttons->addWidget(cancel_);
     buttons->addWidget(export_);
+    // The figures (with a task area's extras and checks, thirty lines and more) scroll in their
+    // own pane above the table of values, the two sharing what the dock leaves below the fields
+    // at a divider the designer may drag: in one column the text pressed the table to a strip.
+    auto* figuresScroll = new QScrollArea(this);
+    figuresScroll->setObjectName("gridFiguresScroll");
+    figuresScroll->setWidget(figures_);
+    figuresScroll->setWidgetResizable(true);
+    figuresScroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);  // the lines wrap instead
+    figuresScroll->setFrameShape(QFrame::NoFrame);
+    figures_->setAlignment(Qt::AlignLeft | Qt::AlignTop);
+    const int line = fontMetrics().lineSpacing();
+    figuresScroll->setMinimumHeight(4 * line);
+    // The header and three rows at least, so that the values never shrink to a strip.
+    table_->setMinimumHeight(5 * (line + 8));
+    auto* results = new QSplitter(Qt::Vertical, this);
+    results->setObjectName("gridResults");
+    results->setChildrenCollapsible(false);
+    results->addWidget(figuresScroll);
+    results->addWidget(table_);
+    // The text three parts and the table two (a task area is a few rows): weights, scaled to the
+    // height the splitter gets, each above its pane's minimum (a smaller one would be raised to it).
+    results->setSizes({600, 400});
+    // Its size hint is left out, so that a long text scrolls in its pane rather than making the
+    // panel taller than the dock; its minimum still holds.
+    results->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Ignored);
+    results->setMinimumHeight(figuresScroll->minimumHeight() + table_->minimumHeight() + results->handleWidth());
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
     layout->addLayout(buttons);
     layout->addWidget(progress_);
-    layout->addWidget(figures_);
     layout->addWidget(status_);
-    layout->addWidget(table_, 1);
+    layout->addWidget(results, 1);
 
     connect(compute_, &QPushButton::clicked, this, &GridPanel::compute);
     connect(cancel_, &QPushButton::clicked, this, &GridPanel::cancel);

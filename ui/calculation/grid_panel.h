@@ -5,7 +5,8 @@
 // (render/photometry/grid_calculation.h), shown as a false-colour table in lux with Eavg, Emin,
 // Emax and U0 (points inside geometry grey, hatched and left out; a method that cannot carry
 // light through glass flagged: render/photometry/grid_diagnosis.h), in the words of
-// render/photometry/grid_text.h, and exported as CSV. A scene edit that changes the light
+// render/photometry/grid_text.h (the figures scroll in a pane above the table, a divider between
+// them, so that a task area's thirty lines leave the table readable), and exported as CSV. A scene edit that changes the light
 // (core/scene/scene_change.h: not a camera move) marks the result as out of date; Compute runs
 // again on the current scene. The calculation is a foreground request: it runs in a task arena of
 // its own (in the converging render's, whose job never ends, it could wait behind the render's

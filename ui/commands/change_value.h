@@ -18,7 +18,7 @@ namespace lucerna {
 
 // The kinds of value a ChangeValue changes, each its own undo id: QUndoStack offers a command to
 // merge only with the previous one of the same id.
-enum class ValueKind { Light, Lights, LightList, Material, Object, Camera, Site, Sky, TaskArea, Project, Energy };
+enum class ValueKind { Light, Lights, LightList, Material, Object, Camera, Site, Sky, TaskArea, Project };
 
 namespace detail {
 // What a Document getter says about the value: `Value get(Target) const`, or `Value get() const`

@@ -1,6 +1,7 @@
 #pragma once
 // The undo command of File > Project Settings: the project's details, the scene's maintenance
-// factor and its EN 12464-1 edition (ProjectSettings, ui/document/document.h) replaced together,
+// factor, its EN 12464-1 edition and its lighting energy's settings (ProjectSettings,
+// ui/document/document.h) replaced together,
 // so that the dialog's OK is one undo step however many of its fields changed.
 
 #include "ui/commands/change_value.h"

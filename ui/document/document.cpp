@@ -134,12 +134,15 @@ void Document::setSky(std::optional<Sky> sky) {
 }
 
 void Document::setProjectSettings(ProjectSettings settings) {
+    const bool energy = settings.energy != scene_->energy;
     modify([&](Scene& s) {
         s.project = std::move(settings.project);
         s.maintenance = std::move(settings.maintenance);
         s.lightingStandard = settings.lightingStandard;
+        s.energy = std::move(settings.energy);
     });
     emit projectChanged();
+    if (energy) emit energyChanged();
 }
 
 void Document::setEnergy(std::optional<EnergySettings> energy) {

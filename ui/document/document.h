@@ -17,12 +17,14 @@ namespace lucerna {
 
 // What File > Project Settings edits, as one value so that its OK is one undo step: the project's
 // details for the report (README, "Reports"), the scene's maintenance factor (README,
-// "Maintained values") and the EN 12464-1 edition its task areas are checked against (README,
-// "Task areas"); absent: none (the edition: the default, and no key written).
+// "Maintained values"), the EN 12464-1 edition its task areas are checked against (README,
+// "Task areas") and the lighting energy's settings (README, "Energy (LENI; an addition)");
+// absent: none (the edition: the default, and no key written; the energy: LENI not computed).
 struct ProjectSettings {
     std::optional<ProjectInfo> project;
     std::optional<MaintenanceFactor> maintenance;
     std::optional<StandardEdition> lightingStandard;
+    std::optional<EnergySettings> energy;
     bool operator==(const ProjectSettings&) const = default;
 };
 
@@ -60,7 +62,9 @@ public:
     const Camera& camera() const { return scene_->camera; }
     const std::optional<Site>& site() const { return scene_->site; }
     const std::optional<Sky>& sky() const { return scene_->sky; }
-    ProjectSettings projectSettings() const { return {scene_->project, scene_->maintenance, scene_->lightingStandard}; }
+    ProjectSettings projectSettings() const {
+        return {scene_->project, scene_->maintenance, scene_->lightingStandard, scene_->energy};
+    }
     const std::optional<EnergySettings>& energy() const { return scene_->energy; }
 
     void setLight(int index, Light light);
@@ -113,7 +117,7 @@ signals:
     void pathChanged();
     // The project settings (the project's details, the scene's maintenance factor, the EN 12464-1 edition).
     void projectChanged();
-    // The energy settings (setEnergy).
+    // The energy settings (setEnergy, or setProjectSettings when they changed).
     void energyChanged();
 
 private:

@@ -1,6 +1,7 @@
 #include "ui/scene_panels/project_dialog.h"
 
 #include "ui/commands/project_commands.h"
+#include "ui/scene_panels/energy_settings_page.h"
 #include "ui/scene_panels/maintenance_assistant_dialog.h"
 #include "ui/scene_panels/project_pages.h"
 
@@ -10,7 +11,7 @@
 
 namespace lucerna {
 
-ProjectDialog::ProjectDialog(Document* doc, QWidget* parent) : QDialog(parent), doc_(doc) {
+ProjectDialog::ProjectDialog(Document* doc, QWidget* parent, Tab tab) : QDialog(parent), doc_(doc) {
     setObjectName("projectDialog");
     setWindowTitle(tr("Project settings"));
     tabs_ = new QTabWidget(this);
@@ -24,6 +25,8 @@ ProjectDialog::ProjectDialog(Document* doc, QWidget* parent) : QDialog(parent), 
     addPage(new ProjectInfoPage(this), tr("Project"));
     addPage(new MaintenancePage(choicesForScene(doc->scene()), this), tr("Maintenance"));
     addPage(new StandardEditionPage(this), tr("Standard"));
+    addPage(new EnergySettingsPage(doc->snapshot(), this), tr("Energy"));
+    tabs_->setCurrentIndex(int(tab));
     resize(680, 600);  // room for the assistant's lines under the factors
 }
 
@@ -41,6 +44,12 @@ ProjectSettings ProjectDialog::settings() const {
 }
 
 void ProjectDialog::accept() {
+    for (ProjectSettingsPage* page : pages_) {
+        if (!page->check().isEmpty()) {
+            tabs_->setCurrentWidget(page);
+            return;
+        }
+    }
     const ProjectSettings after = settings();
     if (!(after == doc_->projectSettings()))
         doc_->undoStack()->push(new EditProjectSettingsCommand(doc_, after, 0, tr("Change project settings")));

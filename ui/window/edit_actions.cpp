@@ -8,7 +8,7 @@
 #include "ui/io/file_dialogs.h"
 #include "ui/io/luminaire_import.h"
 #include "ui/scene_panels/arrangement_dialog.h"
-#include "ui/scene_panels/energy_panel.h"
+#include "ui/scene_panels/project_dialog.h"
 #include "ui/scene_panels/outliner.h"
 #include "ui/window/file_actions.h"
 #include "ui/window/room_actions.h"
@@ -16,11 +16,9 @@
 #include "ui/window/window_messages.h"
 
 #include <QDialog>
-#include <QDialogButtonBox>
 #include <QElapsedTimer>
 #include <QMainWindow>
 #include <QMenu>
-#include <QVBoxLayout>
 
 namespace lucerna {
 
@@ -126,20 +124,8 @@ bool EditActions::arrangeField(const FieldArrangement& field, const Light& proto
 }
 
 void EditActions::showEnergy() {
-    if (!energy_) {
-        energy_ = new QDialog(messages_.window());
-        energy_->setObjectName("energyDialog");
-        energy_->setWindowTitle(tr("Energy (EN 15193-1, LENI)"));
-        auto* layout = new QVBoxLayout(energy_);
-        layout->addWidget(new EnergyPanel(&doc_, energy_));
-        auto* buttons = new QDialogButtonBox(QDialogButtonBox::Close, energy_);
-        connect(buttons, &QDialogButtonBox::rejected, energy_, &QDialog::close);
-        layout->addWidget(buttons);
-        energy_->resize(560, 620);
-    }
-    energy_->show();
-    energy_->raise();
-    energy_->activateWindow();
+    ProjectDialog dialog(&doc_, messages_.window(), ProjectDialog::Tab::Energy);
+    dialog.exec();
 }
 
 void EditActions::deleteSelection() {

@@ -6,13 +6,11 @@
 #include "ui/scene_panels/light_arrangement.h"
 
 #include <QObject>
-#include <QPointer>
 #include <QString>
 
 #include <array>
 #include <optional>
 
-class QDialog;
 class QMenu;
 
 namespace lucerna {
@@ -54,8 +52,8 @@ public:
     void deleteSelection();
     // The selected light's index, or -1.
     int selectedLight() const;
-    // Edit > Energy...: the Energy page (ui/scene_panels/energy_panel.h) in a dialog of its own
-    // that stays open beside the window, raised when it is open already.
+    // Edit > Energy...: File > Project Settings (ui/scene_panels/project_dialog.h) opened on its
+    // Energy tab, where a designer looking in the Edit menu finds it too.
     void showEnergy();
 
 private:
@@ -67,7 +65,6 @@ private:
     Outliner& outliner_;
     FileDialogs& dialogs_;
     WindowMessages& messages_;
-    QPointer<QDialog> energy_;
     RoomActions* rooms_ = nullptr;
 };
 

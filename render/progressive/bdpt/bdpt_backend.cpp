@@ -59,12 +59,9 @@ namespace {
 class BdptBackend final : public PassFunctionBackend<BdptSettings> {
 public:
     BdptBackend(SceneSnapshot scene, const RenderSettings& settings)
-        // By power, always: the bidirectional family's MIS weights and CMLT's path-space
-        // values take the recorded pdf of a next-event light vertex as the density it was drawn
-        // with, which holds only for a choice that does not depend on the shading point
-        // (issue 19: a tree here needs its density at x1 in every strategy's weight).
-        : PassFunctionBackend(std::move(scene), settings, BdptSettings::fromOptions, renderBdptPass,
-                              LightSelection::Power) {}
+        // Next-event estimation (s = 1) chooses lights as `light_sampler` says (the tree by
+        // default); light subpaths start by power (bdpt_tracer.h weighs the two).
+        : PassFunctionBackend(std::move(scene), settings, BdptSettings::fromOptions, renderBdptPass) {}
 
     std::map<std::string, std::string> diagnostics() const override {
         const CameraPower pc = cameraPower(*film_);

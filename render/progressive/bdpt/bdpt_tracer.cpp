@@ -221,7 +221,7 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
         LightSample ls;
         const V2f u = rng.next2D();
         const float uSelect = rng.next1D();
-        if (!scene_.lights().sample(pt.sp, u, uSelect, ls)) return L;
+        if (!scene_.lights().sample(pt.sp, u, uSelect, ls, receivingNormal(pt, camera_[t - 2]))) return L;
         const LightSampler& lights = scene_.lights();
         sampled.light = ls.light;
         sampled.sp.p = ls.position;
@@ -270,8 +270,30 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
     if (record) {
         record->misWeight = w;
         if (sampledPtr) record->sampled = *sampledPtr;
+        // The density the light point was drawn with, not the by-power one the weights compare.
+        if (s == 1) record->sampled.pdfFwd *= nextEventRatio(sampled, camera_[t - 1], camera_[t - 2]);
     }
     return L * w;
+}
+
+V3f BdptTracer::receivingNormal(const PathVertex& x1, const PathVertex& x2) const {
+    return shadingNormalToward(scene_.material(x1.sp.material), x1.sp.ng, x2.p() - x1.p());
+}
+
+float BdptTracer::nextEventRatio(const PathVertex& x0, const PathVertex& x1, const PathVertex& x2) const {
+    if (x1.kind != VertexKind::Surface) return 1.0f;  // no next-event estimation from the camera
+    const V3f receiving = receivingNormal(x1, x2);
+    // A pure function of the light, x1 and the side it receives on: the strategies of one
+    // sample ask for few distinct ones (every s >= 3 for the same), so the last few are kept.
+    const uint32_t light = x0.onSurface() ? x0.sp.triangle : x0.light;
+    for (const TauEntry& e : tauCache_)
+        if (e.light == light && e.onSurface == x0.onSurface() && e.p == x1.p() && e.receiving == receiving) return e.tau;
+    const LightSampler& lights = scene_.lights();
+    const float tau = x0.onSurface() ? lights.emitterSelectionRatio(light, x1.p(), receiving)
+                                     : lights.selectionRatio(light, x1.p(), receiving);
+    tauCache_[tauNext_] = {light, x0.onSurface(), x1.p(), receiving, tau};
+    tauNext_ = (tauNext_ + 1) % tauCache_.size();
+    return tau;
 }
 
 float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
@@ -290,28 +312,37 @@ float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
     const float qsRev = qs ? densities_.pdf(pt, ptMinus, *qs) : 0.0f;
     const float qsMinusRev = qsMinus ? densities_.pdf(*qs, &pt, *qsMinus) : 0.0f;
 
+    // The vertices store a light point's density by power, as light subpaths start; next-event
+    // estimation (s = 1) chose it with tau = nextEventRatio times that density at x1 (the tree's
+    // choice there): its path density is p_1 tau, every other strategy's is as stored.
+    const auto pathAt = [&](int j) -> const PathVertex& { return j < s ? lightAt(j) : cameraAt(s + t - 1 - j); };
+    const double tau = nextEventRatio(pathAt(0), pathAt(1), pathAt(2));  // s + t >= 3: x2 exists
+    const double own = s == 1 ? tau : 1.0;
+    if (!(own > 0.0)) return 0.0f;
+
     // sum over the other strategies i of (p_i / p_s)^2, each ratio built vertex by vertex
     // outward from the connection (eq. 10.9); a zero density is a delta one and cancels (remap).
     const auto remap = [](float f) { return f != 0.0f ? f : 1.0f; };
     double sumRatios = 0.0, ratio = 1.0;
-    for (int i = t - 1; i > 0; --i) {
+    for (int i = t - 1; i > 0; --i) {  // strategy (s + t - i, i)
         const PathVertex& v = cameraAt(i);
         const float rev = i == t - 1 ? ptRev : i == t - 2 ? ptMinusRev : v.pdfRev;
         const double r = double(remap(rev)) / double(remap(v.pdfFwd));
         ratio *= r * r;
         const bool deltaHere = i == t - 1 ? false : v.delta;
-        if (!deltaHere && !cameraAt(i - 1).delta) sumRatios += ratio;
+        if (!deltaHere && !cameraAt(i - 1).delta) sumRatios += s + t - i == 1 ? ratio * tau * tau : ratio;
     }
     ratio = 1.0;
-    for (int i = s - 1; i >= 0; --i) {
+    for (int i = s - 1; i >= 0; --i) {  // strategy (i, s + t - i)
         const PathVertex& v = lightAt(i);
         const float rev = i == s - 1 ? qsRev : i == s - 2 ? qsMinusRev : v.pdfRev;
         const double r = double(remap(rev)) / double(remap(v.pdfFwd));
         ratio *= r * r;
         const bool deltaHere = i == s - 1 ? false : v.delta;
         const bool deltaBefore = i > 0 ? lightAt(i - 1).delta : lightAt(0).isDeltaLight();
-        if (!deltaHere && !deltaBefore) sumRatios += ratio;
+        if (!deltaHere && !deltaBefore) sumRatios += i == 1 ? ratio * tau * tau : ratio;
     }
+    sumRatios /= own * own;
     const double w = 1.0 / (1.0 + sumRatios);
     return std::isfinite(w) ? float(w) : 0.0f;
 }

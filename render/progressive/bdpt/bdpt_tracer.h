@@ -3,19 +3,23 @@
 // Veach 1997, chapter 10; modelled on pbrt-v3 chapter 16). A camera subpath and a light subpath
 // are traced, then every prefix pair (s light vertices, t camera vertices) is connected:
 //   s = 0   the camera subpath itself hits the front of an emitter;
-//   s = 1   next-event estimation: a fresh point on a light, joined to camera vertex t-1;
+//   s = 1   next-event estimation: a fresh point on a light, joined to camera vertex t-1, the
+//           light chosen as `light_sampler` says (the tree: by its importance at that vertex);
 //   t = 1   light tracing: light vertex s-1 joined to the pinhole and splatted onto the film;
 //   else    light vertex s-1 joined to camera vertex t-1 by a shadow ray.
 // Each contribution is weighted by the power heuristic over all strategies that could have made
 // the same path (eq. 10.9 with beta = 2), computed from the per-vertex densities pdfFwd/pdfRev
-// so that nothing is counted twice. Delta lights (no s = 0), delta BSDFs (mirror, glass: never a
-// connection vertex) and one-sided emitters are handled as the path backend handles them.
+// so that nothing is counted twice. Light subpaths start by power, so the s = 1 strategy's
+// density carries the tree's probability at x1 over power's (nextEventRatio) in every weight.
+// Delta lights (no s = 0), delta BSDFs (mirror, glass: never a connection vertex) and
+// one-sided emitters are handled as the path backend handles them.
 
 #include "render/backend/film.h"
 #include "render/progressive/bdpt/bdpt_settings.h"
 #include "render/progressive/bdpt/bdpt_vertex.h"
 #include "render/trace/sample_generator.h"
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -30,7 +34,7 @@ struct StrategyRecord {
     Rgb weighted{0, 0, 0};   // finite, not black
     float misWeight = 1;     // weighted = misWeight times the unweighted contribution
     float rasterX = 0, rasterY = 0;
-    PathVertex sampled;      // s = 1 or t = 1 only
+    PathVertex sampled;      // s = 1 or t = 1 only; s = 1: its pdfFwd the density it was drawn with
 };
 struct SampledPaths {
     std::vector<PathVertex> camera, light;
@@ -89,6 +93,13 @@ private:
     // the pinhole (t = 1) that replaces the subpath's own.
     float misWeight(int s, int t, const PathVertex* sampled) const;
     bool connectible(const PathVertex& v) const;
+    // Next-event estimation's `receiving` normal at surface vertex x1 of a path whose next
+    // vertex toward the camera is x2: the side of x1 facing x2 (as the path backend's).
+    V3f receivingNormal(const PathVertex& x1, const PathVertex& x2) const;
+    // tau: how much likelier next-event estimation at x1 (toward x2) chooses the light of x0
+    // than a light subpath starts from it by power (LightSampler::selectionRatio; 1 under power
+    // selection, and where x1 is the camera, which never estimates next events).
+    float nextEventRatio(const PathVertex& x0, const PathVertex& x1, const PathVertex& x2) const;
     PathVertex cameraVertex(int point) const;
     // The vertex of a camera subpath that left the scene along `ray` (the environment's), with
     // the walk's throughput and the solid-angle density of its direction.
@@ -102,6 +113,15 @@ private:
     std::vector<StrategyRecord> lightTracingSplats_;
     int lightTracingNumbers_ = 0;
     SampledPaths* record_ = nullptr;
+    // nextEventRatio's last answers (per tracer, so per thread).
+    struct TauEntry {
+        uint32_t light = 0xffffffffu;  // an emitter's triangle, or a light's number
+        bool onSurface = false;
+        V3f p{0, 0, 0}, receiving{0, 0, 0};
+        float tau = 1;
+    };
+    mutable std::array<TauEntry, 8> tauCache_{};
+    mutable size_t tauNext_ = 0;
 };
 
 }  // namespace lucerna

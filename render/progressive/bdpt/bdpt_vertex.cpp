@@ -68,8 +68,10 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
         const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
         return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(l.direction)) : directionalDiskPdf_;
     }
-    case VertexKind::EnvironmentLight:  // the same disk, facing the direction chosen
-        return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(v.sp.ng)) : directionalDiskPdf_;
+    case VertexKind::EnvironmentLight: {  // the line through next, from the disk or a window
+        const float across = scene_.lights().environmentLineDensity(next.p(), -v.sp.ng);
+        return next.onSurface() ? across * std::abs(next.sp.ng.dot(v.sp.ng)) : across;
+    }
     case VertexKind::Camera: return 0.0f;
     }
     if (next.onSurface()) pdf *= std::abs(next.sp.ng.dot(w));

@@ -16,6 +16,9 @@ struct Portal {
     V3f p0, p1, p2;
     V3f normal;      // unit
     float area = 0;  // scene units^2
+    // Which side is outside (RenderScene traces it): +1 the normal's, -1 the other, 0 not known
+    // (either: a pane open on both sides, or closed on both).
+    int8_t outside = 0;
 };
 // Past this many pane triangles the portals are not used (each density evaluation loops over them).
 inline constexpr size_t kMaxPortalTriangles = 512;

@@ -86,20 +86,27 @@ bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUni
 }
 
 bool emitFromEnvironment(const EnvironmentLight& environment, float selectPdf, const V3f& sceneCenter,
-                         float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out) {
+                         float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
+                         const DaylightPortals* portals) {
     // A direction toward the sky, then a point on the disc of the scene's radius facing it,
-    // just outside the scene; the particle travels back along the direction.
+    // just outside the scene (or on a line through a window); the particle travels back along
+    // the direction.
     V3f toward;
     float pdfDirection = 0.0f;
     Rgb L;
     if (!environment.sample(uDirection, toward, pdfDirection, L)) return false;
-    const V2f d = squareToUniformDisk(uPosition) * sceneRadius;
-    const Frame frame(toward);
-    out.position = sceneCenter + toward * sceneRadius + frame.s * d.x + frame.t * d.y;
     out.direction = -toward;
     out.normal = -toward;
-    const float area = kPi * sceneRadius * sceneRadius;
-    out.pdfPosition = selectPdf / area;
+    if (portals && !portals->empty()) {
+        float density = 0;
+        out.position = portals->sampleLine(toward, uPosition, density);
+        out.pdfPosition = selectPdf * density;
+    } else {
+        const V2f d = squareToUniformDisk(uPosition) * sceneRadius;
+        const Frame frame(toward);
+        out.position = sceneCenter + toward * sceneRadius + frame.s * d.x + frame.t * d.y;
+        out.pdfPosition = selectPdf / (kPi * sceneRadius * sceneRadius);
+    }
     out.pdfDirection = pdfDirection;
     out.power = L / (out.pdfPosition * pdfDirection);
     out.environment = true;

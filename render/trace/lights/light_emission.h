@@ -9,6 +9,7 @@
 // the flux of any particle, from any light, is in W per scene-unit^2 of the scene's area measure
 // and the geometric term cos cos / d^2 stays in scene units everywhere.
 
+#include "render/trace/lights/daylight_portals.h"
 #include "render/trace/lights/delta_light.h"
 #include "render/trace/lights/emitter_triangle.h"
 #include "render/trace/lights/environment_light.h"
@@ -19,10 +20,10 @@
 namespace lucerna {
 
 struct EmissionSample {
-    V3f position;
-    V3f normal;          // the emitter's front normal; the direction itself for delta lights
-    V3f direction;       // unit, leaving the light
-    Rgb power;           // Le cos / (pdfPosition pdfDirection) or its delta-light equivalent
+    V3f position{0, 0, 0};
+    V3f normal{0, 0, 0};     // the emitter's front normal; the direction itself for delta lights
+    V3f direction{0, 0, 0};  // unit, leaving the light
+    Rgb power{0, 0, 0};      // Le cos / (pdfPosition pdfDirection) or its delta-light equivalent
     float pdfPosition = 0;   // area measure, light selection included (1 per selection for delta positions)
     float pdfDirection = 0;  // solid angle (0 for the directional light's delta direction)
     bool deltaPosition = false, deltaDirection = false;
@@ -41,7 +42,10 @@ bool emitFromTriangle(const EmitterTriangle& e, float selectPdf, const V2f& uPos
                       EmissionSample& out);
 bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUnit, const V3f& sceneCenter,
                         float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out);
+// With `portals` (not empty), the environment's particles travel along lines drawn through the
+// windows as daylight_portals.h says; pdfPosition is then that line's density across it.
 bool emitFromEnvironment(const EnvironmentLight& environment, float selectPdf, const V3f& sceneCenter,
-                         float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out);
+                         float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
+                         const DaylightPortals* portals = nullptr);
 
 }  // namespace lucerna

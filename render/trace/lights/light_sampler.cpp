@@ -9,10 +9,13 @@ namespace lucerna {
 LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                            const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
                            LightSelection selection, std::optional<EnvironmentLight> environment,
-                           std::vector<Portal> portals)
+                           std::vector<Portal> portals, bool particlePortals)
     : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit),
       sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
-    if (environment) environment_.emplace(std::move(*environment), std::move(portals));
+    if (environment) {
+        if (particlePortals) particlePortals_ = DaylightPortals(portals, sceneCenter, sceneRadius);
+        environment_.emplace(std::move(*environment), std::move(portals));
+    }
     power_ = PowerSelection(emitters_, deltas_, this->environment(), metersPerUnit, sceneRadius, triangleCount);
     if (selection == LightSelection::Tree && power_.size() > 1)
         tree_ = TreeSelection(emitters_, deltas_, environment_.has_value(), metersPerUnit, triangleCount);
@@ -130,6 +133,23 @@ float LightSampler::pdfEmitter(uint32_t triangle, const V3f& p, const V3f& q, co
     return areaPdf * dist2 / cosLight;
 }
 
+float LightSampler::environmentLineDensity(const V3f& point, const V3f& towardSky) const {
+    if (particlePortals_.empty()) return 1.0f / (kPi * sceneRadius_ * sceneRadius_);
+    return particlePortals_.lineDensity(point, towardSky);
+}
+
+float LightSampler::selectionRatio(uint32_t light, const V3f& p, const V3f& receiving) const {
+    if (tree_.empty()) return 1.0f;
+    const float byPower = power_.pdf(light);
+    return byPower > 0.0f ? tree_.pmf(light, p, receiving) / byPower : 0.0f;
+}
+
+float LightSampler::emitterSelectionRatio(uint32_t triangle, const V3f& p, const V3f& receiving) const {
+    const float byPower = power_.areaPdf(triangle);
+    if (!(byPower > 0.0f)) return 0.0f;
+    return tree_.hasEmitters() ? tree_.areaPdf(triangle, p, receiving) / byPower : 1.0f;
+}
+
 bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect,
                                   EmissionSample& out) const {
     if (power_.empty()) return false;
@@ -139,7 +159,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
     out.light = uint32_t(index);
     if (isEnvironment(uint32_t(index)))
         return emitFromEnvironment(environment_->light(), selectPdf, sceneCenter_, sceneRadius_, uPosition, uDirection,
-                                   out);
+                                   out, &particlePortals_);
     if (index < emitters_.size()) return emitFromTriangle(emitters_[index], selectPdf, uPosition, uDirection, out);
     return emitFromDeltaLight(deltas_[index - emitters_.size()], selectPdf, metersPerUnit_, sceneCenter_, sceneRadius_,
                               uPosition, uDirection, out);

@@ -47,7 +47,8 @@ public:
     LightSampler(std::vector<EmitterTriangle> emitters, std::vector<DeltaLight> deltas, float metersPerUnit,
                  const V3f& sceneCenter, float sceneRadius, size_t triangleCount,
                  LightSelection selection = kDefaultLightSelection,
-                 std::optional<EnvironmentLight> environment = std::nullopt, std::vector<Portal> portals = {});
+                 std::optional<EnvironmentLight> environment = std::nullopt, std::vector<Portal> portals = {},
+                 bool particlePortals = true);
 
     bool empty() const { return emitters_.empty() && deltas_.empty() && !environment_; }
     const std::vector<EmitterTriangle>& emitters() const { return emitters_; }
@@ -78,6 +79,13 @@ public:
     // Chooses a light in proportion to power and a particle leaving it (light_emission.h). False
     // for a scene without lights.
     bool sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect, EmissionSample& out) const;
+    // The density across the line (per unit area of the plane normal to it, scene units) with
+    // which sampleEmission() sends an environment particle along the line through `point`
+    // toward -towardSky (unit), the environment once chosen: the disc's 1 / (pi R^2), or the
+    // mixture through the windows (daylight_portals.h).
+    float environmentLineDensity(const V3f& point, const V3f& towardSky) const;
+    // The windows daylight particles are sent through (empty: none, or no environment).
+    const DaylightPortals& particlePortals() const { return particlePortals_; }
     // Total emitted power in the scene's units (selection weights' sum): the normalisation of
     // light tracing.
     double totalPower() const { return power_.total(); }
@@ -92,6 +100,15 @@ public:
     // for a light-path origin, whatever chose the light (they only need to agree across
     // strategies, pbrt-v4's PdfLightOrigin does the same).
     float areaPdfByPower(uint32_t triangle) const { return power_.areaPdf(triangle); }
+
+    // How much likelier sample() at p (with its `receiving`) chooses light `light` (LightSample::
+    // light numbering) than sampleEmission() does by power: the tree's probability over power's,
+    // 1 under power selection, 0 where the tree never chooses it there. Bidirectional methods
+    // weigh next-event estimation (s = 1) against the strategies whose light subpath starts by
+    // power with it (bdpt_tracer.h).
+    float selectionRatio(uint32_t light, const V3f& p, const V3f& receiving) const;
+    // The same for the emitter of render-scene triangle `triangle` (0 for one that does not emit).
+    float emitterSelectionRatio(uint32_t triangle, const V3f& p, const V3f& receiving) const;
 
     // Solid-angle pdf with which sample() yields the environment's direction w (unit, out of the
     // scene) at p (sample()'s ref.p; the portals make it depend on p). 0 without an environment.
@@ -110,6 +127,7 @@ private:
     std::vector<EmitterTriangle> emitters_;
     std::vector<DeltaLight> deltas_;
     std::optional<EnvironmentSampler> environment_;
+    DaylightPortals particlePortals_;
     PowerSelection power_;
     TreeSelection tree_;  // empty with power selection
     float metersPerUnit_ = 1.0f;

@@ -32,6 +32,7 @@ TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const
     : emitterCount_(emitters.size()) {
     std::vector<LightBounds> bounds;
     leafOfTriangle_.assign(triangleCount, -1);
+    leafOfLight_.assign(emitters.size() + deltas.size(), -1);
     shareInLeaf_.assign(emitters.size(), 0.0f);
     for (size_t i = 0; i < emitters.size();) {
         const EmitterTriangle& first = emitters[i];
@@ -49,6 +50,7 @@ TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const
         for (size_t k = i; k < end; ++k) {
             shareInLeaf_[k] = float(emitters[k].area / area);
             leafOfTriangle_[emitters[k].triangle] = int32_t(bounds.size());
+            leafOfLight_[k] = int32_t(bounds.size());
         }
         leaves_.push_back({uint32_t(i), uint32_t(end), float(area)});
         bounds.push_back(cluster);
@@ -73,6 +75,7 @@ TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const
             break;
         default: bounds.push_back(LightBounds::point(l.position, intensity)); break;
         }
+        leafOfLight_[index] = int32_t(leaves_.size());
         leaves_.push_back({index, index + 1, 0.0f});
     }
     if (environment) directional_.push_back(uint32_t(emitters.size() + deltas.size()));
@@ -80,6 +83,7 @@ TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const
         leaves_.clear();
         shareInLeaf_.clear();
         leafOfTriangle_.clear();
+        leafOfLight_.clear();
         return;
     }
     tree_ = LightTree(bounds);
@@ -112,6 +116,14 @@ float TreeSelection::areaPdf(uint32_t triangle, const V3f& p, const V3f& n) cons
     // The triangle's share of its leaf over its area: 1 / the leaf's area.
     const float share = 1.0f / float(directional_.size() + 1);
     return share * tree_.pmf(p, n, uint32_t(leaf)) / leaves_[size_t(leaf)].area;
+}
+
+float TreeSelection::pmf(size_t index, const V3f& p, const V3f& n) const {
+    const float share = 1.0f / float(directional_.size() + (tree_.empty() ? 0 : 1));
+    const int32_t leaf = index < leafOfLight_.size() ? leafOfLight_[index] : -1;
+    if (leaf < 0)  // beside the tree (a directional light, the environment), or never chosen
+        return std::find(directional_.begin(), directional_.end(), uint32_t(index)) != directional_.end() ? share : 0.0f;
+    return share * tree_.pmf(p, n, uint32_t(leaf)) * (index < emitterCount_ ? shareInLeaf_[index] : 1.0f);
 }
 
 }  // namespace lucerna

@@ -39,6 +39,9 @@ public:
     // n) and a uniform point of the chosen triangle give a point of emissive render-scene
     // triangle `triangle`.
     float areaPdf(uint32_t triangle, const V3f& p, const V3f& n) const;
+    // The probability that select() at p (receiving side n) chooses light `index`
+    // (LightSample::light numbering): what select() returns as its pdf when it chooses it.
+    float pmf(size_t index, const V3f& p, const V3f& n) const;
 
 private:
     // The tree's light k is leaves_[k]: a cluster of emissive triangles or one delta light.
@@ -52,6 +55,7 @@ private:
     std::vector<uint32_t> directional_;  // the lights beside the tree
     std::vector<float> shareInLeaf_;     // by emitter: its share of its cluster (by area)
     std::vector<int32_t> leafOfTriangle_;  // by render-scene triangle: its leaf (-1: none)
+    std::vector<int32_t> leafOfLight_;     // by light: its leaf (-1: beside the tree, or never chosen)
 };
 
 }  // namespace lucerna

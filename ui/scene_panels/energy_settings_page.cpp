@@ -1,24 +1,23 @@
-#include "ui/scene_panels/energy_panel.h"
+#include "ui/scene_panels/energy_settings_page.h"
 
-#include "ui/properties/number_fields.h"
 #include "core/number_format.h"
 #include "core/scene/scene_energy.h"
-#include "ui/commands/energy_commands.h"
 #include "ui/disconnect_children.h"
+#include "ui/properties/number_fields.h"
+#include "ui/properties/property_rows.h"
 
 #include <QComboBox>
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QLabel>
 #include <QLineEdit>
-#include <QSignalBlocker>
 #include <QVBoxLayout>
 
 namespace lucerna {
 
 namespace {
 
-// A factor of the page: the setting it edits, its field's name, label and unit, and its range
+// A factor of the tab: the setting it edits, its field's name, label and unit, and its range
 // (the scene file's, core/scene/project_keys.cpp).
 struct FactorSpec {
     std::optional<double> EnergySettings::*member;
@@ -30,7 +29,7 @@ struct FactorSpec {
     double hi;
 };
 
-const std::array<FactorSpec, EnergyPanel::kFactors> kSpecs = {{
+const std::array<FactorSpec, EnergySettingsPage::kFactors> kSpecs = {{
     {&EnergySettings::daytimeHours, "energyDaytimeHours", "Daytime operating hours tD", "h/a", 0, false, kHoursPerYear},
     {&EnergySettings::nightHours, "energyNightHours", "Night-time operating hours tN", "h/a", 0, false, kHoursPerYear},
     {&EnergySettings::constantIlluminanceFactor, "energyConstantIlluminanceFactor", "Constant illuminance factor Fc", "",
@@ -52,13 +51,14 @@ const QString kPerM2Year = QStringLiteral("kWh/(m\u00b2\u00b7a)");
 
 }  // namespace
 
-EnergyPanel::EnergyPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_(doc) {
+EnergySettingsPage::EnergySettingsPage(SceneSnapshot scene, QWidget* parent)
+    : ProjectSettingsPage(parent), scene_(std::move(scene)) {
+    setObjectName("energyPage");
     auto* layout = new QVBoxLayout(this);
-    auto* intro = new QLabel(tr("Lighting energy by EN 15193-1: LENI = (W_L + W_P) / A. An empty field takes the "
-                                "default it shows."),
-                             this);
-    intro->setWordWrap(true);
-    layout->addWidget(intro);
+    layout->addWidget(makeWrappingLabel(
+        this, "energyHelp",
+        tr("Lighting energy by EN 15193-1: LENI = (W_L + W_P) / A, in the report's energy section. An empty "
+           "field takes the default it shows in grey.")));
 
     auto* form = new QFormLayout;
     type_ = new QComboBox(this);
@@ -67,14 +67,15 @@ EnergyPanel::EnergyPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     for (const BuildingTypeHours& t : buildingTypes())
         type_->addItem(tr("%1 (tD %2 h, tN %3 h)").arg(QString::fromUtf8(t.name)).arg(t.daytimeHours).arg(t.nightHours));
     type_->setToolTip(tr("The building type gives the default operating hours (EN 15193:2007 Table F.1)"));
-    connect(type_, &QComboBox::activated, this, &EnergyPanel::chooseBuildingType);
+    connect(type_, &QComboBox::activated, this, &EnergySettingsPage::refresh);
     form->addRow(tr("Building type"), type_);
     for (int i = 0; i < kFactors; ++i) {
         const FactorSpec& spec = kSpecs[size_t(i)];
         auto* field = new QLineEdit(this);
         field->setObjectName(spec.objectName);
         field->setClearButtonEnabled(true);
-        connect(field, &QLineEdit::editingFinished, this, [this, i] { applyFactor(Factor(i)); });
+        // A value counts when the field is left or Enter pressed, as in the light's properties.
+        connect(field, &QLineEdit::editingFinished, this, &EnergySettingsPage::refresh);
         fields_[size_t(i)] = field;
         const QString unit = *spec.unit ? QStringLiteral(" [%1]").arg(QString::fromUtf8(spec.unit)) : QString();
         form->addRow(tr(spec.label) + unit, field);
@@ -84,9 +85,7 @@ EnergyPanel::EnergyPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     auto* results = new QGroupBox(tr("Annual energy (EN 15193-1)"), this);
     auto* resultRows = new QVBoxLayout(results);
     const auto resultLabel = [&](const char* name) {
-        auto* label = new QLabel(results);
-        label->setObjectName(name);
-        label->setWordWrap(true);
+        auto* label = makeWrappingLabel(results, name);
         label->setTextInteractionFlags(Qt::TextSelectableByMouse);
         resultRows->addWidget(label);
         return label;
@@ -99,36 +98,93 @@ EnergyPanel::EnergyPanel(Document* doc, QWidget* parent) : QWidget(parent), doc_
     bold.setBold(true);
     leni_->setFont(bold);
     layout->addWidget(results);
-    message_ = new QLabel(this);
-    message_->setObjectName("energyMessage");
-    message_->setWordWrap(true);
+    message_ = makeWrappingLabel(this, "energyMessage");
     message_->setStyleSheet(QStringLiteral("color: #b00020"));
     layout->addWidget(message_);
     layout->addStretch(1);
-
-    // Any edit may change the result: a light's power or switch, the geometry (the area).
-    connect(doc_, &Document::changed, this, [this] { refresh(); });
-    refresh();
 }
 
-EnergyPanel::~EnergyPanel() { disconnectChildren(this); }
+EnergySettingsPage::~EnergySettingsPage() { disconnectChildren(this); }
 
-void EnergyPanel::showEvent(QShowEvent* event) {
-    QWidget::showEvent(event);
-    refresh();
-}
-
-void EnergyPanel::refresh(bool overwriteTyped) {
-    // sceneEnergy reads every vertex for the plan's extent: not while the page is hidden.
-    if (!isVisible()) return;
-    const Scene& scene = doc_->scene();
-    const std::optional<EnergySettings>& settings = scene.energy;
-    const SceneEnergy energy = sceneEnergy(scene);
-    {
-        const QSignalBlocker quiet(type_);
-        type_->setCurrentIndex(settings ? 1 + int(settings->buildingType) : 0);
+void EnergySettingsPage::load(const ProjectSettings& settings) {
+    loaded_ = settings.energy;
+    type_->setCurrentIndex(loaded_ ? 1 + int(loaded_->buildingType) : 0);
+    for (int i = 0; i < kFactors; ++i) {
+        const std::optional<double> value = loaded_ ? (*loaded_).*kSpecs[size_t(i)].member : std::nullopt;
+        loadedText_[size_t(i)] = value ? QString::fromStdString(shortestNumber(*value)) : QString();
+        fields_[size_t(i)]->setText(loadedText_[size_t(i)]);
     }
-    const BuildingTypeHours& type = buildingTypeHours(settings ? settings->buildingType : BuildingType::Office);
+    refresh();
+}
+
+EnergySettingsPage::Shown EnergySettingsPage::shown() const {
+    Shown s;
+    const int index = type_->currentIndex();
+    if (index <= 0) return s;  // "Not set": the factors wait, whatever they hold
+    EnergySettings e = loaded_.value_or(EnergySettings());
+    e.buildingType = buildingTypes()[size_t(index - 1)].type;
+    for (int i = 0; i < kFactors; ++i) {
+        const FactorSpec& spec = kSpecs[size_t(i)];
+        const QString text = fields_[size_t(i)]->text().trimmed();
+        if (text == loadedText_[size_t(i)]) continue;  // untouched: the loaded value, exactly
+        std::optional<double> value;
+        if (!text.isEmpty()) {
+            value = typedNumber(text);
+            const QString label = tr(spec.label);
+            if (!value) {
+                s.problem = tr("%1: \"%2\" is not a number").arg(label, text);
+            } else if (const double x = *value; !((spec.loOpen ? x > spec.lo : x >= spec.lo) && x <= spec.hi)) {
+                s.problem = tr("%1 must be in %2%3, %4]%5")
+                                .arg(label, spec.loOpen ? QStringLiteral("(") : QStringLiteral("["))
+                                .arg(spec.lo)
+                                .arg(spec.hi)
+                                .arg(*spec.unit ? QStringLiteral(" ") + QString::fromUtf8(spec.unit) : QString());
+            }
+            if (!s.problem.isEmpty()) {
+                s.badField = i;
+                return s;
+            }
+        }
+        e.*spec.member = value;
+    }
+    if (const std::string problem = energySettingsProblem(e); !problem.empty()) {
+        s.problem = QString::fromStdString(problem);
+        return s;
+    }
+    s.settings = e;
+    return s;
+}
+
+void EnergySettingsPage::store(ProjectSettings& settings) const {
+    Shown s = shown();
+    if (s.problem.isEmpty()) settings.energy = std::move(s.settings);
+}
+
+void EnergySettingsPage::showEvent(QShowEvent* event) {
+    ProjectSettingsPage::showEvent(event);
+    refresh();
+}
+
+QString EnergySettingsPage::check() {
+    refresh();
+    const Shown s = shown();
+    if (s.badField >= 0) fields_[size_t(s.badField)]->setFocus();
+    return s.problem;
+}
+
+void EnergySettingsPage::refresh() {
+    const Shown s = shown();
+    message_->setText(s.problem);
+    const bool set = type_->currentIndex() > 0;
+    for (QLineEdit* field : fields_) field->setEnabled(set);
+    // The results stay those of the last settings without a problem until it is corrected, and
+    // wait for the tab to be shown: sceneEnergy reads every vertex for the plan's extent.
+    if (!s.problem.isEmpty() || !isVisible()) return;
+
+    Scene scene = *scene_;  // meshes are shared: the copy costs the lists only
+    scene.energy = s.settings;
+    const SceneEnergy energy = sceneEnergy(scene);
+    const BuildingTypeHours& type = buildingTypeHours(set ? s.settings->buildingType : BuildingType::Office);
     const QString typeName = QString::fromUtf8(type.name).toLower();
     const QString defaults[kFactors] = {
         tr("%1 (default for %2)").arg(type.daytimeHours).arg(typeName),
@@ -141,15 +197,7 @@ void EnergyPanel::refresh(bool overwriteTyped) {
         tr("8760 (default: charging all year)"),
         tr("%1 (the extent in plan)").arg(number(energy.planAreaM2, 1)),
     };
-    for (int i = 0; i < kFactors; ++i) {
-        QLineEdit* field = fields_[size_t(i)];
-        field->setEnabled(settings.has_value());
-        field->setPlaceholderText(defaults[i]);
-        if (field->hasFocus() && !overwriteTyped) continue;  // what is being typed stays
-        const std::optional<double> value = settings ? (*settings).*kSpecs[size_t(i)].member : std::nullopt;
-        const QSignalBlocker quiet(field);
-        field->setText(value ? QString::fromStdString(shortestNumber(*value)) : QString());
-    }
+    for (int i = 0; i < kFactors; ++i) fields_[size_t(i)]->setPlaceholderText(defaults[i]);
 
     const int counted = energy.lights - int(energy.withoutPower.size());
     double watts = 0;
@@ -173,67 +221,6 @@ void EnergyPanel::refresh(bool overwriteTyped) {
         parasitic_->setText(tr("W_P: -"));
         leni_->setText(tr("LENI not computed: %1").arg(QString::fromStdString(energy.notComputed)));
     }
-}
-
-void EnergyPanel::chooseBuildingType(int index) {
-    if (index <= 0) {
-        change(std::nullopt, tr("Clear the energy settings"));
-        return;
-    }
-    const BuildingTypeHours& type = buildingTypes()[size_t(index - 1)];
-    EnergySettings after = doc_->energy().value_or(EnergySettings());
-    after.buildingType = type.type;
-    change(after, tr("Building type %1").arg(QString::fromUtf8(type.name)));
-}
-
-void EnergyPanel::applyFactor(Factor f) {
-    const std::optional<EnergySettings>& before = doc_->energy();
-    if (!before) return;
-    const FactorSpec& spec = kSpecs[size_t(f)];
-    const QString label = tr(spec.label);
-    const QString text = field(f)->text().trimmed();
-    std::optional<double> value;
-    if (!text.isEmpty()) {
-        value = typedNumber(text);
-        if (!value) {
-            refuse(tr("%1: \"%2\" is not a number").arg(label, text));
-            return;
-        }
-        const double x = *value;
-        if (!((spec.loOpen ? x > spec.lo : x >= spec.lo) && x <= spec.hi)) {
-            refuse(tr("%1 must be in %2%3, %4]%5")
-                       .arg(label, spec.loOpen ? QStringLiteral("(") : QStringLiteral("["))
-                       .arg(spec.lo)
-                       .arg(spec.hi)
-                       .arg(*spec.unit ? QStringLiteral(" ") + QString::fromUtf8(spec.unit) : QString()));
-            return;
-        }
-    }
-    EnergySettings after = *before;
-    after.*spec.member = value;
-    change(after, value ? tr("%1 %2").arg(label, QString::fromStdString(shortestNumber(*value)))
-                        : tr("%1 to its default").arg(label));
-}
-
-void EnergyPanel::change(std::optional<EnergySettings> after, const QString& what) {
-    if (after) {
-        const std::string problem = energySettingsProblem(*after);
-        if (!problem.empty()) {
-            refuse(QString::fromStdString(problem));
-            return;
-        }
-    }
-    message_->clear();
-    if (after == doc_->energy()) {
-        refresh(true);  // e.g. "2250.0" typed over 2250: the field shows the value again
-        return;
-    }
-    doc_->undoStack()->push(new EditEnergyCommand(doc_, std::move(after), 0, what));
-}
-
-void EnergyPanel::refuse(const QString& why) {
-    message_->setText(tr("Not changed: %1").arg(why));
-    refresh(true);  // the scene's values again, the field typed into included
 }
 
 }  // namespace lucerna
