@@ -495,9 +495,10 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasDeltaLights()) needs += " delta-lights";
     if (f.hasDaylight()) needs += " daylight";
     if (f.hasGlazing) needs += " glazing";
-    if (f.hasDaylight() && f.hasGlazing) {  // the panes daylight particles go through (which side is outside: traced)
-        const RenderScene traced(std::make_shared<const Scene>(scene));
-        std::cout << "portals: " << traced.lights().particlePortals().describe(float(scene.metersPerUnit)) << "\n";
+    if (f.hasDaylight()) {  // the panes and openings daylight particles go through (which side is outside: traced)
+        const RenderScene traced(std::make_shared<const Scene>(scene), 0, 0, nullptr, kDefaultLightSelection, true);
+        std::cout << "portals (--option daylight_portals=on): "
+                  << traced.lights().particlePortals().describe(float(scene.metersPerUnit)) << "\n";
     }
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
     std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";

@@ -242,6 +242,20 @@ std::vector<Object> roomSurfaces(const Room& room, const Scene& scene, std::set<
     return out;
 }
 
+std::vector<std::array<V3d, 4>> unglazedOpenings(const Room& room, const std::vector<Material>& materials) {
+    std::vector<std::array<V3d, 4>> out;
+    if (!room.parametric() || roomProblem(room, materials)) return out;
+    const std::vector<RoomWall> walls = roomWalls(room);
+    for (const RoomOpening& o : room.openings) {
+        if (o.type == OpeningType::Window) continue;
+        const RoomWall& w = walls[size_t(o.wall - 1)];
+        const Rect r = openingRect(o);
+        const double y0 = room.floorLevel;
+        out.push_back({onWall(w, y0, r.s0, r.t0), onWall(w, y0, r.s1, r.t0), onWall(w, y0, r.s1, r.t1), onWall(w, y0, r.s0, r.t1)});
+    }
+    return out;
+}
+
 double roomFloorArea(const Scene& scene, const Room& room) {
     if (room.parametric()) return std::abs(signedArea(room.outline));
     double lo = 1e300, hi = -1e300;

@@ -8,6 +8,7 @@
 #include "core/scene/plan_polygon.h"
 #include "core/scene/scene.h"
 
+#include <array>
 #include <optional>
 #include <set>
 #include <string>
@@ -44,6 +45,12 @@ std::optional<RoomProblem> roomProblem(const Room& room, const std::vector<Mater
 // besides these), which gains them. Rectangles are quads, other shapes inline meshes. Throws
 // std::invalid_argument with roomProblem's reason ("outline: walls 1 and 3 cross ...").
 std::vector<Object> roomSurfaces(const Room& room, const Scene& scene, std::set<std::string>& taken);
+
+// The openings of a parametric room that hold no pane (doors, plain openings), each as its four
+// corners (scene units) in its wall's plane: where daylight particles may enter the room besides
+// its windows' panes (render/trace/lights/daylight_portals.h). None for a room that cannot be
+// built (roomProblem) or a marked one.
+std::vector<std::array<V3d, 4>> unglazedOpenings(const Room& room, const std::vector<Material>& materials);
 
 // A parametric room's areas in square scene units: the floor (the ceiling's too), its walls with
 // the openings taken out, and the openings.

@@ -1,5 +1,7 @@
 #include "render/trace/render_scene.h"
 
+#include "core/scene/room_geometry.h"
+
 #include <algorithm>
 
 namespace lucerna {
@@ -7,8 +9,9 @@ namespace lucerna {
 namespace {
 
 // Which side of each pane is outside: the side from which rays leave the scene (other panes do
-// not stop them) while none leaves from the other, tried along the normal and eight directions
-// 60 degrees off it; neither (a pane between two rooms, or standing free) stays unknown.
+// not stop them) at least three of nine times and more than twice as often as from the other
+// (a ray from inside may leave by a door), tried along the normal and eight directions 60
+// degrees off it; neither (a pane between two rooms, or standing free) stays unknown.
 void markOutsides(const EmbreeScene& accel, std::vector<Portal>& portals, float sceneRadius) {
     const float offset = 1e-4f * sceneRadius;
     const auto escapes = [&](const V3f& centre, const V3f& n) {
@@ -24,7 +27,7 @@ void markOutsides(const EmbreeScene& accel, std::vector<Portal>& portals, float 
     for (Portal& p : portals) {
         const V3f centre = (p.p0 + p.p1 + p.p2) / 3.0f;
         const int front = escapes(centre, p.normal), back = escapes(centre, -p.normal);
-        p.outside = front > 0 && back == 0 ? int8_t(1) : back > 0 && front == 0 ? int8_t(-1) : int8_t(0);
+        p.outside = front >= 3 && front > 2 * back ? int8_t(1) : back >= 3 && back > 2 * front ? int8_t(-1) : int8_t(0);
     }
 }
 
@@ -102,6 +105,14 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         sun.intensity = toFloat(daylight.sun->irradiance());
         if (!isBlack(sun.intensity)) deltas.push_back(sun);
     }
+    // A drawn room's doors and plain openings are portals too, though no pane fills them.
+    for (const Room& room : s.rooms)
+        for (const std::array<V3d, 4>& c : unglazedOpenings(room, s.materials))
+            for (const auto& [a, b, d] : {std::array<V3d, 3>{c[0], c[1], c[2]}, std::array<V3d, 3>{c[0], c[2], c[3]}}) {
+                const V3d cross = (b - a).cross(d - a);
+                if (cross.length() > 0)
+                    portals.push_back({toFloat(a), toFloat(b), toFloat(d), toFloat(cross.normalized()), float(0.5 * cross.length())});
+            }
     if (panes.empty()) panes.paneOfTriangle.clear();
     accel_ = std::make_unique<EmbreeScene>(positions_, triangles_, std::move(panes));
     std::optional<EnvironmentLight> environment = EnvironmentLight::fromDaylight(daylight);

@@ -21,9 +21,10 @@ class RenderScene {
 public:
     // width/height: the film resolution (the camera's own when <= 0). With `sensor`, the film
     // measures that sensor instead of the scene's camera (irradiance sensors; sensor.h).
-    // daylightPortals: daylight particles through the glazing panes (daylight_portals.h).
+    // daylightPortals: daylight particles through the windows (daylight_portals.h; off by
+    // default: README, "Daylight in the renderers").
     RenderScene(SceneSnapshot scene, int width = 0, int height = 0, const Sensor* sensor = nullptr,
-                LightSelection lightSelection = kDefaultLightSelection, bool daylightPortals = true);
+                LightSelection lightSelection = kDefaultLightSelection, bool daylightPortals = false);
 
     const Scene& scene() const { return *scene_; }
     const SceneSnapshot& snapshot() const { return scene_; }

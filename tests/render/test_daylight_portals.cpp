@@ -3,7 +3,7 @@
 // (over the plane across the direction, the mean of 1 / p is the disc's area and the mean of
 // [crosses pane k] / p is the pane's projected area, within their Monte Carlo error), for panes
 // with a known outside and an unknown one; and RenderScene traces which side of a room's window
-// is outside (a free-standing pane stays unknown).
+// and door is outside (a free-standing pane stays unknown).
 
 #include "core/scene/room_geometry.h"
 #include "core/scene/scene_io.h"
@@ -91,28 +91,34 @@ void TestDaylightPortals::sampledLinesHaveTheirDensity() {
 }
 
 void TestDaylightPortals::outsideSideIsTraced() {
-    // A drawn 4 x 3 x 2.8 m room with a glazed window in wall 1 (z = 0, the outside at -z), under
-    // a sky, and a pane standing free in the open beside it.
+    // A drawn 4 x 3 x 2.8 m room with a glazed window in wall 1 (z = 0, the outside at -z) and a
+    // door in wall 2 (x = 4, the outside at +x), a hole that is a portal too, under a sky, and a
+    // pane standing free in the open beside it.
     Scene loaded = parseScene(R"({"lucerna": 1, "camera": {"position": [2, 1.5, 1.5], "target": [2, 1.5, 3], "fov_y": 60, "resolution": [8, 8]},
       "materials": {"grey": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]}, "pane": {"type": "glazing", "transmittance": [0.7, 0.7, 0.7]}},
       "objects": [{"name": "free pane", "material": "pane", "mesh": {"quad": [[10, 0, 0], [10, 2, 0], [12, 2, 0], [12, 0, 0]]}}],
       "rooms": [{"name": "office", "outline": [[0, 0], [4, 0], [4, 3], [0, 3]], "floor_level": 0, "height": 2.8,
                  "materials": {"floor": "grey", "walls": "grey", "ceiling": "grey"},
-                 "openings": [{"type": "window", "wall": 1, "offset": 1, "sill": 0.9, "width": 2, "height": 1.2, "glazing": "pane"}]}],
+                 "openings": [{"type": "window", "wall": 1, "offset": 1, "sill": 0.9, "width": 2, "height": 1.2, "glazing": "pane"},
+                              {"type": "door", "wall": 2, "offset": 1, "width": 0.9, "height": 2.1}]}],
       "sky": {"model": "cie_overcast", "zenith_luminance": 1000}})",
                               std::string(LUCERNA_RESOURCE_DIR) + "/scenes/case.json");
     std::set<std::string> taken;
     const std::vector<Object> surfaces = roomSurfaces(loaded.rooms[0], loaded, taken);
     loaded.objects.insert(loaded.objects.end(), surfaces.begin(), surfaces.end());
-    const RenderScene scene(std::make_shared<const Scene>(std::move(loaded)), 8, 8);
+    const RenderScene scene(std::make_shared<const Scene>(std::move(loaded)), 8, 8, nullptr, kDefaultLightSelection, true);
     const std::vector<Portal>& portals = scene.lights().particlePortals().portals();
-    QCOMPARE(portals.size(), size_t(4));
-    int window = 0, free = 0;
+    QCOMPARE(portals.size(), size_t(6));
+    int window = 0, free = 0, door = 0;
     for (const Portal& p : portals) {
         const V3f centre = (p.p0 + p.p1 + p.p2) / 3.0f;
         if (centre.x > 9) {
             QCOMPARE(int(p.outside), 0);  // open on both sides
             ++free;
+        } else if (std::abs(centre.x - 4) < 1e-4f) {
+            QVERIFY(centre.z > 1 && centre.z < 1.9f && centre.y < 2.1f);
+            QCOMPARE(int(p.outside), p.normal.x > 0 ? 1 : -1);
+            ++door;
         } else {
             // The side whose normal points to -z, away from the room, is outside.
             QCOMPARE(int(p.outside), p.normal.z < 0 ? 1 : -1);
@@ -121,7 +127,8 @@ void TestDaylightPortals::outsideSideIsTraced() {
     }
     QCOMPARE(window, 2);
     QCOMPARE(free, 2);
-    // Without daylight particles through the windows (option daylight_portals=off), none.
+    QCOMPARE(door, 2);
+    // Without daylight particles through the windows (option daylight_portals=off, the default), none.
     const RenderScene disc(scene.snapshot(), 8, 8, nullptr, kDefaultLightSelection, false);
     QVERIFY(disc.lights().particlePortals().empty());
 }

@@ -45,10 +45,8 @@ class MetropolisBackend final : public TracingBackend {
 public:
     MetropolisBackend(SceneSnapshot scene, const RenderSettings& settings, const MltSettings& mlt, ChainFactory make,
                       VariantDiagnostics variantDiagnostics)
-        // Lights chosen as the bdpt sampler chooses them (`light_sampler`, the tree by default);
-        // daylight particles from the disc unless asked (README, "Daylight in the renderers":
-        // through the windows the bootstrap's normalisation spread wider on a closed form).
-        : TracingBackend(std::move(scene), settings, std::nullopt, false), mlt_(mlt), makeChain_(std::move(make)),
+        // Lights chosen as the bdpt sampler chooses them (`light_sampler`, the tree by default).
+        : TracingBackend(std::move(scene), settings), mlt_(mlt), makeChain_(std::move(make)),
           variantDiagnostics_(std::move(variantDiagnostics)) {}
 
     void prepare(TaskContext& ctx) override {

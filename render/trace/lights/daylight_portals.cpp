@@ -67,7 +67,7 @@ std::string DaylightPortals::describe(float metersPerUnit) const {
         known += p.outside != 0;
     }
     char text[160];
-    std::snprintf(text, sizeof text, "%zu pane triangles, %.2f m^2, outside known for %d (daylight particles: %.0f%% through them)",
+    std::snprintf(text, sizeof text, "%zu portal triangles (panes and openings), %.2f m^2, outside known for %d (daylight particles: %.0f%% through them)",
                   portals_.size(), area, known, 100.0 * (1 - kDiscShare));
     return text;
 }

@@ -41,8 +41,8 @@ public:
     float lineDensity(const V3f& point, const V3f& w) const;
 
     const std::vector<Portal>& portals() const { return portals_; }
-    // One line for `lucerna info`: "4 pane triangles, 3.20 m^2, outside known for 4 (daylight
-    // particles: 75% through them)", or "none (...)".
+    // One line for `lucerna info`: "4 portal triangles (panes and openings), 3.20 m^2, outside
+    // known for 4 (daylight particles: 75% through them)", or "none (...)".
     std::string describe(float metersPerUnit) const;
 
 private:
