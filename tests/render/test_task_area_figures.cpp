@@ -57,6 +57,13 @@ std::vector<V3d> pointsBelow() {
 struct ClosedForm {
     double eh, ez;
 };
+// Eh and Ez at pointsBelow(), by one method and its settings.
+std::pair<GridResult, GridResult> ehAndEz(const SceneSnapshot& scene, GridSettings settings) {
+    GridResult eh = gridOf(scene, pointsBelow(), settings);
+    settings.quantity = GridQuantity::Cylindrical;
+    return {std::move(eh), gridOf(scene, pointsBelow(), settings)};
+}
+
 // A source of intensity intensityCd(eps) toward each point.
 template <class Intensity> std::vector<ClosedForm> closedForms(const Intensity& intensityCd) {
     std::vector<ClosedForm> out;
@@ -135,9 +142,7 @@ void TestTaskAreaFigures::cylindricalOfAPointLightIsExact() {
     for (GridMethod method : {GridMethod::Path, GridMethod::Vpl}) {
         GridSettings settings;
         settings.method = method;
-        const GridResult eh = gridOf(scene, pointsBelow(), settings);
-        settings.quantity = GridQuantity::Cylindrical;
-        const GridResult ez = gridOf(scene, pointsBelow(), settings);
+        const auto [eh, ez] = ehAndEz(scene, settings);
         QVERIFY(eh.converged && ez.converged);
         for (size_t i = 0; i < exact.size(); ++i) {
             const QByteArray where = QByteArray(gridMethodName(method)) + " at " + QByteArray::number(kAngles[i]) +
@@ -175,9 +180,7 @@ void TestTaskAreaFigures::cylindricalOfADiscWithinItsErrorBar() {
         settings.method = method;
         settings.targetRelativeError = 0.03;
         settings.seed = 11;
-        const GridResult eh = gridOf(scene, pointsBelow(), settings);
-        settings.quantity = GridQuantity::Cylindrical;
-        const GridResult ez = gridOf(scene, pointsBelow(), settings);
+        const auto [eh, ez] = ehAndEz(scene, settings);
         QVERIFY(eh.converged && ez.converged);
         for (size_t i = 0; i < exact.size(); ++i) {
             const QByteArray where = QByteArray(gridMethodName(method)) + " at " + QByteArray::number(kAngles[i]) +

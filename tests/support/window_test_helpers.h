@@ -34,6 +34,15 @@ inline void trigger(MainWindow& w, const char* name) {
     action->trigger();
 }
 
+// Types a value into a spin box as a designer types it, then Tab (Return would press a dialog's
+// default button).
+inline void typeAndTab(QAbstractSpinBox* spin, double value) {
+    spin->setFocus();
+    spin->selectAll();
+    QTest::keyClicks(spin, QString::number(value));
+    QTest::keyClick(spin, Qt::Key_Tab);
+}
+
 // Types a value into a spin box and presses Enter.
 inline void typeInto(QDoubleSpinBox* spin, double value) {
     spin->setFocus();

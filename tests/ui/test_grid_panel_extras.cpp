@@ -50,11 +50,14 @@ void clickBox(QCheckBox* box) { QTest::mouseClick(box, Qt::LeftButton, {}, QPoin
 
 QString figuresOf(GridPanel& panel) { return child<QLabel>(panel, "gridFigures")->text(); }
 
-// The number a regular expression's first group captures in `text`; fails the test without one.
+// The number a regular expression's first group captures in `text`; stops the test where there
+// is none or it is not a number.
 double captured(const QString& text, const QString& pattern) {
     const QRegularExpressionMatch m = QRegularExpression(pattern).match(text);
-    if (!m.hasMatch()) qFatal("no match for %s in:\n%s", qPrintable(pattern), qPrintable(text));
-    return m.captured(1).toDouble();
+    bool isNumber = false;
+    const double value = m.hasMatch() ? m.captured(1).toDouble(&isNumber) : 0.0;
+    if (!isNumber) qFatal("no number for %s in:\n%s", qPrintable(pattern), qPrintable(text));
+    return value;
 }
 }  // namespace
 

@@ -42,14 +42,6 @@ namespace {
 
 QString interiorPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/interior.json"); }
 
-// Typed as a designer types, then Tab (Return would press the dialog's default button).
-void typeAndTab(QDoubleSpinBox* spin, double value) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, QString::number(value));
-    QTest::keyClick(spin, Qt::Key_Tab);
-}
-
 void typeText(QWidget* field, const QString& text) {
     field->setFocus();
     QTest::keyClicks(field, text);

@@ -37,14 +37,6 @@ using namespace lucerna;
 using namespace lucerna::test;
 
 namespace {
-// Typed as a designer types, then Tab (Return would press the dialog's default button).
-void typeAndTab(QDoubleSpinBox* spin, double value) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, QString::number(value));
-    QTest::keyClick(spin, Qt::Key_Tab);
-}
-
 // Closes the dialog when the check that opened it returns, also early on a failed check (a
 // dialog left open would hold the test until its watchdog).
 struct Closes {

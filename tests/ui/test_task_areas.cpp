@@ -38,14 +38,6 @@ using namespace lucerna::test;
 namespace {
 constexpr int kTimeout = 60000;  // ms; generous for a loaded machine, never a timing assertion
 
-// Typed as a designer types, then Tab (Return would press the dialog's default button).
-void typeAndTab(QDoubleSpinBox* spin, double value) {
-    spin->setFocus();
-    spin->selectAll();
-    QTest::keyClicks(spin, QString::number(value));
-    QTest::keyClick(spin, Qt::Key_Tab);
-}
-
 void typeText(QLineEdit* field, const QString& text) {
     field->setFocus();
     field->selectAll();

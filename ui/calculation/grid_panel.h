@@ -93,6 +93,9 @@ signals:
     void finished();
 
 private:
+    static constexpr int kAutoMethod = -1;  // the estimator box's item for auto
+    enum Quantity { kIlluminance = 0, kDaylightFactor = 1, kUgr = 2 };  // the quantity box's items
+
     void poll();
     // The Em grid's job finished: the task area's 2021 figures start, if asked (true).
     bool startExtras();

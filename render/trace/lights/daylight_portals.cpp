@@ -48,8 +48,11 @@ float DaylightPortals::projectedArea(const V3f& w) const {
 }
 
 float DaylightPortals::lineDensity(const V3f& point, const V3f& w) const {
+    return lineDensity(point, w, projectedArea(w));
+}
+
+float DaylightPortals::lineDensity(const V3f& point, const V3f& w, float s) const {
     const float disc = 1.0f / (kPi * radius_ * radius_);
-    const float s = projectedArea(w);
     if (!(s > 0)) return disc;
     int crossed = 0;
     for (size_t k = 0; k < portals_.size(); ++k)
@@ -104,7 +107,7 @@ V3f DaylightPortals::sampleLine(const V3f& w, const V2f& u, float& density) cons
         const V3f onPane = p.p0 * (1 - b.x - b.y) + p.p1 * b.x + p.p2 * b.y;
         point = onPane + w * (onDiscPlane - onPane).dot(w);  // moved along the line to the disc's plane
     }
-    density = lineDensity(point, w);
+    density = lineDensity(point, w, s);
     return point;
 }
 

@@ -49,6 +49,8 @@ private:
     // Whether pane k lets particles in toward -w: its outside faces w (either side where unknown).
     bool facing(size_t k, const V3f& w) const;
     float projectedArea(const V3f& w) const;
+    // lineDensity with the facing portals' projected area s = projectedArea(w) known.
+    float lineDensity(const V3f& point, const V3f& w, float s) const;
 
     std::vector<Portal> portals_;
     V3f center_{0, 0, 0};
