@@ -5,10 +5,13 @@
 
 #include "render/preview/daylight_samples.h"
 #include "render/preview/gpu_state.h"
+#include "render/preview/light_blocks.h"
 #include "render/preview/luminaire_textures.h"
+#include "render/trace/lights/tree_selection.h"
 #include "render/trace/rng.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <numeric>
 #include <unordered_map>
@@ -172,6 +175,7 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     std::unordered_map<const GoniometricDistribution*, int> layerOf;
     std::vector<GpuLight> directional, deltas;
     std::vector<double> deltaPower;
+    std::vector<LightBounds> deltaBounds;  // for the blocks' choice (no bounds: intensity 0, never chosen)
     st.dirShadows.matrices.clear();
     // The sun first, so that it always has a map; its direction is drawn within the disc anew for
     // each fresh set (st.seed), so that accumulated frames show the disc's penumbra.
@@ -189,6 +193,8 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
             deltas.push_back(g);
             // Intensity over the cone's solid angle share: which lights matter most.
             deltaPower.push_back(double(luminance(d.intensity)) * (d.type == LightType::Spot ? 1.0 - d.cosCone : 2.0));
+            const std::optional<LightBounds> bounds = deltaLightBounds(d, st.scene->metersPerUnit());
+            deltaBounds.push_back(bounds ? *bounds : LightBounds());
             continue;
         }
         if (st.dirShadows.matrices.size() < size_t(DirectionalShadows::kMaxLights)) {
@@ -249,67 +255,61 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
     st.interleavedDeltas = interleave && int(deltas.size()) > settings.lightsShadedInFull;
     if (!st.interleavedDeltas) {
         lights.insert(lights.end(), deltas.begin(), deltas.end());
-    } else {
-        // The lights that matter most to the picture stay shaded in full: those nearest the
-        // camera for their power, whose pools of light (and the hot spots where a lamp hangs
-        // close to the ceiling) cover the most pixels; the blur would smear their shape.
-        const V3f eye = toFloat(st.camera.position);
-        const float nearest = 0.05f * st.scene->boundsRadius();
-        std::vector<double> score(deltas.size());
-        for (size_t i = 0; i < deltas.size(); ++i) {
-            const V3f p(deltas[i].positionKind[0], deltas[i].positionKind[1], deltas[i].positionKind[2]);
-            score[i] = deltaPower[i] / std::max(double((p - eye).length2()), double(nearest) * nearest);
-        }
-        std::vector<size_t> order(deltas.size());
-        std::iota(order.begin(), order.end(), size_t(0));
-        const size_t full = size_t(std::max(settings.lightsShadedInFull, 0));
-        std::partial_sort(order.begin(), order.begin() + long(full), order.end(),
-                          [&](size_t a, size_t b) { return score[a] > score[b]; });
-        std::vector<GpuLight> rest;
-        std::vector<bool> inFull(deltas.size(), false);
-        for (size_t r = 0; r < full; ++r) inFull[order[r]] = true;
-        for (size_t i = 0; i < deltas.size(); ++i) (inFull[i] ? lights : rest).push_back(deltas[i]);
-        deltas = std::move(rest);
-    }
-    if (!interleave) {
-        lights.insert(lights.end(), area.begin(), area.end());
+        if (!interleave) lights.insert(lights.end(), area.begin(), area.end());
     }
     st.shadedHere = int(lights.size());
     st.firstInterleaved = int(lights.size());
-    if (st.interleavedDeltas && int(deltas.size()) > kMaxInterleavedLights * subsets) {
-        // A frame shades a uniformly chosen subset of the rest, scaled up: the cost per pixel
-        // stays that of kMaxInterleavedLights lights, and frames accumulated while idle converge.
-        for (size_t i = 0; i < size_t(kMaxInterleavedLights * subsets); ++i)
-            std::swap(deltas[i], deltas[i + rng.nextUint() % (deltas.size() - i)]);
-        const float scale = float(deltas.size()) / float(kMaxInterleavedLights * subsets);
-        st.lightNote += std::string(st.lightNote.empty() ? "" : ", ") + "a random " +
-                        std::to_string(kMaxInterleavedLights * subsets) + " of " + std::to_string(deltas.size()) +
-                        " far lights a frame";
-        deltas.resize(size_t(kMaxInterleavedLights * subsets));
-        for (GpuLight& g : deltas)
-            for (int c = 0; c < 3; ++c) g.intensityCosFalloff[c] *= scale;
-    }
+    // Dealt to the sub-buffers: every delta light (or, past kMaxInterleavedLights a sub-buffer, a
+    // uniformly chosen subset scaled up, so that the cost per pixel stays that of
+    // kMaxInterleavedLights lights and accumulated frames converge), padded with dark lights to a
+    // multiple of n m. dealtAt: where each delta light went (light_blocks.glsl takes a block's own
+    // lights' share back out).
+    std::vector<int32_t> dealtAt(deltas.size(), -1);
     if (st.interleavedDeltas) {
+        std::vector<int32_t> dealt(deltas.size());
+        std::iota(dealt.begin(), dealt.end(), 0);
+        float scale = 1.0f;
+        const size_t most = size_t(kMaxInterleavedLights * subsets);
+        if (dealt.size() > most) {
+            for (size_t i = 0; i < most; ++i) std::swap(dealt[i], dealt[i + rng.nextUint() % (dealt.size() - i)]);
+            scale = float(dealt.size()) / float(most);
+            st.lightNote += std::string(st.lightNote.empty() ? "" : ", ") + "a random " + std::to_string(most) +
+                            " of " + std::to_string(dealt.size()) + " lights dealt a frame";
+            dealt.resize(most);
+        }
+        dealt.resize(size_t(roundUp(int(dealt.size()), subsets)), -1);
+        for (size_t i = dealt.size(); i > 1; --i) std::swap(dealt[i - 1], dealt[rng.nextUint() % i]);
         GpuLight darkLight{};
         darkLight.normalShadow[3] = -1.0f;
-        deltas.resize(size_t(roundUp(int(deltas.size()), subsets)), darkLight);
-        for (size_t i = deltas.size(); i > 1; --i) std::swap(deltas[i - 1], deltas[rng.nextUint() % i]);
-        lights.insert(lights.end(), deltas.begin(), deltas.end());
+        for (size_t i = 0; i < dealt.size(); ++i) {
+            const int32_t j = dealt[i];
+            GpuLight g = j >= 0 ? deltas[size_t(j)] : darkLight;
+            for (int c = 0; c < 3; ++c) g.intensityCosFalloff[c] *= scale;
+            lights.push_back(g);
+            if (j >= 0) dealtAt[size_t(j)] = int32_t(i);
+        }
     }
     st.firstAreaLight = int(lights.size());
     st.areaLightCount = interleave ? int(area.size()) : 0;
-    if (interleave) {
-        lights.insert(lights.end(), area.begin(), area.end());
-    }
+    if (interleave) lights.insert(lights.end(), area.begin(), area.end());
     st.interleavedCount = int(lights.size()) - st.firstInterleaved;
+    upload(st.dealtAt, dealtAt);
+    // Every delta light, for the blocks' choice (chooseLightsPerBlock, each frame).
+    st.firstBlockLight = int(lights.size());
+    st.blockLightCount = st.interleavedDeltas ? int(deltas.size()) : 0;
+    if (st.interleavedDeltas) lights.insert(lights.end(), deltas.begin(), deltas.end());
+    st.lightsPerBlock = st.interleavedDeltas ? settings.lightsShadedInFull : 0;
+    st.deltaTree = st.interleavedDeltas ? LightTree(deltaBounds) : LightTree();
+    st.lightBlockOffsetX = int(rng.nextUint() % 1024u);  // reduced modulo the block size each frame
+    st.lightBlockOffsetY = int(rng.nextUint() % 1024u);
 
     const auto kinds = [&](int first, int end) {
         int bits = 0;
         for (int i = first; i < end; ++i) bits |= 1 << int(lights[size_t(i)].positionKind[3]);
         return bits;
     };
-    st.shadedKinds = kinds(0, st.shadedHere);
-    st.interleavedKinds = kinds(st.firstInterleaved, int(lights.size()));
+    st.shadedKinds = kinds(0, st.shadedHere) | kinds(st.firstBlockLight, int(lights.size()));
+    st.interleavedKinds = kinds(st.firstInterleaved, st.firstBlockLight);
     upload(st.lightBuffer, lights);
     uploadTileAreaBlocks(st, lights);
     st.directLights = std::move(lights);
@@ -331,6 +331,46 @@ void uploadLights(Preview::State& st, const PreviewSettings& settings) {
                            settings.skyShadowSize, st.glazing);
     upload(st.dirMatrices, st.dirShadows.matrices);
     st.lightsDirty = false;
+}
+
+// Blocks of 8 pixels, larger on large images so that there are at most about 2,400 of them: the
+// choice costs a descent of the light tree per block on the CPU.
+int lightBlockSize(int width, int height) {
+    const double side = std::sqrt(double(width) * double(height) / 2400.0);
+    return std::max(4, roundUp(int(std::ceil(side)), 4));
+}
+
+void chooseLightsPerBlock(Preview::State& st) {
+    const int size = lightBlockSize(st.width, st.height);
+    st.lightBlockSize = size;
+    // One block more each way: the offset shifts the grid by up to a block.
+    st.lightBlocksX = (st.width + size - 1) / size + 1;
+    st.lightBlocksY = (st.height + size - 1) / size + 1;
+    const int ox = st.lightBlockOffsetX % size, oy = st.lightBlockOffsetY % size;
+    if (st.blockBoxW != st.lightBlocksX || st.blockBoxH != st.lightBlocksY) {
+        st.blockBoxW = st.lightBlocksX;
+        st.blockBoxH = st.lightBlocksY;
+        for (auto& t : st.blockBoxes) t = gl::makeTexture2D(GL_RGBA32F, st.blockBoxW, st.blockBoxH);
+        st.blockBoxFbo = gl::makeFramebuffer({st.blockBoxes[0].id(), st.blockBoxes[1].id()});
+    }
+    const gl::Program& p = st.blockBoundsProgram;
+    glUseProgram(p.id());
+    setInt(p, "lightBlockSize", size);
+    setIvec2(p, "lightBlockOffset", ox, oy);
+    glBindTextureUnit(0, st.g[0].id());
+    drawFullscreen(st.blockBoxFbo.id(), st.blockBoxW, st.blockBoxH);
+    const size_t count = size_t(st.blockBoxW) * size_t(st.blockBoxH);
+    std::vector<float> lo(count * 4), hi(count * 4);
+    glGetTextureImage(st.blockBoxes[0].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(lo.size() * sizeof(float)), lo.data());
+    glGetTextureImage(st.blockBoxes[1].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(hi.size() * sizeof(float)), hi.data());
+    std::vector<BlockBounds> blocks(count);
+    for (size_t b = 0; b < count; ++b) {
+        blocks[b].empty = !(lo[b * 4 + 3] > 0);  // light_block_bounds.frag: the pixels seen in alpha
+        blocks[b].lo = V3f(lo[b * 4], lo[b * 4 + 1], lo[b * 4 + 2]);
+        blocks[b].hi = V3f(hi[b * 4], hi[b * 4 + 1], hi[b * 4 + 2]);
+    }
+    const std::vector<int32_t> chosen = chooseBlockLights(blocks, st.deltaTree, st.lightsPerBlock);
+    upload(st.blockLights, chosen);
 }
 
 }  // namespace lucerna::preview_detail

@@ -106,10 +106,25 @@ const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool
 }
 
 // The direct pass's program for the lights it evaluates (direct.frag's switches).
-const gl::Program& directProgram(Preview::State& st, bool lightLoop, bool skyLoop) {
+const gl::Program& directProgram(Preview::State& st, bool lightLoop, bool skyLoop, bool blockLights) {
     return programVariant(st, "direct.frag",
                           define("LIGHT_LOOP", lightLoop ? 1 : 0) + define("SKY_LIGHTS", skyLoop ? 1 : 0) +
-                              lightKindDefines(st, lightLoop ? st.shadedKinds : 0));
+                              define("BLOCK_LIGHTS", blockLights ? 1 : 0) +
+                              lightKindDefines(st, lightLoop || blockLights ? st.shadedKinds : 0));
+}
+
+// The uniforms of light_blocks.glsl.
+void setBlockUniforms(const Preview::State& st, const gl::Program& p) {
+    const int size = std::max(st.lightBlockSize, 1);
+    setInt(p, "lightBlockSize", size);
+    setIvec2(p, "lightBlockOffset", st.lightBlockOffsetX % size, st.lightBlockOffsetY % size);
+    setInt(p, "lightBlocksX", st.lightBlocksX);
+    setInt(p, "lightsPerBlock", st.lightsPerBlock);
+    setInt(p, "firstBlockLight", st.firstBlockLight);
+    setInt(p, "firstDealt", st.firstInterleaved);
+    setIvec2(p, "dealPattern", st.patternX, st.patternY);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, st.dealtAt.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, st.blockLights.id());
 }
 
 // The uniforms and textures of lights.glsl.
@@ -389,8 +404,9 @@ void drawDirect(Preview::State& st, const PreviewSettings& s, const FramePlan& p
                 bool whiteReceivers, bool sunDiscShown) {
     const int shadedHere = s.direct ? st.shadedHere : 0;
     const int skyHere = s.direct && !plan.interleaved ? st.skyLightCount : 0;
-    const gl::Program& d = directProgram(st, shadedHere > 0, skyHere > 0);
+    const gl::Program& d = directProgram(st, shadedHere > 0, skyHere > 0, s.direct && st.lightBlockSize > 0);
     glUseProgram(d.id());
+    setBlockUniforms(st, d);
     setInt(d, "shadedHere", shadedHere);
     setInt(d, "skyLightCount", skyHere);
     setVec3(d, "cameraPos", view.eye);
@@ -457,6 +473,9 @@ Image Preview::render(float jitterX, float jitterY) {
     const FrameView view = frameView(st, jitterX, jitterY);
     drawGBuffer(st, view, plan, whiteReceivers_);
     clock.lap(tm.gbuffer);
+    st.lightBlockSize = 0;
+    if (st.interleavedDeltas && s.direct) chooseLightsPerBlock(st);
+    clock.lap(tm.lightBlocks);
 
     if (plan.shadesSubBuffers()) {
         if (plan.splitPass) runSplit(st, s.split == SplitMode::TwoPass, st.width, st.height, s.blur, view.eye);

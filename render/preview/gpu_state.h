@@ -8,6 +8,7 @@
 #include "render/preview/per_light_vpls.h"
 #include "render/preview/shadow_maps.h"
 #include "render/preview/preview.h"
+#include "render/trace/lights/light_tree.h"
 #include "render/trace/render_scene.h"
 
 #include <array>
@@ -157,6 +158,23 @@ struct Preview::State {
     int shadedHere = 0, firstInterleaved = 0, interleavedCount = 0;
     int firstAreaLight = 0, areaLightCount = 0;
     bool interleavedDeltas = false;
+    // With interleavedDeltas, the delta lights each block of the image shades in full
+    // (light_blocks.h), chosen every frame from what the block sees (chooseLightsPerBlock):
+    // directLights[firstBlockLight, + blockLightCount) holds every delta light (deltaTree: the
+    // light tree over them), blockLights lightsPerBlock indices a block (-1: none), dealtAt each delta light's
+    // place among the dealt lights (from firstInterleaved; -1: not dealt this frame). Blocks are
+    // lightBlockSize pixels, the grid shifted by lightBlockOffset with each deal; lightBlockSize
+    // 0: no blocks this frame.
+    int firstBlockLight = 0, blockLightCount = 0, lightsPerBlock = 0;
+    int lightBlockSize = 0, lightBlocksX = 0, lightBlocksY = 0;
+    int lightBlockOffsetX = 0, lightBlockOffsetY = 0;
+    LightTree deltaTree;
+    gl::Buffer blockLights, dealtAt;
+    // The blocks' boxes (light_block_bounds.frag): lowest and highest position seen, a texel a block.
+    gl::Program blockBoundsProgram;
+    std::array<gl::Texture, 2> blockBoxes;
+    gl::Framebuffer blockBoxFbo;
+    int blockBoxW = 0, blockBoxH = 0;
     int shadedKinds = 0, interleavedKinds = 0;  // bit k: a light of GpuLight kind k in that range
     // What was given up to stay within the GPU's limits (Preview::degradation), by cause.
     std::string vplNote, lightNote;
@@ -191,6 +209,9 @@ struct Preview::State {
 namespace preview_detail {
 // Direct lights (direct_lights.cpp): the light buffer's ranges above and their shadow maps.
 void uploadLights(Preview::State& st, const PreviewSettings& settings);
+// With interleavedDeltas, after the G-buffer: each block's lights shaded in full (light_blocks.h),
+// from the boxes of what the blocks see, into blockLights and blockMasks (direct_lights.cpp).
+void chooseLightsPerBlock(Preview::State& st);
 // VPLs (interleaved_vpls.cpp): the sets dealt to the sub-buffers (tiles, vplBuffer,
 // tileVplBlocks) and their shadow maps.
 void uploadVpls(Preview::State& st, const PreviewSettings& settings);

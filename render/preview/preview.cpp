@@ -32,6 +32,7 @@ Preview::Preview(std::string shaderDir) : context_(std::make_unique<EglContext>(
     st.gbufferProgram = gl::loadProgram(d, "gbuffer.vert", "gbuffer.frag");
     st.splitProgram = gl::loadProgram(d, "fullscreen.vert", "split.frag");
     st.blurProgram = gl::loadProgram(d, "fullscreen.vert", "blur.frag");
+    st.blockBoundsProgram = gl::loadProgram(d, "fullscreen.vert", "light_block_bounds.frag");
     st.shadowProgram = gl::loadProgram(d, "shadow.vert", "shadow.frag", "shadow.geom");
     st.dirShadowProgram = gl::loadProgram(d, "shadow_dir.vert", "shadow_dir.frag");
     st.glazingProgram = gl::loadProgram(d, "gbuffer.vert", "glazing.frag");
@@ -214,10 +215,9 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
 }
 
 void Preview::setCamera(const Camera& camera) {
-    state_->camera = camera;  // the resolution stays what setScene chose
-    // Which lights are shaded in full depends on the camera (uploadLights); their shadow maps
-    // stay (drawn from where the lights are), so this costs only the light buffer's upload.
-    if (state_->interleavedDeltas) state_->lightsDirty = true;
+    // The resolution stays what setScene chose; which lights each block shades in full is chosen
+    // every frame (chooseLightsPerBlock), so nothing else changes.
+    state_->camera = camera;
 }
 
 namespace {

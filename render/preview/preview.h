@@ -103,8 +103,9 @@ struct PreviewSettings {
 // Milliseconds of the last render(), per pass (glFinish between passes, so they add up).
 struct PreviewTimings {
     // gather: the gather with the horizontal half of the blur; direct: the vertical half, the
-    // direct light and the blend.
-    double shadows = 0, gbuffer = 0, split = 0, shading = 0, gather = 0, direct = 0, readback = 0;
+    // direct light and the blend; lightBlocks: each block's choice of the lights it shades in
+    // full (with many delta lights only).
+    double shadows = 0, gbuffer = 0, lightBlocks = 0, split = 0, shading = 0, gather = 0, direct = 0, readback = 0;
     double total = 0;  // the whole render() call
     int shadowCubes = 0;  // cube shadow maps drawn (only those of lights and VPLs that moved)
     int directionalMaps = 0;  // orthographic maps drawn (directional lights, the sun, the sky's directions)

@@ -230,4 +230,31 @@ float LightTree::pmf(const V3f& p, const V3f& n, uint32_t light) const {
     return pmf;
 }
 
+std::vector<uint32_t> LightTree::strongest(const std::function<float(const ImportanceBounds&)>& bound, size_t k) const {
+    std::vector<uint32_t> found;
+    if (nodes_.empty() || k == 0) return found;
+    std::vector<std::pair<float, int32_t>> open;  // a max-heap by bound
+    const auto push = [&](int32_t node) {
+        const float b = bound(nodes_[size_t(node)].compact);
+        if (b > 0) {
+            open.emplace_back(b, node);
+            std::push_heap(open.begin(), open.end());
+        }
+    };
+    push(0);
+    while (!open.empty() && found.size() < k) {
+        std::pop_heap(open.begin(), open.end());
+        const int32_t node = open.back().second;
+        open.pop_back();
+        const Node& n = nodes_[size_t(node)];
+        if (n.left < 0) {
+            found.push_back(n.light);
+            continue;
+        }
+        push(n.left);
+        push(n.right);
+    }
+    return found;
+}
+
 }  // namespace lucerna

@@ -12,6 +12,7 @@
 
 #include "core/math.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -82,6 +83,12 @@ public:
     // The probability that sample(p, n, u) chooses `light` for a uniform u.
     float pmf(const V3f& p, const V3f& n, uint32_t light) const;
     float pmf(const V3f& p, uint32_t light) const { return pmf(p, V3f(0, 0, 0), light); }
+
+    // Up to k lights of the largest positive bound(leaf), strongest first, by a best-first descent
+    // that opens the node of the largest bound(node) next: O(k log n) bounds where a node's bound
+    // is at least its lights' (as with importance-like bounds, the node's intensity being their
+    // sum), the exact k largest then. The preview's choice of lights per block of the image.
+    std::vector<uint32_t> strongest(const std::function<float(const ImportanceBounds&)>& bound, size_t k) const;
 
 private:
     struct Node {

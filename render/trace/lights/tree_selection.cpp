@@ -27,6 +27,23 @@ bool joins(const EmitterTriangle& first, const LightBounds& cluster, const Emitt
 
 }  // namespace
 
+std::optional<LightBounds> deltaLightBounds(const DeltaLight& l, float metersPerUnit) {
+    const float intensity = luminance(l.intensity) / (metersPerUnit * metersPerUnit);
+    switch (l.type) {
+    case LightType::Directional:
+    case LightType::Sun: return std::nullopt;
+    case LightType::Spot:
+        return LightBounds::spot(l.position, l.direction, std::acos(std::clamp(l.cosCone, -1.0f, 1.0f)), intensity);
+    case LightType::Luminaire:
+        // A spot about the nadir as wide as the table's last lit gamma (an uplight's upper
+        // hemisphere included), as strong as the table's peak.
+        if (!l.goniometric) return std::nullopt;
+        return LightBounds::spot(l.position, l.direction, l.goniometric->emissionConeRad(),
+                                 intensity * l.goniometric->peakIntensity());
+    default: return LightBounds::point(l.position, intensity);
+    }
+}
+
 TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const std::vector<DeltaLight>& deltas,
                              bool environment, float metersPerUnit, size_t triangleCount)
     : emitterCount_(emitters.size()) {
@@ -59,22 +76,13 @@ TreeSelection::TreeSelection(const std::vector<EmitterTriangle>& emitters, const
     for (size_t i = 0; i < deltas.size(); ++i) {
         const DeltaLight& l = deltas[i];
         const uint32_t index = uint32_t(emitters.size() + i);
-        const float intensity = luminance(l.intensity) / (metersPerUnit * metersPerUnit);
-        switch (l.type) {
-        case LightType::Directional: directional_.push_back(index); continue;
-        case LightType::Spot:
-            bounds.push_back(LightBounds::spot(l.position, l.direction, std::acos(std::clamp(l.cosCone, -1.0f, 1.0f)),
-                                               intensity));
-            break;
-        case LightType::Luminaire:
-            // A spot about the nadir as wide as the table's last lit gamma (an uplight's upper
-            // hemisphere included), as strong as the table's peak.
-            if (!l.goniometric) continue;
-            bounds.push_back(LightBounds::spot(l.position, l.direction, l.goniometric->emissionConeRad(),
-                                               intensity * l.goniometric->peakIntensity()));
-            break;
-        default: bounds.push_back(LightBounds::point(l.position, intensity)); break;
+        if (l.type == LightType::Directional) {
+            directional_.push_back(index);
+            continue;
         }
+        const std::optional<LightBounds> b = deltaLightBounds(l, metersPerUnit);
+        if (!b) continue;
+        bounds.push_back(*b);
         leafOfLight_[index] = int32_t(leaves_.size());
         leaves_.push_back({index, index + 1, 0.0f});
     }

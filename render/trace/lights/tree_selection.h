@@ -11,9 +11,15 @@
 #include "render/trace/lights/light_tree.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace lucerna {
+
+// A point, spot or luminaire light's bounds for the tree (luminance of its peak intensity in
+// W/sr per scene unit squared); nothing for directional lights and the sun, which no box bounds,
+// and for a luminaire without its table.
+std::optional<LightBounds> deltaLightBounds(const DeltaLight& light, float metersPerUnit);
 
 class TreeSelection {
 public:

@@ -11,6 +11,8 @@
 // code the scene's lights need (on llvmpipe an unused light loop still halves this pass's speed):
 //   LIGHT_LOOP   0 when this pass evaluates no light (all light is in the indirect texture);
 //   SKY_LIGHTS   1 when the sky's directions are shaded here (no interleaving);
+//   BLOCK_LIGHTS 1 when each block of the image shades its own delta lights in full
+//                (light_blocks.glsl), besides lights[0 .. shadedHere);
 //   DIRECTIONAL, SPOT, AREA, LUMINAIRE, GLAZING   lights.glsl's.
 #include_brdf
 #include_gbuffer
@@ -18,6 +20,9 @@
 #include_cube_shadows
 #include_lights
 #include_sky
+#if BLOCK_LIGHTS
+#include_light_blocks
+#endif
 // With interleaving, the lights from firstInterleaved on (many delta lights, the area-light
 // samples) were shaded with the VPLs (shade_vpl.frag) and are inside indirectTex.
 uniform int shadedHere;  // lights[0 .. shadedHere) are evaluated here
@@ -61,9 +66,21 @@ void main() {
         const Surface s = decodeSurface(g0, texelFetch(g1Tex, p, 0));
         const vec3 wo = normalize(cameraPos - s.position);
         // The vertical half of the box blur (box_blur.glsl), over the image layout.
-        c = addIndirect != 0 ? boxBlur(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1), boxFlip != 0).rgb : vec3(0.0);
+        int up = 0, down = 0;
+        if (addIndirect != 0)
+            c = boxBlurWalk(indirectTex, p, ivec2(0, 1), boxHeight, ivec2(1), ivec2(1), boxFlip != 0, up, down).rgb;
 #if LIGHT_LOOP
         for (int i = 0; i < shadedHere; ++i) c += lightContribution(i, s, wo);
+#endif
+#if BLOCK_LIGHTS
+        // This block's lights in full, their dealt share taken back out of the blur.
+        const int block = lightBlockOf(p);
+        for (int k = 0; k < lightsPerBlock; ++k) {
+            const int j = blockLights[block * lightsPerBlock + k];
+            if (j < 0) continue;
+            c += lightContribution(firstBlockLight + j, s, wo);
+            if (addIndirect != 0 && dealtAt[j] >= 0) c -= dealtShareInBlur(dealtAt[j], p, up, down, indirectTex, g0Tex, g1Tex, cameraPos);
+        }
 #endif
 #if SKY_LIGHTS
         for (int i = 0; i < skyLightCount; ++i)
