@@ -185,16 +185,26 @@ void TestClosedForm::finelyTessellatedBrightSphere() {
 void TestClosedForm::manyPointLightsOverPlane_data() {
     QTest::addColumn<QString>("backend");
     QTest::addColumn<int>("spp");
-    QTest::newRow("path") << "path" << 64;
-    // ir's and mir's VPL passes add noise of their own: more passes. (bdpt, mlt and cmlt choose
-    // lights by power: README.)
-    QTest::newRow("ir") << "ir" << 256;
-    QTest::newRow("mir") << "mir" << 256;
+    QTest::addColumn<double>("blockTolerance");  // the worst 8x8 block's relative error
+    QTest::addColumn<double>("gain");            // power's per-pixel error over the tree's, at least
+    QTest::newRow("path") << "path" << 64 << 0.015 << 10.0;
+    // ir's and mir's VPL passes add noise of their own: more passes.
+    QTest::newRow("ir") << "ir" << 256 << 0.015 << 10.0;
+    QTest::newRow("mir") << "mir" << 256 << 0.015 << 10.0;
+    // The tree in the bidirectional family: next-event estimation (s = 1) by the tree, its
+    // probability in every strategy's weight (issue 37). A Markov chain's blocks spread wider
+    // (15%, as in the other closed forms), and its noise is mostly the chain's, not the light
+    // choice's: the tree need only be better (at 64 mutations a pixel, mlt 5x, cmlt 1.8x).
+    QTest::newRow("bdpt") << "bdpt" << 64 << 0.015 << 10.0;
+    QTest::newRow("mlt") << "mlt" << 64 << 0.15 << 1.0;
+    QTest::newRow("cmlt") << "cmlt" << 64 << 0.15 << 1.0;
 }
 
 void TestClosedForm::manyPointLightsOverPlane() {
     QFETCH(QString, backend);
     QFETCH(int, spp);
+    QFETCH(double, blockTolerance);
+    QFETCH(double, gain);
     const ManyPointLightsOverPlane s;
     const SceneSnapshot scene = sceneFromJson(s.json());
     const std::vector<double> expected = s.expected();
@@ -217,8 +227,8 @@ void TestClosedForm::manyPointLightsOverPlane() {
     qInfo("tree: mean error %.4f%%, worst 8x8 block %.4f%%; per-pixel relative mse: tree %.3g, power %.3g",
           100 * c.meanRelError, 100 * c.worstBlockRelError, treeError, powerError);
     QVERIFY(c.meanRelError < 0.005);
-    QVERIFY(c.worstBlockRelError < 0.015);
-    QVERIFY(treeError * 10 < powerError);
+    QVERIFY(c.worstBlockRelError < blockTolerance);
+    QVERIFY(treeError * gain < powerError);
 }
 
 QTEST_GUILESS_MAIN(TestClosedForm)
