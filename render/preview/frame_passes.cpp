@@ -100,7 +100,8 @@ const gl::Program& shadeProgram(Preview::State& st, bool interleavedLights, bool
                           define("UNROLLED_AREA", interleavedLights ? st.areaPerTile : 0) +
                           define("SKY_PER_TILE", interleavedSky ? st.skyPerTile : 0) +
                           lightKindDefines(st, interleavedLights ? st.interleavedKinds : 0) +
-                          define("UNROLLED_VPLS", st.unrolledVpls) + "#define FOR_EACH_TILE_VPL(STEP)";
+                          define("VPL_PANES", st.vplPaneCount) + define("UNROLLED_VPLS", st.unrolledVpls) +
+                          "#define FOR_EACH_TILE_VPL(STEP)";
     for (int k = 0; k < st.unrolledVpls; ++k) defines += " STEP(" + std::to_string(k) + ")";
     return programVariant(st, "shade_vpl.frag", defines);
 }
@@ -304,7 +305,9 @@ FrameView frameView(const Preview::State& st, float jitterX, float jitterY) {
 void uploadVplsAndLights(Preview::State& st, const PreviewSettings& s) {
     if (st.vplsDirty) uploadVpls(st, s);
     if (st.lightsDirty) uploadLights(st, s);
-    st.degradation = st.vplNote + (st.vplNote.empty() || st.lightNote.empty() ? "" : "; ") + st.lightNote;
+    st.degradation.clear();
+    for (const std::string* note : {&st.vplNote, &st.lightNote, &st.paneNote})
+        if (!note->empty()) st.degradation += (st.degradation.empty() ? "" : "; ") + *note;
 }
 
 // The G-buffer of the opaque triangles, and what the camera sees through panes: the product of
@@ -374,6 +377,7 @@ void shadeSubBuffers(Preview::State& st, const PreviewSettings& s, const FramePl
     glBindTextureUnit(2, st.s[2].id());
     st.vplShadows.bind(4);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, st.vplBuffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, st.paneTriangles.id());
     glBindFramebuffer(GL_FRAMEBUFFER, plan.interleaved ? st.indirectSplitFbo.id() : st.indirectFbo.id());
     const int tileW = plan.interleaved ? st.subW : st.width, tileH = plan.interleaved ? st.subH : st.height;
     for (int k = 0; k < s.patternX * s.patternY; ++k) {

@@ -27,6 +27,11 @@ using Clock = std::chrono::steady_clock;
 struct GpuMaterial { float albedoKind[4], specularAlpha[4], radiance[4]; };
 struct GpuVpl { float positionIndex[4], normalAlpha[4], incident[4], power[4], albedo[4], specular[4]; };
 struct GpuLight { float positionKind[4], directionCosCone[4], intensityCosFalloff[4], normalShadow[4]; };
+// A pane triangle for the VPLs' light (shade_vpl.frag's Pane): a corner, its two edges, its
+// transmittance.
+struct GpuPane { float p0[4], e1[4], e2[4], transmittance[4]; };
+// Pane triangles the VPL shading tests each VPL's light against (beyond, it goes unattenuated).
+constexpr int kMaxVplPanes = 64;
 // One of the sky's directions (lights.glsl's SkyLight): toward it and its map's layer, its
 // irradiance, its map's matrix (column-major).
 struct GpuSkyLight { float towardLayer[4], irradiance[4], shadow[16]; };
@@ -98,6 +103,12 @@ struct Preview::State {
     // maps leave out: the camera sees through them, and they cast no shadow.
     GLsizei vertexCount = 0, opaqueVertexCount = 0;
     bool glazing = false;  // the scene has panes
+    // The pane triangles a VPL's light crosses on its way to a pixel are tested one by one
+    // (shade_vpl.frag's VPL_PANES): vplPaneCount of them in paneTriangles, 0 past kMaxVplPanes
+    // (paneNote says so).
+    gl::Buffer paneTriangles;
+    int vplPaneCount = 0;
+    std::string paneNote;
 
     // Scene.
     SceneSnapshot snapshot;
@@ -160,12 +171,12 @@ struct Preview::State {
     bool interleavedDeltas = false;
     // With interleavedDeltas, the delta lights each block of the image shades in full
     // (light_blocks.h), chosen every frame from what the block sees (chooseLightsPerBlock):
-    // directLights[firstBlockLight, + blockLightCount) holds every delta light (deltaTree: the
-    // light tree over them), blockLights lightsPerBlock indices a block (-1: none), dealtAt each delta light's
+    // directLights from firstBlockLight on holds every delta light (deltaTree: the light tree
+    // over them), blockLights lightsPerBlock indices a block (-1: none), dealtAt each delta light's
     // place among the dealt lights (from firstInterleaved; -1: not dealt this frame). Blocks are
     // lightBlockSize pixels, the grid shifted by lightBlockOffset with each deal; lightBlockSize
     // 0: no blocks this frame.
-    int firstBlockLight = 0, blockLightCount = 0, lightsPerBlock = 0;
+    int firstBlockLight = 0, lightsPerBlock = 0;
     int lightBlockSize = 0, lightBlocksX = 0, lightBlocksY = 0;
     int lightBlockOffsetX = 0, lightBlockOffsetY = 0;
     LightTree deltaTree;

@@ -182,6 +182,22 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
         }
     }
     st.glazing = GLsizei(positions.size() / 3) > st.opaqueVertexCount;
+    std::vector<GpuPane> panes;
+    for (uint32_t i = 0; i < rs.triangleCount(); ++i) {
+        if (rs.materialOfTriangle(i).type != MaterialType::Glazing) continue;
+        const std::array<V3f, 3> v = rs.verticesOfTriangle(i);
+        GpuPane p{};
+        put(p.p0, v[0], 0);
+        put(p.e1, v[1] - v[0], 0);
+        put(p.e2, v[2] - v[0], 0);
+        put(p.transmittance, toFloat(snapshot->materials[&rs.materialOfTriangle(i) - &rs.material(0)].transmittance), 0);
+        panes.push_back(p);
+    }
+    st.vplPaneCount = int(panes.size()) <= kMaxVplPanes ? int(panes.size()) : 0;
+    st.paneNote = st.vplPaneCount < int(panes.size())
+                      ? "VPL light unattenuated by the " + std::to_string(panes.size()) + " pane triangles (more than " +
+                            std::to_string(kMaxVplPanes) + ")"
+                      : "";
     std::vector<GpuMaterial> mats;
     st.glossyScene = false;
     for (uint32_t m = 0; m < snapshot->materials.size(); ++m) {
@@ -198,6 +214,7 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
     {
         EglContext::ScopedCurrent current(*context_);
         upload(st.vertices, positions);
+        upload(st.paneTriangles, panes);
         upload(st.triangles, tris);
         upload(st.materials, mats);
         st.vertexCount = GLsizei(positions.size() / 3);

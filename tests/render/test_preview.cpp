@@ -100,6 +100,7 @@ private slots:
     void splitModesRenderTheSameFrame_data();
     void splitModesRenderTheSameFrame();
     void oneByOneEqualsCpuSum();
+    void vplLightThroughPanes();
     void directLightMatchesPathTracer_data();
     void directLightMatchesPathTracer();
     void albedoLayerGivesIlluminance();
@@ -255,6 +256,68 @@ void TestPreview::oneByOneEqualsCpuSum() {
         // float on both sides, positions rasterised vs. ray cast: agreement to 0.5%.
         QVERIFY2(worst < 5e-3, qPrintable(QString::number(worst)));
     }
+}
+
+// A VPL's light that crosses a pane on its way to a pixel is times the pane's transmittance: a
+// low glass wall standing on the floor between VPLs just above the floor on one side and the
+// floor on both (the camera high above sees the floor past the pane, not through it), against
+// the CPU sum with the pane's transmittance on the segments that cross it.
+void TestPreview::vplLightThroughPanes() {
+    const SceneSnapshot scene = sceneFromJson(R"({"lucerna": 1, "camera": {"position": [0, 1.2, 0], "target": [0, 0, 0],
+  "up": [0, 0, 1], "fov_y": 70, "resolution": [40, 30]},
+  "materials": {"floor": {"type": "diffuse", "albedo": [0.5, 0.5, 0.5]},
+                "glass": {"type": "glazing", "transmittance": [0.5, 0.6, 0.7]}},
+  "objects": [{"name": "floor", "material": "floor", "mesh": {"quad": [[-20,0,-20],[-20,0,20],[20,0,20],[20,0,-20]]}},
+              {"name": "pane", "material": "glass", "mesh": {"quad": [[0.1,0,-20],[0.1,0,20],[0.1,0.06,20],[0.1,0.06,-20]]}}]})");
+    const RenderScene rs(scene);
+    VplSet vpls;
+    for (int i = 0; i < 12; ++i) {
+        Vpl v;
+        v.position = V3f(-0.1f - 0.05f * float(i % 4), 0.02f + 0.01f * float(i % 3), 0.3f * std::sin(0.9f * float(i)));
+        v.normal = V3f(0, -1, 0);
+        v.incident = V3f(0, -1, 0);
+        v.power = Rgb(0.02f, 0.03f, 0.025f);
+        v.material = 0;
+        vpls.push_back(v);
+    }
+    Preview preview;
+    PreviewSettings s;
+    s.patternX = s.patternY = 1;
+    s.blur = false;
+    s.direct = false;
+    s.clampDistance = 0.02f;
+    s.visibility = false;  // the CPU sum is unshadowed; the pane casts no shadow, it filters
+    preview.setSettings(s);
+    preview.setScene(scene);
+    preview.setVpls(vpls);
+    const Image img = preview.render(0.5f, 0.5f);
+    const float maxG = geometricClampBound(rs, s.clampDistance);
+    const Rgb transmittance(0.5f, 0.6f, 0.7f);
+    double worst = 0;
+    int behind = 0;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = 0; x < img.width; ++x) {
+            float t = 0;
+            const Ray ray = rs.camera().ray(float(x) + 0.5f, float(y) + 0.5f);
+            const auto hit = rs.intersect(ray, &t);
+            QVERIFY(hit.has_value());
+            if (std::abs(hit->p.x - 0.1f) < 0.02f) continue;  // the pane's own line
+            VplReceiver r;
+            r.x = *hit;
+            r.material = &rs.material(hit->material);
+            r.wo = -ray.direction;
+            Rgb cpu(0, 0, 0);
+            for (const Vpl& v : vpls) {
+                const Rgb c = vplContributionUnshadowed(rs, v, r, maxG);
+                cpu += hit->p.x > 0.1f ? c * transmittance : c;  // every VPL is at x < 0.1
+            }
+            behind += hit->p.x > 0.1f;
+            for (int c = 0; c < 3; ++c)
+                worst = std::max(worst, std::abs(img.at(x, y)[c] - cpu[c]) / std::max(1e-6, double(cpu[c])));
+        }
+    qInfo("largest relative difference against the CPU sum with the pane: %.3g (%d pixels behind the pane)", worst, behind);
+    QVERIFY(behind > 100);
+    QVERIFY2(worst < 5e-3, qPrintable(QString::number(worst)));
 }
 
 void TestPreview::directLightMatchesPathTracer_data() {

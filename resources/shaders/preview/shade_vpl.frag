@@ -13,6 +13,9 @@
 // SIMD vector of fragments through every branch any of them takes):
 //   UNROLLED_VPLS, FOR_EACH_TILE_VPL(STEP)  as above;
 //   VPL_VISIBILITY     1 when the VPLs have shadow maps (cube_shadows.glsl);
+//   VPL_PANES          the pane triangles each VPL's light is tested against (0: none), which
+//                      the shadow maps leave out: the light crossing one is times its
+//                      transmittance;
 //   GLOSSY             0 when the scene has no glossy material (all VPLs and receivers diffuse);
 //   INTERLEAVED_LIGHTS 1 when lights are dealt to the sub-buffers and shaded here: the area
 //                      lights' samples, and the delta lights when there are many;
@@ -93,6 +96,29 @@ vec3 areaSampleLight(vec3 position, vec4 normalShadow, vec3 intensity, Surface s
 #endif
 }
 
+#if VPL_PANES > 0
+// The pane triangles (render/preview/gpu_state.h, GpuPane), and the product of the
+// transmittances of those the segment from a to b crosses (Moller and Trumbore, t in (0, 1)).
+struct Pane { vec4 p0; vec4 e1; vec4 e2; vec4 transmittance; };
+layout(std430, binding = 7) readonly buffer Panes { Pane panes[VPL_PANES]; };
+vec3 paneTransmittance(vec3 a, vec3 b) {
+    const vec3 d = b - a;
+    vec3 t = vec3(1.0);
+    for (int k = 0; k < VPL_PANES; ++k) {
+        const vec3 e1 = panes[k].e1.xyz, e2 = panes[k].e2.xyz;
+        const vec3 q = cross(d, e2);
+        const float det = dot(e1, q);
+        const vec3 s = a - panes[k].p0.xyz;
+        const float b1 = dot(s, q) / det;
+        const vec3 r = cross(s, e1);
+        const float b2 = dot(d, r) / det, along = dot(e2, r) / det;
+        if (abs(det) > 1e-20 && b1 >= 0.0 && b2 >= 0.0 && b1 + b2 <= 1.0 && along > 1e-4 && along < 1.0 - 1e-4)
+            t *= panes[k].transmittance.rgb;
+    }
+    return t;
+}
+#endif
+
 // VPL i's light at y (normal n, glossy receiver or not; a diffuse receiver's albedo / pi is
 // applied by the caller), its fields read one by one as they are needed: a diffuse VPL (the
 // common case) costs three of its six vec4s.
@@ -118,6 +144,9 @@ vec3 vplLight(int i, Surface sy, vec3 wo, bool glossyY) {
     }
 #endif
     vec3 c = vpls[i].power.rgb * g;
+#if VPL_PANES > 0
+    if (g > 0.0) c *= paneTransmittance(pos.xyz, y);
+#endif
 #if GLOSSY
     const vec4 incident = vpls[i].incident;
     if (incident.w != 0.0)
