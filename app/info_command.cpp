@@ -187,7 +187,7 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasGlazing) needs += " glazing";
     if (f.hasDaylight()) {  // the panes and openings daylight particles go through (which side is outside: traced)
         const RenderScene traced(std::make_shared<const Scene>(scene), 0, 0, nullptr, kDefaultLightSelection, true);
-        std::cout << "portals (--option daylight_portals=on): "
+        std::cout << "portals (mir's by default, the others' with --option daylight_portals=on): "
                   << traced.lights().particlePortals().describe(float(scene.metersPerUnit)) << "\n";
     }
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";

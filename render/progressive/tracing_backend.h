@@ -25,7 +25,7 @@ protected:
     // Lights switched off are left out here, so that no tracing backend ever sees them.
     // lightSelection: how next-event estimation chooses lights; by default the option
     // light_sampler (backend_options.h). portalsByDefault: daylight_portals where not given
-    // (README, "Daylight in the renderers", says why it is off).
+    // (README, "Daylight in the renderers", says why it is off but for mir).
     TracingBackend(SceneSnapshot scene, const RenderSettings& settings,
                    std::optional<LightSelection> lightSelection = std::nullopt, bool portalsByDefault = false)
         : snapshot_(sceneAsRendered(std::move(scene))), settings_(settings),

@@ -8,7 +8,6 @@
 // discontinuity, so that every pixel averages one sample of each VPL subset where the surface is
 // continuous; box 1: the centre alone. Returns the mean and the centre's bits.
 
-
 vec4 boxTexel(sampler2D tex, ivec2 image, ivec2 pattern, ivec2 subSize) {
     return texelFetch(tex, (image % pattern) * subSize + image / pattern, 0);
 }
