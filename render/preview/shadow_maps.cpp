@@ -75,7 +75,11 @@ int CubeShadowSet::draw(const gl::Program& program, const ShadowCaster& caster, 
                         int firstIndex, float sceneRadius, gl::Buffer& scratch) {
     if (centres.empty() || caster.vertexCount == 0) return 0;
     if (firstIndex + int(centres.size()) > allocated_) throw std::logic_error("preview: shadow cube beyond the set");
-    const auto faces = cubeFaceMatrices(sceneRadius * 1e-3f, sceneRadius * 4.0f);
+    // The near plane well inside the lift of a cube's centre off its surface (1e-4 of the radius,
+    // interleaved_vpls.cpp and direct_lights.cpp): at 1e-3 it clipped away a wall a few
+    // millimetres from a VPL, whose light then leaked through it. The depth only orders the
+    // fragments (the distance is stored exactly); at 10 m it still tells surfaces 2 cm apart.
+    const auto faces = cubeFaceMatrices(sceneRadius * 1e-5f, sceneRadius * 4.0f);
     glProgramUniformMatrix4fv(program.id(), glGetUniformLocation(program.id(), "faceProj"), 6, GL_FALSE,
                               faces[0].m.data());
     glProgramUniform1f(program.id(), glGetUniformLocation(program.id(), "nearSkip"), caster.slack);
