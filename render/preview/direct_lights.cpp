@@ -347,13 +347,12 @@ void chooseLightsPerBlock(Preview::State& st) {
     const int size = lightBlockSize(st.width, st.height);
     st.lightBlockSize = size;
     // One block more each way: the offset shifts the grid by up to a block.
-    st.lightBlocksX = (st.width + size - 1) / size + 1;
-    st.lightBlocksY = (st.height + size - 1) / size + 1;
+    const int blocksX = (st.width + size - 1) / size + 1, blocksY = (st.height + size - 1) / size + 1;
     const int ox = st.lightBlockOffsetX % size, oy = st.lightBlockOffsetY % size;
-    if (st.blockBoxW != st.lightBlocksX || st.blockBoxH != st.lightBlocksY) {
-        st.blockBoxW = st.lightBlocksX;
-        st.blockBoxH = st.lightBlocksY;
-        for (auto& t : st.blockBoxes) t = gl::makeTexture2D(GL_RGBA32F, st.blockBoxW, st.blockBoxH);
+    if (blocksX != st.lightBlocksX || blocksY != st.lightBlocksY) {  // the boxes' targets, a texel a block
+        st.lightBlocksX = blocksX;
+        st.lightBlocksY = blocksY;
+        for (auto& t : st.blockBoxes) t = gl::makeTexture2D(GL_RGBA32F, blocksX, blocksY);
         st.blockBoxFbo = gl::makeFramebuffer({st.blockBoxes[0].id(), st.blockBoxes[1].id()});
     }
     const gl::Program& p = st.blockBoundsProgram;
@@ -361,8 +360,8 @@ void chooseLightsPerBlock(Preview::State& st) {
     setInt(p, "lightBlockSize", size);
     setIvec2(p, "lightBlockOffset", ox, oy);
     glBindTextureUnit(0, st.g[0].id());
-    drawFullscreen(st.blockBoxFbo.id(), st.blockBoxW, st.blockBoxH);
-    const size_t count = size_t(st.blockBoxW) * size_t(st.blockBoxH);
+    drawFullscreen(st.blockBoxFbo.id(), blocksX, blocksY);
+    const size_t count = size_t(blocksX) * size_t(blocksY);
     std::vector<float> lo(count * 4), hi(count * 4);
     glGetTextureImage(st.blockBoxes[0].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(lo.size() * sizeof(float)), lo.data());
     glGetTextureImage(st.blockBoxes[1].id(), 0, GL_RGBA, GL_FLOAT, GLsizei(hi.size() * sizeof(float)), hi.data());

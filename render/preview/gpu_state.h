@@ -181,11 +181,11 @@ struct Preview::State {
     int lightBlockOffsetX = 0, lightBlockOffsetY = 0;
     LightTree deltaTree;
     gl::Buffer blockLights, dealtAt;
-    // The blocks' boxes (light_block_bounds.frag): lowest and highest position seen, a texel a block.
+    // The blocks' boxes (light_block_bounds.frag): lowest and highest position seen, a texel of
+    // lightBlocksX x lightBlocksY a block.
     gl::Program blockBoundsProgram;
     std::array<gl::Texture, 2> blockBoxes;
     gl::Framebuffer blockBoxFbo;
-    int blockBoxW = 0, blockBoxH = 0;
     int shadedKinds = 0, interleavedKinds = 0;  // bit k: a light of GpuLight kind k in that range
     // What was given up to stay within the GPU's limits (Preview::degradation), by cause.
     std::string vplNote, lightNote;

@@ -103,7 +103,10 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
         sun.type = LightType::Directional;
         sun.direction = toFloat(-daylight.sun->towardSun);
         sun.intensity = toFloat(daylight.sun->irradiance());
-        if (!isBlack(sun.intensity)) deltas.push_back(sun);
+        if (!isBlack(sun.intensity)) {
+            directionalSun_ = uint32_t(emitters.size() + deltas.size());
+            deltas.push_back(sun);
+        }
     }
     // A drawn room's doors and plain openings are portals too, though no pane fills them.
     for (const Room& room : s.rooms)

@@ -32,6 +32,9 @@ public:
     const Sensor& camera() const { return camera_; }
     const EmbreeScene& accel() const { return *accel_; }
     const LightSampler& lights() const { return lights_; }
+    // The sun of diameter 0 above the horizon as a directional light, numbered as
+    // LightSample::light (after the scene's own delta lights); nothing without one.
+    std::optional<uint32_t> directionalSun() const { return directionalSun_; }
     float metersPerUnit() const { return metersPerUnit_; }
 
     size_t triangleCount() const { return triangles_.size(); }
@@ -86,6 +89,7 @@ private:
     float boundsRadius_ = 1.0f;
     std::unique_ptr<EmbreeScene> accel_;
     LightSampler lights_;
+    std::optional<uint32_t> directionalSun_;
 };
 
 }  // namespace lucerna

@@ -39,6 +39,13 @@ double meanRelError(const QString& backend, const ClosedForm& scene, int spp,
     return e;
 }
 
+// The roof opening closed by a pane of transmittance 0.6.
+SkyThroughOpening glazedRoofOpening() {
+    SkyThroughOpening s;
+    s.glazing = 0.6;
+    return s;
+}
+
 }  // namespace
 
 class TestDaylightRender : public QObject {
@@ -97,9 +104,7 @@ void TestDaylightRender::skyThroughGlazing() {
     QFETCH(QString, backend);
     QFETCH(double, tolerance);
     QFETCH(int, sppPane);
-    SkyThroughOpening s;
-    s.glazing = 0.6;
-    QVERIFY(meanRelError(backend, s, sppPane) < tolerance);
+    QVERIFY(meanRelError(backend, glazedRoofOpening(), sppPane) < tolerance);
 }
 
 // The same pane with daylight particles through the windows (daylight_portals=on) in every
@@ -122,9 +127,7 @@ void TestDaylightRender::skyThroughGlazingWithPortals() {
     QFETCH(QString, backend);
     QFETCH(int, spp);
     QFETCH(double, tolerance);
-    SkyThroughOpening s;
-    s.glazing = 0.6;
-    QVERIFY(meanRelError(backend, s, spp, {{"daylight_portals", "on"}}) < tolerance);
+    QVERIFY(meanRelError(backend, glazedRoofOpening(), spp, {{"daylight_portals", "on"}}) < tolerance);
 }
 
 void TestDaylightRender::sunOverPlane() {

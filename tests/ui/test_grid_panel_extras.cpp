@@ -54,9 +54,10 @@ QString figuresOf(GridPanel& panel) { return child<QLabel>(panel, "gridFigures")
 // is none or it is not a number.
 double captured(const QString& text, const QString& pattern) {
     const QRegularExpressionMatch m = QRegularExpression(pattern).match(text);
+    if (!m.hasMatch()) qFatal("no match for %s in:\n%s", qPrintable(pattern), qPrintable(text));
     bool isNumber = false;
-    const double value = m.hasMatch() ? m.captured(1).toDouble(&isNumber) : 0.0;
-    if (!isNumber) qFatal("no number for %s in:\n%s", qPrintable(pattern), qPrintable(text));
+    const double value = m.captured(1).toDouble(&isNumber);
+    if (!isNumber) qFatal("not a number for %s in:\n%s", qPrintable(pattern), qPrintable(text));
     return value;
 }
 }  // namespace

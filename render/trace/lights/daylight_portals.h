@@ -41,6 +41,9 @@ public:
     float lineDensity(const V3f& point, const V3f& w) const;
 
     const std::vector<Portal>& portals() const { return portals_; }
+    // Whether a particle toward w (unit, toward the sky) can come in through a portal: some
+    // portal's outside faces w; otherwise sampleLine() draws it from the disc.
+    bool letsIn(const V3f& w) const { return projectedArea(w) > 0; }
     // One line for `lucerna info`: "4 portal triangles (panes and openings), 3.20 m^2, outside
     // known for 4 (daylight particles: 75% through them)", or "none (...)".
     std::string describe(float metersPerUnit) const;

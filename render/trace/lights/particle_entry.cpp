@@ -1,33 +1,10 @@
 #include "render/trace/lights/particle_entry.h"
 
-#include "core/daylight/daylight.h"
 #include "render/trace/rng.h"
 
 #include <algorithm>
 
 namespace lucerna {
-
-namespace {
-
-// Whether the render scene made a directional light of the sun (a sun of diameter 0): the last
-// of its delta lights (RenderScene's constructor appends it after the others).
-bool hasDeltaSun(const RenderScene& scene) {
-    const Daylight daylight = resolveDaylight(scene.scene());
-    return daylight.sun && !(daylight.sun->halfAngleRad > 0) && daylight.sun->aboveHorizon &&
-           !isBlack(toFloat(daylight.sun->irradiance())) && !scene.lights().deltaLights().empty();
-}
-
-// Whether some portal lets a particle from the sky direction w in: DaylightPortals::facing's
-// rule (private there), its outside toward w, either side where the outside is unknown.
-bool somePortalFaces(const DaylightPortals& portals, const V3f& w) {
-    for (const Portal& p : portals.portals()) {
-        const float c = p.normal.dot(w);
-        if (p.outside > 0 ? c > 0 : p.outside < 0 ? c < 0 : c != 0) return true;
-    }
-    return false;
-}
-
-}  // namespace
 
 std::optional<RoomBox> drawnRoomsBox(const Scene& scene) {
     std::optional<RoomBox> box;
@@ -47,8 +24,7 @@ std::optional<RoomBox> drawnRoomsBox(const Scene& scene) {
 ParticleEntry countParticleEntry(const RenderScene& scene, const RoomBox& room, int64_t daylightParticles,
                                  uint64_t seed) {
     const LightSampler& lights = scene.lights();
-    const bool deltaSun = hasDeltaSun(scene);
-    const uint32_t sunIndex = deltaSun ? uint32_t(lights.emitters().size() + lights.deltaLights().size() - 1) : 0;
+    const std::optional<uint32_t> sun = scene.directionalSun();
     const float centimetre = 0.01f / scene.metersPerUnit();
     const RoomBox grown{room.lo - V3f(centimetre), room.hi + V3f(centimetre)};
 
@@ -63,11 +39,11 @@ ParticleEntry countParticleEntry(const RenderScene& scene, const RoomBox& room, 
         const bool emitted = lights.sampleEmission(uPosition, uDirection, uSelect, es);
         // sampleEmission numbers the chosen light before it emits, so a refused particle is
         // still known to be the daylight's.
-        const bool daylight = lights.isEnvironment(es.light) || (deltaSun && es.light == sunIndex);
+        const bool daylight = lights.isEnvironment(es.light) || es.light == sun;
         if (!daylight) continue;
         ++count.particles;
         if (!emitted || !isFinite(es.power)) continue;
-        if (es.environment && somePortalFaces(lights.particlePortals(), -es.direction)) ++count.facing;
+        if (es.environment && lights.particlePortals().letsIn(-es.direction)) ++count.facing;
         const double power = luminance(es.power);
         count.power += power;
         count.powerSquared += power * power;
