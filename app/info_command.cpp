@@ -188,7 +188,12 @@ int infoImpl(const std::vector<std::string>& args) {
     if (f.hasDaylight()) {  // the panes and openings daylight particles go through (which side is outside: traced)
         const RenderScene traced(std::make_shared<const Scene>(scene), 0, 0, nullptr, kDefaultLightSelection, true);
         std::cout << "portals (mir's by default, the others' with --option daylight_portals=on): "
-                  << traced.lights().particlePortals().describe(float(scene.metersPerUnit)) << "\n";
+                  << traced.lights().particlePortals().describe(float(scene.metersPerUnit));
+        std::string openings;
+        for (const Object& o : scene.objects)
+            if (o.portal) openings += (openings.empty() ? "" : ", ") + o.name;
+        if (!openings.empty()) std::cout << "; objects marked as openings: " << openings;
+        std::cout << "\n";
     }
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
     std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";

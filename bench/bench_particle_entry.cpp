@@ -90,11 +90,11 @@ int main(int argc, char** argv) {
                         e.power > 0 ? 100.0 * e.powerInside / e.power : 0.0, (long long)e.particles, seconds);
             if (portals) {
                 std::printf("  portals: %s\n", scene.lights().particlePortals().describe(scene.metersPerUnit()).c_str());
-                // Only particles from a sky direction some portal faces can be sent through one, and
-                // of those kDiscShare still leave from the disc: the most that can enter.
+                // 1 - kDiscShare of the particles are drawn through a portal that faces them; those
+                // that enter beyond that came from the disc.
                 const double facing = double(e.facing) / double(e.particles);
-                std::printf("  a portal faces the direction of %.3g%% of particles: at most %.3g%% + the disc's share can enter\n",
-                            100.0 * facing, 100.0 * facing * (1 - kDiscShare));
+                std::printf("  a portal faces the direction of %.3g%% of particles (%.3g%% are drawn through one)\n",
+                            100.0 * facing, 100.0 * (1 - kDiscShare));
             }
             if (e.draws != e.particles)
                 std::printf("  (%lld draws in all: the other lights' particles are not counted)\n", (long long)e.draws);

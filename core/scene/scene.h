@@ -87,6 +87,10 @@ struct Object {
     // An addition (README, "Rooms"): the room this object is a surface of (a key of
     // Scene::rooms); empty: none.
     std::string room;
+    // An addition (README, "Daylight portals"): an opening, not a surface. Rays pass through it
+    // untouched and daylight particles and the sky's next-event samples are sent through it,
+    // like an unglazed door of a drawn room; its material is not used.
+    bool portal = false;
 
     // World-space triangles after the transform, degenerate triangles dropped. Filled by the
     // loader (resolveMeshes); shared between scene copies, never mutated once set.
@@ -95,7 +99,7 @@ struct Object {
     // Equality compares what the file says, not the cache.
     bool operator==(const Object& o) const {
         return name == o.name && material == o.material && mesh == o.mesh && transform == o.transform &&
-               room == o.room;
+               room == o.room && portal == o.portal;
     }
 };
 

@@ -148,7 +148,7 @@ void SceneParser::parseMaterials(const Value& v, const std::string& place, Scene
 }
 
 Object SceneParser::parseObject(const Value& v, const std::string& place, const Scene& scene) {
-    checkKeys(v, place, {"name", "material", "mesh", "transform", "room"});
+    checkKeys(v, place, {"name", "material", "mesh", "transform", "room", "portal"});
     Object o;
     o.name = parseName(v, place);
     o.material = text(required(v, place, "material"), member(place, "material"));
@@ -160,6 +160,10 @@ Object SceneParser::parseObject(const Value& v, const std::string& place, const 
         o.room = text(*room, member(place, "room"));
         if (std::none_of(scene.rooms.begin(), scene.rooms.end(), [&](const Room& r) { return r.name == o.room; }))
             fail(member(place, "room"), "unknown room " + quote(o.room) + " (rooms are listed under \"rooms\")");
+    }
+    if (const Value* portal = v.find("portal")) {
+        expectType(*portal, Type::Boolean, member(place, "portal"));
+        o.portal = portal->boolean;
     }
     return o;
 }

@@ -303,6 +303,7 @@ std::string saveSceneToString(const Scene& scene) {
         out += (i ? ",\n    " : "\n    ");
         out += "{\"name\": " + str(o.name) + ", \"material\": " + str(o.material);
         if (!o.room.empty()) out += ", \"room\": " + str(o.room);
+        if (o.portal) out += ", \"portal\": true";
         out += ",\n     \"mesh\": ";
         appendMesh(out, o.mesh);
         if (o.transform) out += ",\n     \"transform\": " + transform(*o.transform);

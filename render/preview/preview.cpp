@@ -190,7 +190,7 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
         put(p.p0, v[0], 0);
         put(p.e1, v[1] - v[0], 0);
         put(p.e2, v[2] - v[0], 0);
-        put(p.transmittance, toFloat(snapshot->materials[&rs.materialOfTriangle(i) - &rs.material(0)].transmittance), 0);
+        put(p.transmittance, rs.materialOfTriangle(i).transmittance, 0);
         panes.push_back(p);
     }
     st.vplPaneCount = int(panes.size()) <= kMaxVplPanes ? int(panes.size()) : 0;
@@ -200,12 +200,12 @@ void Preview::setScene(SceneSnapshot snapshot, int width, int height) {
                       : "";
     std::vector<GpuMaterial> mats;
     st.glossyScene = false;
-    for (uint32_t m = 0; m < snapshot->materials.size(); ++m) {
+    for (uint32_t m = 0; m < rs.materialCount(); ++m) {
         const ShadingMaterial& sm = rs.material(m);
         st.glossyScene = st.glossyScene || (sm.type == MaterialType::Glossy && !isBlack(sm.specular));
         GpuMaterial g{};
         // A pane's transmittance where the others keep their albedo (glazing.frag reads it).
-        put(g.albedoKind, sm.type == MaterialType::Glazing ? toFloat(snapshot->materials[m].transmittance) : sm.albedo,
+        put(g.albedoKind, sm.type == MaterialType::Glazing ? sm.transmittance : sm.albedo,
             materialKind(sm.type));
         put(g.specularAlpha, sm.type == MaterialType::Glossy ? sm.specular : Rgb(0, 0, 0), sm.alpha);
         put(g.radiance, sm.radiance, 0);

@@ -30,6 +30,7 @@ ShadingMaterial ShadingMaterial::fromMaterial(const Material& m) {
     s.specular = toFloat(m.specular);
     s.reflectance = toFloat(m.reflectance);
     s.radiance = toFloat(m.radiance);
+    s.transmittance = toFloat(m.transmittance);
     s.alpha = std::clamp(float(m.roughness), kMinGgxAlpha, 1.0f);
     s.ior = float(m.ior);
     switch (m.type) {

@@ -20,6 +20,7 @@ namespace lucerna {
 struct ShadingMaterial {  // the float, render-time form of a Material
     MaterialType type = MaterialType::Diffuse;
     Rgb albedo{0, 0, 0}, specular{0, 0, 0}, reflectance{0, 0, 0}, radiance{0, 0, 0};
+    Rgb transmittance{1, 1, 1};  // glazing
     float alpha = 0.5f;  // GGX roughness, in [kMinGgxAlpha, 1]
     float ior = 1.5f;    // dielectric: index of the medium behind the front face, > 0
     float diffuseLobeProb = 1.0f;  // glossy: probability of sampling the Lambert lobe (derived in fromMaterial)

@@ -76,7 +76,7 @@ public:
     // `transmittance`, the product of the transmittances of the panes before the hit (or along
     // the whole ray when nothing is hit).
     RayHit intersect(const Ray& ray, Rgb* transmittance = nullptr) const;
-    // True when an opaque surface lies in (tNear, tFar); panes are not in the way.
+    // True when any surface lies in (tNear, tFar), panes included (transmittance() crosses them).
     bool occluded(const Ray& ray) const;
     // What reaches the end of the segment (tNear, tFar) per unit sent: 0 when an opaque surface
     // is in the way, else the product of the transmittances of the panes it crosses.

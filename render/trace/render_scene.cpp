@@ -47,15 +47,23 @@ RenderScene::RenderScene(SceneSnapshot scene, int width, int height, const Senso
     std::vector<Portal> portals;
     PaneTable panes;
     V3d lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+    // Objects marked as openings (Object::portal) are panes that let everything through: the
+    // pane machinery then lets rays cross them and sends daylight through them.
+    const auto opening = uint32_t(materials_.size());
+    if (std::any_of(s.objects.begin(), s.objects.end(), [](const Object& o) { return o.portal; })) {
+        ShadingMaterial open;
+        open.type = MaterialType::Glazing;
+        materials_.push_back(open);
+    }
     for (const Object& o : s.objects) {
         if (!o.worldMesh) continue;
-        const uint32_t materialId = uint32_t(s.materialIndex(o.material));
+        const uint32_t materialId = o.portal ? opening : uint32_t(s.materialIndex(o.material));
         const ShadingMaterial& mat = materials_[materialId];
         const bool emits = mat.isEmitter() && !isBlack(mat.radiance);
         int32_t pane = -1;
         if (mat.type == MaterialType::Glazing) {
             pane = int32_t(panes.transmittance.size());
-            panes.transmittance.push_back(toFloat(s.materials[materialId].transmittance));
+            panes.transmittance.push_back(mat.transmittance);
         }
         const int base = int(positions_.size());
         for (const V3d& v : o.worldMesh->vertices) {

@@ -39,6 +39,8 @@ public:
 
     size_t triangleCount() const { return triangles_.size(); }
     const ShadingMaterial& material(uint32_t id) const { return materials_[id]; }
+    // The scene's materials, then one for the objects marked as openings (Object::portal) if any.
+    size_t materialCount() const { return materials_.size(); }
     const ShadingMaterial& materialOfTriangle(uint32_t tri) const { return materials_[triangleMaterial_[tri]]; }
     const V3f& normalOfTriangle(uint32_t tri) const { return triangleNormal_[tri]; }
     std::array<V3f, 3> verticesOfTriangle(uint32_t tri) const {
@@ -61,7 +63,7 @@ public:
     Rgb transmittanceBetween(const SurfacePoint& a, const SurfacePoint& b) const;
     // The same along a shadow ray (LightSample::shadowRay).
     Rgb transmittance(const Ray& ray) const { return accel_->transmittance(ray); }
-    // True when an opaque surface blocks the ray; panes do not.
+    // True when any surface blocks the ray, panes included (transmittance() crosses them).
     bool occluded(const Ray& ray) const { return accel_->occluded(ray); }
     bool hasGlazing() const { return accel_->hasPanes(); }
     // Radiance (W sr^-1 m^-2) arriving from infinity along -w for a ray leaving the scene in unit

@@ -1,8 +1,10 @@
 // Daylight in every ray-traced backend against closed forms (SPEC.md section 5): a plane under
 // an open CIE overcast sky, a uniform sky through an opening in a black box's roof (Lambert's
-// polygon formula) and through a glazing pane in it (times its transmittance), a sun's disc over
+// polygon formula), through a glazing pane in it (times its transmittance) and through a quad
+// marked as an opening (with a zenith sun of diameter 0 too), a sun's disc over
 // a plane (E cos Z) and its penumbra behind a straight edge (the visible circular segment), and
-// the sampling of the sky by chi-square against its pdf.
+// the sampling of the sky, and of its directions through the portals, by chi-square against
+// their pdf.
 
 #include "chi_square.h"
 #include "daylight_scenes.h"
@@ -59,12 +61,15 @@ private slots:
     void skyThroughGlazing();
     void skyThroughGlazingWithPortals_data();
     void skyThroughGlazingWithPortals();
+    void throughMarkedOpening_data();
+    void throughMarkedOpening();
     void sunOverPlane_data() { backends(); }
     void sunOverPlane();
     void sunPenumbra();
     void skySamplingChiSquare_data();
     void skySamplingChiSquare();
     void portalSamplingChiSquare();
+    void portalDirectionsChiSquare();
     void sunSamplesAreBounded();
 
 private:
@@ -130,6 +135,39 @@ void TestDaylightRender::skyThroughGlazingWithPortals() {
     QVERIFY(meanRelError(backend, glazedRoofOpening(), spp, {{"daylight_portals", "on"}}) < tolerance);
 }
 
+// The opening without a pane, filled by a quad marked as an opening (a portal to next-event
+// estimation and to the particles, daylight_portals=on), with the sky alone and with a sun of
+// diameter 0 at the zenith (a directional light whose particles go through the portals too):
+// the spp of the pane's rows, where the opening alone needs 1024 to 4096.
+void TestDaylightRender::throughMarkedOpening_data() {
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<int>("spp");
+    QTest::addColumn<double>("tolerance");
+    QTest::addColumn<bool>("sun");
+    for (const bool sun : {false, true}) {
+        const char* with = sun ? ", sun" : "";
+        QTest::newRow(qPrintable(QString("path%1").arg(with))) << "path" << 64 << 0.005 << sun;
+        QTest::newRow(qPrintable(QString("bdpt%1").arg(with))) << "bdpt" << 512 << 0.005 << sun;
+        QTest::newRow(qPrintable(QString("ir%1").arg(with))) << "ir" << 256 << 0.01 << sun;
+        QTest::newRow(qPrintable(QString("mir%1").arg(with))) << "mir" << 256 << 0.01 << sun;
+        QTest::newRow(qPrintable(QString("mlt%1").arg(with))) << "mlt" << 256 << 0.02 << sun;
+        QTest::newRow(qPrintable(QString("cmlt%1").arg(with))) << "cmlt" << 256 << 0.02 << sun;
+    }
+}
+
+void TestDaylightRender::throughMarkedOpening() {
+    QFETCH(QString, backend);
+    QFETCH(int, spp);
+    QFETCH(double, tolerance);
+    QFETCH(bool, sun);
+    SkyThroughOpening scene;
+    scene.marked = true;
+    if (sun) scene.zenithSun = 683.0;
+    std::map<std::string, std::string> options;
+    if (backend != "path") options["daylight_portals"] = "on";  // path sends no particles
+    QVERIFY(meanRelError(backend, scene, spp, options) < tolerance);
+}
+
 void TestDaylightRender::sunOverPlane() {
     QFETCH(QString, backend);
     QFETCH(int, spp);
@@ -193,6 +231,37 @@ void TestDaylightRender::skySamplingChiSquare() {
             return env->sample(V2f(rng.next1D(), rng.next1D()), w, pdf, value);
         },
         [&](const V3f& w) { return double(env->pdf(w)); }, 16, 32, 200000, uint64_t(type), 0.01 / 15);
+    QVERIFY2(r.passed, r.message.c_str());
+}
+
+void TestDaylightRender::portalDirectionsChiSquare() {
+    // Daylight particles through the windows draw their directions from the sky's table times
+    // the portals' projected area (EnvironmentLight::reweighted): a window facing +x and an
+    // unknown-sided skylight, under an intermediate sky, against the density it reports.
+    Scene scene;
+    Sky sky;
+    sky.model = SkyModelType::CieGeneral;
+    sky.cieType = 10;
+    sky.horizontalIlluminance = 10000;
+    scene.sky = sky;
+    Light sun;
+    sun.name = "sun";
+    sun.type = LightType::Sun;
+    sun.direction = V3d(-0.6, -0.5, 0.3);  // a delta sun: the environment is the sky alone
+    sun.sun = SunSpec{60000, 0.0};
+    scene.lights.push_back(sun);
+    const auto env = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    QVERIFY(env.has_value());
+    const EnvironmentLight through =
+        env->reweighted([](const V3d& w) { return 1.5 * std::max(0.0, w.x) + 2.0 * std::abs(w.y); });
+    QVERIFY(through.integratedLuminance() > 0);
+    const auto r = chiSquareSphere(
+        [&](Rng& rng, V3f& w) {
+            float pdf = 0;
+            Rgb value;
+            return through.sample(V2f(rng.next1D(), rng.next1D()), w, pdf, value);
+        },
+        [&](const V3f& w) { return double(through.pdf(w)); }, 16, 32, 200000, 3, 0.01);
     QVERIFY2(r.passed, r.message.c_str());
 }
 

@@ -46,10 +46,15 @@ struct OvercastOverPlane {
 // a rectangular opening, under a uniform sky of luminance Lz; optionally a glazing pane of
 // transmittance tau fills the opening. The floor's irradiance is Lambert's polygon formula for
 // the opening at radiance Lz / 683 (times tau). The camera at h/2 looks straight down.
+// Optionally, the opening is filled by a quad marked as an opening ("portal": true, README), and
+// a sun of diameter 0 at the zenith, of illuminance Es, lights the floor under the opening with
+// rho Es tau / (pi 683).
 struct SkyThroughOpening {
     double rho = 0.5, h = 2.0, half = 1.5, zenithLuminance = 683.0;
     double x0 = -0.3, x1 = 0.5, z0 = -0.4, z1 = 0.4;  // the opening
     std::optional<double> glazing;                     // its pane's transmittance
+    bool marked = false;                               // a quad marked as an opening fills it
+    std::optional<double> zenithSun;                   // the sun's illuminance, lx
     int resolution = 32;
 
     Camera camera() const { return lookingDown(V3d(0, h / 2, 0), resolution); }
@@ -71,16 +76,32 @@ struct SkyThroughOpening {
         if (glazing) {
             materials += R"(, "glass": {"type": "glazing", "transmittance": )" + greyJson(*glazing) + "}";
             objects += "," + quadJson("pane", "glass", opening());
+        } else if (marked) {
+            std::string opening = quadJson("opening", "black", this->opening());
+            objects += "," + opening.insert(opening.find(R"("mesh")"), R"("portal": true, )");
         }
+        const std::string sun = zenithSun ? R"(, "lights": [{"name": "sun", "type": "sun", "illuminance": )" +
+                                                std::to_string(*zenithSun) +
+                                                R"(, "angular_diameter": 0, "direction": [0, -1, 0]}])"
+                                          : "";
         return R"({"lucerna": 1, )" + cameraJson(camera()) + R"(, "materials": {)" + materials + R"(}, "objects": [)" +
-               objects + R"(], "sky": {"model": "uniform", "zenith_luminance": )" + std::to_string(zenithLuminance) + "}}";
+               objects + "]" + sun + R"(, "sky": {"model": "uniform", "zenith_luminance": )" +
+               std::to_string(zenithLuminance) + "}}";
     }
     double floorRadiance(const V3d& p) const {
         return rho / std::numbers::pi * zenithLuminance / 683.0 * glazing.value_or(1.0) *
                lambertPolygonIrradiance(p, V3d(0, 1, 0), opening());
     }
     std::vector<double> expected() const {
-        return expectedFloorImage(camera(), [&](const V3d& p) { return floorRadiance(p); });
+        std::vector<double> image = expectedFloorImage(camera(), [&](const V3d& p) { return floorRadiance(p); });
+        if (zenithSun) {  // the sunlit rectangle's edges sampled finely: they cross pixels
+            const double sunlit = rho / std::numbers::pi * *zenithSun / 683.0 * glazing.value_or(1.0);
+            const std::vector<double> sun = expectedFloorImage(
+                camera(), [&](const V3d& p) { return p.x > x0 && p.x < x1 && p.z > z0 && p.z < z1 ? sunlit : 0.0; },
+                64);
+            for (size_t i = 0; i < image.size(); ++i) image[i] += sun[i];
+        }
+        return image;
     }
 };
 

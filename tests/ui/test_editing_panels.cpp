@@ -22,6 +22,7 @@
 #include "window_test_helpers.h"
 
 #include <QAction>
+#include <QCheckBox>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
@@ -327,6 +328,14 @@ void TestEditingPanels::objectPanelMovesAndReassigns() {
     panel->nameField()->setText("cube");
     emit panel->nameField()->editingFinished();
     QCOMPARE(doc->scene().objects[size_t(block)].name, std::string("cube"));
+
+    // Mark it as an opening (a daylight portal): one undo step; its material no longer applies.
+    panel->portalField()->click();
+    QVERIFY(doc->scene().objects[size_t(block)].portal);
+    QVERIFY(!panel->materialField()->isEnabled());
+    QCOMPARE(doc->undoStack()->count(), steps + 5);
+    w.findChild<QAction*>("actionUndo")->trigger();
+    QVERIFY(!doc->scene().objects[size_t(block)].portal && !panel->portalField()->isChecked());
 
     // Undo it all: the object as it was, world mesh included; the panels follow.
     for (int i = 0; i < 4; ++i) w.findChild<QAction*>("actionUndo")->trigger();

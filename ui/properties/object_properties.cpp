@@ -4,6 +4,7 @@
 #include "core/scene/scene_geometry.h"
 #include "ui/commands/object_commands.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -27,6 +28,12 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : ItemPropert
     size_->setObjectName("objectSize");
     addPropertyRow(rows_, tr("Object"), {name_});
     addPropertyRow(rows_, tr("Material"), {material_});
+    portal_ = new QCheckBox(tr("Daylight portal: light passes through"), fields_);
+    portal_->setObjectName("objectPortal");
+    portal_->setToolTip(tr("An opening, not a surface: rays pass through the object untouched and daylight is sent "
+                           "through it, as through an open door of a drawn room. Mark the quad that fills a window "
+                           "or a door of an imported model."));
+    addPropertyRow(rows_, tr("Opening"), {portal_});
     addPropertyRow(rows_, tr("Mesh"), {mesh_});
     addPropertyRow(rows_, tr("Size"), {size_});
 
@@ -57,6 +64,7 @@ ObjectProperties::ObjectProperties(Document* doc, QWidget* parent) : ItemPropert
 
     connect(name_, &QLineEdit::editingFinished, this, &ObjectProperties::renameObject);
     connect(material_, &QComboBox::activated, this, &ObjectProperties::assignMaterial);
+    connect(portal_, &QCheckBox::toggled, this, &ObjectProperties::markPortal);
     connect(doc_, &Document::changed, this, &ObjectProperties::refresh);
     refresh();
 }
@@ -77,6 +85,8 @@ void ObjectProperties::refresh() {
     material_->clear();
     for (const Material& m : scene.materials) material_->addItem(QString::fromStdString(m.name));
     material_->setCurrentIndex(scene.materialIndex(o.material));
+    material_->setEnabled(!o.portal);  // an opening has no surface
+    portal_->setChecked(o.portal);
 
     const size_t triangles = o.worldMesh ? o.worldMesh->triangles.size() : 0;
     const QString count = triangles == 1 ? tr("1 triangle") : tr("%1 triangles").arg(triangles);
@@ -193,6 +203,17 @@ void ObjectProperties::assignMaterial() {
     o.material = scene.materials[size_t(m)].name;  // the world mesh does not depend on it
     doc_->undoStack()->push(new EditObjectCommand(doc_, index_, std::move(o), 0, text));
     emit materialAssigned(m);
+}
+
+void ObjectProperties::markPortal(bool portal) {
+    const Scene& scene = doc_->scene();
+    if (index_ < 0 || index_ >= int(scene.objects.size())) return;
+    Object o = scene.objects[size_t(index_)];
+    if (o.portal == portal) return;
+    o.portal = portal;
+    const QString name = QString::fromStdString(o.name);
+    const QString text = portal ? tr("Make %1 an opening").arg(name) : tr("Make %1 a surface").arg(name);
+    doc_->undoStack()->push(new EditObjectCommand(doc_, index_, std::move(o), 0, text));
 }
 
 }  // namespace lucerna

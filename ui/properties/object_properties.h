@@ -4,7 +4,8 @@
 // about an axis by degrees, then a translation in the scene's unit (meters_per_unit names it).
 // Every change is an EditObjectCommand carrying the recomputed world mesh, so the preview and
 // the converging render see the moved object; a field's arrow steps merge into one undo step.
-// A transform given as a matrix is shown as such and not edited here.
+// A transform given as a matrix is shown as such and not edited here. "Opening" marks the object
+// as a daylight portal (Object::portal): a hole the light comes in through, not a surface.
 
 #include "ui/properties/item_properties.h"
 
@@ -12,6 +13,7 @@
 #include <memory>
 #include <string>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
@@ -34,6 +36,7 @@ public:
     QDoubleSpinBox* angleField() const { return angle_; }
     const std::array<QDoubleSpinBox*, 3>& scaleFields() const { return scale_; }
     QLabel* sizeLabel() const { return size_; }
+    QCheckBox* portalField() const { return portal_; }
 
 signals:
     // The object's material was reassigned (the material panel follows).
@@ -45,12 +48,14 @@ private:
     void applyTransform(const void* source);
     void renameObject();
     void assignMaterial();
+    void markPortal(bool portal);
     // `o` with its world mesh for its new transform. A mesh file is read once and kept while the
     // object is edited, so that the steps of a drag do not parse it again.
     Object withWorldMesh(const Scene& scene, Object o);
 
     QLineEdit* name_;
     QComboBox* material_;
+    QCheckBox* portal_;
     QLabel *mesh_, *size_, *matrixNote_;
     QWidget *translateRow_, *axisRow_, *angleRow_, *scaleRow_;
     std::array<QDoubleSpinBox*, 3> translate_{}, axis_{}, scale_{};

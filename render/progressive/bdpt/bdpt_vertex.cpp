@@ -4,8 +4,7 @@
 
 namespace lucerna {
 
-VertexDensities::VertexDensities(const RenderScene& scene)
-    : scene_(scene), directionalDiskPdf_(1.0f / (kPi * scene.boundsRadius() * scene.boundsRadius())) {}
+VertexDensities::VertexDensities(const RenderScene& scene) : scene_(scene) {}
 
 float VertexDensities::toArea(float pdfSolidAngle, const PathVertex& from, const PathVertex& to) {
     if (to.atInfinity()) return pdfSolidAngle;  // a direction, not a place
@@ -64,9 +63,11 @@ float VertexDensities::pdfLight(const PathVertex& v, const PathVertex& next) con
         break;
     }
     case VertexKind::DirectionalLight: {
-        // Parallel rays from a disk: the area density on the disk, projected (no 1/d^2).
+        // Parallel rays from a disk or through a window: the area density across the line,
+        // projected (no 1/d^2).
         const DeltaLight& l = scene_.lights().deltaLights()[v.light - scene_.lights().emitters().size()];
-        return next.onSurface() ? directionalDiskPdf_ * std::abs(next.sp.ng.dot(l.direction)) : directionalDiskPdf_;
+        const float across = scene_.lights().directionalLineDensity(next.p(), -l.direction);
+        return next.onSurface() ? across * std::abs(next.sp.ng.dot(l.direction)) : across;
     }
     case VertexKind::EnvironmentLight: {  // the line through next, from the disk or a window
         const float across = scene_.lights().environmentLineDensity(next.p(), -v.sp.ng);

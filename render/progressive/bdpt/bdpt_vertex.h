@@ -92,7 +92,6 @@ private:
     float bsdfPdf(const PathVertex& v, const V3f& wFrom, const V3f& wTo) const;
 
     const RenderScene& scene_;
-    float directionalDiskPdf_;  // 1 / (pi R^2): the disk a directional light's particles start from
 };
 
 // Two-sided materials shade with the geometric normal flipped toward wo (SPEC.md); glass keeps

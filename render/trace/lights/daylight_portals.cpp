@@ -27,37 +27,121 @@ bool lineCrosses(const V3f& o, const V3f& d, const Portal& t) {
 
 }  // namespace
 
-DaylightPortals::DaylightPortals(const std::vector<Portal>& portals, const V3f& sceneCenter, float sceneRadius)
-    : center_(sceneCenter), radius_(sceneRadius) {
+DaylightPortals::DaylightPortals(const std::vector<Portal>& portals, const EnvironmentLight& environment,
+                                 const V3f& sceneCenter, float sceneRadius)
+    : environment_(environment), center_(sceneCenter), radius_(sceneRadius) {
     if (portals.size() > kMaxPortalTriangles) return;
-    for (const Portal& p : portals)
-        if (p.area > 0) portals_.push_back(p);
+    for (const Portal& p : portals) {
+        if (!(p.area > 0)) continue;
+        portals_.push_back(p);
+        bool merged = false;
+        for (Facing& f : orientations_)
+            if (f.outside == p.outside && (f.normal - p.normal).length2() < 1e-10f) {
+                f.area += p.area;
+                merged = true;
+                break;
+            }
+        if (!merged) orientations_.push_back({p.normal, p.outside, p.area});
+    }
+    throughPortals_ = environment_.reweighted([this](const V3d& w) { return double(projectedArea(toFloat(w))); });
+    if (!(throughPortals_.integratedLuminance() > 0)) {  // no portal faces any lit direction
+        portals_.clear();
+        orientations_.clear();
+    }
 }
 
-bool DaylightPortals::facing(size_t k, const V3f& w) const {
-    const Portal& p = portals_[k];
-    const float c = p.normal.dot(w);
-    return p.outside > 0 ? c > 0 : p.outside < 0 ? c < 0 : c != 0;
+bool DaylightPortals::faces(const V3f& normal, int8_t outside, const V3f& w) {
+    const float c = normal.dot(w);
+    return outside > 0 ? c > 0 : outside < 0 ? c < 0 : c != 0;
 }
 
 float DaylightPortals::projectedArea(const V3f& w) const {
     float s = 0;
-    for (size_t k = 0; k < portals_.size(); ++k)
-        if (facing(k, w)) s += portals_[k].area * std::abs(portals_[k].normal.dot(w));
+    for (const Facing& f : orientations_)
+        if (faces(f.normal, f.outside, w)) s += f.area * std::abs(f.normal.dot(w));
     return s;
 }
 
 float DaylightPortals::lineDensity(const V3f& point, const V3f& w) const {
-    return lineDensity(point, w, projectedArea(w));
+    const float disc = kDiscShare / (kPi * radius_ * radius_);
+    const float s = projectedArea(w);
+    if (!(s > 0)) return disc;
+    const float pEnv = environment_.pdf(w);
+    if (!(pEnv > 0)) return disc;
+    return disc + (1 - kDiscShare) * (throughPortals_.pdf(w) / pEnv) * float(crossings(point, w)) / s;
 }
 
-float DaylightPortals::lineDensity(const V3f& point, const V3f& w, float s) const {
-    const float disc = 1.0f / (kPi * radius_ * radius_);
-    if (!(s > 0)) return disc;
+int DaylightPortals::crossings(const V3f& point, const V3f& w) const {
     int crossed = 0;
-    for (size_t k = 0; k < portals_.size(); ++k)
-        if (facing(k, w) && lineCrosses(point, w, portals_[k])) ++crossed;
-    return kDiscShare * disc + (1 - kDiscShare) * float(crossed) / s;
+    for (const Portal& p : portals_)
+        if (faces(p.normal, p.outside, w) && lineCrosses(point, w, p)) ++crossed;
+    return crossed;
+}
+
+float DaylightPortals::parallelDensity(const V3f& point, const V3f& w) const {
+    const float disc = 1.0f / (kPi * radius_ * radius_);
+    const float s = projectedArea(w);
+    if (!(s > 0)) return disc;
+    return kDiscShare * disc + (1 - kDiscShare) * float(crossings(point, w)) / s;
+}
+
+V3f DaylightPortals::sampleParallel(const V3f& w, const V2f& u, float& density) const {
+    const float s = projectedArea(w);
+    V3f point;
+    if (!(s > 0)) point = onDisc(w, u);
+    else if (u.x < kDiscShare) point = onDisc(w, V2f(std::min(u.x / kDiscShare, 0x1.fffffep-1f), u.y));
+    else point = throughPortal(w, s, V2f(std::min((u.x - kDiscShare) / (1 - kDiscShare), 0x1.fffffep-1f), u.y));
+    density = parallelDensity(point, w);
+    return point;
+}
+
+bool DaylightPortals::sample(const V2f& uLine, const V2f& uDirection, DaylightParticle& out) const {
+    float pdf = 0;
+    if (uLine.x < kDiscShare) {
+        if (!environment_.sample(uDirection, out.towardSky, pdf, out.radiance)) return false;
+        out.point = onDisc(out.towardSky, V2f(std::min(uLine.x / kDiscShare, 0x1.fffffep-1f), uLine.y));
+    } else {
+        if (!throughPortals_.sample(uDirection, out.towardSky, pdf, out.radiance)) return false;
+        const float s = projectedArea(out.towardSky);
+        if (!(s > 0)) return false;  // a cell's edge where the portals turn away: the disc covers it
+        const float u = std::min((uLine.x - kDiscShare) / (1 - kDiscShare), 0x1.fffffep-1f);
+        out.point = throughPortal(out.towardSky, s, V2f(u, uLine.y));
+    }
+    out.pdfDirection = environment_.pdf(out.towardSky);
+    out.lineDensity = lineDensity(out.point, out.towardSky);
+    return out.pdfDirection > 0 && out.lineDensity > 0;
+}
+
+V3f DaylightPortals::onDisc(const V3f& w, const V2f& u) const {
+    const V2f d = squareToUniformDisk(u) * radius_;
+    const Frame frame(w);
+    return center_ + w * radius_ + frame.s * d.x + frame.t * d.y;
+}
+
+V3f DaylightPortals::throughPortal(const V3f& w, float s, V2f u) const {
+    // A portal by its projected area, then a uniform point of it (uniform across the line's
+    // plane too: the projection scales every portal's area by one factor).
+    float pick = u.x * s;
+    size_t k = 0, last = 0;
+    for (; k < portals_.size(); ++k) {
+        if (!faces(portals_[k].normal, portals_[k].outside, w)) continue;
+        last = k;
+        const float a = portals_[k].area * std::abs(portals_[k].normal.dot(w));
+        if (pick < a) {
+            pick /= a;
+            break;
+        }
+        pick -= a;
+    }
+    if (k == portals_.size()) {  // rounding left pick past the last facing portal
+        k = last;
+        pick = 0.999999f;
+    }
+    const Portal& p = portals_[k];
+    const V2f b = squareToUniformTriangle(V2f(std::min(pick, 0.999999f), u.y));
+    const V3f onPortal = p.p0 * (1 - b.x - b.y) + p.p1 * b.x + p.p2 * b.y;
+    const V3f onDiscPlane = center_ + w * radius_;
+    return onPortal + w * (onDiscPlane - onPortal).dot(w);  // moved along the line to the disc's plane
 }
 
 std::string DaylightPortals::describe(float metersPerUnit) const {
@@ -73,42 +157,6 @@ std::string DaylightPortals::describe(float metersPerUnit) const {
     std::snprintf(text, sizeof text, "%zu portal triangles (panes and openings), %.2f m^2, outside known for %d (daylight particles: %.0f%% through them)",
                   portals_.size(), area, known, 100.0 * (1 - kDiscShare));
     return text;
-}
-
-V3f DaylightPortals::sampleLine(const V3f& w, const V2f& u, float& density) const {
-    const float s = projectedArea(w);
-    const Frame frame(w);
-    const V3f onDiscPlane = center_ + w * radius_;
-    V3f point;
-    if (!(s > 0) || u.x < kDiscShare) {
-        const V2f d = squareToUniformDisk(V2f(s > 0 ? u.x / kDiscShare : u.x, u.y)) * radius_;
-        point = onDiscPlane + frame.s * d.x + frame.t * d.y;
-    } else {
-        // A pane by its projected area, then a uniform point of it (uniform across the line's
-        // plane too: the projection scales every pane's area by one factor).
-        float pick = (u.x - kDiscShare) / (1 - kDiscShare) * s;
-        size_t k = 0, last = 0;
-        for (; k < portals_.size(); ++k) {
-            if (!facing(k, w)) continue;
-            last = k;
-            const float a = portals_[k].area * std::abs(portals_[k].normal.dot(w));
-            if (pick < a) {
-                pick /= a;
-                break;
-            }
-            pick -= a;
-        }
-        if (k == portals_.size()) {  // rounding left pick past the last facing pane
-            k = last;
-            pick = 0.999999f;
-        }
-        const Portal& p = portals_[k];
-        const V2f b = squareToUniformTriangle(V2f(std::min(pick, 0.999999f), u.y));
-        const V3f onPane = p.p0 * (1 - b.x - b.y) + p.p1 * b.x + p.p2 * b.y;
-        point = onPane + w * (onDiscPlane - onPane).dot(w);  // moved along the line to the disc's plane
-    }
-    density = lineDensity(point, w, s);
-    return point;
 }
 
 }  // namespace lucerna

@@ -55,6 +55,30 @@ std::optional<EnvironmentLight> EnvironmentLight::fromDaylight(const Daylight& d
     return env;
 }
 
+EnvironmentLight EnvironmentLight::reweighted(const std::function<double(const V3d&)>& factor) const {
+    EnvironmentLight out = *this;
+    if (!rows_.empty()) {
+        std::vector<double> rowWeights(kRows, 0.0);
+        for (int r = 0; r < kRows; ++r) {
+            const DiscreteDistribution& row = columns_[size_t(r)];
+            std::vector<double> weights(kColumns, 0.0);
+            if (!row.empty())
+                for (int c = 0; c < kColumns; ++c) {
+                    const double y = 1.0 - 2.0 * (r + 0.5) / kRows, phi = 2.0 * std::numbers::pi * (c + 0.5) / kColumns;
+                    weights[size_t(c)] = row.pdf(size_t(c)) * row.total() * std::max(0.0, factor(cellDirection(y, phi)));
+                    rowWeights[size_t(r)] += weights[size_t(c)];
+                }
+            out.columns_[size_t(r)] = DiscreteDistribution(weights);
+        }
+        out.rows_ = DiscreteDistribution(rowWeights);
+        out.skyIntegral_ = out.rows_.total() * kCellSolidAngle(kRows, kColumns) / kLumensPerWatt;
+    }
+    out.sunIntegral_ = sunSin2_ > 0 ? sunIntegral_ * std::max(0.0, factor(V3d(towardSun_))) : 0.0;
+    const double total = out.integratedLuminance();
+    out.sunProbability_ = total > 0 ? float(out.sunIntegral_ / total) : 0.0f;
+    return out;
+}
+
 bool EnvironmentLight::insideSun(const V3f& w) const {
     // By the sine of the angle to the centre: its square keeps its precision for tiny discs. The
     // 1e-4 of slack keeps every direction sample() draws in the disc despite w's rounding: one

@@ -8,6 +8,7 @@
 #include "core/daylight/daylight.h"
 #include "render/trace/discrete_distribution.h"
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -29,6 +30,11 @@ public:
     // Integral of luminance(radiance) over all directions (W m^-2 per unit luminance weight):
     // times pi R^2, the power of the particles leaving a disc of radius R facing each direction.
     double integratedLuminance() const { return skyIntegral_ + sunIntegral_; }
+    // The same light sampled in proportion to its table times factor(w) >= 0 (taken at each
+    // cell's centre, and at the sun's centre for its whole disc): sample() and pdf() then draw
+    // and give that density, radiance() is unchanged and integratedLuminance() integrates the
+    // luminance times the factor. Daylight portals draw directions by the windows' projected area.
+    EnvironmentLight reweighted(const std::function<double(const V3d&)>& factor) const;
     // Whether it has a sky (or ground) to sample, beside the sun's disc.
     bool hasSky() const { return !rows_.empty(); }
 

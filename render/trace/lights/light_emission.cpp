@@ -32,7 +32,8 @@ bool emitFromTriangle(const EmitterTriangle& e, float selectPdf, const V2f& uPos
 }
 
 bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUnit, const V3f& sceneCenter,
-                        float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out) {
+                        float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
+                        const DaylightPortals* portals) {
     const float toScene = 1.0f / (metersPerUnit * metersPerUnit);
     switch (l.type) {
     case LightType::Point:
@@ -64,16 +65,21 @@ bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUni
         break;
     }
     case LightType::Directional: {
-        // A disk of the scene's radius, facing the light, just outside the scene.
-        const V2f d = squareToUniformDisk(uPosition) * sceneRadius;
-        const Frame frame(l.direction);
-        out.position = sceneCenter - l.direction * sceneRadius + frame.s * d.x + frame.t * d.y;
+        // A disk of the scene's radius, facing the light, just outside the scene, or a line
+        // through a window (daylight_portals.h).
+        float density = 1.0f / (kPi * sceneRadius * sceneRadius);
+        if (portals && !portals->empty()) {
+            out.position = portals->sampleParallel(-l.direction, uPosition, density);
+        } else {
+            const V2f d = squareToUniformDisk(uPosition) * sceneRadius;
+            const Frame frame(l.direction);
+            out.position = sceneCenter - l.direction * sceneRadius + frame.s * d.x + frame.t * d.y;
+        }
         out.direction = l.direction;
         out.deltaDirection = true;
-        const float area = kPi * sceneRadius * sceneRadius;
-        out.pdfPosition = selectPdf / area;
+        out.pdfPosition = selectPdf * density;
         out.pdfDirection = 0.0f;
-        out.power = l.intensity * (area / selectPdf);
+        out.power = l.intensity / out.pdfPosition;
         out.normal = l.direction;
         return true;
     }
@@ -88,27 +94,27 @@ bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUni
 bool emitFromEnvironment(const EnvironmentLight& environment, float selectPdf, const V3f& sceneCenter,
                          float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
                          const DaylightPortals* portals) {
-    // A direction toward the sky, then a point on the disc of the scene's radius facing it,
-    // just outside the scene (or on a line through a window); the particle travels back along
-    // the direction.
-    V3f toward;
-    float pdfDirection = 0.0f;
-    Rgb L;
-    if (!environment.sample(uDirection, toward, pdfDirection, L)) return false;
-    out.direction = -toward;
-    out.normal = -toward;
+    // A direction toward the sky and a line the particle travels back along, from a point
+    // outside the scene: on the disc of the scene's radius facing the direction, or through a
+    // window (daylight_portals.h, whose joint density is pdfDirection times the line's density).
+    DaylightParticle particle;
+    float lineDensity = 0;
     if (portals && !portals->empty()) {
-        float density = 0;
-        out.position = portals->sampleLine(toward, uPosition, density);
-        out.pdfPosition = selectPdf * density;
+        if (!portals->sample(uPosition, uDirection, particle)) return false;
+        lineDensity = particle.lineDensity;
     } else {
+        if (!environment.sample(uDirection, particle.towardSky, particle.pdfDirection, particle.radiance)) return false;
         const V2f d = squareToUniformDisk(uPosition) * sceneRadius;
-        const Frame frame(toward);
-        out.position = sceneCenter + toward * sceneRadius + frame.s * d.x + frame.t * d.y;
-        out.pdfPosition = selectPdf / (kPi * sceneRadius * sceneRadius);
+        const Frame frame(particle.towardSky);
+        particle.point = sceneCenter + particle.towardSky * sceneRadius + frame.s * d.x + frame.t * d.y;
+        lineDensity = 1.0f / (kPi * sceneRadius * sceneRadius);
     }
-    out.pdfDirection = pdfDirection;
-    out.power = L / (out.pdfPosition * pdfDirection);
+    out.position = particle.point;
+    out.direction = -particle.towardSky;
+    out.normal = -particle.towardSky;
+    out.pdfPosition = selectPdf * lineDensity;
+    out.pdfDirection = particle.pdfDirection;
+    out.power = particle.radiance / (out.pdfPosition * out.pdfDirection);
     out.environment = true;
     return isFinite(out.power);
 }

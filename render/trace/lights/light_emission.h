@@ -40,10 +40,14 @@ struct EmissionSample {
 // (sceneCenter, sceneRadius) places the discs of the lights at infinity.
 bool emitFromTriangle(const EmitterTriangle& e, float selectPdf, const V2f& uPosition, const V2f& uDirection,
                       EmissionSample& out);
+// With `portals` (not empty), a directional light's particles too travel along lines drawn
+// through the windows (DaylightPortals::sampleParallel); pdfPosition is that line's density.
 bool emitFromDeltaLight(const DeltaLight& l, float selectPdf, float metersPerUnit, const V3f& sceneCenter,
-                        float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out);
+                        float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
+                        const DaylightPortals* portals = nullptr);
 // With `portals` (not empty), the environment's particles travel along lines drawn through the
-// windows as daylight_portals.h says; pdfPosition is then that line's density across it.
+// windows as daylight_portals.h says; pdfPosition times pdfDirection is then their joint density
+// (pdfDirection the environment's own, pdfPosition DaylightPortals::lineDensity's).
 bool emitFromEnvironment(const EnvironmentLight& environment, float selectPdf, const V3f& sceneCenter,
                          float sceneRadius, const V2f& uPosition, const V2f& uDirection, EmissionSample& out,
                          const DaylightPortals* portals = nullptr);

@@ -13,7 +13,7 @@ LightSampler::LightSampler(std::vector<EmitterTriangle> emitters, std::vector<De
     : emitters_(std::move(emitters)), deltas_(std::move(deltas)), metersPerUnit_(metersPerUnit),
       sceneCenter_(sceneCenter), sceneRadius_(sceneRadius) {
     if (environment) {
-        if (particlePortals) particlePortals_ = DaylightPortals(portals, sceneCenter, sceneRadius);
+        if (particlePortals) particlePortals_ = DaylightPortals(portals, *environment, sceneCenter, sceneRadius);
         environment_.emplace(std::move(*environment), std::move(portals));
     }
     power_ = PowerSelection(emitters_, deltas_, this->environment(), metersPerUnit, sceneRadius, triangleCount);
@@ -138,6 +138,11 @@ float LightSampler::environmentLineDensity(const V3f& point, const V3f& towardSk
     return particlePortals_.lineDensity(point, towardSky);
 }
 
+float LightSampler::directionalLineDensity(const V3f& point, const V3f& towardLight) const {
+    if (particlePortals_.empty()) return 1.0f / (kPi * sceneRadius_ * sceneRadius_);
+    return particlePortals_.parallelDensity(point, towardLight);
+}
+
 float LightSampler::selectionRatio(uint32_t light, const V3f& p, const V3f& receiving) const {
     if (tree_.empty()) return 1.0f;
     const float byPower = power_.pdf(light);
@@ -162,7 +167,7 @@ bool LightSampler::sampleEmission(const V2f& uPosition, const V2f& uDirection, f
                                    out, &particlePortals_);
     if (index < emitters_.size()) return emitFromTriangle(emitters_[index], selectPdf, uPosition, uDirection, out);
     return emitFromDeltaLight(deltas_[index - emitters_.size()], selectPdf, metersPerUnit_, sceneCenter_, sceneRadius_,
-                              uPosition, uDirection, out);
+                              uPosition, uDirection, out, &particlePortals_);
 }
 
 }  // namespace lucerna

@@ -81,9 +81,13 @@ public:
     bool sampleEmission(const V2f& uPosition, const V2f& uDirection, float uSelect, EmissionSample& out) const;
     // The density across the line (per unit area of the plane normal to it, scene units) with
     // which sampleEmission() sends an environment particle along the line through `point`
-    // toward -towardSky (unit), the environment once chosen: the disc's 1 / (pi R^2), or the
-    // mixture through the windows (daylight_portals.h).
+    // toward -towardSky (unit), the environment once chosen and the direction drawn by its own
+    // density: the disc's 1 / (pi R^2), or the mixture through the windows over that density
+    // (DaylightPortals::lineDensity).
     float environmentLineDensity(const V3f& point, const V3f& towardSky) const;
+    // The same for a directional light's particles along -towardLight (unit): the disc's, or
+    // DaylightPortals::parallelDensity.
+    float directionalLineDensity(const V3f& point, const V3f& towardLight) const;
     // The windows daylight particles are sent through (empty: none, or no environment).
     const DaylightPortals& particlePortals() const { return particlePortals_; }
     // Total emitted power in the scene's units (selection weights' sum): the normalisation of

@@ -43,7 +43,7 @@ ParticleEntry countParticleEntry(const RenderScene& scene, const RoomBox& room, 
         if (!daylight) continue;
         ++count.particles;
         if (!emitted || !isFinite(es.power)) continue;
-        if (es.environment && lights.particlePortals().letsIn(-es.direction)) ++count.facing;
+        if (lights.particlePortals().letsIn(-es.direction)) ++count.facing;
         const double power = luminance(es.power);
         count.power += power;
         count.powerSquared += power * power;
