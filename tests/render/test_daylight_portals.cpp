@@ -5,7 +5,8 @@
 // for panes with a known outside and an unknown one, a sun disc and none; and RenderScene traces
 // which side of a room's window and door is outside (a free-standing pane stays unknown).
 
-#include "core/daylight/daylight.h"
+#include "daylight_scenes.h"
+
 #include "core/scene/room_geometry.h"
 #include "core/scene/scene_io.h"
 #include "render/trace/lights/daylight_portals.h"
@@ -17,6 +18,7 @@
 #include <cmath>
 
 using namespace lucerna;
+using namespace lucerna::test;
 
 namespace {
 
@@ -56,19 +58,7 @@ void TestDaylightPortals::particlesHaveTheirDensity() {
     // sun disc in front of the window.
     QFETCH(int, skyType);
     QFETCH(double, sunDiameter);
-    Scene scene;
-    Sky sky;
-    sky.model = SkyModelType::CieGeneral;
-    sky.cieType = skyType;
-    sky.horizontalIlluminance = 10000;
-    scene.sky = sky;
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Sun;
-    sun.direction = V3d(-0.7, -0.5, -0.2);
-    sun.sun = SunSpec{80000, sunDiameter};
-    scene.lights.push_back(sun);
-    const auto environment = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    const auto environment = cieEnvironment(skyType, 10000, V3d(-0.7, -0.5, -0.2), 80000, sunDiameter);
     QVERIFY(environment.has_value());
     std::vector<Portal> portals;
     addQuad(portals, V3f(2, 1, -0.5f), V3f(2, 1, 0.5f), V3f(2, 2.5f, 0.5f), V3f(2, 2.5f, -0.5f), 0);
@@ -147,13 +137,7 @@ void TestDaylightPortals::parallelLinesHaveTheirDensity() {
     // A directional light's particles (a sun of diameter 0): over the plane across w, the mean of
     // 1 / p is the disc's area and the mean of [crosses the window] / p the window's projected
     // area; toward a w the window does not face, every line comes from the disc.
-    Scene scene;
-    Sky sky;
-    sky.model = SkyModelType::CieGeneral;
-    sky.cieType = 1;
-    sky.horizontalIlluminance = 10000;
-    scene.sky = sky;
-    const auto environment = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    const auto environment = cieEnvironment(1, 10000);
     QVERIFY(environment.has_value());
     std::vector<Portal> portals;
     addQuad(portals, V3f(2, 1, -0.5f), V3f(2, 1, 0.5f), V3f(2, 2.5f, 0.5f), V3f(2, 2.5f, -0.5f), 0);

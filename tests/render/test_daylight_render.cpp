@@ -10,8 +10,6 @@
 #include "daylight_scenes.h"
 #include "render_helpers.h"
 
-#include "core/daylight/daylight.h"
-#include "render/trace/lights/environment_light.h"
 #include "render/trace/render_scene.h"
 
 #include <QtTest>
@@ -210,19 +208,8 @@ void TestDaylightRender::skySamplingChiSquare_data() {
 void TestDaylightRender::skySamplingChiSquare() {
     // The table of every CIE general sky (and the ground below it) against its own pdf.
     QFETCH(int, type);
-    Scene scene;
-    Sky sky;
-    sky.model = SkyModelType::CieGeneral;
-    sky.cieType = type;
-    sky.horizontalIlluminance = 10000;
-    scene.sky = sky;
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Sun;
-    sun.direction = V3d(-0.4, -0.64, -0.3);  // a delta sun: the environment is the sky alone
-    sun.sun = SunSpec{60000, 0.0};
-    scene.lights.push_back(sun);
-    const auto env = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    // A delta sun: the environment is the sky alone.
+    const auto env = cieEnvironment(type, 10000, V3d(-0.4, -0.64, -0.3), 60000, 0.0);
     QVERIFY(env.has_value());
     const auto r = chiSquareSphere(
         [&](Rng& rng, V3f& w) {
@@ -238,19 +225,8 @@ void TestDaylightRender::portalDirectionsChiSquare() {
     // Daylight particles through the windows draw their directions from the sky's table times
     // the portals' projected area (EnvironmentLight::reweighted): a window facing +x and an
     // unknown-sided skylight, under an intermediate sky, against the density it reports.
-    Scene scene;
-    Sky sky;
-    sky.model = SkyModelType::CieGeneral;
-    sky.cieType = 10;
-    sky.horizontalIlluminance = 10000;
-    scene.sky = sky;
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Sun;
-    sun.direction = V3d(-0.6, -0.5, 0.3);  // a delta sun: the environment is the sky alone
-    sun.sun = SunSpec{60000, 0.0};
-    scene.lights.push_back(sun);
-    const auto env = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    // A delta sun: the environment is the sky alone.
+    const auto env = cieEnvironment(10, 10000, V3d(-0.6, -0.5, 0.3), 60000, 0.0);
     QVERIFY(env.has_value());
     const EnvironmentLight through =
         env->reweighted([](const V3d& w) { return 1.5 * std::max(0.0, w.x) + 2.0 * std::abs(w.y); });
@@ -290,19 +266,7 @@ void TestDaylightRender::sunSamplesAreBounded() {
     // Every sample's value over its density stays near the environment's integral: a direction
     // drawn in the sun's disc but judged outside it by pdf() (rounding at its rim) would carry
     // the sun's radiance at the sky's density, 1e5 times too much.
-    Scene scene;
-    Sky sky;
-    sky.model = SkyModelType::CieGeneral;
-    sky.cieType = 12;
-    sky.horizontalIlluminance = 12000;
-    scene.sky = sky;
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Sun;
-    sun.direction = V3d(-0.5, -0.6, -0.62);
-    sun.sun = SunSpec{70000, 0.53};
-    scene.lights.push_back(sun);
-    const auto env = EnvironmentLight::fromDaylight(resolveDaylight(scene));
+    const auto env = cieEnvironment(12, 12000, V3d(-0.5, -0.6, -0.62), 70000, 0.53);
     QVERIFY(env.has_value());
     Rng rng(5, 0);
     double worst = 0;

@@ -6,10 +6,35 @@
 
 #include "closed_form_scenes.h"
 
+#include "core/daylight/daylight.h"
+#include "render/trace/lights/environment_light.h"
+
 #include <cmath>
 #include <numbers>
 
 namespace lucerna::test {
+
+// The environment of a CIE general sky of `type` giving skyLx on the horizontal, and a sun
+// travelling along sunTravel of sunLx and angular diameter sunDiameterDeg (0: a delta sun, then
+// the environment is the sky alone); nullopt without one.
+inline std::optional<EnvironmentLight> cieEnvironment(int type, double skyLx, const V3d& sunTravel = V3d(0, -1, 0),
+                                                      double sunLx = 0, double sunDiameterDeg = 0) {
+    Scene scene;
+    Sky sky;
+    sky.model = SkyModelType::CieGeneral;
+    sky.cieType = type;
+    sky.horizontalIlluminance = skyLx;
+    scene.sky = sky;
+    if (sunLx > 0) {
+        Light sun;
+        sun.name = "sun";
+        sun.type = LightType::Sun;
+        sun.direction = sunTravel;
+        sun.sun = SunSpec{sunLx, sunDiameterDeg};
+        scene.lights.push_back(sun);
+    }
+    return EnvironmentLight::fromDaylight(resolveDaylight(scene));
+}
 
 inline std::string greyJson(double v) { return "[" + std::to_string(v) + "," + std::to_string(v) + "," + std::to_string(v) + "]"; }
 
