@@ -23,7 +23,9 @@ Printed per run:
     "auto" in the CSV (which are then not a candidate).
   - the winner and regret had the pilot used the true relmse r_p instead of the estimate (what
     the 1/time extrapolation alone gets right or wrong, apart from the estimate's fidelity).
-Then a summary table over all runs and the per-backend fidelity ratios (geometric means over runs).
+Then a summary table over all runs, the per-backend fidelity ratios e/r (geometric means over
+runs) and the predictions over the true final relmse (estimate and 1/time extrapolation together).
+The true relmse includes the reference's own error (and any bias); the estimate sees neither.
 Standard library only.
 """
 import csv
@@ -127,6 +129,8 @@ def analyse(path, T, pilots, overrides):
             line += f"  {fmt(fid[(b, p)]):>7s}  {fmt(preds[(b, p)]):>8s}{flag} "
         s, r, e = final[b]
         fid[(b, "T")] = e / r if r > 0 else math.nan
+        for p in pilots:
+            fid[(b, ("pred", p))] = preds[(b, p)] / r if r > 0 else math.nan
         line += f"  {fmt(fid[(b, 'T')]):>7s}  {s:6.1f}"
         print(line)
     for p in pilots:
@@ -206,6 +210,16 @@ def main(argv):
         cells = []
         for c in cols:
             v = [x for x in allfid[(b, c)] if math.isfinite(x)]
+            cells.append(f"{fmt(geomean(v), 2)} ({fmt(min(v), 2)}-{fmt(max(v), 2)})" if v else "-")
+        print(f"| {b} | " + " | ".join(cells) + " |")
+    print()
+    print("Predicted relmse at T (e_p s / T) over the true final relmse, geometric mean over runs (min to max):")
+    print("| backend | " + " | ".join(f"p = {p:g} s" for p in pilots) + " |")
+    print("|---|" + "---|" * len(pilots))
+    for b in backends:
+        cells = []
+        for p in pilots:
+            v = [x for x in allfid[(b, ("pred", p))] if math.isfinite(x)]
             cells.append(f"{fmt(geomean(v), 2)} ({fmt(min(v), 2)}-{fmt(max(v), 2)})" if v else "-")
         print(f"| {b} | " + " | ".join(cells) + " |")
     return 0
