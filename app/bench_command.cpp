@@ -57,9 +57,9 @@ std::vector<BenchRun> parseBackends(const std::string& list) {
                              "--backends entry '" + entry + "'");
             colon = next;
         }
-        if (!findBackend(run.backend)) {
-            std::string names;
-            for (const BackendInfo& b : backendTable()) names += (names.empty() ? "" : ", ") + std::string(b.name);
+        if (run.backend != "auto" && !findBackend(run.backend)) {
+            std::string names = "auto";
+            for (const BackendInfo& b : backendTable()) names += ", " + std::string(b.name);
             throw UsageError("unknown backend '" + run.backend + "' (available: " + names + ")");
         }
         runs.push_back(std::move(run));
@@ -98,12 +98,18 @@ BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
     if (!(b.settings.seconds > 0)) throw UsageError("bench: no time budget given (--time SECONDS)");
     if ((b.settings.width > 0) != (b.settings.height > 0)) throw UsageError("bench: --width and --height go together");
     b.runs = parseBackends(backends);
-    // Before any backend runs: an entry's own options are its backend's, --option's any entry's.
-    std::vector<const BackendInfo*> all;
-    for (const BenchRun& run : b.runs) all.push_back(findBackend(run.backend));
+    // Before any backend runs: an entry's own options are its backend's, --option's any entry's;
+    // auto (the backend `--backend auto` picks, resolved once the scene is read) takes any backend's.
+    std::vector<const BackendInfo*> every, all;
+    for (const BackendInfo& info : backendTable()) every.push_back(&info);
+    for (const BenchRun& run : b.runs)
+        if (run.backend != "auto") all.push_back(findBackend(run.backend));
     try {
-        requireKnownOptions(b.settings.options, all);
-        for (size_t i = 0; i < b.runs.size(); ++i) requireKnownOptions(b.runs[i].options, std::span(&all[i], 1));
+        requireKnownOptions(b.settings.options, all.size() < b.runs.size() ? every : all);
+        for (const BenchRun& run : b.runs) {
+            const BackendInfo* info = findBackend(run.backend);
+            requireKnownOptions(run.options, info ? std::span(&info, 1) : std::span<const BackendInfo* const>(every));
+        }
     } catch (const std::invalid_argument& e) {
         throw UsageError(std::string("bench: ") + e.what());
     }
@@ -200,6 +206,12 @@ int benchImpl(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
     for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
+    for (BenchRun& run : b.runs)
+        if (run.backend == "auto") {  // its curve keeps the label "auto"
+            const AutoChoice choice = chooseAutoBackend(*scene);
+            run.backend = choice.backend;
+            std::printf("%s: %s\n", run.label.c_str(), choice.reason.c_str());
+        }
     std::error_code ec;
     std::filesystem::create_directories(b.outDir, ec);
     if (!std::filesystem::is_directory(b.outDir)) throw UsageError("--out: cannot create folder " + b.outDir);

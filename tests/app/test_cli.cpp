@@ -60,6 +60,7 @@ private slots:
     void renderWritesPngByName();
     void benchWritesCsvAndPlot();
     void benchBadUsage();
+    void benchTakesAuto();
 };
 
 void TestCli::renderWritesExrWithMetadata() {
@@ -366,6 +367,25 @@ void TestCli::benchWritesCsvAndPlot() {
     QVERIFY(text.startsWith("<svg") && text.trimmed().endsWith("</svg>"));
     QCOMPARE(text.count("<polyline"), 4);  // two backends, relmse and rmse panels
     QVERIFY(text.contains(">mir:tries=2<") && text.contains(">path<") && text.contains("time (s)"));
+}
+
+void TestCli::benchTakesAuto() {
+    // `auto` as a bench entry: the backend `--backend auto` picks (said on stdout), its curve
+    // labelled auto; its options may be any backend's.
+    QTemporaryDir dir;
+    const QString ref = dir.filePath("ref.exr");
+    QCOMPARE(runLucerna({"render", kCornell, "-o", ref, "--backend", "path", "--spp", "64", "--width", "16",
+                         "--height", "16", "--seed", "3"})
+                 .exitCode,
+             0);
+    const QString out = dir.filePath("bench");
+    const Run r = runLucerna({"bench", kCornell, "--reference", ref, "--backends", "auto:light_sampler=power", "--time",
+                              "0.3", "--start", "0.05", "--out", out});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QVERIFY2(r.out.contains("auto:light_sampler=power: path: "), qPrintable(r.out));  // the Cornell box: path
+    const CsvTable csv = CsvTable::read(out + "/bench.csv");
+    QVERIFY(!csv.rows.empty());
+    for (size_t row = 0; row < csv.rows.size(); ++row) QCOMPARE(csv.text(row, "backend"), QString("auto:light_sampler=power"));
 }
 
 void TestCli::benchBadUsage() {
