@@ -21,6 +21,8 @@
 #include <QTemporaryDir>
 #include <QtTest>
 
+#include <string>
+
 #include <fstream>
 
 using namespace lucerna;
@@ -55,10 +57,11 @@ QString figuresOf(GridPanel& panel) { return child<QLabel>(panel, "gridFigures")
 double captured(const QString& text, const QString& pattern) {
     const QRegularExpressionMatch m = QRegularExpression(pattern).match(text);
     if (!m.hasMatch()) qFatal("no match for %s in:\n%s", qPrintable(pattern), qPrintable(text));
-    bool isNumber = false;
-    const double value = m.captured(1).toDouble(&isNumber);
-    if (!isNumber) qFatal("not a number for %s in:\n%s", qPrintable(pattern), qPrintable(text));
-    return value;
+    try {
+        return std::stod(m.captured(1).toStdString());
+    } catch (const std::exception&) {
+        qFatal("not a number for %s in:\n%s", qPrintable(pattern), qPrintable(text));
+    }
 }
 }  // namespace
 
