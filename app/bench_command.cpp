@@ -57,8 +57,8 @@ std::vector<BenchRun> parseBackends(const std::string& list) {
                              "--backends entry '" + entry + "'");
             colon = next;
         }
-        if (run.backend != "auto" && !findBackend(run.backend)) {
-            std::string names = "auto";
+        if (run.backend != "auto-rule" && !findBackend(run.backend)) {
+            std::string names = "auto, auto-rule";
             for (const BackendInfo& b : backendTable()) names += ", " + std::string(b.name);
             throw UsageError("unknown backend '" + run.backend + "' (available: " + names + ")");
         }
@@ -99,15 +99,16 @@ BenchArgs parseBenchArgs(const std::vector<std::string>& args) {
     if ((b.settings.width > 0) != (b.settings.height > 0)) throw UsageError("bench: --width and --height go together");
     b.runs = parseBackends(backends);
     // Before any backend runs: an entry's own options are its backend's, --option's any entry's;
-    // auto (the backend `--backend auto` picks, resolved once the scene is read) takes any backend's.
+    // auto and auto-rule (the backend the rule auto was before it measured picks, resolved once the
+    // scene is read) take any backend's.
     std::vector<const BackendInfo*> every, all;
     for (const BackendInfo& info : backendTable()) every.push_back(&info);
     for (const BenchRun& run : b.runs)
-        if (run.backend != "auto") all.push_back(findBackend(run.backend));
+        if (run.backend != "auto" && run.backend != "auto-rule") all.push_back(findBackend(run.backend));
     try {
         requireKnownOptions(b.settings.options, all.size() < b.runs.size() ? every : all);
         for (const BenchRun& run : b.runs) {
-            const BackendInfo* info = findBackend(run.backend);
+            const BackendInfo* info = run.backend == "auto" ? nullptr : findBackend(run.backend);
             requireKnownOptions(run.options, info ? std::span(&info, 1) : std::span<const BackendInfo* const>(every));
         }
     } catch (const std::invalid_argument& e) {
@@ -207,7 +208,7 @@ int benchImpl(const std::vector<std::string>& args) {
     }
     for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
     for (BenchRun& run : b.runs)
-        if (run.backend == "auto") {  // its curve keeps the label "auto"
+        if (run.backend == "auto-rule") {  // its curve keeps the label "auto-rule"
             const AutoChoice choice = chooseAutoBackend(*scene);
             run.backend = choice.backend;
             std::printf("%s: %s\n", run.label.c_str(), choice.reason.c_str());

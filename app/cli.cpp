@@ -12,6 +12,7 @@
 #include "render/backend/pooled_films.h"
 #include "render/display/display.h"
 #include "render/engine/backend_table.h"
+#include "render/engine/measured_auto/measured_auto_settings.h"
 #include "render/photometry/illuminance_layer.h"
 #include "render/trace/surface_layers.h"
 
@@ -144,12 +145,6 @@ RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup
         for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
 
     s.backendName = r.backend;
-    std::string autoReason;
-    if (s.backendName == "auto") {
-        const AutoChoice choice = chooseAutoBackend(*s.scene);
-        autoReason = choice.reason;
-        s.backendName = choice.backend;
-    }
     s.info = findBackend(s.backendName);
     if (!s.info) {
         std::string names = "auto";
@@ -175,8 +170,14 @@ RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup
     const double pages = double(::sysconf(_SC_PHYS_PAGES)), pageSize = double(::sysconf(_SC_PAGESIZE));
     if (pages > 0 && pageSize > 0 && Film::bytes(s.width, s.height) > pages * pageSize)
         throw UsageError(tooLargeForMemory(s.width, s.height));
-    if (!autoReason.empty() && rank == 0) std::cerr << "auto: " << autoReason << "\n";
-    s.illuminanceMethod = gridMethodFromName(s.backendName);
+    if (s.backendName == "auto" && rank == 0) {
+        std::cerr << "auto: measures";
+        for (const std::string& name : autoCandidates(*s.scene)) std::cerr << " " << name;
+        std::cerr << " in short pilots, then gives each pass to the method that takes the most off the error and "
+                     "combines their films\n";
+    }
+    // auto's illuminance layer: the method of the rule it was before it measured.
+    s.illuminanceMethod = gridMethodFromName(s.backendName == "auto" ? chooseAutoBackend(*s.scene).backend : s.backendName);
     if ((r.layers & kIlluminanceLayer) && !s.illuminanceMethod)
         throw UsageError("--layers illuminance: backend " + s.backendName + " has no illuminance estimator");
     return s;
@@ -307,6 +308,8 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
                  result->estimatedRelmse);
     if (processes) std::fprintf(stderr, ", %d ranks", processes->size());
     std::fprintf(stderr, "\n");
+    if (const auto it = result->image.attributes.find("lucerna:auto"); it != result->image.attributes.end())
+        std::fprintf(stderr, "auto: %s\n", it->second.c_str());
     // What a backend gave up to fit the machine (the preview's shadow maps), one line each.
     const std::string prefix = "lucerna:", suffix = ":degradation";  // lucerna:BACKEND:degradation
     for (const auto& [key, value] : result->image.attributes)

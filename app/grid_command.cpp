@@ -239,6 +239,7 @@ int reportDaylightFactor(const GridSetup& setup, const GridResult& r) {
     std::printf("daylight factor on grid '%s': %d x %d points, spacing %.3g x %.3g m, method %s%s\n", g.grid.name.c_str(),
                 layout.nu, layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
                 g.settings.autoMethod ? " (auto)" : "");
+    if (!r.autoMeasured.empty()) std::printf("auto: %s\n", r.autoMeasured.c_str());
     std::printf("CIE overcast sky alone, Eh,sky %.1f lx on an open horizontal plane; sun and electric lights off\n",
                 setup.skyHorizontalIlluminance);
     if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size(), true).c_str());
@@ -354,6 +355,7 @@ int gridImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
                 layout.nv, layout.spacingUMeters, layout.spacingVMeters, gridMethodName(r.method),
                 g.settings.autoMethod ? " (auto)" : "",
                 cylindrical ? "; cylindrical illuminance Ez about the grid's normal" : "");
+    if (!all->autoMeasured.empty()) std::printf("auto: %s\n", all->autoMeasured.c_str());
     const MaintenanceRange maintenance = maintenanceRange(*scene);
     std::printf("%s\n", describeMaintenance(maintenance).c_str());
     if (s.excluded > 0) std::printf("%s\n", excludedPointsLine(s, layout.points.size()).c_str());

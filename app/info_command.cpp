@@ -12,6 +12,7 @@
 #include "core/scene/scene_energy.h"
 #include "core/scene/scene_io.h"
 #include "render/engine/backend_table.h"
+#include "render/engine/measured_auto/measured_auto_settings.h"
 #include "render/trace/render_scene.h"
 
 #include <algorithm>
@@ -196,7 +197,10 @@ int infoImpl(const std::vector<std::string>& args) {
         std::cout << "\n";
     }
     std::cout << "needs:" << (needs.empty() ? " nothing (no light, or nothing to light)" : needs) << "\n";
-    std::cout << "auto backend: " << chooseAutoBackend(scene).reason << "\n";
+    std::string candidates;
+    for (const std::string& name : autoCandidates(scene)) candidates += " " + name;
+    std::cout << "auto backend: measures" << candidates << " and combines their films; its former rule would pick "
+              << chooseAutoBackend(scene).reason << "\n";
     return 0;
 }
 

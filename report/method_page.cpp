@@ -162,8 +162,8 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                                   "geometry are left out of Eavg, Emin, Emax and U0.")
                        .arg(methodDescription(method)));
     std::vector<std::pair<QString, QString>> settings;
-    settings.emplace_back(QStringLiteral("Method"), s.grid.autoMethod ? QStringLiteral("auto (bdpt where a lamp reaches a "
-                                                                                       "point only through glass, else path)")
+    settings.emplace_back(QStringLiteral("Method"), s.grid.autoMethod ? QStringLiteral("auto (the method measured best in short "
+                                                                                       "pilots on each grid)")
                                                                       : QString(gridMethodName(s.grid.method)));
     settings.emplace_back(QStringLiteral("Target error bar"),
                           QStringLiteral("%1% of each point's value (95%)").arg(QString::number(100 * s.grid.targetRelativeError, 'g', 4)));
@@ -227,7 +227,9 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
                                        .arg(data.settings.renderSpp)
                                        .arg(QString::number(data.renders->samplesPerPixel, 'f', 0))
                                  : QStringLiteral("with %1 samples per pixel").arg(data.settings.renderSpp);
-        flow.paragraph(QStringLiteral("The camera's view is rendered by %1 (chosen by auto: %2) %3; its estimated "
+        flow.paragraph(QStringLiteral("The camera's view is rendered by %1, which measures each method that is "
+                                      "consistent for the scene in short pilots, gives the time where it takes the "
+                                      "most off the error and combines the methods' films (%2), %3; its estimated "
                                       "relative error comes from the film's two half-buffers and reads noise, not "
                                       "bias. The lux view divides that render's luminance by the reflectance of the "
                                       "surface each pixel sees.")

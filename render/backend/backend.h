@@ -17,6 +17,8 @@
 
 namespace lucerna {
 
+class RenderSceneCache;
+
 struct RenderSettings {
     int spp = 0;            // work equal to this many samples per pixel (0: not given)
     double seconds = 0.0;   // wall-clock budget after prepare() (0: not given)
@@ -31,6 +33,10 @@ struct RenderSettings {
     RayRecorder* rayRecorder = nullptr;
     // Backend-specific options, "name=value" from the command line or the UI.
     std::map<std::string, std::string> options;
+    // Several backends of one render (auto's candidates, render/engine/measured_auto/): the
+    // tracing backends take their render scene from here, one per way of sampling lights, so
+    // that they share one BVH and one set of light tables. nullptr: each builds its own.
+    std::shared_ptr<RenderSceneCache> sharedScenes;
 };
 
 class Backend {

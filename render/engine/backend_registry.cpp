@@ -1,5 +1,6 @@
 #include "render/engine/backend_table.h"
 
+#include "render/engine/measured_auto/measured_auto_backend.h"
 #include "render/preview/headless_backend.h"
 #include "render/progressive/bdpt/bdpt_backend.h"
 #include "render/progressive/cmlt/cmlt_backend.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <set>
+#include <vector>
 #include <stdexcept>
 
 namespace lucerna {
@@ -48,11 +50,28 @@ const BackendInfo kBackends[] = {
     {"cmlt", "coherent Metropolis light transport: MLT seeds, lens sub-chains of candidates traced as packets, expected-value deposits", &makeCmltBackend, kCmltOptions, ProcessShare::OwnChains},
     {"preview", "interactive VPL preview (OpenGL through EGL): deferred shading, interleaved sampling, shadow-mapped direct light", &makePreviewBackend, kPreviewOptions},
 };
+// Every tracing backend's option keys: auto passes its options to all its candidates.
+std::span<const std::string_view> allTracingOptions() {
+    static const std::vector<std::string_view> keys = [] {
+        std::set<std::string_view> all;
+        for (const BackendInfo& b : kBackends)
+            if (b.name != "preview") all.insert(b.options.begin(), b.options.end());
+        return std::vector<std::string_view>(all.begin(), all.end());
+    }();
+    return keys;
+}
 }  // namespace
 
 std::span<const BackendInfo> backendTable() { return kBackends; }
 
 const BackendInfo* findBackend(std::string_view name) {
+    // Not in the table, which lists the methods: auto is a measured combination of them. Each
+    // process of a distributed render measures and combines its own replicas, from its own seed.
+    static const BackendInfo kAuto{"auto",
+                                   "measures every method consistent for the scene in short pilots, gives the time "
+                                   "where it buys the most error reduction, combines their films by inverse-error weights",
+                                   &makeMeasuredAutoBackend, allTracingOptions(), ProcessShare::OwnChains};
+    if (name == kAuto.name) return &kAuto;
     for (const BackendInfo& b : kBackends)
         if (b.name == name) return &b;
     return nullptr;

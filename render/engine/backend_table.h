@@ -26,14 +26,17 @@ struct BackendInfo {
 
 // Every backend that exists, in the order the UI lists them.
 std::span<const BackendInfo> backendTable();
-// nullptr when no backend has that name.
+// nullptr when no backend has that name. "auto" is found too (measured_auto_backend.h), though
+// the table does not list it: it combines the backends the table names.
 const BackendInfo* findBackend(std::string_view name);
 // Throws std::invalid_argument, one line naming the key and the options there are, when
 // `options` holds a key that none of `backends` reads (a mistyped option would otherwise be
 // ignored and the render made with the default).
 void requireKnownOptions(const std::map<std::string, std::string>& options, std::span<const BackendInfo* const> backends);
 
-// What `--backend auto` picks for a scene, and why, in one line.
+// What the rule that auto was before it measured picks for a scene, and why, in one line: a
+// probe of what the camera sees. Still the choice of the per-pixel illuminance layer's method,
+// and `lucerna bench`'s entry auto-rule, so that the measured auto is compared with it.
 struct AutoChoice {
     std::string backend;
     std::string reason;

@@ -1,5 +1,6 @@
 #include "render/photometry/grid_calculation.h"
 
+#include "render/photometry/grid_auto.h"
 #include "render/photometry/grid_diagnosis.h"
 #include "render/photometry/grid_statistics.h"
 #include "render/vpl/instant_radiosity.h"
@@ -93,7 +94,15 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     const std::vector<uint8_t> throughGlass = pointsLitThroughGlass(scene, points, normal);
     for (size_t i = 0; i < points.size(); ++i) start.litThroughGlass += throughGlass[i] && !start.insideGeometry[i];
     GridSettings settings = requested;
-    if (settings.autoMethod) settings.method = start.litThroughGlass > 0 ? GridMethod::Bdpt : GridMethod::Path;
+    if (settings.autoMethod && !settings.processes) {
+        const GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
+        settings.method = choice.method;
+        start.autoMeasured = choice.measured;
+        if (settings.timeLimitSeconds > 0)
+            settings.timeLimitSeconds = std::max(0.05 * settings.timeLimitSeconds, settings.timeLimitSeconds - choice.seconds);
+    } else if (settings.autoMethod) {
+        settings.method = start.litThroughGlass > 0 ? GridMethod::Bdpt : GridMethod::Path;
+    }
     start.method = settings.method;
     start.errorBarUnknown = start.litThroughGlass > 0 && !carriesLightThroughGlass(settings.method);
     if (settings.method == GridMethod::Preview)

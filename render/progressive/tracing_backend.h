@@ -9,6 +9,7 @@
 #include "render/backend/backend_options.h"
 #include "render/backend/film.h"
 #include "render/trace/render_scene.h"
+#include "render/trace/render_scene_cache.h"
 
 #include <memory>
 #include <optional>
@@ -34,9 +35,13 @@ protected:
 
     // Builds scene_ and film_; a backend that prepares more calls it first.
     void prepareSceneAndFilm() {
-        scene_ = std::make_unique<RenderScene>(snapshot_, settings_.width, settings_.height, settings_.sensor.get(),
-                                               lightSelection_, daylightPortals_);
-        scene_->setRayRecorder(settings_.rayRecorder);
+        const auto build = [&] {
+            auto scene = std::make_shared<RenderScene>(snapshot_, settings_.width, settings_.height,
+                                                       settings_.sensor.get(), lightSelection_, daylightPortals_);
+            scene->setRayRecorder(settings_.rayRecorder);
+            return std::shared_ptr<const RenderScene>(std::move(scene));
+        };
+        scene_ = settings_.sharedScenes ? settings_.sharedScenes->get(lightSelection_, daylightPortals_, build) : build();
         film_ = std::make_unique<Film>(scene_->camera().width(), scene_->camera().height());
     }
 
@@ -45,7 +50,7 @@ protected:
     // How next-event estimation chooses lights (option light_sampler).
     LightSelection lightSelection_;
     bool daylightPortals_;  // option daylight_portals
-    std::unique_ptr<RenderScene> scene_;
+    std::shared_ptr<const RenderScene> scene_;
     std::unique_ptr<Film> film_;
 };
 

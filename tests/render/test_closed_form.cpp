@@ -1,4 +1,5 @@
-// Closed-form checks of every physically based backend, each within 1% (SPEC.md conventions):
+// Closed-form checks of every physically based backend and of auto, which combines them, each
+// within 1% (SPEC.md conventions):
 // a diffuse plane under a rectangular emitter (Lambert's polygon formula), a point light over a
 // plane in a millimetre scene (E = I cos / r^2, r in metres), a closed sphere with an emitting
 // cap (uniform radiance inside a sphere), and 1,000 point lights over a plane (the sum of
@@ -90,6 +91,10 @@ private:
         // Metropolis: one mutation per pixel per pass, chains correlated over passes.
         QTest::newRow("mlt") << "mlt" << 256;
         QTest::newRow("cmlt") << "cmlt" << 256;
+        // auto (render/engine/measured_auto/): every candidate's pilot, then the passes where they
+        // take the most off the error, the films combined by cross-fitted weights. Each of its
+        // passes is a pass of two replicas of one method.
+        QTest::newRow("auto") << "auto" << 128;
     }
 };
 
@@ -119,6 +124,7 @@ void TestClosedForm::deltaLightOverPlane_data() {
         QTest::newRow(qPrintable(QString("mir %1").arg(name))) << "mir" << 64 << int(kind);
         QTest::newRow(qPrintable(QString("mlt %1").arg(name))) << "mlt" << 256 << int(kind);
         QTest::newRow(qPrintable(QString("cmlt %1").arg(name))) << "cmlt" << 256 << int(kind);
+        QTest::newRow(qPrintable(QString("auto %1").arg(name))) << "auto" << 128 << int(kind);
     }
 }
 

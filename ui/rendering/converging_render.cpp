@@ -2,6 +2,7 @@
 
 #include "render/backend/light_layers/layered_backend.h"
 #include "render/engine/backend_table.h"
+#include "render/engine/measured_auto/measured_auto_settings.h"
 
 #include <algorithm>
 #include <cmath>
@@ -103,9 +104,9 @@ void ConvergingRender::relaunch() {
     reason_.clear();
     inUse_ = choice_;
     if (choice_ == "auto") {
-        const AutoChoice c = chooseAutoBackend(*scene_);
-        inUse_ = c.backend;
-        reason_ = c.reason;
+        std::string candidates;
+        for (const std::string& name : autoCandidates(*scene_)) candidates += (candidates.empty() ? "" : ", ") + name;
+        reason_ = "measuring " + candidates + " in short pilots";
     }
     const BackendInfo* info = findBackend(inUse_);
     if (!info) {

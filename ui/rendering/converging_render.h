@@ -34,7 +34,8 @@ public:
     // "auto" or a name from backendTable(); restarts when running.
     void setBackend(const std::string& name);
     const std::string& backendChoice() const { return choice_; }
-    // The backend in use and, for auto, why (empty otherwise).
+    // The backend in use and, for auto, what it is measuring (empty otherwise; once frames come,
+    // their lucerna:auto_* attributes say which methods carry the image).
     const std::string& backendInUse() const { return inUse_; }
     const std::string& autoReason() const { return reason_; }
 

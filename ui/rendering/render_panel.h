@@ -39,6 +39,7 @@ private:
     QComboBox* backend_;
     QCheckBox* lightLayers_;
     QLabel *reason_, *figures_;
+    QString autoStatus_;  // from the latest frame of auto: the methods that carry the image
     ErrorPlot* plot_;
     DisplaySettings display_;
 };

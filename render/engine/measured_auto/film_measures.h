@@ -1,0 +1,92 @@
+#pragma once
+// What auto measures of its candidate methods' films (measured_auto_backend.h): per tile of the
+// image, each method's mean, its variance and the error it is expected to carry, and from those
+// the weights that combine the methods' films and the gain of giving a method more time.
+//
+// Every method runs as two independent replicas (own seeds, own VPL sets, chains and
+// normalisation). Two kinds of variance come of that:
+//   - within: a replica's image against its own halves (even and odd passes). Honest for the
+//     methods whose passes are independent (path, bdpt, ir); a Markov chain's halves share the
+//     chain, so for mir, mlt and cmlt it understates the truth. Scaled by the method's
+//     inflation, the image-wide ratio of `across` to `within`.
+//   - across: the difference of the two replicas, honest for every method.
+// The weights that combine replica r's images are computed from replica 1 - r alone (cross-
+// fitting), so that they do not correlate with the values they weigh and the combination of
+// consistent methods stays consistent (unbiased where the methods are). Only the inflation, one
+// number per method from the whole image, is taken from both.
+
+#include "core/image/image.h"
+
+#include <array>
+#include <span>
+#include <vector>
+
+namespace lucerna {
+
+// The squares the measures are pooled over (the last row and column may be smaller).
+struct TileGrid {
+    TileGrid(int width, int height, int size);
+    int width, height, size, nx, ny;
+    int count() const { return nx * ny; }
+    int of(int x, int y) const { return (y / size) * nx + x / size; }
+};
+
+// What one replica's film shows: its image and the images of its two halves.
+struct ReplicaImages {
+    Image image, half[2];
+};
+
+// Per tile, from one set of data (one replica, or the pair): the mean over the tile's pixels and
+// channels, the variance of one value, and the variance of the tile's mean.
+struct TileStats {
+    std::vector<double> mean, variance, meanVariance;
+};
+
+// Per tile of a method's pair of replicas.
+struct MethodMeasure {
+    TileStats pair;                    // of the replicas' mean by samples, from their difference (`across`)
+    // From each replica alone, `within` scaled by the inflation; empty while a replica has only
+    // one half (one pass).
+    std::array<TileStats, 2> replica;
+    double inflation = 1;              // across over within, image-wide, in [1, 1000]
+    bool hasReplicaStats() const { return !replica[0].mean.empty(); }
+};
+// `withHalves`: both replicas have passes in both halves. samples0 and samples1: the replicas'
+// samples per pixel, which weigh them in the pair's mean (a chain's replicas may differ).
+MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const TileGrid& tiles, bool withHalves,
+                            double samples0 = 1, double samples1 = 1);
+
+// Per method and tile, the expected squared error of one value: its variance plus the squared
+// distance of its tile mean from the other methods' that their variances do not explain (a bias
+// such as the residual of ir's clamp, or a rare event a short run has not seen: path on a
+// caustic shows no variance there, and would otherwise take all the weight). The distance is
+// the lower median of the distances to each other method, so that one wrong method does not
+// move the others. Then, relative to the tiles' brightness, each tile's error is drawn halfway
+// (geometrically) to the method's mean over the image, and floored at a quarter of its median: a
+// tile's variance is pooled over its pixels, but a method whose errors correlate across pixels
+// (a VPL set, a chain) has few degrees of freedom there, so that a tile's estimate may be ten
+// times too small, and a tile where a method has seen nothing yet must not claim it is exact.
+std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods);
+
+// Per method and tile, the weights of an inverse-error combination: (1 / e_k) / sum_j (1 / e_j);
+// equal where every error is 0. Weights under `minimum` are made 0 and the rest renormalised: a
+// method that would take a small weight takes little off the error, but its error estimate,
+// from few degrees of freedom, may be far too small, and then its noise comes in whole.
+std::vector<std::vector<double>> inverseErrorWeights(const std::vector<std::vector<double>>& errors,
+                                                     double minimum = 0);
+
+// The images combined with per-tile weights, interpolated bilinearly between the tiles' centres
+// (no seams); at every pixel the weights sum to 1.
+Image combineImages(std::span<const Image* const> images, const std::vector<std::vector<double>>& weights,
+                    const TileGrid& tiles);
+
+// Per method, the error that one more unit of cost given to it takes off the relmse of the
+// combination: with e_k(T) after cost c_k, a unit-cost variance s_k(T) = e_k(T) c_k, and the
+// combination's variance V(T) = 1 / sum_k 1/e_k(T),
+//   g_k = -dJ/dc_k = sum_T V(T)^2 / s_k(T) / (m(T)^2 + 0.01),   J = sum_T V(T) / (m(T)^2 + 0.01),
+// m(T) the tile's mean (SPEC.md's relmse, per tile). Efficiency-aware allocation in the spirit of
+// Grittmann et al. 2022, here across independent films.
+std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs,
+                                  std::span<const double> tileMeans);
+
+}  // namespace lucerna

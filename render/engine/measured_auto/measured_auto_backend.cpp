@@ -1,0 +1,317 @@
+#include "render/engine/measured_auto/measured_auto_backend.h"
+
+#include "core/number_format.h"
+#include "render/engine/backend_table.h"
+#include "render/engine/measured_auto/film_measures.h"
+#include "render/engine/measured_auto/measured_auto_settings.h"
+#include "render/trace/embree_scene.h"
+#include "render/trace/render_scene_cache.h"
+#include "render/trace/rng.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <numeric>
+#include <thread>
+
+namespace lucerna {
+
+namespace {
+
+// A method whose weight in a tile would be under this takes none there (film_measures.h).
+constexpr double kMinimumWeight = 0.1;
+
+struct Method {
+    std::string name;
+    std::array<std::unique_ptr<Backend>, 2> replicas;
+    // A Markov chain's error falls faster than 1 / time while it settles (mir on a closed sphere
+    // of albedo 0.9: 5 times from 15 to 30 s), so two chains of half the length are worse than
+    // one: after its pilot a chain method's passes go to replica 0, replica 1 stopping at two
+    // passes (its halves, for the measures). The other methods' passes are independent: both
+    // replicas take every pass.
+    bool chain = false;
+    std::array<int, 2> passes{0, 0};
+    double cost = 0;  // seconds or rays of its passes, both replicas
+    int piloted() const { return std::min(passes[0], passes[1]); }
+};
+
+// What the last measure found, per method (0 for a method not yet measured).
+struct Measures {
+    std::vector<double> gain;         // relmse taken off per unit of cost (film_measures.h)
+    std::vector<double> efficiency;   // 1 / (relmse x cost), relative to the best
+    std::vector<double> imageWeight;  // mean weight over the tiles
+    std::vector<bool> farBehind;      // gain under dropBelow of the best's: its pilot ends
+    double cost = 0;                  // the render's cost when measured
+    bool taken = false;
+};
+
+class MeasuredAutoBackend : public Backend {
+public:
+    MeasuredAutoBackend(SceneSnapshot scene, const RenderSettings& settings)
+        : auto_(MeasuredAutoSettings::forScene(*scene, settings)), start_(std::chrono::steady_clock::now()) {
+        RenderSettings each = settings;
+        if (!each.sharedScenes) each.sharedScenes = std::make_shared<RenderSceneCache>();
+        if (auto_.cost == AutoCost::Rays && !each.rayRecorder) {
+            rays_ = std::make_unique<RayRecorder>(int(std::thread::hardware_concurrency()) + 1, /*countOnly=*/true);
+            each.rayRecorder = rays_.get();
+        }
+        recorder_ = each.rayRecorder;
+        for (size_t k = 0; k < auto_.candidates.size(); ++k) {
+            Method m;
+            m.name = auto_.candidates[k];
+            m.chain = findBackend(m.name)->share == ProcessShare::OwnChains;
+            for (int r = 0; r < 2; ++r) {
+                each.seed = hashSeed(settings.seed, 0x6175746f + k, uint64_t(r));
+                m.replicas[size_t(r)] = findBackend(m.name)->make(scene, each);
+            }
+            methods_.push_back(std::move(m));
+        }
+    }
+
+    void prepare(TaskContext& ctx) override {
+        for (Method& m : methods_)
+            for (auto& r : m.replicas)
+                if (!ctx.isCancelled()) r->prepare(ctx);
+        if (!methods_.empty()) {
+            const Film& f = methods_[0].replicas[0]->film();
+            film_ = std::make_unique<Film>(f.width(), f.height());
+        }
+    }
+
+    void renderPass(TaskContext& ctx, int) override {
+        const size_t k = nextMethod();
+        Method& m = methods_[k];
+        const double before = costNow();
+        for (int r = 0; r < 2; ++r) {
+            if (r == 1 && m.chain && pilotDone(k) && m.passes[1] >= 2) continue;
+            m.replicas[size_t(r)]->renderPass(ctx, m.passes[size_t(r)]);
+            if (ctx.isCancelled()) return;
+            ++m.passes[size_t(r)];
+        }
+        m.cost += costNow() - before;
+        dirty_ = true;
+        if (allPiloted() && (!measures_.taken || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost)) measure();
+    }
+
+    const Film& film() const override {
+        if (dirty_) measure();
+        return *film_;
+    }
+
+    std::map<std::string, std::string> diagnostics() const override {
+        if (dirty_) measure();
+        return {{"auto", summary()}, {"auto_methods", carrying()}, {"auto_time", shares(false)}, {"auto_weight", shares(true)}};
+    }
+
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override {
+        for (Method& m : methods_)
+            for (auto& r : m.replicas) r->rewriteFilms(rewrite);
+        dirty_ = true;
+    }
+
+private:
+    double costNow() const {
+        if (auto_.cost == AutoCost::Rays) return double(recorder_->total());
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    }
+    double totalCost() const {
+        return std::accumulate(methods_.begin(), methods_.end(), 0.0, [](double s, const Method& m) { return s + m.cost; });
+    }
+    bool allPiloted() const {
+        return std::ranges::all_of(methods_, [&](const Method& m) { return m.piloted() >= auto_.pilotPasses; });
+    }
+    double samples(size_t k, int replica) const { return methods_[k].replicas[size_t(replica)]->film().samplesPerPixel(); }
+    bool farBehind(size_t k) const { return measures_.taken && measures_.farBehind[k]; }
+    bool pilotDone(size_t k) const {
+        const Method& m = methods_[k];
+        return m.piloted() >= auto_.pilotPasses &&
+               (auto_.cost == AutoCost::Rays || m.cost >= auto_.pilotSeconds || farBehind(k));
+    }
+
+    // Pilots first, interleaved (the fewest passes, then the least cost), then the largest gain.
+    size_t nextMethod() const {
+        size_t best = methods_.size();
+        for (size_t k = 0; k < methods_.size(); ++k)
+            if (methods_[k].piloted() < auto_.pilotPasses &&
+                (best == methods_.size() || methods_[k].piloted() < methods_[best].piloted()))
+                best = k;
+        if (best < methods_.size()) return best;
+        for (size_t k = 0; k < methods_.size(); ++k)
+            if (!pilotDone(k) && (best == methods_.size() || methods_[k].cost < methods_[best].cost)) best = k;
+        if (best < methods_.size()) return best;
+        return size_t(std::ranges::max_element(measures_.gain) - measures_.gain.begin());
+    }
+
+    // Measures every method with a pass in each replica (the allocation), and makes the film the
+    // combination of those with two (film_measures.h).
+    void measure() const {
+        dirty_ = false;
+        if (!film_) return;
+        const TileGrid tiles(film_->width(), film_->height(), auto_.tileSize);
+        std::vector<size_t> measured;
+        std::vector<std::array<ReplicaImages, 2>> images;
+        std::vector<MethodMeasure> m;
+        for (size_t k = 0; k < methods_.size(); ++k) {
+            if (methods_[k].piloted() < 1) continue;
+            std::array<ReplicaImages, 2> im;
+            for (int r = 0; r < 2; ++r) {
+                const Film& f = methods_[k].replicas[size_t(r)]->film();
+                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}};
+            }
+            m.push_back(measureMethod(im, tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1)));
+            images.push_back(std::move(im));
+            measured.push_back(k);
+        }
+        if (measured.empty()) return;
+        allocate(measured, m, tiles);
+        *film_ = combine(measured, m, images, tiles);
+    }
+
+    // The gains, from the pairs of replicas; once every method has its pilot passes, they decide.
+    void allocate(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m, const TileGrid& tiles) const {
+        if (!allPiloted()) return;
+        std::vector<const TileStats*> pair;
+        for (const MethodMeasure& x : m) pair.push_back(&x.pair);
+        const auto errors = expectedSquaredErrors(pair);
+        const auto weights = inverseErrorWeights(errors);
+        std::vector<double> tileMean(size_t(tiles.count()), 0.0), costs;
+        for (size_t i = 0; i < m.size(); ++i) {
+            costs.push_back(methods_[measured[i]].cost);
+            for (size_t t = 0; t < tileMean.size(); ++t) tileMean[t] += weights[i][t] * m[i].pair.mean[t];
+        }
+        const std::vector<double> gains = marginalGains(errors, costs, tileMean);
+        measures_ = Measures{};
+        measures_.gain.assign(methods_.size(), 0.0);
+        measures_.efficiency.assign(methods_.size(), 0.0);
+        measures_.imageWeight.assign(methods_.size(), 0.0);
+        measures_.farBehind.assign(methods_.size(), false);
+        measures_.cost = totalCost();
+        measures_.taken = true;
+        for (size_t i = 0; i < m.size(); ++i) {
+            double relmse = 0;
+            for (size_t t = 0; t < tileMean.size(); ++t) relmse += errors[i][t] / (tileMean[t] * tileMean[t] + 0.01);
+            measures_.gain[measured[i]] = gains[i];
+            measures_.efficiency[measured[i]] = relmse > 0 && costs[i] > 0 ? 1.0 / (relmse * costs[i]) : 0.0;
+        }
+        const double bestGain = *std::ranges::max_element(measures_.gain);
+        const double bestEfficiency = *std::ranges::max_element(measures_.efficiency);
+        for (size_t k = 0; k < methods_.size(); ++k) {
+            measures_.farBehind[k] = measures_.gain[k] < auto_.dropBelow * bestGain;
+            if (bestEfficiency > 0) measures_.efficiency[k] /= bestEfficiency;
+        }
+    }
+
+    // Replica r's images weighed by what replica 1 - r shows (cross-fitting): the film's halves.
+    Film combine(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
+                 const std::vector<std::array<ReplicaImages, 2>>& images, const TileGrid& tiles) const {
+        Film out(tiles.width, tiles.height);
+        std::array<std::vector<std::vector<double>>, 2> weights;
+        // The methods with two passes in each replica, less those far behind (whose error
+        // estimate is the least sure of all: it rests on their pilot).
+        std::vector<size_t> in;
+        for (size_t i = 0; i < m.size(); ++i)
+            if (m[i].hasReplicaStats() && !farBehind(measured[i])) in.push_back(i);
+        // Before any method has two passes (the first frames): every method with one, equally.
+        const bool equal = in.empty();
+        if (equal)
+            for (size_t i = 0; i < m.size(); ++i) in.push_back(i);
+        for (int r = 0; r < 2; ++r) {
+            // Replica 1 - r's errors, as replica r's would be with its own samples (error as
+            // 1 / samples; a chain's replica 0 runs longer than its replica 1).
+            std::vector<TileStats> scaled;
+            std::vector<const TileStats*> other;
+            std::vector<const Image*> values;
+            double sum = 0;
+            for (size_t i : in) {
+                const size_t k = measured[i];
+                scaled.push_back(m[i].replica[size_t(1 - r)]);
+                const double ratio = samples(k, 1 - r) / samples(k, r);
+                for (double& v : scaled.back().variance) v *= ratio;
+                for (double& v : scaled.back().meanVariance) v *= ratio;
+                values.push_back(&images[i][size_t(r)].image);
+                // The film's halves are weighed by their samples. A chain's short replica is
+                // worth less than its samples (its error has not yet fallen as a settled chain's
+                // does), so it counts by the share it has of the long one's: fixed by the sample
+                // counts, not by the values, so the image stays consistent.
+                sum += samples(k, r) * (methods_[k].chain ? std::min(1.0, samples(k, r) / samples(k, 1 - r)) : 1.0);
+            }
+            for (const TileStats& x : scaled) other.push_back(&x);
+            weights[size_t(r)] = equal ? std::vector(in.size(), std::vector(size_t(tiles.count()), 1.0 / double(in.size())))
+                                       : inverseErrorWeights(expectedSquaredErrors(other), kMinimumWeight);
+            const Image half = combineImages(values, weights[size_t(r)], tiles);
+            for (int y = 0; y < half.height; ++y)
+                for (int x = 0; x < half.width; ++x) out.addSample(r, x, y, half.at(x, y) * float(sum));
+            out.finishPass(r, sum);
+        }
+        if (measures_.taken)
+            for (size_t j = 0; j < in.size(); ++j) {
+                double w = 0;
+                for (int r = 0; r < 2; ++r)
+                    for (double x : weights[size_t(r)][j]) w += 0.5 * x / double(tiles.count());
+                measures_.imageWeight[measured[in[j]]] = w;
+            }
+        return out;
+    }
+
+    // "time: mir 81%, path 9%, ...; image: mir 0.86, ...; efficiency (best 1): ..."
+    std::string summary() const {
+        const double total = totalCost();
+        std::vector<size_t> order(methods_.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        std::ranges::stable_sort(order, [&](size_t a, size_t b) { return methods_[a].cost > methods_[b].cost; });
+        std::string s = "measured";
+        for (const Method& m : methods_) s += " " + m.name;
+        s += " (two replicas each); time:";
+        for (size_t k : order)
+            s += " " + methods_[k].name + " " + fixedNumber(total > 0 ? 100.0 * methods_[k].cost / total : 0.0, 0) + "% (" +
+                 std::to_string(methods_[k].passes[0]) + " passes)";
+        if (!measures_.taken) return s + "; still in the pilots";
+        s += "; image weight:";
+        for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.imageWeight[k], 2);
+        s += "; efficiency (best 1):";
+        for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.efficiency[k], 2);
+        return s;
+    }
+
+    // "path=0.81 bdpt=0.03 ...": each method's share of the cost, or its mean weight in the image.
+    std::string shares(bool weights) const {
+        const double total = totalCost();
+        std::string s;
+        for (size_t k = 0; k < methods_.size(); ++k) {
+            const double x = weights ? (measures_.taken ? measures_.imageWeight[k] : 0.0)
+                                     : (total > 0 ? methods_[k].cost / total : 0.0);
+            s += (k ? " " : "") + methods_[k].name + "=" + formatNumber(x, 3);
+        }
+        return s;
+    }
+
+    // The methods that carry a twentieth of the image or more, the heaviest first.
+    std::string carrying() const {
+        if (!measures_.taken) return "";
+        std::vector<size_t> order(methods_.size());
+        std::iota(order.begin(), order.end(), size_t(0));
+        std::ranges::stable_sort(order, [&](size_t a, size_t b) { return measures_.imageWeight[a] > measures_.imageWeight[b]; });
+        std::string s;
+        for (size_t k : order)
+            if (measures_.imageWeight[k] >= 0.05) s += (s.empty() ? "" : " ") + methods_[k].name;
+        return s;
+    }
+
+    MeasuredAutoSettings auto_;
+    std::chrono::steady_clock::time_point start_;
+    std::unique_ptr<RayRecorder> rays_;
+    RayRecorder* recorder_ = nullptr;
+    std::vector<Method> methods_;
+    mutable Measures measures_;
+    mutable bool dirty_ = true;
+    mutable std::unique_ptr<Film> film_;
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> makeMeasuredAutoBackend(SceneSnapshot scene, const RenderSettings& settings) {
+    return std::make_unique<MeasuredAutoBackend>(std::move(scene), settings);
+}
+
+}  // namespace lucerna

@@ -1,0 +1,23 @@
+#include "render/engine/measured_auto/measured_auto_settings.h"
+
+#include <algorithm>
+
+namespace lucerna {
+
+std::vector<std::string> autoCandidates(const Scene& scene) {
+    if (analyseFeatures(scene).hasSpecular()) return {"bdpt", "mlt", "cmlt"};
+    return {"path", "bdpt", "ir", "mir", "mlt", "cmlt"};
+}
+
+MeasuredAutoSettings MeasuredAutoSettings::forScene(const Scene& scene, const RenderSettings& render) {
+    MeasuredAutoSettings s;
+    s.candidates = autoCandidates(scene);
+    s.cost = render.spp > 0 ? AutoCost::Rays : AutoCost::Seconds;
+    // A hundredth of the budget each, so that the pilots of six methods take a sixteenth of it
+    // at most (and a method far behind stops after its first pass); half a second where the
+    // render is open-ended (the window).
+    if (render.seconds > 0) s.pilotSeconds = std::clamp(0.01 * render.seconds, 0.1, 2.0);
+    return s;
+}
+
+}  // namespace lucerna

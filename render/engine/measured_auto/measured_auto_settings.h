@@ -1,0 +1,39 @@
+#pragma once
+// The settings of `--backend auto` (measured_auto_backend.h): which methods it measures, how long
+// their pilots run, and how often it measures again.
+
+#include "core/scene/scene.h"
+#include "render/backend/backend.h"
+
+#include <string>
+#include <vector>
+
+namespace lucerna {
+
+// What auto counts as a method's cost: seconds of its passes, or, where the render is counted
+// in passes (--spp), the rays its passes trace, so that a render with a seed is reproducible.
+enum class AutoCost { Seconds, Rays };
+
+struct MeasuredAutoSettings {
+    // The methods that are consistent for the scene, in the order their pilots run.
+    std::vector<std::string> candidates;
+    AutoCost cost = AutoCost::Seconds;
+    int tileSize = 16;         // pixels per side of the squares the measures pool over
+    int pilotPasses = 1;       // passes of each replica before a method is measured
+    // Seconds of each method's pilot (AutoCost::Seconds), unless its gain falls below
+    // dropBelow of the best's first (a method far behind costs no more than its first passes).
+    double pilotSeconds = 0.5;
+    double dropBelow = 0.1;
+    // The measures are taken again when the render's cost has grown by this share.
+    double remeasureGrowth = 0.1;
+
+    static MeasuredAutoSettings forScene(const Scene& scene, const RenderSettings& render);
+};
+
+// The methods auto may combine for `scene`. Every one must be consistent, so that the combination
+// is: with mirrors or glass, the ones with light-side strategies (bdpt, mlt, cmlt; a path tracer
+// cannot find a point light's caustic, nor VPLs a path through a mirror); otherwise all six
+// tracing methods.
+std::vector<std::string> autoCandidates(const Scene& scene);
+
+}  // namespace lucerna

@@ -1,0 +1,182 @@
+// `--backend auto` as a measurement (render/engine/measured_auto/): the measures of constructed
+// films (weights that follow each method's noise tile by tile, a chain's understated halves, a
+// method that has not seen a rare event), where the time goes on a scene one method wins by far,
+// what it says it decided, and that a render with a seed is reproducible. Its consistency on the
+// closed forms is in test_closed_form (its "auto" rows).
+
+#include "closed_form_scenes.h"
+#include "render/engine/measured_auto/film_measures.h"
+#include "render/engine/measured_auto/measured_auto_settings.h"
+#include "render_helpers.h"
+
+#include <QtTest>
+
+#include <random>
+
+using namespace lucerna;
+using namespace lucerna::test;
+
+namespace {
+
+constexpr int kSize = 64, kTile = 16;
+
+// A replica of a method whose values are 1 + noise: per pixel, its two halves with independent
+// noise of standard deviation sdHalf(x) each, plus `shared` noise common to both halves (what a
+// Markov chain's halves share); the image is the halves' mean.
+ReplicaImages replica(std::mt19937& rng, const std::function<double(int x)>& sdHalf, double shared = 0) {
+    std::normal_distribution<double> n(0.0, 1.0);
+    ReplicaImages r{Image(kSize, kSize), {Image(kSize, kSize), Image(kSize, kSize)}};
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const double common = shared * n(rng);
+            Rgb h[2];
+            for (Rgb& c : h) c = Rgb(float(1 + common + sdHalf(x) * n(rng)), float(1 + common + sdHalf(x) * n(rng)),
+                                     float(1 + common + sdHalf(x) * n(rng)));
+            r.half[0].at(x, y) = h[0], r.half[1].at(x, y) = h[1];
+            r.image.at(x, y) = (h[0] + h[1]) * 0.5f;
+        }
+    return r;
+}
+
+std::array<ReplicaImages, 2> pair(std::mt19937& rng, const std::function<double(int x)>& sdHalf, double shared = 0) {
+    return {replica(rng, sdHalf, shared), replica(rng, sdHalf, shared)};
+}
+
+// A method's numbers from the EXR header's `lucerna:auto_shares` ("path=0.9 mir=0.05 ...").
+double share(const Image& img, const std::string& key, const std::string& method) {
+    const std::string& s = img.attributes.at("lucerna:" + key);
+    const size_t at = s.find(method + "=");
+    return at == std::string::npos ? -1.0 : std::stod(s.substr(at + method.size() + 1));
+}
+
+}  // namespace
+
+class TestMeasuredAuto : public QObject {
+    Q_OBJECT
+private slots:
+    void weightsFollowEachMethodsNoise();
+    void chainHalvesAreInflated();
+    void rareEventTakesNoWeight();
+    void candidatesAreConsistent();
+    void bestByFarTakesTheTime();
+    void saysWhatItDecided();
+    void reproducibleWithSeed();
+};
+
+void TestMeasuredAuto::weightsFollowEachMethodsNoise() {
+    // Method a: the same noise everywhere; b: a quarter of a's standard deviation on the left
+    // half of the image, twice it on the right. The weights follow, tile by tile.
+    std::mt19937 rng(7);
+    const TileGrid tiles(kSize, kSize, kTile);
+    const MethodMeasure a = measureMethod(pair(rng, [](int) { return 0.1; }), tiles, true);
+    const MethodMeasure b = measureMethod(pair(rng, [](int x) { return x < kSize / 2 ? 0.025 : 0.2; }), tiles, true);
+    QVERIFY(a.inflation < 1.5 && b.inflation < 1.5);  // independent halves: nothing to inflate
+    const std::vector<const TileStats*> stats{&a.replica[0], &b.replica[0]};
+    const auto w = inverseErrorWeights(expectedSquaredErrors(stats));
+    for (int t = 0; t < tiles.count(); ++t) {
+        const bool left = (t % tiles.nx) < tiles.nx / 2;
+        QCOMPARE_LE(std::abs(w[0][size_t(t)] + w[1][size_t(t)] - 1.0), 1e-12);
+        // Optimal: b 0.94 on the left, a 0.8 on the right; drawn halfway to each method's mean
+        // error over the image (film_measures.h), b about 0.8 and a about 0.67.
+        if (left) QVERIFY2(w[1][size_t(t)] > 0.7, qPrintable(QString::number(w[1][size_t(t)])));
+        else QVERIFY2(w[0][size_t(t)] > 0.6, qPrintable(QString::number(w[0][size_t(t)])));
+    }
+    // The combination of images of 1 is 1 wherever the weights change.
+    const std::array<ReplicaImages, 2> ra = pair(rng, [](int) { return 0.0; }), rb = pair(rng, [](int) { return 0.0; });
+    const std::vector<const Image*> flat{&ra[0].image, &rb[0].image};
+    const Image c = combineImages(flat, w, tiles);
+    for (const Rgb& p : c.pixels) QCOMPARE_LE(std::abs(p.y - 1.0f), 1e-5f);
+}
+
+void TestMeasuredAuto::chainHalvesAreInflated() {
+    // Halves that share most of their noise understate a replica's variance; the difference of
+    // the replicas does not, and their ratio scales the halves' estimate up.
+    std::mt19937 rng(11);
+    const TileGrid tiles(kSize, kSize, kTile);
+    const MethodMeasure m = measureMethod(pair(rng, [](int) { return 0.01; }, 0.1), tiles, true);
+    qInfo("inflation %.1f", m.inflation);
+    QVERIFY(m.inflation > 50);  // (0.1^2 + 0.01^2 / 2) / (0.01^2 / 2) = 201 in expectation
+    double within = 0, across = 0;
+    for (int t = 0; t < tiles.count(); ++t) within += m.replica[0].variance[size_t(t)], across += m.pair.variance[size_t(t)];
+    QVERIFY(within > 0.5 * 2 * across && within < 2 * 2 * across);  // a replica's variance, twice the pair's
+}
+
+void TestMeasuredAuto::rareEventTakesNoWeight() {
+    // Two methods see the light (1, with noise); a third has not yet (0, no noise at all): its
+    // zero variance must not take the weight, its distance from the others counts.
+    std::mt19937 rng(13);
+    const TileGrid tiles(kSize, kSize, kTile);
+    const MethodMeasure a = measureMethod(pair(rng, [](int) { return 0.2; }), tiles, true);
+    const MethodMeasure b = measureMethod(pair(rng, [](int) { return 0.3; }), tiles, true);
+    std::array<ReplicaImages, 2> blind = pair(rng, [](int) { return 0.0; });
+    for (ReplicaImages& r : blind)
+        for (Image* i : {&r.image, &r.half[0], &r.half[1]})
+            for (Rgb& p : i->pixels) p = Rgb(0, 0, 0);
+    const MethodMeasure c = measureMethod(blind, tiles, true);
+    const std::vector<const TileStats*> stats{&a.replica[1], &b.replica[1], &c.replica[1]};
+    const auto w = inverseErrorWeights(expectedSquaredErrors(stats), 0.1);
+    for (int t = 0; t < tiles.count(); ++t) {
+        QCOMPARE(w[2][size_t(t)], 0.0);
+        QVERIFY(w[0][size_t(t)] > w[1][size_t(t)]);  // a is the less noisy
+    }
+}
+
+void TestMeasuredAuto::candidatesAreConsistent() {
+    const std::string glass = R"({"lucerna": 1, "camera": {"position": [0, 1, -3], "target": [0, 0, 0], "fov_y": 50,
+      "resolution": [16, 16]}, "materials": {"g": {"type": "dielectric", "ior": 1.5}},
+      "objects": [{"name": "pane", "material": "g", "mesh": {"quad": [[-1,0,-1],[-1,0,1],[1,0,1],[1,0,-1]]}}],
+      "lights": [{"name": "bulb", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1]}]})";
+    QCOMPARE(autoCandidates(parseScene(glass, "glass.json")), (std::vector<std::string>{"bdpt", "mlt", "cmlt"}));
+    RectangleOverPlane s;
+    QCOMPARE(autoCandidates(parseScene(s.json(), "plane.json")).size(), size_t(6));
+}
+
+void TestMeasuredAuto::bestByFarTakesTheTime() {
+    // A closed sphere of albedo 0.95 lit by a small cap: nearly all of its light has bounced many
+    // times. Gathering VPLs (ir, mir) carries that light at every pixel at once, where paths and
+    // chains must find it one long path at a time: at equal rays ir and mir reach errors many
+    // times below the others'. Counted in passes (--spp), auto's cost is rays.
+    SphereWithEmittingCap s;
+    s.rho = 0.95, s.rings = 16, s.segments = 32, s.resolution = 32, s.capAngleDeg = 20;
+    RenderSettings settings;
+    settings.spp = 40;
+    settings.seed = 3;
+    const RenderFrame f = renderFrame("auto", sceneFromJson(s.json()), settings);
+    qInfo("%s", f.image.attributes.at("lucerna:auto").c_str());
+    const double vpl = share(f.image, "auto_time", "ir") + share(f.image, "auto_time", "mir");
+    QVERIFY2(vpl > 0.85, qPrintable(QString::number(vpl)));
+    QVERIFY(share(f.image, "auto_weight", "ir") + share(f.image, "auto_weight", "mir") > 0.95);
+    QCOMPARE_LE(std::abs(f.image.mean() / s.expectedRadiance() - 1.0), 0.02);
+}
+
+void TestMeasuredAuto::saysWhatItDecided() {
+    RectangleOverPlane s;
+    RenderSettings settings;
+    settings.spp = 16;
+    const RenderFrame f = renderFrame("auto", sceneFromJson(s.json()), settings);
+    const auto& a = f.image.attributes;
+    QCOMPARE(a.at("lucerna:backend"), std::string("auto"));
+    QVERIFY(a.at("lucerna:auto").starts_with("measured path bdpt ir mir mlt cmlt"));
+    QVERIFY(a.at("lucerna:auto").find('\n') == std::string::npos);
+    QVERIFY(!a.at("lucerna:auto_methods").empty());
+    double time = 0;
+    for (const char* m : {"path", "bdpt", "ir", "mir", "mlt", "cmlt"}) time += share(f.image, "auto_time", m);
+    QCOMPARE_LE(std::abs(time - 1.0), 0.01);
+    QVERIFY(std::isfinite(f.estimatedRelmse));
+}
+
+void TestMeasuredAuto::reproducibleWithSeed() {
+    RectangleOverPlane s;
+    RenderSettings settings;
+    settings.spp = 12;
+    settings.seed = 9;
+    const SceneSnapshot scene = sceneFromJson(s.json());
+    const RenderFrame a = renderFrame("auto", scene, settings, 1), b = renderFrame("auto", scene, settings, 1);
+    QCOMPARE(a.image.attributes.at("lucerna:auto_time"), b.image.attributes.at("lucerna:auto_time"));
+    QVERIFY(a.image.pixels == b.image.pixels);
+    settings.seed = 10;
+    QVERIFY(renderFrame("auto", scene, settings, 1).image.pixels != a.image.pixels);
+}
+
+QTEST_GUILESS_MAIN(TestMeasuredAuto)
+#include "test_measured_auto.moc"
