@@ -145,6 +145,14 @@ RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup
         for (const std::string& w : report.warnings) std::cerr << "warning: " << w << "\n";
 
     s.backendName = r.backend;
+    // Per-light layers render a backend once per light group: auto's pilots of every method for
+    // every layer would cost more than they find, so there the rule auto was picks.
+    std::string ruleReason;
+    if (s.backendName == "auto" && (r.layers & kLightLayers)) {
+        const AutoChoice rule = chooseAutoBackend(*s.scene);
+        s.backendName = rule.backend;
+        ruleReason = rule.reason;
+    }
     s.info = findBackend(s.backendName);
     if (!s.info) {
         std::string names = "auto";
@@ -170,6 +178,7 @@ RenderSetup setUpRender(const std::vector<std::string>& args, const ProcessGroup
     const double pages = double(::sysconf(_SC_PHYS_PAGES)), pageSize = double(::sysconf(_SC_PAGESIZE));
     if (pages > 0 && pageSize > 0 && Film::bytes(s.width, s.height) > pages * pageSize)
         throw UsageError(tooLargeForMemory(s.width, s.height));
+    if (!ruleReason.empty() && rank == 0) std::cerr << "auto (per-light layers: its rule): " << ruleReason << "\n";
     if (s.backendName == "auto" && rank == 0) {
         std::cerr << "auto: measures";
         for (const std::string& name : autoCandidates(*s.scene)) std::cerr << " " << name;

@@ -222,11 +222,11 @@ void addMethodPage(PageFlow& flow, const ReportData& data) {
         flow.subheading(QStringLiteral("Renders"));
         const QString stop = data.settings.renderRelmse > 0
                                  ? QStringLiteral("until its estimated relative error (relMSE) is at most %1, read every "
-                                                  "8 passes from 16 on, or %2 passes at most: %3 samples per pixel")
+                                                  "8 passes from 16 on, or %2 passes at most: %3 passes")
                                        .arg(QString::number(data.settings.renderRelmse, 'g', 3))
                                        .arg(data.settings.renderSpp)
-                                       .arg(QString::number(data.renders->samplesPerPixel, 'f', 0))
-                                 : QStringLiteral("with %1 samples per pixel").arg(data.settings.renderSpp);
+                                       .arg(data.renders->passes)
+                                 : QStringLiteral("for %1 passes").arg(data.settings.renderSpp);
         flow.paragraph(QStringLiteral("The camera's view is rendered by %1, which measures each method that is "
                                       "consistent for the scene in short pilots, gives the time where it takes the "
                                       "most off the error and combines the methods' films (%2), %3; its estimated "

@@ -148,6 +148,7 @@ ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& set
     RenderFrame frame = runPasses(*backend, r.backend, rs, ctx, nullptr, options);
     // What auto measured and decided (render/engine/measured_auto/), for the method page.
     if (const auto it = frame.image.attributes.find("lucerna:auto"); it != frame.image.attributes.end()) r.autoReason = it->second;
+    r.passes = frame.passes;
     r.samplesPerPixel = frame.samplesPerPixel;
     r.seconds = frame.seconds;
     r.estimatedRelmse = frame.estimatedRelmse;

@@ -143,8 +143,9 @@ struct AreaReport {
 // The renders page: the camera's view, converged, and its lux view (false colour).
 struct ReportRenders {
     Image converged;             // linear radiance, with the albedo layer for the lux view
-    std::string backend;         // the backend that rendered it (auto's choice)
-    std::string autoReason;
+    std::string backend;         // the backend that rendered it (auto)
+    std::string autoReason;      // what auto measured and decided
+    int passes = 0;              // the render's passes (auto's: each a pass of one method's replica)
     double samplesPerPixel = 0, seconds = 0, estimatedRelmse = 0;
     float exposureStops = 0;     // the picture's exposure: the log-average luminance to mid grey
     double luxLo = 0, luxHi = 0;  // the lux view's false-colour range (log scale)

@@ -681,7 +681,7 @@ void TestReport::renderStopsAtItsErrorTarget() {
     TaskContext ctx(token);
     const ReportData all = buildReport(scene, "room.json", s, ctx);
     QVERIFY(all.renders);
-    QCOMPARE(all.renders->samplesPerPixel, 16.0);
+    QCOMPARE(all.renders->passes, 16);
     const double at16 = all.renders->estimatedRelmse;
     QVERIFY(at16 > 0);
     // A third of the error at 16 passes takes about 48: stopped at a check, below the maximum.
@@ -689,8 +689,8 @@ void TestReport::renderStopsAtItsErrorTarget() {
     s.renderRelmse = at16 / 3;
     const ReportData stopped = buildReport(scene, "room.json", s, ctx);
     QVERIFY(stopped.renders);
-    const double spp = stopped.renders->samplesPerPixel;
-    QVERIFY2(spp >= 24 && spp <= 128 && int(spp) % 8 == 0, qPrintable(QString::number(spp)));
+    const int passes = stopped.renders->passes;
+    QVERIFY2(passes >= 24 && passes <= 128 && passes % 8 == 0, qPrintable(QString::number(passes)));
     QVERIFY(stopped.renders->estimatedRelmse <= s.renderRelmse);
 }
 

@@ -158,6 +158,9 @@ void TestMainWindow::editingSession() {
     QTRY_VERIFY_WITH_TIMEOUT(w.convergingRender()->frame()->samplesPerPixel > firstSpp, kTimeout);
     QVERIFY(w.renderPanel()->figures()->text().contains("spp"));
     QVERIFY(w.findChild<QLabel*>("renderReason")->text().startsWith("auto: "));
+    // Once its pilots are done, auto says which methods carry the image and their time.
+    QTRY_VERIFY_WITH_TIMEOUT(w.findChild<QLabel*>("renderReason")->text().contains("carried by"), kTimeout);
+    QVERIFY(w.findChild<QLabel*>("renderReason")->text().contains("%"));
     {
         // The red wall on the left, the green one on the right (SPEC.md), in the render's view.
         const QImage shown = w.renderPanel()->view()->image();

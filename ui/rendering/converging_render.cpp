@@ -103,7 +103,13 @@ void ConvergingRender::relaunch() {
     }
     reason_.clear();
     inUse_ = choice_;
-    if (choice_ == "auto") {
+    if (choice_ == "auto" && lightLayers_) {
+        // One render per light group: auto's pilots for every layer would cost more than they
+        // find, so the rule auto was picks (README, "Per-light layers").
+        const AutoChoice rule = chooseAutoBackend(*scene_);
+        inUse_ = rule.backend;
+        reason_ = "per-light layers, by its rule: " + rule.reason;
+    } else if (choice_ == "auto") {
         std::string candidates;
         for (const std::string& name : autoCandidates(*scene_)) candidates += (candidates.empty() ? "" : ", ") + name;
         reason_ = "measuring " + candidates + " in short pilots";

@@ -93,12 +93,11 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
     return m;
 }
 
-std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods) {
-    const size_t k = methods.size();
-    if (k == 0) return {};
-    const size_t n = methods[0]->mean.size();
-    // The tiles' brightness, for the floor: the mean over methods, and a small share of the
-    // image's so that black tiles do not divide by zero.
+namespace {
+// The tiles' squared brightness: the mean over methods, plus a small share of the image's so that
+// black tiles do not divide by zero.
+std::vector<double> squaredBrightness(std::span<const TileStats* const> methods) {
+    const size_t k = methods.size(), n = methods[0]->mean.size();
     std::vector<double> bright(n, 0.0);
     double image = 0;
     for (size_t t = 0; t < n; ++t) {
@@ -107,6 +106,26 @@ std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats
     }
     const double epsilon = 1e-4 * image * image + 1e-30;
     for (double& b : bright) b = b * b + epsilon;
+    return bright;
+}
+}  // namespace
+
+std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
+                                   const std::vector<std::vector<double>>& errors) {
+    std::vector<double> r(methods.size(), 0.0);
+    if (methods.empty()) return r;
+    const std::vector<double> bright = squaredBrightness(methods);
+    for (size_t i = 0; i < methods.size(); ++i)
+        for (size_t t = 0; t < bright.size(); ++t) r[i] += errors[i][t] / bright[t] / double(bright.size());
+    return r;
+}
+
+std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods,
+                                                       std::span<const double> floors) {
+    const size_t k = methods.size();
+    if (k == 0) return {};
+    const size_t n = methods[0]->mean.size();
+    const std::vector<double> bright = squaredBrightness(methods);
 
     std::vector<std::vector<double>> e(k, std::vector<double>(n, 0.0));
     std::vector<double> distances;
@@ -124,7 +143,7 @@ std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats
         }
         double mean = 0;
         for (double r : relative) mean += r / double(n);
-        const double floor = 0.25 * lowerMedian(relative);
+        const double floor = std::max(0.25 * lowerMedian(relative), floors.empty() ? 0.0 : floors[i]);
         for (size_t t = 0; t < n; ++t)
             e[i][t] = std::max(std::sqrt(relative[t] * mean), floor) * bright[t];
     }

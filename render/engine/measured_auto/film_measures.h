@@ -66,7 +66,14 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
 // tile's variance is pooled over its pixels, but a method whose errors correlate across pixels
 // (a VPL set, a chain) has few degrees of freedom there, so that a tile's estimate may be ten
 // times too small, and a tile where a method has seen nothing yet must not claim it is exact.
-std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods);
+// `floors`, where given: per method, a further floor on its error relative to the tiles'
+// brightness (the image-wide error the replicas' spread shows, where a replica's own halves may
+// understate it).
+std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods,
+                                                       std::span<const double> floors = {});
+// Per method, its mean error over the tiles relative to their brightness (as the floors above).
+std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
+                                   const std::vector<std::vector<double>>& errors);
 
 // Per method and tile, the weights of an inverse-error combination: (1 / e_k) / sum_j (1 / e_j);
 // equal where every error is 0. Weights under `minimum` are made 0 and the rest renormalised: a

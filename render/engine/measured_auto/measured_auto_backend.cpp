@@ -21,16 +21,18 @@ namespace {
 
 // A method whose weight in a tile would be under this takes none there (film_measures.h).
 constexpr double kMinimumWeight = 0.1;
+// A method whose cost is under this share of the costliest method's is left out of the image.
+constexpr double kMinimumShare = 0.35;
 
 struct Method {
     std::string name;
     std::array<std::unique_ptr<Backend>, 2> replicas;
-    // A Markov chain's error falls faster than 1 / time while it settles (mir on a closed sphere
-    // of albedo 0.9: 5 times from 15 to 30 s), so two chains of half the length are worse than
-    // one: after its pilot a chain method's passes go to replica 0, replica 1 stopping at two
-    // passes (its halves, for the measures). The other methods' passes are independent: both
-    // replicas take every pass.
-    bool chain = false;
+    // After its pilot a method's passes go to replica 0, replica 1 stopping at two passes (its
+    // halves, for the measures): two runs of half the length are worse than one. A Markov
+    // chain's error falls faster than 1 / time while it settles (mir on a closed sphere of
+    // albedo 0.9: 5 times from 15 to 30 s), and so does a Sobol sequence's on smooth integrands
+    // (path on the Cornell box and the office floor was 1.1 to 1.26 times its error alone with
+    // two replicas at 92% of the time).
     std::array<int, 2> passes{0, 0};
     double cost = 0;  // seconds or rays of its passes, both replicas
     int piloted() const { return std::min(passes[0], passes[1]); }
@@ -60,7 +62,6 @@ public:
         for (size_t k = 0; k < auto_.candidates.size(); ++k) {
             Method m;
             m.name = auto_.candidates[k];
-            m.chain = findBackend(m.name)->share == ProcessShare::OwnChains;
             for (int r = 0; r < 2; ++r) {
                 each.seed = hashSeed(settings.seed, 0x6175746f + k, uint64_t(r));
                 m.replicas[size_t(r)] = findBackend(m.name)->make(scene, each);
@@ -71,12 +72,13 @@ public:
 
     void prepare(TaskContext& ctx) override {
         for (Method& m : methods_)
-            for (auto& r : m.replicas)
-                if (!ctx.isCancelled()) r->prepare(ctx);
-        if (!methods_.empty()) {
-            const Film& f = methods_[0].replicas[0]->film();
-            film_ = std::make_unique<Film>(f.width(), f.height());
-        }
+            for (auto& r : m.replicas) {
+                if (ctx.isCancelled()) return;  // the film stays empty (0 x 0)
+                r->prepare(ctx);
+            }
+        if (ctx.isCancelled() || methods_.empty()) return;
+        const Film& f = methods_[0].replicas[0]->film();
+        film_ = std::make_unique<Film>(f.width(), f.height());
     }
 
     void renderPass(TaskContext& ctx, int) override {
@@ -84,7 +86,7 @@ public:
         Method& m = methods_[k];
         const double before = costNow();
         for (int r = 0; r < 2; ++r) {
-            if (r == 1 && m.chain && pilotDone(k) && m.passes[1] >= 2) continue;
+            if (r == 1 && pilotDone(k) && m.passes[1] >= 2) continue;
             m.replicas[size_t(r)]->renderPass(ctx, m.passes[size_t(r)]);
             if (ctx.isCancelled()) return;
             ++m.passes[size_t(r)];
@@ -140,14 +142,24 @@ private:
         for (size_t k = 0; k < methods_.size(); ++k)
             if (!pilotDone(k) && (best == methods_.size() || methods_[k].cost < methods_[best].cost)) best = k;
         if (best < methods_.size()) return best;
-        return size_t(std::ranges::max_element(measures_.gain) - measures_.gain.begin());
+        // A method out of the image (under kMinimumShare of the costliest's cost) adds nothing
+        // until it is in: its gain counts by how far along it is, so that a pilot's optimistic
+        // estimate does not draw time that the image then leaves out (the office floor: cmlt took
+        // 14% of the time, path kept the image).
+        const double costliest = std::ranges::max_element(methods_, {}, &Method::cost)->cost;
+        double bestGain = -1;
+        for (size_t k = 0; k < methods_.size(); ++k) {
+            const double g = measures_.gain[k] * std::min(1.0, methods_[k].cost / (kMinimumShare * costliest));
+            if (g > bestGain) bestGain = g, best = k;
+        }
+        return best;
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the
     // combination of those with two (film_measures.h).
     void measure() const {
         dirty_ = false;
-        if (!film_) return;
+        if (film_->width() == 0) return;  // not prepared
         const TileGrid tiles(film_->width(), film_->height(), auto_.tileSize);
         std::vector<size_t> measured;
         std::vector<std::array<ReplicaImages, 2>> images;
@@ -164,16 +176,18 @@ private:
             measured.push_back(k);
         }
         if (measured.empty()) return;
-        allocate(measured, m, tiles);
-        *film_ = combine(measured, m, images, tiles);
+        // Each method's image-wide error from the spread of its replicas (pair), relative.
+        std::vector<const TileStats*> pair;
+        for (const MethodMeasure& x : m) pair.push_back(&x.pair);
+        const auto pairErrors = expectedSquaredErrors(pair);
+        allocate(measured, m, pairErrors, tiles);
+        *film_ = combine(measured, m, relativeErrors(pair, pairErrors), images, tiles);
     }
 
     // The gains, from the pairs of replicas; once every method has its pilot passes, they decide.
-    void allocate(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m, const TileGrid& tiles) const {
+    void allocate(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
+                  const std::vector<std::vector<double>>& errors, const TileGrid& tiles) const {
         if (!allPiloted()) return;
-        std::vector<const TileStats*> pair;
-        for (const MethodMeasure& x : m) pair.push_back(&x.pair);
-        const auto errors = expectedSquaredErrors(pair);
         const auto weights = inverseErrorWeights(errors);
         std::vector<double> tileMean(size_t(tiles.count()), 0.0), costs;
         for (size_t i = 0; i < m.size(); ++i) {
@@ -203,52 +217,73 @@ private:
     }
 
     // Replica r's images weighed by what replica 1 - r shows (cross-fitting): the film's halves.
+    // pairRelative: each method's image-wide relative error from its replicas' spread, which
+    // floors what a replica's halves show (halves of a chain, or of one VPL set a pass, share
+    // errors across the whole image that no tile sees); one number from the whole image, so it
+    // hardly depends on any value it weighs.
     Film combine(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
-                 const std::vector<std::array<ReplicaImages, 2>>& images, const TileGrid& tiles) const {
+                 const std::vector<double>& pairRelative, const std::vector<std::array<ReplicaImages, 2>>& images,
+                 const TileGrid& tiles) const {
         Film out(tiles.width, tiles.height);
         std::array<std::vector<std::vector<double>>, 2> weights;
-        // The methods with two passes in each replica, less those far behind (whose error
-        // estimate is the least sure of all: it rests on their pilot).
+        std::array<double, 2> halfSamples{0, 0};
+        // The methods with two passes in each replica whose cost is at least kMinimumShare of the
+        // costliest's. Under the allocation a method that stays near its pilot's cost adds
+        // little, and its error estimate is the least sure of all: a short replica 1 makes a
+        // chain's long replica 0 look worse than it is (its error falls faster than 1 /
+        // samples), so a partner with a pilot's few passes of one VPL set would take a weight
+        // its noise does not earn (the door: mir with 5% of the time took 17% of the image next
+        // to cmlt, 1.8 times cmlt's error alone).
+        double costliest = 0;
+        for (size_t k : measured) costliest = std::max(costliest, methods_[k].cost);
         std::vector<size_t> in;
         for (size_t i = 0; i < m.size(); ++i)
-            if (m[i].hasReplicaStats() && !farBehind(measured[i])) in.push_back(i);
+            if (m[i].hasReplicaStats() && methods_[measured[i]].cost >= kMinimumShare * costliest) in.push_back(i);
         // Before any method has two passes (the first frames): every method with one, equally.
         const bool equal = in.empty();
         if (equal)
             for (size_t i = 0; i < m.size(); ++i) in.push_back(i);
         for (int r = 0; r < 2; ++r) {
-            // Replica 1 - r's errors, as replica r's would be with its own samples (error as
-            // 1 / samples; a chain's replica 0 runs longer than its replica 1).
-            std::vector<TileStats> scaled;
+            // Replica 1 - r's errors (its means tested against each other on its own scale),
+            // then as replica r's would be with its own samples: error as 1 / samples, replica 0
+            // running longer than replica 1. The pair's error is that of the mean
+            // by samples, n / n_s times replica s's: half of it floors replica s's.
+            const int s = 1 - r;
             std::vector<const TileStats*> other;
             std::vector<const Image*> values;
+            std::vector<double> floors;
             double sum = 0;
             for (size_t i : in) {
                 const size_t k = measured[i];
-                scaled.push_back(m[i].replica[size_t(1 - r)]);
-                const double ratio = samples(k, 1 - r) / samples(k, r);
-                for (double& v : scaled.back().variance) v *= ratio;
-                for (double& v : scaled.back().meanVariance) v *= ratio;
+                other.push_back(&m[i].replica[size_t(s)]);
                 values.push_back(&images[i][size_t(r)].image);
-                // The film's halves are weighed by their samples. A chain's short replica is
-                // worth less than its samples (its error has not yet fallen as a settled chain's
-                // does), so it counts by the share it has of the long one's: fixed by the sample
-                // counts, not by the values, so the image stays consistent.
-                sum += samples(k, r) * (methods_[k].chain ? std::min(1.0, samples(k, r) / samples(k, 1 - r)) : 1.0);
+                floors.push_back(0.5 * pairRelative[i] * (samples(k, 0) + samples(k, 1)) / samples(k, s));
+                // The film's halves are weighed by their samples. A short replica is worth less
+                // than its samples (its error has not fallen as a long run's does), so it counts
+                // by the share it has of the long one's: fixed by the sample counts, not by the
+                // values, so the image stays consistent.
+                sum += samples(k, r) * std::min(1.0, samples(k, r) / samples(k, s));
             }
-            for (const TileStats& x : scaled) other.push_back(&x);
-            weights[size_t(r)] = equal ? std::vector(in.size(), std::vector(size_t(tiles.count()), 1.0 / double(in.size())))
-                                       : inverseErrorWeights(expectedSquaredErrors(other), kMinimumWeight);
+            if (equal) {
+                weights[size_t(r)].assign(in.size(), std::vector(size_t(tiles.count()), 1.0 / double(in.size())));
+            } else {
+                auto errors = expectedSquaredErrors(other, floors);
+                for (size_t j = 0; j < in.size(); ++j)
+                    for (double& e : errors[j]) e *= samples(measured[in[j]], s) / samples(measured[in[j]], r);
+                weights[size_t(r)] = inverseErrorWeights(errors, kMinimumWeight);
+            }
             const Image half = combineImages(values, weights[size_t(r)], tiles);
             for (int y = 0; y < half.height; ++y)
                 for (int x = 0; x < half.width; ++x) out.addSample(r, x, y, half.at(x, y) * float(sum));
             out.finishPass(r, sum);
+            halfSamples[size_t(r)] = sum;
         }
+        // A method's weight in the image: over the tiles, and over the halves by their samples.
         if (measures_.taken)
             for (size_t j = 0; j < in.size(); ++j) {
                 double w = 0;
                 for (int r = 0; r < 2; ++r)
-                    for (double x : weights[size_t(r)][j]) w += 0.5 * x / double(tiles.count());
+                    for (double x : weights[size_t(r)][j]) w += halfSamples[size_t(r)] / (halfSamples[0] + halfSamples[1]) * x / tiles.count();
                 measures_.imageWeight[measured[in[j]]] = w;
             }
         return out;
@@ -305,7 +340,7 @@ private:
     std::vector<Method> methods_;
     mutable Measures measures_;
     mutable bool dirty_ = true;
-    mutable std::unique_ptr<Film> film_;
+    mutable std::unique_ptr<Film> film_ = std::make_unique<Film>(0, 0);
 };
 
 }  // namespace
