@@ -121,8 +121,10 @@ std::string formatValue(double v) {
     return std::isfinite(v) ? formatNumber(v, 6) : "nan";
 }
 
-// One backend for the budget. The driver publishes a frame after every pass (publishSeconds 0:
-// copying the film is cheap next to a pass); this thread wakes every few milliseconds and measures
+// One backend for the budget. The driver publishes a frame after a pass when a third of the gap
+// between log-spaced samples has passed since the last (a frame's cost is render time, and a
+// frame of auto's combination costs more than a film's copy); this thread wakes every few
+// milliseconds and measures
 // the newest frame once it has passed the next log-spaced time. Each sample carries the frame's
 // own time, so a slow pass shows as a sparser curve, never as a wrong time.
 std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const SceneSnapshot& scene,
@@ -145,6 +147,7 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
         rays.resetCounts();  // the passes' rays only, as the time is the passes' only
         PassLoopOptions everyPass;
         everyPass.publishSeconds = 0;
+        everyPass.publishShare = (std::pow(10.0, 1.0 / b.perDecade) - 1) / 3;
         runPasses(*backend, run.backend, settings, ctx, &latest, everyPass);
     });
 

@@ -3,8 +3,10 @@
 
 usage: auto_table.py --time T AUTO_DIR SINGLES_DIR [SINGLES_DIR ...]
 
-AUTO_DIR/NAME-sS/ holds one `lucerna render ... --time T --seed S` of auto: compare.txt (the output
-of `lucerna compare auto.exr REF`) and render.log (its stderr, whose last line is auto's summary).
+AUTO_DIR/NAME-sS/ holds either one `lucerna bench` whose entries include `auto` beside the single
+methods (bench.csv; the backends ran in turns in that one run: the firm comparison), or one
+`lucerna render ... --time T --seed S` of auto: compare.txt (the output of `lucerna compare
+auto.exr REF`) and render.log (its stderr, whose last line is auto's summary).
 SINGLES_DIR/NAME-sS/bench.csv is one `lucerna bench` of the single methods (and `auto-rule`, the
 backend the rule auto was picks, or its name in auto.txt beside it) on the same scene and seed, run for at least T seconds; each
 method's relmse is its last row at or before T (1.02 T + 0.5 s). Prints a Markdown table: per
@@ -25,19 +27,27 @@ def main(argv):
     rows, per_scene = [], {}
     for d in sorted(os.listdir(auto_dir)):
         m = re.match(r"(.*)-s(\d+)$", d)
+        if not m:
+            continue
         cmp_path = os.path.join(auto_dir, d, "compare.txt")
-        if not m or not os.path.exists(cmp_path):
+        own = os.path.join(auto_dir, d, "bench.csv")
+        bench = own if os.path.exists(own) else next(
+            (os.path.join(s, d, "bench.csv") for s in singles_dirs if os.path.exists(os.path.join(s, d, "bench.csv"))), None)
+        if not bench:
             continue
-        relmse = re.search(r"^relmse: (\S+)", open(cmp_path).read(), re.M)
-        bench = next((os.path.join(s, d, "bench.csv") for s in singles_dirs
-                      if os.path.exists(os.path.join(s, d, "bench.csv"))), None)
-        if not relmse or not bench:
-            continue
-        auto = float(relmse.group(1))
         single = {}
         for r in csv.DictReader(open(bench)):
             if float(r["seconds"]) <= 1.02 * t + 0.5:
                 single[r["backend"]] = float(r["relmse"])
+        if "auto" in single:
+            auto = single.pop("auto")
+        elif os.path.exists(cmp_path):
+            relmse = re.search(r"^relmse: (\S+)", open(cmp_path).read(), re.M)
+            if not relmse:
+                continue
+            auto = float(relmse.group(1))
+        else:
+            continue
         rule = single.pop("auto-rule", None)
         # Or the rule's pick named in auto.txt beside the CSV (`lucerna info`'s last line before
         # auto measured: "auto backend: NAME: reason").
@@ -46,7 +56,8 @@ def main(argv):
             picked = re.match(r"auto backend: (\w+):", open(info).read())
             if picked and picked.group(1) in single:
                 rule = single[picked.group(1)]
-        log = open(os.path.join(auto_dir, d, "render.log")).read().strip().splitlines()
+        log_path = os.path.join(auto_dir, d, "render.log")
+        log = open(log_path).read().strip().splitlines() if os.path.exists(log_path) else []
         time = re.search(r"time: (.*?); image", log[-1] if log else "")
         rows.append((m.group(1), m.group(2), auto, single, rule, time.group(1) if time else ""))
         s = per_scene.setdefault(m.group(1), {"auto": [], "single": {}, "rule": []})

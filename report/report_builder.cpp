@@ -141,7 +141,7 @@ ReportRenders renderCamera(const SceneSnapshot& scene, const ReportSettings& set
     bool reached = false;
     if (settings.renderRelmse > 0) {
         options.afterPass = [&](int passes) {
-            if (passes >= 16 && passes % 8 == 0) reached = backend->film().estimatedRelmse() <= settings.renderRelmse;
+            if (passes >= 16 && passes % 8 == 0) reached = backend->estimatedRelmse() <= settings.renderRelmse;
         };
         options.finishEarly = [&] { return reached; };
     }

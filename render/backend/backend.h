@@ -50,6 +50,10 @@ public:
     // Returns without finishing the pass when ctx is cancelled (the film is then abandoned).
     virtual void renderPass(TaskContext& ctx, int pass) = 0;
     virtual const Film& film() const = 0;
+    // The relmse of film()'s image estimated without a reference: by default from the film's two
+    // halves (Film::estimatedRelmse); a backend whose halves are not two equal estimates (auto)
+    // says its own.
+    virtual double estimatedRelmse() const { return film().estimatedRelmse(); }
     // Figures for the EXR header and the convergence panel (name -> value).
     virtual std::map<std::string, std::string> diagnostics() const { return {}; }
     // Adds named channels of the film's combined image to `image` (per-light layers), if any.

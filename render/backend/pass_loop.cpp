@@ -19,7 +19,7 @@ RenderFrame makeRenderFrame(const Backend& backend, std::string_view backendName
     f.seconds = seconds;
     f.samplesPerPixel = backend.film().samplesPerPixel();
     f.passes = passes;
-    f.estimatedRelmse = backend.film().estimatedRelmse();
+    f.estimatedRelmse = backend.estimatedRelmse();
     f.image.attributes["lucerna:backend"] = std::string(backendName);
     f.image.attributes["lucerna:spp"] = formatNumber(f.samplesPerPixel);
     f.image.attributes["lucerna:seconds"] = formatNumber(f.seconds);
@@ -82,7 +82,8 @@ RenderFrame runPasses(Backend& backend, std::string_view backendName, const Rend
             ctx.setProgress(std::min(1.0, fraction));
             if (countedPasses && budget > 0 && t >= budget) break;  // both given: whichever comes first
         }
-        if (latest && (passes <= options.eagerPasses || t - lastPublish >= options.publishSeconds)) {
+        if (latest && (passes <= options.eagerPasses ||
+                       t - lastPublish >= std::max(options.publishSeconds, options.publishShare * t))) {
             latest->publish(std::make_shared<const RenderFrame>(makeFrame(passes)));
             lastPublish = t;
         }

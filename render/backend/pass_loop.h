@@ -29,6 +29,9 @@ struct PassLoopOptions {
     // A frame goes to `latest` after each of the first eagerPasses passes (the picture changes
     // most then), then at most every publishSeconds (0: after every pass), and at the end.
     double publishSeconds = 0.5;
+    // ... and at least this share of the render time so far since the last frame (log-spaced
+    // frames, for lucerna bench's log-spaced samples: a frame's cost is render time).
+    double publishShare = 0;
     int eagerPasses = 0;
     // Until cancelled, whatever spp and seconds say (the window's converging render); no progress
     // is set and no final frame is made.

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <thread>
 
@@ -96,13 +98,30 @@ public:
         if (allPiloted() && (!measures_.taken || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost)) measure();
     }
 
+    // Frames may come after every pass (lucerna bench): between measures the film is composed
+    // again with the last measure's weights, which costs a frame of the methods in the image.
     const Film& film() const override {
-        if (dirty_) measure();
+        if (dirty_) combination_.methods.empty() ? measure() : compose();
         return *film_;
     }
 
+    // The film's halves are not two equal estimates (half 1 is the short replicas'), so the
+    // estimate is the methods' in the image: each one's long replica's own estimate (from its
+    // halves), by its weight in the image squared. One method carrying the image reads as that
+    // method alone would.
+    double estimatedRelmse() const override {
+        const Film& f = film();
+        if (!measures_.taken) return f.estimatedRelmse();
+        double e = 0;
+        for (size_t k : combination_.methods) {
+            const double w = measures_.imageWeight[k];
+            if (w > 0) e += w * w * methods_[k].replicas[0]->film().estimatedRelmse();
+        }
+        return e;
+    }
+
     std::map<std::string, std::string> diagnostics() const override {
-        if (dirty_) measure();
+        film();
         return {{"auto", summary()}, {"auto_methods", carrying()}, {"auto_time", shares(false)}, {"auto_weight", shares(true)}};
     }
 
@@ -181,7 +200,8 @@ private:
         for (const MethodMeasure& x : m) pair.push_back(&x.pair);
         const auto pairErrors = expectedSquaredErrors(pair);
         allocate(measured, m, pairErrors, tiles);
-        *film_ = combine(measured, m, relativeErrors(pair, pairErrors), images, tiles);
+        weigh(measured, m, relativeErrors(pair, pairErrors), tiles);
+        compose();
     }
 
     // The gains, from the pairs of replicas; once every method has its pilot passes, they decide.
@@ -216,17 +236,14 @@ private:
         }
     }
 
-    // Replica r's images weighed by what replica 1 - r shows (cross-fitting): the film's halves.
+    // The weights of replica r's images from what replica 1 - r shows (cross-fitting).
     // pairRelative: each method's image-wide relative error from its replicas' spread, which
     // floors what a replica's halves show (halves of a chain, or of one VPL set a pass, share
     // errors across the whole image that no tile sees); one number from the whole image, so it
     // hardly depends on any value it weighs.
-    Film combine(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
-                 const std::vector<double>& pairRelative, const std::vector<std::array<ReplicaImages, 2>>& images,
-                 const TileGrid& tiles) const {
-        Film out(tiles.width, tiles.height);
-        std::array<std::vector<std::vector<double>>, 2> weights;
-        std::array<double, 2> halfSamples{0, 0};
+    void weigh(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
+               const std::vector<double>& pairRelative, const TileGrid& tiles) const {
+        Combination c;
         // The methods with two passes in each replica whose cost is at least kMinimumShare of the
         // costliest's. Under the allocation a method that stays near its pilot's cost adds
         // little, and its error estimate is the least sure of all: a short replica 1 makes a
@@ -243,50 +260,70 @@ private:
         const bool equal = in.empty();
         if (equal)
             for (size_t i = 0; i < m.size(); ++i) in.push_back(i);
+        for (size_t i : in) c.methods.push_back(measured[i]);
         for (int r = 0; r < 2; ++r) {
+            auto& w = c.weights[size_t(r)];
+            if (equal) {
+                w.assign(in.size(), std::vector(size_t(tiles.count()), 1.0 / double(in.size())));
+                continue;
+            }
             // Replica 1 - r's errors (its means tested against each other on its own scale),
             // then as replica r's would be with its own samples: error as 1 / samples, replica 0
-            // running longer than replica 1. The pair's error is that of the mean
-            // by samples, n / n_s times replica s's: half of it floors replica s's.
+            // running longer than replica 1. The pair's error is that of the mean by samples,
+            // n / n_s times replica s's: half of it floors replica s's.
             const int s = 1 - r;
             std::vector<const TileStats*> other;
-            std::vector<const Image*> values;
             std::vector<double> floors;
-            double sum = 0;
             for (size_t i : in) {
                 const size_t k = measured[i];
                 other.push_back(&m[i].replica[size_t(s)]);
-                values.push_back(&images[i][size_t(r)].image);
                 floors.push_back(0.5 * pairRelative[i] * (samples(k, 0) + samples(k, 1)) / samples(k, s));
-                // The film's halves are weighed by their samples. A short replica is worth less
-                // than its samples (its error has not fallen as a long run's does), so it counts
-                // by the share it has of the long one's: fixed by the sample counts, not by the
-                // values, so the image stays consistent.
-                sum += samples(k, r) * std::min(1.0, samples(k, r) / samples(k, s));
             }
-            if (equal) {
-                weights[size_t(r)].assign(in.size(), std::vector(size_t(tiles.count()), 1.0 / double(in.size())));
-            } else {
-                auto errors = expectedSquaredErrors(other, floors);
-                for (size_t j = 0; j < in.size(); ++j)
-                    for (double& e : errors[j]) e *= samples(measured[in[j]], s) / samples(measured[in[j]], r);
-                weights[size_t(r)] = inverseErrorWeights(errors, kMinimumWeight);
-            }
-            const Image half = combineImages(values, weights[size_t(r)], tiles);
-            for (int y = 0; y < half.height; ++y)
-                for (int x = 0; x < half.width; ++x) out.addSample(r, x, y, half.at(x, y) * float(sum));
-            out.finishPass(r, sum);
-            halfSamples[size_t(r)] = sum;
+            auto errors = expectedSquaredErrors(other, floors);
+            for (size_t j = 0; j < in.size(); ++j)
+                for (double& e : errors[j]) e *= samples(measured[in[j]], s) / samples(measured[in[j]], r);
+            w = inverseErrorWeights(errors, kMinimumWeight);
         }
+        const std::array<double, 2> sums{halfSamples(c.methods, 0), halfSamples(c.methods, 1)};
         // A method's weight in the image: over the tiles, and over the halves by their samples.
         if (measures_.taken)
             for (size_t j = 0; j < in.size(); ++j) {
                 double w = 0;
                 for (int r = 0; r < 2; ++r)
-                    for (double x : weights[size_t(r)][j]) w += halfSamples[size_t(r)] / (halfSamples[0] + halfSamples[1]) * x / tiles.count();
-                measures_.imageWeight[measured[in[j]]] = w;
+                    for (double x : c.weights[size_t(r)][j]) w += sums[size_t(r)] / (sums[0] + sums[1]) * x / tiles.count();
+                measures_.imageWeight[c.methods[j]] = w;
             }
-        return out;
+        combination_ = std::move(c);
+    }
+
+    // The film's half r is replica r's images combined by the weights of the last measure, with
+    // the replicas' samples now.
+    void compose() const {
+        dirty_ = false;
+        const TileGrid tiles(film_->width(), film_->height(), auto_.tileSize);
+        Film out(tiles.width, tiles.height);
+        for (int r = 0; r < 2; ++r) {
+            std::vector<Image> images;
+            for (size_t k : combination_.methods) images.push_back(methods_[k].replicas[size_t(r)]->film().image());
+            std::vector<const Image*> values;
+            for (const Image& i : images) values.push_back(&i);
+            const double sum = halfSamples(combination_.methods, r);
+            const Image half = combineImages(values, combination_.weights[size_t(r)], tiles);
+            for (int y = 0; y < half.height; ++y)
+                for (int x = 0; x < half.width; ++x) out.addSample(r, x, y, half.at(x, y) * float(sum));
+            out.finishPass(r, sum);
+        }
+        *film_ = std::move(out);
+    }
+
+    // The samples half r of the film counts: each method's replica r's. A short replica is worth
+    // less than its samples (its error has not fallen as a long run's does), so it counts by the
+    // share it has of the long one's: fixed by the sample counts, not by the values, so the
+    // image stays consistent.
+    double halfSamples(const std::vector<size_t>& methods, int r) const {
+        double sum = 0;
+        for (size_t k : methods) sum += samples(k, r) * std::min(1.0, samples(k, r) / samples(k, 1 - r));
+        return sum;
     }
 
     // "time: mir 81%, path 9%, ...; image: mir 0.86, ...; efficiency (best 1): ..."
@@ -339,6 +376,13 @@ private:
     RayRecorder* recorder_ = nullptr;
     std::vector<Method> methods_;
     mutable Measures measures_;
+    // The last measure's combination: the methods in the image and their weights per tile for
+    // each half (replica).
+    struct Combination {
+        std::vector<size_t> methods;
+        std::array<std::vector<std::vector<double>>, 2> weights;
+    };
+    mutable Combination combination_;
     mutable bool dirty_ = true;
     mutable std::unique_ptr<Film> film_ = std::make_unique<Film>(0, 0);
 };
