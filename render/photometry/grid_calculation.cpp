@@ -95,11 +95,7 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     for (size_t i = 0; i < points.size(); ++i) start.litThroughGlass += throughGlass[i] && !start.insideGeometry[i];
     GridSettings settings = requested;
     if (settings.autoMethod && !settings.processes) {
-        GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
-        if (choice.finished) {
-            choice.finished->autoMeasured = choice.measured;
-            return std::move(*choice.finished);
-        }
+        const GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
         settings.method = choice.method;
         start.autoMeasured = choice.measured;
         if (settings.timeLimitSeconds > 0)

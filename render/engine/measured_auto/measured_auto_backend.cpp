@@ -164,13 +164,15 @@ private:
         // until it is in: its gain counts by how far along it is, so that a pilot's optimistic
         // estimate does not draw time that the image then leaves out (the office floor: cmlt took
         // 14% of the time, path kept the image).
+        if (!measures_.taken || measures_.gain.size() != methods_.size()) return 0;  // not measured (not prepared)
         const double costliest = std::ranges::max_element(methods_, {}, &Method::cost)->cost;
         double bestGain = -1;
         for (size_t k = 0; k < methods_.size(); ++k) {
-            const double g = measures_.gain[k] * std::min(1.0, methods_[k].cost / (kMinimumShare * costliest));
-            if (g > bestGain) bestGain = g, best = k;
+            const double share = costliest > 0 ? std::min(1.0, methods_[k].cost / (kMinimumShare * costliest)) : 1.0;
+            const double g = measures_.gain[k] * share;
+            if (std::isfinite(g) && g > bestGain) bestGain = g, best = k;
         }
-        return best;
+        return best < methods_.size() ? best : 0;
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the
