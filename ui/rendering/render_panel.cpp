@@ -89,8 +89,8 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     if (methods == attributes.end() || time == attributes.end() || methods->second.empty()) return {};
     std::vector<std::pair<double, QString>> shares;
     for (const QString& entry : QString::fromStdString(time->second).split(' ', Qt::SkipEmptyParts)) {
-        const QStringList kv = entry.split('=');
-        if (kv.size() == 2) shares.emplace_back(kv[1].toDouble(), kv[0]);
+        const QStringList nameAndShare = entry.split('=');
+        if (nameAndShare.size() == 2) shares.emplace_back(nameAndShare[1].toDouble(), nameAndShare[0]);
     }
     std::ranges::sort(shares, std::greater<>());
     QStringList parts;
