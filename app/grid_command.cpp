@@ -1,4 +1,6 @@
 #include "app/grid_command.h"
+
+#include "app/grid_placement.h"
 #include "app/cli_support.h"
 #include "app/grid_task_area.h"
 
@@ -152,14 +154,7 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
     const ActivityRequirement* requirement = nullptr;
     std::optional<TaskArea> taskArea;
     if (!g.taskArea.empty()) {
-        const auto area = std::find_if(scene->taskAreas.begin(), scene->taskAreas.end(),
-                                       [&](const TaskArea& a) { return a.grid.name == g.taskArea; });
-        if (area == scene->taskAreas.end()) {
-            std::string names;
-            for (const TaskArea& a : scene->taskAreas) names += (names.empty() ? "" : ", ") + a.grid.name;
-            throw UsageError("--task-area: the scene has no task area '" + g.taskArea + "'" +
-                             (names.empty() ? std::string(" (it has none)") : " (it has: " + names + ")"));
-        }
+        const TaskArea* area = &taskAreaOf(*scene, g.taskArea);
         const auto spacing = g.grid.spacingMeters;
         g.grid = area->grid;
         if (spacing) g.grid.spacingMeters = spacing;
@@ -167,18 +162,7 @@ GridSetup setUpGrid(const std::vector<std::string>& args, const ProcessGroup* pr
         taskArea = *area;
         taskArea->grid.spacingMeters = g.grid.spacingMeters;
     }
-    if (g.workPlaneM) {
-        const SceneBounds b = sceneBounds(*scene);
-        const std::string name = g.grid.name;
-        const auto spacing = g.grid.spacingMeters;
-        try {
-            g.grid = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, *g.workPlaneM, g.borderM);
-        } catch (const std::invalid_argument& e) {
-            throw UsageError(std::string("grid: ") + e.what());
-        }
-        g.grid.name = name;
-        g.grid.spacingMeters = spacing;
-    }
+    if (g.workPlaneM) g.grid = workPlaneGridOf(*scene, *g.workPlaneM, g.borderM, g.grid.spacingMeters, g.grid.name);
     GridLayout layout;
     try {
         layout = layoutGrid(g.grid, scene->metersPerUnit);

@@ -90,7 +90,8 @@ void printSun(const Scene& scene, const Light& l) {
     const SunSpec s = l.sun.value_or(SunSpec());
     const V3d toward = sunDirection(scene, l);
     const double elevation = std::asin(std::clamp(toward.y, -1.0, 1.0)) * 180 / std::numbers::pi;
-    std::cout << "sun, " << formatLumens(s.illuminanceLux) << " lx direct normal, disc " << s.angularDiameterDeg
+    const Daylight d = resolveDaylight(scene);  // a perez sky gives the illuminance
+    std::cout << "sun, " << formatLumens(d.sun ? d.sun->illuminanceLux : s.illuminanceLux) << " lx direct normal, disc " << s.angularDiameterDeg
               << " deg, elevation " << std::fixed << std::setprecision(2) << elevation << std::defaultfloat
               << std::setprecision(6) << " deg" << (s.time ? " at " + *s.time + " local time" : std::string())
               << (toward.y > 0 ? "" : " (below the horizon: no light)") << "\n";
@@ -101,10 +102,16 @@ void printSky(const Scene& scene) {
     const Daylight d = resolveDaylight(scene);
     const char* model = scene.sky->model == SkyModelType::Uniform       ? "uniform"
                         : scene.sky->model == SkyModelType::CieOvercast ? "cie_overcast"
-                                                                        : "cie_general";
-    const double eh = d.sky->zenithLuminance * relativeHorizontalIlluminance(d.sky->sky, d.sky->towardSun);
+                        : scene.sky->model == SkyModelType::CieGeneral  ? "cie_general"
+                                                                        : "perez";
+    const double eh = d.sky->horizontalIlluminance;
     std::cout << "sky: " << model;
     if (scene.sky->model == SkyModelType::CieGeneral) std::cout << " type " << scene.sky->cieType;
+    if (const auto& p = d.sky->perez)
+        std::cout << " (Ib " << formatLumens(scene.sky->directNormalIrradiance) << " W/m2, Ed "
+                  << formatLumens(scene.sky->diffuseHorizontalIrradiance) << " W/m2: clearness " << std::setprecision(3)
+                  << p->clearness() << ", brightness " << p->brightness() << std::setprecision(6) << ", category "
+                  << p->category() << ")";
     std::cout << ", zenith luminance " << formatLumens(d.sky->zenithLuminance) << " cd/m2, horizontal illuminance "
               << formatLumens(eh) << " lx, ground " << formatLumens(d.sky->groundLuminance) << " cd/m2\n";
 }

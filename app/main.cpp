@@ -1,5 +1,6 @@
 // lucerna: the application, or one of the headless commands of SPEC.md section 2.
 
+#include "app/annual_command.h"
 #include "app/bench_command.h"
 #include "app/cli.h"
 #include "app/glare_command.h"
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
         const std::vector<std::string> rest(argv + 2, argv + argc);
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
             command == "bench" || command == "grid" || command == "import" || command == "standards" ||
-            command == "glare") {
+            command == "glare" || command == "annual") {
             // Started by mpirun: render and grid share their work among the ranks (MPI set up
             // before Qt, finalised after it).
             std::unique_ptr<lucerna::ProcessGroup> processes;
@@ -51,6 +52,7 @@ int main(int argc, char** argv) {
             if (command == "import") return lucerna::cli::importModelCommand(rest);
             if (command == "standards") return lucerna::cli::standards(rest);
             if (command == "glare") return lucerna::cli::glare(rest);
+            if (command == "annual") return lucerna::cli::annual(rest);
             return lucerna::cli::info(rest);
         }
         // The PDF report makes its own QGuiApplication (its fonts need one) once its input is good.

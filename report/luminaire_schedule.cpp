@@ -55,7 +55,8 @@ std::string sunLine(const Scene& scene, const Light& l) {
     const SunSpec s = l.sun.value_or(SunSpec());
     const V3d toward = sunDirection(scene, l);
     const double elevation = std::asin(std::clamp(toward.y, -1.0, 1.0)) * 180 / std::numbers::pi;
-    std::string line = "Sun: " + formatNumber(s.illuminanceLux, 6) + " lx direct normal, elevation " +
+    const Daylight d = resolveDaylight(scene);  // a perez sky gives the illuminance
+    std::string line = "Sun: " + formatNumber(d.sun ? d.sun->illuminanceLux : s.illuminanceLux, 6) + " lx direct normal, elevation " +
                        fixedNumber(elevation, 1) + " deg";
     if (s.time) line += ", " + *s.time + " local time";
     if (scene.site)
@@ -69,9 +70,11 @@ std::string skyLine(const Scene& scene) {
     const Sky& sky = *scene.sky;
     std::string line = sky.model == SkyModelType::Uniform       ? "Sky: uniform"
                        : sky.model == SkyModelType::CieOvercast ? "Sky: CIE overcast"
-                                                                : "Sky: CIE general sky type " + std::to_string(sky.cieType);
+                       : sky.model == SkyModelType::CieGeneral  ? "Sky: CIE general sky type " + std::to_string(sky.cieType)
+                                                                : "Sky: Perez all-weather, Ib " + formatNumber(sky.directNormalIrradiance, 4) +
+                                                                      " W/m\u00b2, Ed " + formatNumber(sky.diffuseHorizontalIrradiance, 4) + " W/m\u00b2";
     if (d.sky) {
-        const double eh = d.sky->zenithLuminance * relativeHorizontalIlluminance(d.sky->sky, d.sky->towardSun);
+        const double eh = d.sky->horizontalIlluminance;
         line += ", horizontal illuminance " + formatNumber(eh, 6) + " lx, zenith luminance " +
                 formatNumber(d.sky->zenithLuminance, 6) + " cd/m\u00b2";
     }

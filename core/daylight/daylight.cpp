@@ -31,6 +31,20 @@ double ResolvedSky::luminance(const V3d& w, const SkyDistribution& relative) con
     return w.y > 0 ? zenithLuminance * relative(w) : groundLuminance;
 }
 
+namespace {
+
+// SPEC.md section 6: the hour's model gives the sky's luminance and the sun's illuminance.
+void resolvePerez(ResolvedSky& s, std::optional<ResolvedSun>& sun) {
+    const PerezInputs in{s.sky.directNormalIrradiance, s.sky.diffuseHorizontalIrradiance, s.sky.dewPointC.value_or(11.0),
+                         s.dayOfYear, s.towardSun};
+    s.perez.emplace(in);
+    s.horizontalIlluminance = s.perez->diffuseIlluminance();
+    s.zenithLuminance = s.perez->luminanceScale() / s.distribution().normalisation();
+    if (sun) sun->illuminanceLux = s.perez->directNormalIlluminance();
+}
+
+}  // namespace
+
 V3d sunDirection(const Scene& scene, const Light& sun) {
     if (!sun.sun || !sun.sun->time) return (-sun.direction).normalized();
     if (!scene.site) throw SceneError("sun " + sun.name + ": a sun placed by time needs the scene's site");
@@ -60,16 +74,24 @@ Daylight resolveDaylight(const Scene& scene) {
     if (scene.sky) {
         ResolvedSky s;
         s.sky = *scene.sky;
-        // A cie_general sky without a sun switched on keeps the sun's place (the reader insists
-        // on a sun); other skies do not read it.
+        // A cie_general or perez sky without a sun switched on keeps the sun's place (the reader
+        // insists on a sun); other skies do not read it.
         s.towardSun = d.sun ? d.sun->towardSun : V3d(0, 1, 0);
-        if (!d.sun)
-            for (const Light& l : scene.lights)
-                if (l.type == LightType::Sun) s.towardSun = sunDirection(scene, l);
-        // Eh / Lz once: it gives Lz from a horizontal illuminance and the ground's light.
-        const double relativeEh = relativeHorizontalIlluminance(s.sky, s.towardSun);
-        s.zenithLuminance = s.sky.zenithLuminance.value_or(relativeEh > 0 ? s.sky.horizontalIlluminance.value_or(0.0) / relativeEh : 0.0);
-        double eh = s.zenithLuminance * relativeEh;
+        for (const Light& l : scene.lights) {
+            if (l.type != LightType::Sun) continue;
+            if (!d.sun) s.towardSun = sunDirection(scene, l);
+            if (l.sun && l.sun->time)
+                if (const auto t = parseLocalTime(*l.sun->time)) s.dayOfYear = dayOfYear(t->year, t->month, t->day);
+        }
+        if (s.sky.model == SkyModelType::Perez) {
+            resolvePerez(s, d.sun);
+        } else {
+            // Eh / Lz once: it gives Lz from a horizontal illuminance and the ground's light.
+            const double relativeEh = relativeHorizontalIlluminance(s.sky, s.towardSun);
+            s.zenithLuminance = s.sky.zenithLuminance.value_or(relativeEh > 0 ? s.sky.horizontalIlluminance.value_or(0.0) / relativeEh : 0.0);
+            s.horizontalIlluminance = s.zenithLuminance * relativeEh;
+        }
+        double eh = s.horizontalIlluminance;
         if (d.sun && d.sun->aboveHorizon) eh += d.sun->illuminanceLux * d.sun->towardSun.y;
         s.groundLuminance = s.sky.groundReflectance * eh / kPiD;
         d.sky = s;

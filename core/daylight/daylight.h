@@ -30,14 +30,20 @@ struct ResolvedSun {
 
 struct ResolvedSky {
     Sky sky;
-    V3d towardSun{0, 1, 0};      // what cie_general skies are relative to
+    V3d towardSun{0, 1, 0};      // what cie_general and perez skies are relative to
+    int dayOfYear = 1;           // perez: of the sun's time
     double zenithLuminance = 0;  // cd/m^2
     double groundLuminance = 0;  // cd/m^2, below the horizon
+    double horizontalIlluminance = 0;  // lx, of the sky alone on an open plane
+    // perez: the hour's model (its clearness, brightness, Evd and Evn); nothing otherwise.
+    std::optional<PerezSky> perez;
 
+    // This sky's L / Lz.
+    SkyDistribution distribution() const { return SkyDistribution(sky, towardSun, dayOfYear); }
     // Luminance (cd/m^2) seen looking along the unit world direction w: the sky above the
     // horizon, the ground below (at w.y == 0: the ground). With `relative`, this sky's
-    // SkyDistribution made once by a caller that evaluates many directions.
-    double luminance(const V3d& w) const { return luminance(w, SkyDistribution(sky, towardSun)); }
+    // distribution() made once by a caller that evaluates many directions.
+    double luminance(const V3d& w) const { return luminance(w, distribution()); }
     double luminance(const V3d& w, const SkyDistribution& relative) const;
     // Radiance per channel, W sr^-1 m^-2 (white).
     double radiance(const V3d& w) const { return luminance(w) / kLumensPerWatt; }

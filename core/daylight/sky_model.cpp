@@ -40,7 +40,16 @@ double angleBetween(const V3d& a, const V3d& b) { return std::acos(std::clamp(a.
 
 }  // namespace
 
-SkyDistribution::SkyDistribution(const Sky& sky, const V3d& towardSun) : model_(sky.model), towardSun_(towardSun) {
+SkyDistribution::SkyDistribution(const Sky& sky, const V3d& towardSun, int dayOfYear)
+    : model_(sky.model), towardSun_(towardSun) {
+    if (model_ == SkyModelType::Perez) {
+        const PerezInputs in{sky.directNormalIrradiance, sky.diffuseHorizontalIrradiance, sky.dewPointC.value_or(11.0),
+                             dayOfYear, towardSun};
+        perez_.emplace(in, 0);
+        const double zenith = perez_->relativeLuminance(V3d(0, 1, 0));
+        normalisation_ = zenith > 0 ? 1.0 / zenith : 1.0;
+        return;
+    }
     if (model_ != SkyModelType::CieGeneral) return;
     cie_ = cieSkyParameters(sky.cieType);
     const double zs = std::min(std::acos(std::clamp(towardSun.y, -1.0, 1.0)), kPiD / 2);
@@ -54,6 +63,7 @@ double SkyDistribution::operator()(const V3d& w) const {
     case SkyModelType::CieOvercast: return (1.0 + 2.0 * w.y) / 3.0;
     case SkyModelType::CieGeneral:
         return indicatrix(cie_, angleBetween(w, towardSun_)) * gradation(cie_, w.y) * normalisation_;
+    case SkyModelType::Perez: return perez_->relativeLuminance(w) * normalisation_;
     }
     return 0.0;
 }
@@ -65,12 +75,15 @@ double relativeSkyLuminance(const Sky& sky, const V3d& w, const V3d& towardSun) 
 double relativeHorizontalIlluminance(const Sky& sky, const V3d& towardSun, int resolution) {
     if (sky.model == SkyModelType::Uniform) return kPiD;
     if (sky.model == SkyModelType::CieOvercast) return 7.0 * kPiD / 9.0;
+    return relativeHorizontalIlluminance(SkyDistribution(sky, towardSun), resolution);
+}
+
+double relativeHorizontalIlluminance(const SkyDistribution& relative, int resolution) {
     // Midpoint rule in (Z, azimuth); the integrand is smooth except near the sun, where the
     // indicatrix has a kink of bounded slope.
     const int nz = std::max(resolution, 8), nphi = 4 * nz;
     const double dz = (kPiD / 2) / nz;
     const double dphi = 2 * kPiD / nphi;
-    const SkyDistribution relative(sky, towardSun);
     double sum = 0;
     for (int i = 0; i < nz; ++i) {
         const double z = (i + 0.5) * dz, sz = std::sin(z), cz = std::cos(z);

@@ -13,9 +13,14 @@ namespace lucerna {
 
 SunSpec SceneParser::parseSun(const Value& v, const std::string& place, Light& l) const {
     SunSpec s;
+    // A perez sky gives the sun's illuminance; checkDaylight() judges its absence.
     const std::string lux = member(place, "illuminance");
-    s.illuminanceLux = number(required(v, place, "illuminance"), lux);
-    if (!(s.illuminanceLux >= 0)) fail(lux, "must be at least 0, got " + shortestNumber(s.illuminanceLux));
+    if (const Value* e = v.find("illuminance")) {
+        s.illuminanceLux = number(*e, lux);
+        if (!(s.illuminanceLux >= 0)) fail(lux, "must be at least 0, got " + shortestNumber(s.illuminanceLux));
+    } else {
+        s.illuminanceGiven = false;
+    }
     if (const Value* d = v.find("angular_diameter")) {
         s.angularDiameterDeg = numberIn(*d, member(place, "angular_diameter"), 0, false, 5, false, " degrees");
         s.angularDiameterGiven = true;
@@ -57,14 +62,15 @@ Site SceneParser::parseSite(const Value& v, const std::string& place) const {
 }
 
 Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
-    checkKeys(v, place, {"model", "cie_type", "zenith_luminance", "horizontal_illuminance", "ground_reflectance"});
     Sky s;
     const std::string modelPlace = member(place, "model");
     const std::string model = text(required(v, place, "model"), modelPlace);
     if (model == "uniform") s.model = SkyModelType::Uniform;
     else if (model == "cie_overcast") s.model = SkyModelType::CieOvercast;
     else if (model == "cie_general") s.model = SkyModelType::CieGeneral;
-    else fail(modelPlace, "unknown sky model " + quote(model) + " (expected uniform, cie_overcast or cie_general)");
+    else if (model == "perez") return parsePerezSky(v, place);
+    else fail(modelPlace, "unknown sky model " + quote(model) + " (expected uniform, cie_overcast, cie_general or perez)");
+    checkKeys(v, place, {"model", "cie_type", "zenith_luminance", "horizontal_illuminance", "ground_reflectance"});
     const Value* type = v.find("cie_type");
     if (s.model == SkyModelType::CieGeneral) {
         const std::string here = member(place, "cie_type");
@@ -90,6 +96,27 @@ Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
     return s;
 }
 
+Sky SceneParser::parsePerezSky(const Value& v, const std::string& place) const {
+    checkKeys(v, place, {"model", "direct_normal_irradiance", "diffuse_horizontal_irradiance", "dew_point", "ground_reflectance"});
+    Sky s;
+    s.model = SkyModelType::Perez;
+    const auto irradiance = [&](const char* key) {
+        const std::string here = member(place, key);
+        const double value = number(required(v, place, key), here);
+        if (!(value >= 0) || !std::isfinite(value))
+            fail(here, "must be a finite number at least 0 (W/m^2), got " + shortestNumber(value));
+        return value;
+    };
+    s.directNormalIrradiance = irradiance("direct_normal_irradiance");
+    s.diffuseHorizontalIrradiance = irradiance("diffuse_horizontal_irradiance");
+    if (const Value* d = v.find("dew_point")) s.dewPointC = numberIn(*d, member(place, "dew_point"), -90, false, 60, false, " C");
+    if (const Value* g = v.find("ground_reflectance")) {
+        s.groundReflectance = numberIn(*g, member(place, "ground_reflectance"), 0, false, 1, false);
+        s.groundReflectanceGiven = true;
+    }
+    return s;
+}
+
 void SceneParser::checkDaylight(const Scene& scene) const {
     int suns = 0;
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -98,7 +125,14 @@ void SceneParser::checkDaylight(const Scene& scene) const {
         if (++suns > 1) fail(item("lights", i), "a scene has at most one sun");
         if (l.sun && l.sun->time && !scene.site)
             fail(member(item("lights", i), "time"), "a sun placed by time needs the scene's \"site\"");
+        const bool perez = scene.sky && scene.sky->model == SkyModelType::Perez;
+        if (l.sun && perez && (l.sun->illuminanceGiven || !l.sun->time))
+            fail(item("lights", i), "beside a perez sky the sun has a \"time\" and no \"illuminance\" (the sky's model gives it)");
+        if (l.sun && !perez && !l.sun->illuminanceGiven)
+            fail(member(item("lights", i), "illuminance"), "required key is missing");
     }
+    if (scene.sky && scene.sky->model == SkyModelType::Perez && suns == 0)
+        fail("sky.model", "a perez sky needs a light of type \"sun\" with a \"time\"");
     if (scene.sky && scene.sky->model == SkyModelType::CieGeneral && suns == 0)
         fail("sky.model", "a cie_general sky needs a light of type \"sun\"");
 }

@@ -150,6 +150,8 @@ struct SunSpec {
     bool angularDiameterGiven = false;// written back only if it was there
     std::optional<std::string> time;  // "YYYY-MM-DDTHH:MM", local time at the site's utc_offset
     std::optional<Rgbd> colour;       // normalised to luminance 1; white by default
+    // False only beside a perez sky (SPEC.md section 6), whose model gives the illuminance.
+    bool illuminanceGiven = true;
 
     bool operator==(const SunSpec&) const = default;
 };
@@ -199,7 +201,7 @@ struct Site {
     bool operator==(const Site&) const = default;
 };
 
-enum class SkyModelType { Uniform, CieOvercast, CieGeneral };
+enum class SkyModelType { Uniform, CieOvercast, CieGeneral, Perez };
 
 // The sky of SPEC.md section 5: an emitter at infinity, the ground below the horizon.
 struct Sky {
@@ -207,6 +209,10 @@ struct Sky {
     int cieType = 0;                                 // CieGeneral: 1..15
     std::optional<double> zenithLuminance;           // cd/m^2; exactly one of the two is set
     std::optional<double> horizontalIlluminance;     // lx, of the sky alone on an open plane
+    // Perez (SPEC.md section 6): one hour of a weather file, instead of the two quantities above.
+    double directNormalIrradiance = 0;               // Ib, W/m^2
+    double diffuseHorizontalIrradiance = 0;          // Ed, W/m^2
+    std::optional<double> dewPointC;                 // Td; 11 when absent
     double groundReflectance = 0.2;                  // in [0, 1]
     bool groundReflectanceGiven = false;             // written back only if it was there
 

@@ -82,6 +82,7 @@ private:
     SunSpec parseSun(const Value& v, const std::string& place, Light& l) const;
     Site parseSite(const Value& v, const std::string& place) const;
     Sky parseSky(const Value& v, const std::string& place) const;
+    Sky parsePerezSky(const Value& v, const std::string& place) const;
     // The rules that span keys: one sun at most, a local time needs a site, a CIE general sky a sun.
     void checkDaylight(const Scene& scene) const;
 

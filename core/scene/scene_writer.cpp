@@ -168,7 +168,8 @@ std::string light(const Light& l) {
     }
     case LightType::Sun: {
         const SunSpec s = l.sun.value_or(SunSpec());
-        out += "\"sun\", \"illuminance\": " + num(s.illuminanceLux);
+        out += "\"sun\"";
+        if (s.illuminanceGiven) out += ", \"illuminance\": " + num(s.illuminanceLux);
         if (s.angularDiameterGiven || s.angularDiameterDeg != SunSpec().angularDiameterDeg)
             out += ", \"angular_diameter\": " + num(s.angularDiameterDeg);
         if (s.time) out += ", \"time\": " + str(*s.time);
@@ -198,8 +199,14 @@ std::string sky(const Sky& s) {
     case SkyModelType::Uniform: out += "\"uniform\""; break;
     case SkyModelType::CieOvercast: out += "\"cie_overcast\""; break;
     case SkyModelType::CieGeneral: out += "\"cie_general\", \"cie_type\": " + std::to_string(s.cieType); break;
+    case SkyModelType::Perez:
+        out += "\"perez\", \"direct_normal_irradiance\": " + num(s.directNormalIrradiance) +
+               ", \"diffuse_horizontal_irradiance\": " + num(s.diffuseHorizontalIrradiance);
+        if (s.dewPointC) out += ", \"dew_point\": " + num(*s.dewPointC);
+        break;
     }
-    if (s.zenithLuminance) out += ", \"zenith_luminance\": " + num(*s.zenithLuminance);
+    if (s.model == SkyModelType::Perez) {}
+    else if (s.zenithLuminance) out += ", \"zenith_luminance\": " + num(*s.zenithLuminance);
     else out += ", \"horizontal_illuminance\": " + num(s.horizontalIlluminance.value_or(0.0));
     if (s.groundReflectanceGiven || s.groundReflectance != Sky().groundReflectance)
         out += ", \"ground_reflectance\": " + num(s.groundReflectance);

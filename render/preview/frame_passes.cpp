@@ -163,14 +163,21 @@ void setBackgroundUniforms(const Preview::State& st, const gl::Program& p, bool 
     V3f towardSun(0, 1, 0);
     CieSkyParameters cie{0, -1, 0, -1, 0};
     if (const auto& sky = st.daylight.sky) {
-        model = sky->sky.model == SkyModelType::Uniform ? 1 : sky->sky.model == SkyModelType::CieOvercast ? 2 : 3;
+        model = sky->sky.model == SkyModelType::Uniform ? 1 : sky->sky.model == SkyModelType::CieOvercast ? 2
+              : sky->sky.model == SkyModelType::CieGeneral ? 3 : 4;
         zenith = float(sky->zenithLuminance / kLumensPerWatt);
         ground = float(sky->groundLuminance / kLumensPerWatt);
         towardSun = toFloat(sky->towardSun);
-        if (model == 3) {
-            cie = cieSkyParameters(sky->sky.cieType);
-            normalisation = float(SkyDistribution(sky->sky, sky->towardSun).normalisation());
+        const SkyDistribution relative = sky->distribution();
+        if (model == 3) cie = cieSkyParameters(sky->sky.cieType);
+        if (model == 4) {
+            const PerezSky& perez = *relative.perez();
+            const PerezCoefficients& k = perez.coefficients();
+            cie = {k.a, k.b, k.c, k.d, k.e};
+            towardSun = toFloat(perez.modelTowardSun());
+            if (perez.isUniform()) model = 1;
         }
+        normalisation = float(relative.normalisation());
     }
     setInt(p, "skyModel", model);
     setFloat(p, "skyZenithRadiance", zenith);

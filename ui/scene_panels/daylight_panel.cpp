@@ -36,7 +36,7 @@ constexpr int kNoSite = 0;
 constexpr int kCustomSite = int(kSiteCities.size()) + 1;
 
 // The sky model list, in this order.
-constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3;
+constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3, kPerez = 4;
 // The sky quantity list.
 constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
 
@@ -215,7 +215,8 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     QVBoxLayout* sky = group(tr("Sky"));
     skyModel_ = new QComboBox(this);
     skyModel_->setObjectName("daylightSkyModel");
-    skyModel_->addItems({tr("None"), tr("Uniform"), tr("CIE overcast (traditional)"), tr("CIE general")});
+    skyModel_->addItems({tr("None"), tr("Uniform"), tr("CIE overcast (traditional)"), tr("CIE general"),
+                         tr("Perez (a weather file's hour)")});
     connect(skyModel_, &QComboBox::activated, this, &DaylightPanel::chooseSkyModel);
     row(sky, tr("Model"), {skyModel_});
     cieType_ = new QSpinBox(this);
@@ -305,13 +306,16 @@ void DaylightPanel::refreshSun() {
     const int i = sunIndex(scene);
     const Light* sun = i < 0 ? nullptr : &scene.lights[size_t(i)];
     sunPresent_->setChecked(sun != nullptr);
-    for (QWidget* w : {static_cast<QWidget*>(sunIlluminance_), static_cast<QWidget*>(sunDiameter_)})
-        w->setEnabled(sun != nullptr);
+    // A perez sky's model gives the sun's illuminance (SPEC.md section 6).
+    const bool perez = scene.sky && scene.sky->model == SkyModelType::Perez;
+    sunIlluminance_->setEnabled(sun != nullptr && !perez);
+    sunDiameter_->setEnabled(sun != nullptr);
     // The clock places the sun only at a site; without a sun it is the time a new sun gets.
     for (QWidget* w : {static_cast<QWidget*>(date_), static_cast<QWidget*>(timeSlider_), static_cast<QWidget*>(time_)})
         w->setEnabled(scene.site.has_value());
     if (!sun || !sun->sun) return;
-    sunIlluminance_->setValue(sun->sun->illuminanceLux);
+    const Daylight daylight = perez ? resolveDaylight(scene) : Daylight();
+    sunIlluminance_->setValue(daylight.sun ? daylight.sun->illuminanceLux : sun->sun->illuminanceLux);
     sunDiameter_->setValue(sun->sun->angularDiameterDeg);
     if (sun->sun->time)
         if (const auto t = parseLocalTime(*sun->sun->time)) {
@@ -335,7 +339,14 @@ void DaylightPanel::refreshSky() {
     }
     skyModel_->setCurrentIndex(sky->model == SkyModelType::Uniform       ? kUniform
                                : sky->model == SkyModelType::CieOvercast ? kCieOvercast
-                                                                         : kCieGeneral);
+                               : sky->model == SkyModelType::CieGeneral  ? kCieGeneral
+                                                                         : kPerez);
+    groundReflectance_->setValue(sky->groundReflectance);
+    // A perez sky's quantity comes from its hour's irradiances.
+    const bool perez = sky->model == SkyModelType::Perez;
+    skyQuantity_->setEnabled(!perez);
+    skyValue_->setEnabled(!perez);
+    if (perez) return;
     if (general) {
         cieType_->setValue(sky->cieType);
         if (sky->cieType >= 1 && sky->cieType <= 15) cieTypeName_->setText(tr(kCieSkyNames[sky->cieType - 1]));
@@ -344,7 +355,6 @@ void DaylightPanel::refreshSky() {
     skyQuantity_->setCurrentIndex(zenith ? kZenithLuminance : kHorizontalIlluminance);
     skyValue_->setSuffix(zenith ? QStringLiteral(" cd/m²") : QStringLiteral(" lx"));
     skyValue_->setValue(zenith ? *sky->zenithLuminance : sky->horizontalIlluminance.value_or(0.0));
-    groundReflectance_->setValue(sky->groundReflectance);
 }
 
 void DaylightPanel::showSunPosition() {
@@ -380,7 +390,14 @@ void DaylightPanel::showSunPosition() {
         horizontalIlluminance_->setText(i < 0 ? QString() : tr("Eh %1 from the sun (no sky)").arg(lux(sunEh)));
         return;
     }
-    const double skyEh = skyHorizontalIlluminance(*scene.sky, towardSun(scene));
+    double skyEh = 0;
+    if (scene.sky->model == SkyModelType::Perez) {  // the hour's model gives both
+        const Daylight d = resolveDaylight(scene);
+        skyEh = d.sky->horizontalIlluminance;
+        sunEh = d.sun && d.sun->aboveHorizon ? d.sun->illuminanceLux * d.sun->towardSun.y : 0;
+    } else {
+        skyEh = skyHorizontalIlluminance(*scene.sky, towardSun(scene));
+    }
     horizontalIlluminance_->setText(
         tr("Eh %1: sun %2, sky %3").arg(lux(sunEh + skyEh), lux(sunEh), lux(skyEh)));
 }
@@ -458,6 +475,8 @@ void DaylightPanel::setSunPresent(bool present) {
     } else if (!present && i >= 0) {
         if (scene.sky && scene.sky->model == SkyModelType::CieGeneral)
             return refuse(tr("A CIE general sky is shaped by the sun: choose another sky model before removing the sun."));
+        if (scene.sky && scene.sky->model == SkyModelType::Perez)
+            return refuse(tr("A Perez sky needs its hour's sun: choose another sky model before removing the sun."));
         doc_->undoStack()->push(new DeleteLightCommand(doc_, i));
     }
 }
@@ -511,6 +530,13 @@ void DaylightPanel::chooseSkyModel(int item) {
     }
     if (item == kCieGeneral && sunIndex(scene) < 0)
         return refuse(tr("A CIE general sky is shaped by the sun: add the sun first."));
+    // Not yet in the panel: choosing a weather file's hour here, and leaving one for another model
+    // (the sun would need an illuminance of its own).
+    if ((item == kPerez) != (scene.sky && scene.sky->model == SkyModelType::Perez)) {
+        refreshSky();
+        return refuse(item == kPerez ? tr("A Perez sky is a weather file's hour: lucerna annual --export-hour writes that scene.")
+                                     : tr("This sky is a weather file's hour; open a scene with another sky to change the model."));
+    }
     Sky sky = scene.sky ? *scene.sky : lastSky_.value_or(defaultSky());
     const int remembered = sky.cieType;
     sky.model = item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast

@@ -26,7 +26,7 @@ std::optional<EnvironmentLight> EnvironmentLight::fromDaylight(const Daylight& d
     }
     if (daylight.sky) {
         env.sky_ = daylight.sky;
-        env.skyRelative_.emplace(daylight.sky->sky, daylight.sky->towardSun);
+        env.skyRelative_.emplace(daylight.sky->distribution());
         // Each cell's weight is its mean luminance over 4 x 4 points: positive wherever the sky
         // or the ground is, so that every direction that carries light can be sampled.
         constexpr int kSub = 4;
