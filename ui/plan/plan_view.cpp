@@ -140,7 +140,9 @@ void PlanView::setSelectedLight(int index) {
     update();
 }
 
-void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result) {
+void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result,
+                             const QString& unit) {
+    gridUnit_ = unit;
     grid_ = grid;
     layout_ = layout;
     result_ = std::move(result);
@@ -194,7 +196,7 @@ std::optional<Legend> PlanView::gridLegend() const {
     if (!result_ || result_->lux.empty() || layout_.points.size() != result_->lux.size()) return std::nullopt;
     const V3d axis = projection_ == Projection::Top ? V3d(0, 1, 0) : projection_ == Projection::Front ? V3d(0, 0, 1) : V3d(1, 0, 0);
     if (std::abs(grid_.normal().dot(axis)) < 0.9) return std::nullopt;  // the grid is not on a plane of this view
-    return gridScale_.legend(tr("lx"));
+    return gridScale_.legend(gridUnit_.isEmpty() ? tr("lx") : gridUnit_);
 }
 
 bool PlanView::gridOutOfDate() const {

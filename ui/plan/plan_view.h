@@ -75,7 +75,10 @@ public:
     // room's outline; it also draws the scene's rooms.
     RoomDrawing* roomDrawing() const { return roomDrawing_; }
     // The calculation grid to draw (its rectangle, layout and newest result; null: none).
-    void setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result);
+    // `unit` labels the legend: the values may be another quantity than lux (the Annual dock's
+    // metrics per point, in result->lux).
+    void setGridResult(const CalculationGrid& grid, const GridLayout& layout, std::shared_ptr<const GridResult> result,
+                       const QString& unit = QString());
 
     // Snapping of moved lights: a step in metres, 0 for none.
     double snapMeters() const;
@@ -159,6 +162,7 @@ private:
     std::shared_ptr<const GridResult> result_;
     SceneSnapshot resultScene_;  // the scene when the result arrived
     PlanScale gridScale_;        // the result's legend and iso-lux levels
+    QString gridUnit_;           // the legend's unit; empty: lx
 
     PlanInteraction* interaction_;  // the mouse and keys (a child)
     TaskAreaDrawing* taskAreaDrawing_;  // the task area tool (a child; sees the mouse first)

@@ -3,6 +3,7 @@
 #include "core/resources.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
+#include "ui/calculation/annual_panel.h"
 #include "ui/calculation/grid_panel.h"
 #include "ui/calculation/report_export.h"
 #include "ui/compare/compare_view.h"
@@ -147,6 +148,9 @@ void MainWindow::createDocks() {
     gridPanel_ = new GridPanel(doc_.get(), gate_, this);
     gridPanel_->setObjectName("gridPanel");
     tabifyDockWidget(renderDock, dock(gridPanel_, tr("Calculation grid"), "gridDock", Qt::RightDockWidgetArea, true));
+    annualPanel_ = new AnnualPanel(doc_.get(), gate_, this);
+    annualPanel_->setObjectName("annualPanel");
+    tabifyDockWidget(renderDock, dock(annualPanel_, tr("Annual daylight"), "annualDock", Qt::RightDockWidgetArea, true));
     renderDock->raise();
     renderDock_ = renderDock;
     outlinerDock_ = outlinerDock;
@@ -192,6 +196,12 @@ void MainWindow::createDocks() {
     // The plan shows the newest calculation grid on its plane.
     connect(gridPanel_, &GridPanel::resultChanged, this,
             [this] { plan_->setGridResult(gridPanel_->grid(), gridPanel_->layout(), gridPanel_->result()); });
+    // Or the Annual dock's metric per point, whichever was computed or chosen last.
+    connect(annualPanel_, &AnnualPanel::resultChanged, this, [this] {
+        plan_->setGridResult(annualPanel_->grid(), annualPanel_->layout(), annualPanel_->planValues(), annualPanel_->planUnit());
+    });
+    annualPanel_->setFileQuestion(
+        [this] { return dialogs_->open(tr("Weather file"), tr("EnergyPlus weather files (*.epw *.EPW);;All files (*)")); });
     // Calculation grids drawn in the viewport.
     connect(gridPanel_, &GridPanel::drawRequested, this, [this] { viewport_->setTool(Viewport::Tool::GridRectangle); });
     connect(viewport_, &Viewport::gridRectangleDrawn, this, [this](const V3d& a, const V3d& n, const V3d& b) {

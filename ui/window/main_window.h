@@ -36,6 +36,7 @@ class FileDialogs;
 class LayoutState;
 class ConvergingRender;
 class GridPanel;
+class AnnualPanel;
 class LightProperties;
 class LivePreview;
 class Outliner;
@@ -114,6 +115,7 @@ public:
     ViewArea* viewArea() const { return viewArea_; }
     CameraPanel* cameraPanel() const { return cameraPanel_; }
     DaylightPanel* daylightPanel() const { return daylightPanel_; }
+    AnnualPanel* annualPanel() const { return annualPanel_; }
     ReportExport* reportExport() const { return report_.get(); }
     TaskAreaActions* taskAreaActions() const { return taskAreas_.get(); }
     RoomActions* roomActions() const { return rooms_.get(); }
@@ -149,6 +151,7 @@ private:
     ViewArea* viewArea_ = nullptr;  // the viewport or the plan view
     CameraPanel* cameraPanel_ = nullptr;
     DaylightPanel* daylightPanel_ = nullptr;
+    AnnualPanel* annualPanel_ = nullptr;
     RenderPanel* renderPanel_ = nullptr;
     Outliner* outliner_ = nullptr;
     LightProperties* properties_ = nullptr;
