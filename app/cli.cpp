@@ -405,7 +405,7 @@ void printUsage() {
                  "  lucerna glare --table FILE.ies|FILE.ldt [--lumens LM] [--luminous-area W,L]\n"
                  "                the luminaire's UGR table by the tabular method (CIE 190's layout)\n"
                  "  lucerna report SCENE.json -o OUT.pdf [--method M] [--error F] [--seed N] [--samples N]\n"
-                 "                 [--time SECONDS] [--spp N] [--render-error F] [--threads N]\n"
+                 "                 [--time SECONDS] [--spp N] [--render-error F] [--threads N] [--weather FILE.epw]\n"
                  "                 the lighting design report: room, schedule, luminaire data sheets, task areas\n"
                  "                 (plan, figures, checks, UGR), renders and method; the grids as `grid` computes them\n"
                  "  lucerna import MODEL -o SCENE.json [--meters-per-unit M] [--model-unit M] [--inline-meshes]\n"

@@ -1,6 +1,7 @@
 #include "app/report_command.h"
 #include "app/cli_support.h"
 
+#include "core/daylight/epw_file.h"
 #include "core/number_format.h"
 #include "core/scene/scene_io.h"
 #include "core/task_system.h"
@@ -53,6 +54,7 @@ ReportArgs parseReportArgs(const std::vector<std::string>& args) {
         else if (a == "--spp") r.settings.renderSpp = parseNumber<int>(a, value(), 1, 1 << 24);
         else if (a == "--render-error") r.settings.renderRelmse = parseNumber<double>(a, value(), 0.0, 1.0);
         else if (a == "--threads") r.threads = parseNumber<int>(a, value(), 1, 4096);
+        else if (a == "--weather") r.settings.weatherPath = value();
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (r.scene.empty()) r.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
@@ -76,8 +78,16 @@ int reportImpl(const std::vector<std::string>& args, int& argc, char** argv) {
         throw UsageError(e.what());
     }
     for (const std::string& w : loadReport.warnings) std::cerr << "warning: " << w << "\n";
+    ReportSettings settings = r.settings;
+    if (!settings.weatherPath.empty()) {
+        try {
+            settings.weather = readWeatherFile(settings.weatherPath);
+        } catch (const WeatherFileError& e) {
+            throw UsageError(e.what());
+        }
+    }
     try {
-        checkReportInput(*scene, r.settings);
+        checkReportInput(*scene, settings);
     } catch (const std::invalid_argument& e) {
         throw UsageError(e.what());
     }
@@ -86,7 +96,7 @@ int reportImpl(const std::vector<std::string>& args, int& argc, char** argv) {
     TaskSystem tasks(r.threads);
     std::optional<ReportData> data;
     auto job = tasks.submit([&](TaskContext& ctx) {
-        ReportData d = buildReport(scene, r.scene, r.settings, ctx);
+        ReportData d = buildReport(scene, r.scene, settings, ctx);
         if (!ctx.isCancelled()) data = std::move(d);
     });
     waitShowingProgress(*job, "report");

@@ -330,6 +330,7 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     addGlare(flow, data, a);
     addValues(flow, data, a);
     if (a.daylightFactor) addDaylightFactor(flow, data, a);
+    if (a.annual) addAnnualDaylight(flow, data, a);
 }
 
 void addPlan(PageFlow& flow, const ReportData& data, const AreaReport& a, PlanValues values, double maxHeight) {

@@ -1,5 +1,7 @@
 #include "report/report_builder.h"
 
+#include "render/annual/annual_calculation.h"
+
 #include "core/daylight/daylight.h"
 #include "core/photometry/glare.h"
 #include "core/scene/scene_geometry.h"
@@ -200,6 +202,27 @@ void checkReportInput(const Scene& scene, const ReportSettings& settings) {
     }
 }
 
+namespace {
+
+// SPEC.md section 6 on the area's own points, as `lucerna annual --task-area` computes them.
+AnnualReport computeAnnualReport(const Scene& scene, const AreaReport& r, const ReportSettings& settings, TaskContext& ctx) {
+    const AnnualResult year = computeAnnual(scene, r.layout.points, r.grid.normal(), *settings.weather, AnnualSettings(), ctx);
+    AnnualReport a;
+    if (year.cancelled) return a;
+    std::vector<uint8_t> counted(year.points);
+    for (size_t p = 0; p < counted.size(); ++p) counted[p] = !year.insideGeometry[p];
+    a.metrics = computeAnnualMetrics(year.hours, year.points, year.lux, year.directSunLux, settings.occupancy, counted);
+    a.daylightHours = year.daylightHours;
+    a.statisticalRelative = year.statisticalRelative;
+    a.discretisationRelative = year.discretisationRelative;
+    a.seconds = year.tracingSeconds + year.hoursSeconds;
+    for (const PointAnnualMetrics& p : a.metrics.points) a.da300Percent.push_back(100 * p.da300);
+    a.insideGeometry = year.insideGeometry;
+    return a;
+}
+
+}  // namespace
+
 ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath, const ReportSettings& settings,
                        TaskContext& ctx) {
     const auto start = std::chrono::steady_clock::now();
@@ -246,8 +269,8 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
     // render 2.
     const bool daylightFactor = settings.daylightFactor && analyseFeatures(*scene).hasDaylight();
     const double glareShare = settings.glare ? 0.5 : 0.0, dfShare = daylightFactor ? 1.0 : 0.0;
-    const double renderShare = settings.renders ? 2.0 : 0.0, zoneShare = 0.5;
-    double total = double(areas.size()) * (1 + glareShare + dfShare) + renderShare + double(data.roomSurfaces.size());
+    const double renderShare = settings.renders ? 2.0 : 0.0, zoneShare = 0.5, annualShare = settings.weather ? 1.0 : 0.0;
+    double total = double(areas.size()) * (1 + glareShare + dfShare + annualShare) + renderShare + double(data.roomSurfaces.size());
     for (const AreaReport& r : data.areas) total += (wantsCylindrical(r) ? 1.0 : 0.0) + (r.zones.empty() ? 0.0 : zoneShare);
     double done = 0;
     const auto stage = [&](double share) {
@@ -300,6 +323,11 @@ ReportData buildReport(const SceneSnapshot& scene, const std::string& scenePath,
             }
             if (ctx.isCancelled()) return data;
             r.daylightFactor = std::move(df);
+        }
+        if (settings.weather) {
+            auto s = stage(annualShare);
+            r.annual = computeAnnualReport(*scene, r, settings, s->context());
+            if (ctx.isCancelled()) return data;
         }
     }
     if (data.rooms) addRoomIlluminance(*data.rooms, data.roomSurfaces);

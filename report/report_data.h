@@ -4,7 +4,9 @@
 // printed, so that a test can read the PDF back against it.
 
 #include "core/photometry/calculation_grid.h"
+#include "core/daylight/annual_metrics.h"
 #include "core/daylight/daylight_provision.h"
+#include "core/daylight/epw_file.h"
 #include "core/photometry/glare.h"
 #include "core/image/image.h"
 #include "core/photometry/lighting_standards.h"
@@ -46,6 +48,21 @@ struct ReportSettings {
     // bars of about 3% (Ez) and 5% (walls, ceiling). README, "Reports".
     double cylindricalErrorFactor = 2.5;
     double roomSurfaceErrorFactor = 5;
+    // SPEC.md section 6: with a weather file, each area's year of daylight and its metrics
+    // (render/annual/annual_calculation.h), occupied from 8:00 to 18:00 unless given.
+    std::optional<WeatherFile> weather;
+    std::string weatherPath;      // as given, for the report's words
+    Occupancy occupancy;
+};
+
+// An area's year of daylight (ReportSettings::weather).
+struct AnnualReport {
+    AnnualMetrics metrics;
+    int daylightHours = 0;
+    double statisticalRelative = 0, discretisationRelative = 0;  // the stated 95% errors
+    double seconds = 0;
+    std::vector<double> da300Percent;     // per point, for the plan
+    std::vector<uint8_t> insideGeometry;  // per point
 };
 
 // One line of the luminaire schedule: the lights of one kind that are alike (same file, same
@@ -128,6 +145,7 @@ struct AreaReport {
     std::vector<RequirementCheck> checks;   // with an activity
     std::vector<ObserverGlare> glare;
     std::optional<DaylightFactorReport> daylightFactor;  // scenes with daylight
+    std::optional<AnnualReport> annual;                  // with a weather file
     // EN 12464-1:2021 (task_area_figures.h), as the requirement asks: the room box the area lies
     // in, Ez over the area, and its room's walls and ceiling (an index into
     // ReportData::roomSurfaces); the figures the checks were made on; the modelling ratio

@@ -23,6 +23,8 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& area
 // the daylight factor.
 void addPlan(PageFlow& flow, const ReportData& data, const AreaReport& area, PlanValues values, double maxHeight);
 void addDaylightFactor(PageFlow& flow, const ReportData& data, const AreaReport& area);
+// The area's year of daylight from the weather file (SPEC.md section 6).
+void addAnnualDaylight(PageFlow& flow, const ReportData& data, const AreaReport& area);
 // Ez, the walls and ceiling of its room and its zones, with the modelling ratio
 // (area_extras_section.cpp); nothing where none was computed.
 void addAreaExtras(PageFlow& flow, const ReportData& data, const AreaReport& area);

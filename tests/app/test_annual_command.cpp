@@ -6,6 +6,8 @@
 #include "csv_table.h"
 
 #include <QFile>
+#include <QProcess>
+#include <QStandardPaths>
 #include <QTemporaryDir>
 #include <QtTest>
 
@@ -27,6 +29,7 @@ private slots:
     void bundledOffice();
     void exportHour();
     void badInput();
+    void reportSection();
 };
 
 void TestAnnualCommand::bundledOffice() {
@@ -104,6 +107,27 @@ void TestAnnualCommand::badInput() {
     r = runLucerna({"annual", kOffice, "--weather", kWeather, "--task-area", "Nowhere"});
     QCOMPARE(r.exitCode, 2);
     QVERIFY(r.err.contains("Reference plane"));
+}
+
+void TestAnnualCommand::reportSection() {
+    // `lucerna report --weather`: the area's year in the PDF, with the section's figures.
+    if (QStandardPaths::findExecutable("pdftotext").isEmpty())
+        QFAIL("pdftotext (poppler-utils) is missing: packaging/install-deps.sh installs it");
+    QTemporaryDir dir;
+    const QString pdf = dir.filePath("office.pdf");
+    const Run r = runLucerna({"report", kOffice, "-o", pdf, "--weather", kWeather, "--spp", "2", "--error", "0.2"});
+    QVERIFY2(r.exitCode == 0, qPrintable(r.err));
+    QProcess p;
+    p.start("pdftotext", {pdf, "-"});
+    QVERIFY(p.waitForFinished(30000) && p.exitCode() == 0);
+    const QString text = QString::fromUtf8(p.readAllStandardOutput());
+    for (const char* words : {"Annual daylight: Reference plane", "Paris (synthetic)", "sDA300/50%", "ASE1000,250h",
+                              "UDI useful", "EN 17037 level", "Stated 95% error", "DA300 [%]"})
+        QVERIFY2(text.contains(words), words);
+    // A bad weather file: one line, exit 2, no PDF.
+    const Run bad = runLucerna({"report", kOffice, "-o", dir.filePath("x.pdf"), "--weather", kOffice});
+    QCOMPARE(bad.exitCode, 2);
+    QVERIFY(!QFile::exists(dir.filePath("x.pdf")));
 }
 
 QTEST_GUILESS_MAIN(TestAnnualCommand)

@@ -171,7 +171,8 @@ void AnnualPanel::compute() {
     cancel();
     const SceneSnapshot scene = doc_->snapshot();
     try {
-        weatherFile_ = readWeatherFile(weather_->text().toStdString());
+        pendingWeather_ = readWeatherFile(weather_->text().toStdString());
+        pendingPath_ = weather_->text();
         if (area_->currentIndex() == 0) {
             const SceneBounds b = sceneBounds(*scene);
             grid_ = workPlaneGrid(b.lo, b.hi, scene->metersPerUnit, height_->value(), 0.5);
@@ -189,9 +190,13 @@ void AnnualPanel::compute() {
         status_->setText(tr("The occupied hours must start before they end."));
         return;
     }
+    // The shown year is another grid's or occupancy's from here on.
+    result_.reset();
+    metrics_.reset();
+    figures_->clear();
     resultScene_ = scene;
     pending_ = std::make_shared<std::optional<AnnualResult>>();
-    job_ = tasks_.submit([scene, points = layout_.points, normal = grid_.normal(), weather = *weatherFile_,
+    job_ = tasks_.submit([scene, points = layout_.points, normal = grid_.normal(), weather = *pendingWeather_,
                           pending = pending_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
         *pending = computeAnnual(*scene, points, normal, weather, AnnualSettings(), ctx);
@@ -230,6 +235,8 @@ void AnnualPanel::poll() {
     cancel_->setEnabled(false);
     if (*pending_ && !(*pending_)->cancelled) {
         result_ = std::move(**pending_);
+        weatherFile_ = std::move(pendingWeather_);
+        weatherPath_ = pendingPath_;
         showResult();
     }
     pending_.reset();

@@ -56,6 +56,11 @@ public:
     // The metric shown, as values per point for the plan (in its `lux` field) and its unit.
     std::shared_ptr<const GridResult> planValues() const { return planValues_; }
     QString planUnit() const;
+    // The weather file, its path and the occupied hours of the shown year (the report's annual
+    // section takes them once a year was computed here).
+    const std::optional<WeatherFile>& weatherFile() const { return weatherFile_; }
+    QString weatherPath() const { return weatherPath_; }
+    const Occupancy& occupancy() const { return occupancy_; }
     // Shows the year of point `index` in the heat map.
     void showPoint(int index);
 
@@ -90,7 +95,8 @@ private:
     std::shared_ptr<std::optional<AnnualResult>> pending_;  // the running job's
     std::optional<AnnualResult> result_;
     std::optional<AnnualMetrics> metrics_;
-    std::optional<WeatherFile> weatherFile_;
+    std::optional<WeatherFile> weatherFile_, pendingWeather_;  // the shown year's, the running one's
+    QString weatherPath_, pendingPath_;
     Occupancy occupancy_;
     CalculationGrid grid_;
     GridLayout layout_;

@@ -200,6 +200,15 @@ void MainWindow::createDocks() {
     connect(annualPanel_, &AnnualPanel::resultChanged, this, [this] {
         plan_->setGridResult(annualPanel_->grid(), annualPanel_->layout(), annualPanel_->planValues(), annualPanel_->planUnit());
     });
+    // A year computed in the dock puts its weather file in the next report (an annual section).
+    connect(annualPanel_, &AnnualPanel::finished, this, [this] {
+        if (!annualPanel_->result() || !annualPanel_->weatherFile()) return;
+        ReportSettings settings = report_->settings();
+        settings.weather = annualPanel_->weatherFile();
+        settings.weatherPath = annualPanel_->weatherPath().toStdString();
+        settings.occupancy = annualPanel_->occupancy();
+        report_->setSettings(settings);
+    });
     annualPanel_->setFileQuestion(
         [this] { return dialogs_->open(tr("Weather file"), tr("EnergyPlus weather files (*.epw *.EPW);;All files (*)")); });
     // Calculation grids drawn in the viewport.
