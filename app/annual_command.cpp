@@ -3,6 +3,7 @@
 #include "app/cli_support.h"
 #include "app/grid_placement.h"
 #include "core/atomic_file.h"
+#include "core/resources.h"
 #include "core/daylight/annual_metrics.h"
 #include "core/daylight/epw_file.h"
 #include "core/scene/scene_io.h"
@@ -74,6 +75,7 @@ AnnualArgs parseAnnualArgs(const std::vector<std::string>& args) {
         else if (o == "--sky-subdivision") a.settings.coefficients.skySubdivision = parseNumber<int>(o, value(), 1, 16);
         else if (o == "--paths") a.settings.coefficients.paths = parseNumber<int>(o, value(), 16, 1 << 24);
         else if (o == "--sun-paths") a.settings.coefficients.sunPaths = parseNumber<int>(o, value(), 8, 1 << 20);
+        else if (o == "--resume") a.settings.resume = true;
         else if (!o.empty() && o[0] == '-') throw UsageError("unknown option " + o);
         else if (a.scene.empty()) a.scene = o;
         else throw UsageError("unexpected argument '" + o + "'");
@@ -192,6 +194,8 @@ int annualImpl(const std::vector<std::string>& args) {
         throw UsageError(e.what());
     }
 
+    // The traced points are kept as they go, so that an interrupted year can go on (--resume).
+    a.settings.checkpointDirectory = cacheDirectory("annual");
     catchInterrupts();
     TaskSystem tasks(a.threads);
     std::optional<AnnualResult> result;
@@ -200,9 +204,14 @@ int annualImpl(const std::vector<std::string>& args) {
     });
     waitShowingProgress(*job, "annual");
     if (interrupted() || !result || result->cancelled) {
-        std::cerr << "annual interrupted; no file written\n";
+        std::cerr << "annual interrupted; no file written"
+                  << (result && !result->checkpointPath.empty() ? "; the same command with --resume goes on from the points traced"
+                                                                : "")
+                  << "\n";
         return 130;
     }
+    if (result->resumedPoints > 0)
+        std::fprintf(stderr, "resumed: %zu points read from %s\n", result->resumedPoints, result->checkpointPath.c_str());
     const AnnualResult& r = *result;
     std::vector<uint8_t> counted(r.points);
     for (size_t p = 0; p < r.points; ++p) counted[p] = !r.insideGeometry[p];

@@ -10,9 +10,11 @@ namespace lucerna::cli {
 
 // annual SCENE.json --weather FILE.epw (--work-plane HEIGHT_M [--border M] | --task-area NAME)
 //        [--spacing M] [--occupancy FROM-TO] [--dew-point C] [--csv OUT.csv] [--hourly OUT.csv]
-//        [--export-hour MM-DD-HH OUT.json] [--seed N] [--threads N]
+//        [--export-hour MM-DD-HH OUT.json] [--seed N] [--threads N] [--resume]
 //        additions: [--hourly-error OUT.csv] [--hourly-direct OUT.csv] [--sky-subdivision M] [--paths N]
 //        [--sun-paths N]
+// The traced points are kept in the user's cache as they go (render/annual/annual_checkpoint.h);
+// --resume reads those of an interrupted run of the same year instead of tracing them again.
 // Returns the exit status of SPEC.md section 2 (2 with one line for bad usage or input, 130 when
 // interrupted, with no file written).
 int annual(const std::vector<std::string>& args);

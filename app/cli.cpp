@@ -396,7 +396,7 @@ void printUsage() {
                  "               [--cylindrical] without --task-area: the points measure Ez about the grid's normal\n"
                  "  lucerna annual SCENE.json --weather FILE.epw (--work-plane HEIGHT_M | --task-area NAME) [--spacing M]\n"
                  "                 [--occupancy FROM-TO] [--dew-point C] [--csv OUT.csv] [--hourly OUT.csv]\n"
-                 "                 [--hourly-error OUT.csv] [--seed N] [--threads N] [--sky-subdivision M] [--paths N]\n"
+                 "                 [--hourly-error OUT.csv] [--seed N] [--threads N] [--sky-subdivision M] [--paths N] [--resume]\n"
                  "                 a year of daylight from the weather file: sDA, ASE, UDI, EN 17037's illuminance method\n"
                  "  lucerna annual SCENE.json --weather FILE.epw --export-hour MM-DD-HH OUT.json   one hour as a scene\n"
                  "  lucerna standards [--edition 2011|2021]   the bundled EN 12464-1 activities (default 2021)\n"

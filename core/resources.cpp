@@ -18,4 +18,13 @@ std::string resourceDirectory() {
     return LUCERNA_RESOURCE_DIR;
 }
 
+std::string cacheDirectory(const std::string& name) {
+    QString base;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) base = QString::fromLocal8Bit(xdg);
+    else if (const char* home = std::getenv("HOME"); home && *home) base = QString::fromLocal8Bit(home) + "/.cache";
+    else return {};
+    const QString path = base + "/lucerna/" + QString::fromStdString(name);
+    return QDir().mkpath(path) ? path.toStdString() : std::string();
+}
+
 }  // namespace lucerna

@@ -11,4 +11,8 @@ namespace lucerna {
 // The resource folder (holding scenes/ and shaders/), without a trailing slash.
 std::string resourceDirectory();
 
+// A folder of the user's cache ($XDG_CACHE_HOME/lucerna/NAME, else ~/.cache/lucerna/NAME), made
+// if missing; empty when it cannot be made (callers then keep nothing).
+std::string cacheDirectory(const std::string& name);
+
 }  // namespace lucerna

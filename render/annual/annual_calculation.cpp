@@ -1,5 +1,7 @@
 #include "render/annual/annual_calculation.h"
 
+#include "render/annual/annual_checkpoint.h"
+
 #include "core/daylight/perez_sky.h"
 #include "core/daylight/solar_position.h"
 #include "render/photometry/grid_diagnosis.h"
@@ -7,7 +9,11 @@
 #include "render/trace/warp.h"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
 #include <cmath>
 #include <numbers>
 
@@ -199,21 +205,44 @@ AnnualResult computeAnnual(const Scene& scene, const std::vector<V3d>& points, c
     std::vector<int> recordSlot(n, -1);
     for (size_t i = 0; i < checkPoints.size(); ++i) recordSlot[checkPoints[i]] = int(i);
 
-    // 1. The coefficients, once.
+    // 1. The coefficients, once: those of an interrupted run of the same year read back, except
+    // the discretisation's points (their records are not kept), the rest traced and kept.
+    std::unique_ptr<AnnualCheckpoint> checkpoint;
+    std::map<size_t, PointCoefficients> restored;
+    if (!settings.checkpointDirectory.empty()) {
+        const DaylightCoefficientSettings& c = settings.coefficients;
+        const std::string settingsText =
+            std::to_string(c.skySubdivision) + "," + std::to_string(c.paths) + "," + std::to_string(c.sunPaths) + "," +
+            std::to_string(c.batches) + "," + std::to_string(c.seed) + "," + std::to_string(settings.sunDeclinationStepDeg) +
+            "," + std::to_string(settings.sunHourAngleStepDeg) + "," + std::to_string(north.x) + "," + std::to_string(north.z);
+        const uint64_t key = annualCheckpointKey(scene, points, normal, weather.latitudeDeg, settingsText);
+        char name[64];
+        std::snprintf(name, sizeof name, "/annual-%016llx.checkpoint", static_cast<unsigned long long>(key));
+        r.checkpointPath = settings.checkpointDirectory + name;
+        checkpoint = std::make_unique<AnnualCheckpoint>(r.checkpointPath, key);
+        restored = checkpoint->open(settings.resume);
+    }
     std::vector<PointCoefficients> coefficients(n);
     std::vector<PathRecords> records(checkPoints.size());
     std::vector<V3f> sensors(n);
     std::atomic<int> traced{0};
+    std::atomic<size_t> resumed{0};
     ctx.parallelFor(0, int(n), [&](int p) {
         const IrradianceSensor s = estimator.lifted({V3f(points[size_t(p)]), up});
         sensors[size_t(p)] = s.position;
-        if (!r.insideGeometry[size_t(p)]) {
-            const int slot = recordSlot[size_t(p)];
+        const int slot = recordSlot[size_t(p)];
+        if (r.insideGeometry[size_t(p)]) {
+        } else if (const auto kept = restored.find(size_t(p)); kept != restored.end() && slot < 0) {
+            coefficients[size_t(p)] = std::move(kept->second);
+            ++resumed;
+        } else {
             coefficients[size_t(p)] = tracer.trace(s.position, s.normal, uint64_t(p), slot >= 0 ? &records[size_t(slot)] : nullptr);
+            if (checkpoint) checkpoint->append(size_t(p), coefficients[size_t(p)]);
         }
         ctx.setProgress(0.8 * double(++traced) / double(n));
     });
     r.tracingSeconds = secondsSince(t0);
+    r.resumedPoints = resumed;
     if (ctx.isCancelled()) {
         r.cancelled = true;
         return r;
@@ -371,6 +400,7 @@ AnnualResult computeAnnual(const Scene& scene, const std::vector<V3d>& points, c
         r.statisticalRelative = *mid;
     }
     r.hoursSeconds = secondsSince(t1);
+    if (checkpoint) checkpoint->remove();
     ctx.setProgress(1.0);
     return r;
 }

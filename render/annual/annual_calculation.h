@@ -17,6 +17,7 @@
 #include "render/annual/daylight_coefficients.h"
 
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace lucerna {
@@ -28,6 +29,11 @@ struct AnnualSettings {
     int sunDiscSamples = 16;              // rays through the disc per point and hour
     std::optional<double> dewPointC;      // replaces the file's (--dew-point)
     int checkPoints = 16, checkHours = 48;  // the discretisation's sample
+    // Where the traced points are kept as they go (annual_checkpoint.h), in a file named by the
+    // year's key; empty: nowhere. With `resume`, the points of an earlier run of the same key
+    // are read instead of traced again.
+    std::string checkpointDirectory;
+    bool resume = false;
 };
 
 struct AnnualResult {
@@ -47,6 +53,8 @@ struct AnnualResult {
     double discretisationParts[3] = {0, 0, 0};
     double tracingSeconds = 0, hoursSeconds = 0;
     bool cancelled = false;
+    size_t resumedPoints = 0;        // read from the checkpoint, not traced
+    std::string checkpointPath;      // the checkpoint's file (left there when cancelled)
 };
 
 // The year at `points` (scene units) facing `normal`, on `scene` with its electric light off and

@@ -10,7 +10,12 @@
 #include "render/annual/annual_calculation.h"
 #include "render/photometry/grid_calculation.h"
 
+#include <QFile>
+#include <QTemporaryDir>
 #include <QtTest>
+
+#include <atomic>
+#include <thread>
 
 #include <cmath>
 
@@ -88,6 +93,7 @@ class TestAnnual : public QObject {
 private slots:
     void openPlaneEveryHour();
     void sideLitRoomAgainstGrid();
+    void resumesWithTheSameResult();
 };
 
 void TestAnnual::openPlaneEveryHour() {
@@ -172,6 +178,48 @@ void TestAnnual::sideLitRoomAgainstGrid() {
     }
     // SPEC.md: at most 5% outside the bars, plus the binomial allowance (1.645 sigma).
     QVERIFY(outside <= 0.05 * values + 1.645 * std::sqrt(values * 0.05 * 0.95));
+}
+
+void TestAnnual::resumesWithTheSameResult() {
+    // A year cancelled part-way keeps the points it traced; run again with resume it reads them
+    // back, traces the rest, and gives the uninterrupted year's values bit for bit.
+    const Scene scene = parseScene(sideLitRoom(), "room.json");
+    const WeatherFile weather = syntheticYear();
+    std::vector<V3d> points;
+    for (int i = 0; i < 6; ++i)
+        for (int k = 0; k < 5; ++k) points.emplace_back(0.4 + 0.6 * i, 0.85, 0.3 + 0.6 * k);
+    AnnualSettings settings;
+    settings.coefficients.paths = 2048;
+    settings.coefficients.sunPaths = 64;
+    settings.checkPoints = 4;
+    const auto run = [&](const AnnualSettings& s, double cancelAt) {
+        CancellationToken token;
+        TaskContext ctx(token);
+        std::atomic<bool> done{false};
+        std::thread watcher([&] {
+            while (!done && cancelAt < 1)
+                if (ctx.progress() >= cancelAt) token.cancel();
+                else std::this_thread::yield();
+        });
+        AnnualResult r = computeAnnual(scene, points, V3d(0, 1, 0), weather, s, ctx);
+        done = true;
+        watcher.join();
+        return r;
+    };
+    const AnnualResult whole = run(settings, 2);
+    QTemporaryDir dir;
+    settings.checkpointDirectory = dir.path().toStdString();
+    const AnnualResult cut = run(settings, 0.3);
+    QVERIFY(cut.cancelled);
+    QVERIFY(QFile::exists(QString::fromStdString(cut.checkpointPath)));
+    settings.resume = true;
+    const AnnualResult resumed = run(settings, 2);
+    QVERIFY(!resumed.cancelled);
+    qInfo("%zu of %zu points read back", resumed.resumedPoints, points.size());
+    QVERIFY(resumed.resumedPoints > 0 && resumed.resumedPoints < points.size());
+    QVERIFY(resumed.lux == whole.lux);
+    QVERIFY(resumed.errorLux == whole.errorLux);
+    QVERIFY(!QFile::exists(QString::fromStdString(resumed.checkpointPath)));  // done: it goes
 }
 
 QTEST_GUILESS_MAIN(TestAnnual)

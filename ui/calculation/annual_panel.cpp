@@ -199,7 +199,11 @@ void AnnualPanel::compute() {
     job_ = tasks_.submit([scene, points = layout_.points, normal = grid_.normal(), weather = *pendingWeather_,
                           pending = pending_, gate = gate_.counter()](TaskContext& ctx) {
         const YieldGate::Scope hold(gate);
-        *pending = computeAnnual(*scene, points, normal, weather, AnnualSettings(), ctx);
+        // Compute after Cancel goes on from the points traced (annual_checkpoint.h).
+        AnnualSettings settings;
+        settings.checkpointDirectory = cacheDirectory("annual");
+        settings.resume = true;
+        *pending = computeAnnual(*scene, points, normal, weather, settings, ctx);
     });
     compute_->setEnabled(false);
     cancel_->setEnabled(true);
