@@ -177,232 +177,295 @@ Scene sceneOfHour(const Scene& scene, const WeatherFile& weather, size_t row, st
     return s;
 }
 
-AnnualResult computeAnnual(const Scene& scene, const std::vector<V3d>& points, const V3d& normal,
-                           const WeatherFile& weather, const AnnualSettings& settings, TaskContext& ctx) {
-    const auto t0 = std::chrono::steady_clock::now();
-    AnnualResult r;
-    const size_t n = points.size(), rows = weather.hours.size();
-    r.points = n;
-    const RenderScene rs(darkScene(scene), 16, 16);
-    r.insideGeometry = pointsInsideGeometry(rs, points, normal);
+namespace {
 
-    const SkyPatches fine(settings.coefficients.skySubdivision), coarse(1);
-    const V3d north = scene.site ? scene.site->north.normalized() : Site().north;
-    const SunPathGrid sunGrid(weather.latitudeDeg, north, settings.sunDeclinationStepDeg, settings.sunHourAngleStepDeg);
-    const DaylightCoefficientTracer tracer(rs, fine, coarse, sunGrid, settings.coefficients);
-    const IrradianceEstimator estimator(rs);
-    const V3f up = V3f(float(normal.x), float(normal.y), float(normal.z)).normalized();
+// The steps of computeAnnual, sharing what they build.
+class YearCalculation {
+public:
+    YearCalculation(const Scene& scene, const std::vector<V3d>& points, const V3d& normal, const WeatherFile& weather,
+                    const AnnualSettings& settings, TaskContext& ctx)
+        : scene_(scene), points_(points), normal_(normal), weather_(weather), settings_(settings), ctx_(ctx),
+          n_(points.size()), rows_(weather.hours.size()), rs_(darkScene(scene), 16, 16),
+          fine_(settings.coefficients.skySubdivision), coarse_(1),
+          north_(scene.site ? scene.site->north.normalized() : Site().north),
+          sunGrid_(weather.latitudeDeg, north_, settings.sunDeclinationStepDeg, settings.sunHourAngleStepDeg),
+          tracer_(rs_, fine_, coarse_, sunGrid_, settings.coefficients),
+          up_(V3f(float(normal.x), float(normal.y), float(normal.z)).normalized()) {
+        for (const Light& l : scene.lights)
+            if (l.type == LightType::Sun && l.sun) sunHalfAngleRad_ = 0.5 * l.sun->angularDiameterDeg * kPiD / 180;
+    }
+
+    AnnualResult run() {
+        const auto t0 = std::chrono::steady_clock::now();
+        r_.points = n_;
+        r_.insideGeometry = pointsInsideGeometry(rs_, points_, normal_);
+        chooseCheckPoints();
+        traceCoefficients();
+        r_.tracingSeconds = secondsSince(t0);
+        if (ctx_.isCancelled()) return cancelled();
+        const auto t1 = std::chrono::steady_clock::now();
+        readHours();
+        evaluateHours();
+        if (ctx_.isCancelled()) return cancelled();
+        measureDiscretisation();
+        r_.hoursSeconds = secondsSince(t1);
+        if (checkpoint_) checkpoint_->remove();
+        ctx_.setProgress(1.0);
+        return std::move(r_);
+    }
+
+private:
+    AnnualResult cancelled() {
+        r_.cancelled = true;
+        return std::move(r_);
+    }
 
     // The points that measure the discretisation: spread over those outside geometry.
-    std::vector<size_t> checkPoints;
-    {
+    void chooseCheckPoints() {
         std::vector<size_t> open;
-        for (size_t p = 0; p < n; ++p)
-            if (!r.insideGeometry[p]) open.push_back(p);
-        const size_t k = std::min(open.size(), size_t(std::max(settings.checkPoints, 0)));
-        for (size_t i = 0; i < k; ++i) checkPoints.push_back(open[i * open.size() / k]);
+        for (size_t p = 0; p < n_; ++p)
+            if (!r_.insideGeometry[p]) open.push_back(p);
+        const size_t k = std::min(open.size(), size_t(std::max(settings_.checkPoints, 0)));
+        for (size_t i = 0; i < k; ++i) checkPoints_.push_back(open[i * open.size() / k]);
+        recordSlot_.assign(n_, -1);
+        for (size_t i = 0; i < checkPoints_.size(); ++i) recordSlot_[checkPoints_[i]] = int(i);
+        records_.resize(checkPoints_.size());
     }
-    std::vector<int> recordSlot(n, -1);
-    for (size_t i = 0; i < checkPoints.size(); ++i) recordSlot[checkPoints[i]] = int(i);
+
+    // The checkpoint of this year (annual_checkpoint.h) and what an earlier run of it traced.
+    std::map<size_t, PointCoefficients> openCheckpoint() {
+        if (settings_.checkpointDirectory.empty()) return {};
+        const DaylightCoefficientSettings& c = settings_.coefficients;
+        const std::string settingsText =
+            std::to_string(c.skySubdivision) + "," + std::to_string(c.paths) + "," + std::to_string(c.sunPaths) + "," +
+            std::to_string(c.batches) + "," + std::to_string(c.seed) + "," + std::to_string(settings_.sunDeclinationStepDeg) +
+            "," + std::to_string(settings_.sunHourAngleStepDeg) + "," + std::to_string(north_.x) + "," + std::to_string(north_.z);
+        const uint64_t key = annualCheckpointKey(scene_, points_, normal_, weather_.latitudeDeg, settingsText);
+        char name[64];
+        std::snprintf(name, sizeof name, "/annual-%016llx.checkpoint", static_cast<unsigned long long>(key));
+        r_.checkpointPath = settings_.checkpointDirectory + name;
+        checkpoint_ = std::make_unique<AnnualCheckpoint>(r_.checkpointPath, key);
+        return checkpoint_->open(settings_.resume);
+    }
 
     // 1. The coefficients, once: those of an interrupted run of the same year read back, except
     // the discretisation's points (their records are not kept), the rest traced and kept.
-    std::unique_ptr<AnnualCheckpoint> checkpoint;
-    std::map<size_t, PointCoefficients> restored;
-    if (!settings.checkpointDirectory.empty()) {
-        const DaylightCoefficientSettings& c = settings.coefficients;
-        const std::string settingsText =
-            std::to_string(c.skySubdivision) + "," + std::to_string(c.paths) + "," + std::to_string(c.sunPaths) + "," +
-            std::to_string(c.batches) + "," + std::to_string(c.seed) + "," + std::to_string(settings.sunDeclinationStepDeg) +
-            "," + std::to_string(settings.sunHourAngleStepDeg) + "," + std::to_string(north.x) + "," + std::to_string(north.z);
-        const uint64_t key = annualCheckpointKey(scene, points, normal, weather.latitudeDeg, settingsText);
-        char name[64];
-        std::snprintf(name, sizeof name, "/annual-%016llx.checkpoint", static_cast<unsigned long long>(key));
-        r.checkpointPath = settings.checkpointDirectory + name;
-        checkpoint = std::make_unique<AnnualCheckpoint>(r.checkpointPath, key);
-        restored = checkpoint->open(settings.resume);
-    }
-    std::vector<PointCoefficients> coefficients(n);
-    std::vector<PathRecords> records(checkPoints.size());
-    std::vector<V3f> sensors(n);
-    std::atomic<int> traced{0};
-    std::atomic<size_t> resumed{0};
-    ctx.parallelFor(0, int(n), [&](int p) {
-        const IrradianceSensor s = estimator.lifted({V3f(points[size_t(p)]), up});
-        sensors[size_t(p)] = s.position;
-        const int slot = recordSlot[size_t(p)];
-        if (r.insideGeometry[size_t(p)]) {
-        } else if (const auto kept = restored.find(size_t(p)); kept != restored.end() && slot < 0) {
-            coefficients[size_t(p)] = std::move(kept->second);
-            ++resumed;
-        } else {
-            coefficients[size_t(p)] = tracer.trace(s.position, s.normal, uint64_t(p), slot >= 0 ? &records[size_t(slot)] : nullptr);
-            if (checkpoint) checkpoint->append(size_t(p), coefficients[size_t(p)]);
-        }
-        ctx.setProgress(0.8 * double(++traced) / double(n));
-    });
-    r.tracingSeconds = secondsSince(t0);
-    r.resumedPoints = resumed;
-    if (ctx.isCancelled()) {
-        r.cancelled = true;
-        return r;
+    void traceCoefficients() {
+        std::map<size_t, PointCoefficients> restored = openCheckpoint();
+        const IrradianceEstimator estimator(rs_);
+        coefficients_.resize(n_);
+        sensors_.resize(n_);
+        std::atomic<int> traced{0};
+        std::atomic<size_t> resumed{0};
+        ctx_.parallelFor(0, int(n_), [&](int i) {
+            const size_t p = size_t(i);
+            const IrradianceSensor s = estimator.lifted({V3f(points_[p]), up_});
+            sensors_[p] = s.position;
+            const int slot = recordSlot_[p];
+            if (r_.insideGeometry[p]) {
+                // no light reaches it: its coefficients stay empty
+            } else if (const auto kept = restored.find(p); kept != restored.end() && slot < 0) {
+                coefficients_[p] = std::move(kept->second);
+                ++resumed;
+            } else {
+                coefficients_[p] = tracer_.trace(s.position, s.normal, uint64_t(p), slot >= 0 ? &records_[size_t(slot)] : nullptr);
+                if (checkpoint_) checkpoint_->append(p, coefficients_[p]);
+            }
+            ctx_.setProgress(0.8 * double(++traced) / double(n_));
+        });
+        r_.resumedPoints = resumed;
     }
 
-    // 2. Each row's sun and sky inputs.
-    const double groundReflectance = scene.sky ? scene.sky->groundReflectance : Sky().groundReflectance;
-    std::vector<HourInputs> inputs(rows);
-    r.hours.resize(rows);
-    for (size_t row = 0; row < rows; ++row) {
-        const WeatherHour& h = weather.hours[row];
-        HourInputs& in = inputs[row];
-        in.towardSun = sunTowardAt(weather, north, h);
-        in.perez = PerezInputs{h.directNormalIrradiance, h.diffuseHorizontalIrradiance, settings.dewPointC.value_or(h.dewPointC),
-                               dayOfYear(weather.year(), h.month, h.day), in.towardSun};
-        in.daylight = h.directNormalIrradiance > 0 || h.diffuseHorizontalIrradiance > 0;
-        r.daylightHours += in.daylight;
-        const double evd = in.daylight ? PerezSky(in.perez, 0).diffuseIlluminance() : 0;
-        r.hours[row] = AnnualHour{h.month, h.day, h.hour, evd};
-    }
-
-    // 3. Every hour: the sky by patches, the sun's indirect light by the nodes, its direct light
-    // traced through the disc.
-    std::vector<SparseCoefficients> sparse;
-    sparse.reserve(n);
-    for (const PointCoefficients& c : coefficients) sparse.emplace_back(c.sky);
-    const SkyAverager averager(fine, coarse);
-    const std::vector<V2f> disc = discPattern(settings.sunDiscSamples);
-    const int batches = settings.coefficients.batches, coarseBins = coarse.count() + 1, nodes = sunGrid.nodeCount();
-    const double t = studentT975(batches - 1);
-    r.lux.assign(rows * n, 0.0f);
-    r.directSunLux.assign(rows * n, 0.0f);
-    r.errorLux.assign(rows * n, 0.0f);
-    std::vector<float> statisticalRelative(rows * n, -1.0f);
-    std::vector<HourSky> checkSkies(rows);  // kept only for the rows the check samples
-    std::vector<uint8_t> checkRow(rows, 0);
-    {
+    // 2. Each row's sun and sky inputs, and the rows that measure the discretisation.
+    void readHours() {
+        inputs_.resize(rows_);
+        r_.hours.resize(rows_);
         std::vector<size_t> daylit;
-        for (size_t row = 0; row < rows; ++row)
-            if (inputs[row].daylight) daylit.push_back(row);
-        const size_t k = std::min(daylit.size(), size_t(std::max(settings.checkHours, 0)));
-        for (size_t i = 0; i < k; ++i) checkRow[daylit[(2 * i + 1) * daylit.size() / (2 * k)]] = 1;
-    }
-    const auto t1 = std::chrono::steady_clock::now();
-    std::atomic<int> done{0};
-    constexpr int kRowsPerTask = 24;
-    ctx.parallelFor(0, int((rows + kRowsPerTask - 1) / kRowsPerTask), [&](int task) {
-        std::vector<double> batch(static_cast<size_t>(batches));
-        for (size_t row = size_t(task) * kRowsPerTask; row < std::min(rows, size_t(task + 1) * kRowsPerTask); ++row) {
-            const HourInputs& in = inputs[row];
-            if (!in.daylight) continue;
-            const PerezSky sky(in.perez, 0);
-            const bool sunUp = in.towardSun.y > 0 && sky.directNormalIlluminance() > 0;
-            const double evn = sunUp ? sky.directNormalIlluminance() : 0;
-            const double ground = groundReflectance * (sky.diffuseIlluminance() + evn * std::max(in.towardSun.y, 0.0)) / kPiD;
-            HourSky hs = averager.average(sky, ground);
-            const SunPathGrid::Stencil stencil = sunGrid.stencil(in.towardSun);
-            const V3f toward(in.towardSun);
-            const Frame sunFrame(toward);
-            const float discRadius = float(std::tan(0.5 * 0.53 * kPiD / 180));  // section 5's default disc
-            for (size_t p = 0; p < n; ++p) {
-                if (r.insideGeometry[p]) continue;
-                const PointCoefficients& c = coefficients[p];
-                const size_t at = row * n + p;
-                double indirect = 0, direct = 0;
-                if (sunUp) {
-                    for (int k = 0; k < 4; ++k) indirect += stencil.weight[k] * c.sunIndirect[size_t(stencil.node[k])];
-                    indirect *= evn;
-                    double sum = 0;
-                    for (const V2f& d : disc) {
-                        const V3f w = (toward + sunFrame.s * (d.x * discRadius) + sunFrame.t * (d.y * discRadius)).normalized();
-                        const float cosine = w.dot(up);
-                        if (cosine > 0) sum += luminance(rs.transmittance(Ray{sensors[p], w})) * cosine;
-                    }
-                    direct = evn * sum / double(disc.size());
-                }
-                const double total = sparse[p].dot(hs.patch) + indirect + direct;
-                r.lux[at] = float(total);
-                r.directSunLux[at] = float(direct);
-                // Batch means: each batch's coarse sky and sun nodes (the direct sun is exact).
-                double mean = 0;
-                for (int b = 0; b < batches; ++b) {
-                    const float* cs = &c.coarseSky[size_t(b) * coarseBins];
-                    double x = 0;
-                    for (int k = 0; k < coarseBins; ++k) x += cs[k] * hs.coarse[size_t(k)];
-                    if (sunUp)
-                        for (int k = 0; k < 4; ++k)
-                            x += evn * stencil.weight[k] * c.sunIndirectBatches[size_t(b) * nodes + stencil.node[k]];
-                    batch[size_t(b)] = x;
-                    mean += x / batches;
-                }
-                double var = 0;
-                for (double x : batch) var += (x - mean) * (x - mean);
-                const double standardError = std::sqrt(var / (double(batches) * (batches - 1)));
-                r.errorLux[at] = float(t * standardError);
-                if (total > 1) statisticalRelative[at] = float(t * standardError / total);
-            }
-            if (checkRow[row]) checkSkies[row] = std::move(hs);
-            ctx.setProgress(0.8 + 0.2 * double(++done) / double(rows));
+        for (size_t row = 0; row < rows_; ++row) {
+            const WeatherHour& h = weather_.hours[row];
+            HourInputs& in = inputs_[row];
+            in.towardSun = sunTowardAt(weather_, north_, h);
+            in.perez = PerezInputs{h.directNormalIrradiance, h.diffuseHorizontalIrradiance,
+                                   settings_.dewPointC.value_or(h.dewPointC), dayOfYear(weather_.year(), h.month, h.day),
+                                   in.towardSun};
+            in.daylight = h.directNormalIrradiance > 0 || h.diffuseHorizontalIrradiance > 0;
+            if (in.daylight) daylit.push_back(row);
+            const double evd = in.daylight ? PerezSky(in.perez, 0).diffuseIlluminance() : 0;
+            r_.hours[row] = AnnualHour{h.month, h.day, h.hour, evd};
         }
-    });
-    if (ctx.isCancelled()) {
-        r.cancelled = true;
-        return r;
+        r_.daylightHours = int(daylit.size());
+        checkRow_.assign(rows_, 0);
+        const size_t k = std::min(daylit.size(), size_t(std::max(settings_.checkHours, 0)));
+        for (size_t i = 0; i < k; ++i) checkRow_[daylit[(2 * i + 1) * daylit.size() / (2 * k)]] = 1;
+        checkSkies_.resize(rows_);
     }
 
-    // 4. The discretisation, on the sample: binned and interpolated against direction by
-    // direction (the scene's own Perez sky, 256-ring integral) and the sun at its own position.
-    // Differences relative to the point's value: the straight view, the reflected sky, the
-    // sun's reflections, and their sum.
-    double sumSquares[4] = {0, 0, 0, 0};
-    size_t count = 0;
-    for (size_t row = 0; row < rows; ++row) {
-        if (!checkRow[row]) continue;
-        const HourInputs& in = inputs[row];
-        const PerezSky exactSky(in.perez);
-        const HourSky& hs = checkSkies[row];
-        const bool sunUp = in.towardSun.y > 0 && exactSky.directNormalIlluminance() > 0;
-        const double evn = sunUp ? exactSky.directNormalIlluminance() : 0;
-        const SunPathGrid::Stencil stencil = sunGrid.stencil(in.towardSun);
-        const auto exactLuminance = [&](const V3f& w) { return w.y > 0 ? exactSky.luminance(V3d(w)) : double(hs.patch.back()); };
-        for (size_t i = 0; i < checkPoints.size(); ++i) {
-            const size_t p = checkPoints[i];
-            const double total = r.lux[row * n + p];
-            if (!(total > 1)) continue;
-            const PathRecords& rec = records[i];
-            double difference[3] = {0, 0, 0};
-            for (size_t bin = 0; bin < rec.direct.size(); ++bin) difference[0] += rec.direct[bin] * hs.patch[bin];
-            for (const PathRecords::Escape& e : rec.directCells) difference[0] -= e.weight * exactLuminance(e.direction);
-            for (const PathRecords::Escape& e : rec.escapes) {
-                const V3d w(e.direction);
-                difference[1] += e.weight * (hs.patch[size_t(w.y > 0 ? fine.patchOf(w) : fine.count())] - exactLuminance(e.direction));
+    // The sun's light straight onto point p through its disc (a direction per disc sample), lx
+    // per lx of direct normal illuminance.
+    double directSun(size_t p, const V3f& toward, const std::vector<V2f>& disc) const {
+        const Frame frame(toward);
+        const float radius = float(std::tan(sunHalfAngleRad_));
+        double sum = 0;
+        for (const V2f& d : disc) {
+            const V3f w = (toward + frame.s * (d.x * radius) + frame.t * (d.y * radius)).normalized();
+            const float cosine = w.dot(up_);
+            if (cosine > 0) sum += luminance(rs_.transmittance(Ray{sensors_[p], w})) * cosine;
+        }
+        return sum / double(disc.size());
+    }
+
+    // 3. Every hour: the sky by patches, the sun's reflections by the nodes, its direct light
+    // traced through the disc; each value's error from the batches' spread.
+    void evaluateHours() {
+        std::vector<SparseCoefficients> sparse;
+        sparse.reserve(n_);
+        for (const PointCoefficients& c : coefficients_) sparse.emplace_back(c.sky);
+        const SkyAverager averager(fine_, coarse_);
+        const std::vector<V2f> disc = discPattern(sunHalfAngleRad_ > 0 ? settings_.sunDiscSamples : 1);
+        const int batches = settings_.coefficients.batches, coarseBins = coarse_.count() + 1, nodes = sunGrid_.nodeCount();
+        const double t = studentT975(batches - 1);
+        const double groundReflectance = scene_.sky ? scene_.sky->groundReflectance : Sky().groundReflectance;
+        r_.lux.assign(rows_ * n_, 0.0f);
+        r_.directSunLux.assign(rows_ * n_, 0.0f);
+        r_.errorLux.assign(rows_ * n_, 0.0f);
+        statisticalRelative_.assign(rows_ * n_, -1.0f);
+        std::atomic<int> done{0};
+        constexpr int kRowsPerTask = 24;
+        ctx_.parallelFor(0, int((rows_ + kRowsPerTask - 1) / kRowsPerTask), [&](int task) {
+            std::vector<double> batch(static_cast<size_t>(batches));
+            for (size_t row = size_t(task) * kRowsPerTask; row < std::min(rows_, size_t(task + 1) * kRowsPerTask); ++row) {
+                const HourInputs& in = inputs_[row];
+                if (!in.daylight) continue;
+                const PerezSky sky(in.perez, 0);
+                const bool sunUp = in.towardSun.y > 0 && sky.directNormalIlluminance() > 0;
+                const double evn = sunUp ? sky.directNormalIlluminance() : 0;
+                const double ground = groundReflectance * (sky.diffuseIlluminance() + evn * std::max(in.towardSun.y, 0.0)) / kPiD;
+                HourSky hs = averager.average(sky, ground);
+                const SunPathGrid::Stencil stencil = sunGrid_.stencil(in.towardSun);
+                for (size_t p = 0; p < n_; ++p) {
+                    if (r_.insideGeometry[p]) continue;
+                    const PointCoefficients& c = coefficients_[p];
+                    const size_t at = row * n_ + p;
+                    double reflected = 0, direct = 0;
+                    if (sunUp) {
+                        for (int k = 0; k < 4; ++k) reflected += stencil.weight[k] * c.sunIndirect[size_t(stencil.node[k])];
+                        reflected *= evn;
+                        direct = evn * directSun(p, V3f(in.towardSun), disc);
+                    }
+                    const double total = sparse[p].dot(hs.patch) + reflected + direct;
+                    r_.lux[at] = float(total);
+                    r_.directSunLux[at] = float(direct);
+                    // Batch means: each batch's coarse sky and sun nodes (the straight view and
+                    // the direct sun are exact, the same in every batch).
+                    double mean = 0;
+                    for (int b = 0; b < batches; ++b) {
+                        const float* cs = &c.coarseSky[size_t(b) * coarseBins];
+                        double x = 0;
+                        for (int k = 0; k < coarseBins; ++k) x += cs[k] * hs.coarse[size_t(k)];
+                        if (sunUp)
+                            for (int k = 0; k < 4; ++k)
+                                x += evn * stencil.weight[k] * c.sunIndirectBatches[size_t(b) * nodes + stencil.node[k]];
+                        batch[size_t(b)] = x;
+                        mean += x / batches;
+                    }
+                    double var = 0;
+                    for (double x : batch) var += (x - mean) * (x - mean);
+                    const double standardError = std::sqrt(var / (double(batches) * (batches - 1)));
+                    r_.errorLux[at] = float(t * standardError);
+                    if (total > 1) statisticalRelative_[at] = float(t * standardError / total);
+                }
+                if (checkRow_[row]) checkSkies_[row] = std::move(hs);
+                ctx_.setProgress(0.8 + 0.2 * double(++done) / double(rows_));
             }
-            if (sunUp) {
-                for (int k = 0; k < 4; ++k)
-                    difference[2] += evn * stencil.weight[k] * coefficients[p].sunIndirect[size_t(stencil.node[k])];
-                difference[2] -= evn * tracer.sunIndirectAt(rec, V3f(in.towardSun));
+        });
+    }
+
+    // 4. The discretisation, on the sample: the binned and interpolated values against the same
+    // paths summed direction by direction (the scene's own Perez sky, its 256-ring integral), the
+    // straight view against cells twice as fine, and the sun traced at its own position; the
+    // differences relative to the point's value, as 2 x their RMS, go into each value's error.
+    void measureDiscretisation() {
+        double sumSquares[4] = {0, 0, 0, 0};
+        size_t count = 0;
+        for (size_t row = 0; row < rows_; ++row) {
+            if (!checkRow_[row] || checkSkies_[row].patch.empty()) continue;
+            const HourInputs& in = inputs_[row];
+            const PerezSky exactSky(in.perez);
+            const HourSky& hs = checkSkies_[row];
+            const bool sunUp = in.towardSun.y > 0 && exactSky.directNormalIlluminance() > 0;
+            const double evn = sunUp ? exactSky.directNormalIlluminance() : 0;
+            const SunPathGrid::Stencil stencil = sunGrid_.stencil(in.towardSun);
+            const auto exactLuminance = [&](const V3f& w) { return w.y > 0 ? exactSky.luminance(V3d(w)) : double(hs.patch.back()); };
+            for (size_t i = 0; i < checkPoints_.size(); ++i) {
+                const size_t p = checkPoints_[i];
+                const double total = r_.lux[row * n_ + p];
+                if (!(total > 1)) continue;
+                const PathRecords& rec = records_[i];
+                double difference[3] = {0, 0, 0};  // straight view, reflected sky, the sun's reflections
+                for (size_t bin = 0; bin < rec.direct.size(); ++bin) difference[0] += rec.direct[bin] * hs.patch[bin];
+                for (const PathRecords::Escape& e : rec.directCells) difference[0] -= e.weight * exactLuminance(e.direction);
+                for (const PathRecords::Escape& e : rec.escapes) {
+                    const V3d w(e.direction);
+                    difference[1] += e.weight * (hs.patch[size_t(w.y > 0 ? fine_.patchOf(w) : fine_.count())] - exactLuminance(e.direction));
+                }
+                if (sunUp) {
+                    for (int k = 0; k < 4; ++k)
+                        difference[2] += evn * stencil.weight[k] * coefficients_[p].sunIndirect[size_t(stencil.node[k])];
+                    difference[2] -= evn * tracer_.sunIndirectAt(rec, V3f(in.towardSun));
+                }
+                for (int k = 0; k < 3; ++k) sumSquares[k] += (difference[k] / total) * (difference[k] / total);
+                const double sum = (difference[0] + difference[1] + difference[2]) / total;
+                sumSquares[3] += sum * sum;
+                ++count;
             }
-            for (int k = 0; k < 3; ++k) sumSquares[k] += (difference[k] / total) * (difference[k] / total);
-            const double sum = (difference[0] + difference[1] + difference[2]) / total;
-            sumSquares[3] += sum * sum;
-            ++count;
+        }
+        for (int k = 0; k < 3; ++k) r_.discretisationParts[k] = count ? 2 * std::sqrt(sumSquares[k] / double(count)) : 0;
+        r_.discretisationRelative = count ? 2 * std::sqrt(sumSquares[3] / double(count)) : 0;
+        for (size_t at = 0; at < r_.lux.size(); ++at) {
+            const double d = r_.discretisationRelative * r_.lux[at];
+            r_.errorLux[at] = float(std::sqrt(double(r_.errorLux[at]) * r_.errorLux[at] + d * d));
+        }
+        std::erase_if(statisticalRelative_, [](float x) { return x < 0; });
+        if (!statisticalRelative_.empty()) {
+            auto mid = statisticalRelative_.begin() + ptrdiff_t(statisticalRelative_.size() / 2);
+            std::nth_element(statisticalRelative_.begin(), mid, statisticalRelative_.end());
+            r_.statisticalRelative = *mid;
         }
     }
-    for (int k = 0; k < 3; ++k) r.discretisationParts[k] = count ? 2 * std::sqrt(sumSquares[k] / double(count)) : 0;
-    r.discretisationRelative = count ? 2 * std::sqrt(sumSquares[3] / double(count)) : 0;
-    for (size_t at = 0; at < r.lux.size(); ++at) {
-        const double d = r.discretisationRelative * r.lux[at];
-        r.errorLux[at] = float(std::sqrt(double(r.errorLux[at]) * r.errorLux[at] + d * d));
-    }
-    std::erase_if(statisticalRelative, [](float x) { return x < 0; });
-    if (!statisticalRelative.empty()) {
-        auto mid = statisticalRelative.begin() + ptrdiff_t(statisticalRelative.size() / 2);
-        std::nth_element(statisticalRelative.begin(), mid, statisticalRelative.end());
-        r.statisticalRelative = *mid;
-    }
-    r.hoursSeconds = secondsSince(t1);
-    if (checkpoint) checkpoint->remove();
-    ctx.setProgress(1.0);
-    return r;
+
+    const Scene& scene_;
+    const std::vector<V3d>& points_;
+    V3d normal_;
+    const WeatherFile& weather_;
+    const AnnualSettings& settings_;
+    TaskContext& ctx_;
+    size_t n_, rows_;
+    RenderScene rs_;
+    SkyPatches fine_, coarse_;
+    V3d north_;
+    SunPathGrid sunGrid_;
+    DaylightCoefficientTracer tracer_;
+    V3f up_;
+    double sunHalfAngleRad_ = 0.5 * 0.53 * kPiD / 180;  // section 5's default disc, else the scene's sun's
+
+    AnnualResult r_;
+    std::unique_ptr<AnnualCheckpoint> checkpoint_;
+    std::vector<size_t> checkPoints_;
+    std::vector<int> recordSlot_;
+    std::vector<PathRecords> records_;
+    std::vector<PointCoefficients> coefficients_;
+    std::vector<V3f> sensors_;
+    std::vector<HourInputs> inputs_;
+    std::vector<uint8_t> checkRow_;
+    std::vector<HourSky> checkSkies_;  // kept only for the rows the check samples
+    std::vector<float> statisticalRelative_;
+};
+
+}  // namespace
+
+AnnualResult computeAnnual(const Scene& scene, const std::vector<V3d>& points, const V3d& normal,
+                           const WeatherFile& weather, const AnnualSettings& settings, TaskContext& ctx) {
+    return YearCalculation(scene, points, normal, weather, settings, ctx).run();
 }
 
 }  // namespace lucerna
