@@ -20,7 +20,7 @@ echo "== the contract against grid on 51 hours (clear, overcast, low sun; Eh >= 
 python3 bench/annual_hours.py "$EPW" 17 > "$OUT/hours.txt"
 python3 bench/annual_vs_grid.py "$LUCERNA" "$SCENE" "$EPW" "$OUT/contract" \
     --annual-args "--task-area 'Reference plane' --spacing 0.3" \
-    --grid-args "--task-area 'Reference plane' --spacing 0.3 --error 0.01 --time 40 --seed 7" $(cat "$OUT/hours.txt")
+    --grid-args "--task-area 'Reference plane' --spacing 0.3 --error 0.01 --time 30 --seed 7" $(cat "$OUT/hours.txt")
 
 echo "== scaling with points (default settings)"
 for spacing in 0.6 0.3 0.13; do
