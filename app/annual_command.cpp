@@ -149,12 +149,10 @@ std::string hourlyCsv(const AnnualResult& r, const std::vector<float>& values) {
 
 int exportHour(const AnnualArgs& a, const Scene& scene, const WeatherFile& weather) {
     const auto& [month, day, hour] = *a.exportHour;
-    for (size_t row = 0; row < weather.hours.size(); ++row) {
-        const WeatherHour& h = weather.hours[row];
-        if (h.month != month || h.day != day || h.hour != hour) continue;
-        const Scene s = sceneOfHour(scene, weather, row, a.settings.dewPointC);
-        saveScene(s, a.exportPath);
-        std::fprintf(stderr, "wrote %s: row %zu of %s (Ib %g W/m2, Ed %g W/m2)\n", a.exportPath.c_str(), row + 1,
+    if (const auto row = weatherRow(weather, month, day, hour)) {
+        const WeatherHour& h = weather.hours[*row];
+        saveScene(sceneOfHour(scene, weather, *row, a.settings.dewPointC), a.exportPath);
+        std::fprintf(stderr, "wrote %s: row %zu of %s (Ib %g W/m2, Ed %g W/m2)\n", a.exportPath.c_str(), *row + 1,
                      a.weather.c_str(), h.directNormalIrradiance, h.diffuseHorizontalIrradiance);
         return 0;
     }

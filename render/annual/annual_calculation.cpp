@@ -143,37 +143,48 @@ std::vector<V2f> discPattern(int n) {
 
 }  // namespace
 
-Scene sceneOfHour(const Scene& scene, const WeatherFile& weather, size_t row, std::optional<double> dewPointC) {
+HourDaylight daylightOfHour(const Scene& scene, const WeatherFile& weather, size_t row, std::optional<double> dewPointC) {
     const WeatherHour& h = weather.hours.at(row);
-    Scene s = scene;
-    Site site;
-    site.latitudeDeg = weather.latitudeDeg;
-    site.longitudeDeg = weather.longitudeDeg;
-    site.utcOffsetHours = weather.timeZoneHours;
-    if (scene.site) site.north = scene.site->north, site.northGiven = scene.site->northGiven;
-    s.site = site;
+    HourDaylight d;
+    d.site.latitudeDeg = weather.latitudeDeg;
+    d.site.longitudeDeg = weather.longitudeDeg;
+    d.site.utcOffsetHours = weather.timeZoneHours;
+    if (scene.site) d.site.north = scene.site->north, d.site.northGiven = scene.site->northGiven;
     SunSpec sunKeys;
-    for (Light& l : s.lights)
-        if (l.type == LightType::Sun && l.sun) sunKeys.angularDiameterDeg = l.sun->angularDiameterDeg,
-                                               sunKeys.angularDiameterGiven = l.sun->angularDiameterGiven;
+    for (const Light& l : scene.lights)
+        if (l.type == LightType::Sun && l.sun)
+            sunKeys.angularDiameterDeg = l.sun->angularDiameterDeg, sunKeys.angularDiameterGiven = l.sun->angularDiameterGiven;
+    sunKeys.illuminanceGiven = false;
+    sunKeys.time = formatLocalTime(instantOf(weather, h));
+    d.sun.name = "sun";
+    d.sun.type = LightType::Sun;
+    d.sun.sun = sunKeys;
+    d.sky.model = SkyModelType::Perez;
+    d.sky.directNormalIrradiance = h.directNormalIrradiance;
+    d.sky.diffuseHorizontalIrradiance = h.diffuseHorizontalIrradiance;
+    d.sky.dewPointC = dewPointC.value_or(h.dewPointC);
+    if (scene.sky) d.sky.groundReflectance = scene.sky->groundReflectance, d.sky.groundReflectanceGiven = true;
+    return d;
+}
+
+std::optional<size_t> weatherRow(const WeatherFile& weather, int month, int day, int hour) {
+    for (size_t row = 0; row < weather.hours.size(); ++row) {
+        const WeatherHour& h = weather.hours[row];
+        if (h.month == month && h.day == day && h.hour == hour) return row;
+    }
+    return std::nullopt;
+}
+
+Scene sceneOfHour(const Scene& scene, const WeatherFile& weather, size_t row, std::optional<double> dewPointC) {
+    const HourDaylight d = daylightOfHour(scene, weather, row, dewPointC);
+    Scene s = scene;
+    s.site = d.site;
     std::erase_if(s.lights, [](const Light& l) { return l.type == LightType::Sun; });
     for (Light& l : s.lights) l.on = false;  // electric light off
     for (Material& m : s.materials)
         if (m.type == MaterialType::Emitter) m.radiance = Rgbd(0, 0, 0);
-    Light sun;
-    sun.name = "sun";
-    sun.type = LightType::Sun;
-    sunKeys.illuminanceGiven = false;
-    sunKeys.time = formatLocalTime(instantOf(weather, h));
-    sun.sun = sunKeys;
-    s.lights.push_back(sun);
-    Sky sky;
-    sky.model = SkyModelType::Perez;
-    sky.directNormalIrradiance = h.directNormalIrradiance;
-    sky.diffuseHorizontalIrradiance = h.diffuseHorizontalIrradiance;
-    sky.dewPointC = dewPointC.value_or(h.dewPointC);
-    if (scene.sky) sky.groundReflectance = scene.sky->groundReflectance, sky.groundReflectanceGiven = true;
-    s.sky = sky;
+    s.lights.push_back(d.sun);
+    s.sky = d.sky;
     return s;
 }
 

@@ -63,6 +63,20 @@ struct AnnualResult {
 AnnualResult computeAnnual(const Scene& scene, const std::vector<V3d>& points, const V3d& normal,
                            const WeatherFile& weather, const AnnualSettings& settings, TaskContext& ctx);
 
+// The daylight of one row of the weather file: the weather file's site with the scene's north,
+// a sun named "sun" placed by the row's instant (hour - 0.5, local standard time) with the scene's
+// sun's disc, no illuminance of its own, and the row's perez sky (the scene's ground reflectance;
+// dewPointC replaces the row's when given).
+struct HourDaylight {
+    Site site;
+    Light sun;
+    Sky sky;
+};
+HourDaylight daylightOfHour(const Scene& scene, const WeatherFile& weather, size_t row, std::optional<double> dewPointC = {});
+
+// The row of the weather file for month/day and the hour ending `hour` (1..24); nothing if none.
+std::optional<size_t> weatherRow(const WeatherFile& weather, int month, int day, int hour);
+
 // The scene of one row of the weather file (SPEC.md section 6's --export-hour): the perez sky of
 // that hour and the sun placed by the row's instant (hour - 0.5, local standard time), the
 // weather file's site with the scene's north, the electric light switched off. dewPointC

@@ -8,6 +8,8 @@
 #include "ui/commands/light_commands.h"
 #include "ui/scene_panels/site_cities.h"
 
+#include "core/daylight/epw_file.h"
+
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDateEdit>
@@ -217,8 +219,12 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     skyModel_->setObjectName("daylightSkyModel");
     skyModel_->addItems({tr("None"), tr("Uniform"), tr("CIE overcast (traditional)"), tr("CIE general"),
                          tr("Perez (a weather file's hour)")});
+    weatherLabel_ = new QLabel(tr("Perez: a weather file's hour (chosen with the model)"), this);
+    weatherLabel_->setObjectName("daylightWeather");
+    weatherLabel_->setWordWrap(true);
     connect(skyModel_, &QComboBox::activated, this, &DaylightPanel::chooseSkyModel);
     row(sky, tr("Model"), {skyModel_});
+    sky->addWidget(weatherLabel_);
     cieType_ = new QSpinBox(this);
     cieType_->setObjectName("daylightCieType");
     cieType_->setRange(1, 15);
@@ -333,6 +339,7 @@ void DaylightPanel::refreshSky() {
     const bool general = sky && sky->model == SkyModelType::CieGeneral;
     cieTypeRow_->setVisible(general);
     cieTypeName_->setVisible(general);
+    weatherLabel_->setVisible(false);
     if (!sky) {
         skyModel_->setCurrentIndex(kNoSky);
         return;
@@ -344,9 +351,17 @@ void DaylightPanel::refreshSky() {
     groundReflectance_->setValue(sky->groundReflectance);
     // A perez sky's quantity comes from its hour's irradiances.
     const bool perez = sky->model == SkyModelType::Perez;
+    weatherLabel_->setVisible(perez);
+    if (perez && !weather_) weatherLabel_->setText(tr("Perez: this hour's irradiances (choose the model again for a weather file)"));
     skyQuantity_->setEnabled(!perez);
     skyValue_->setEnabled(!perez);
-    if (perez) return;
+    if (perez) {  // shown, not edited: the hour's Evd
+        skyQuantity_->setCurrentIndex(kHorizontalIlluminance);
+        skyValue_->setSuffix(QStringLiteral(" lx"));
+        const Daylight d = resolveDaylight(doc_->scene());
+        skyValue_->setValue(d.sky ? d.sky->horizontalIlluminance : 0.0);
+        return;
+    }
     if (general) {
         cieType_->setValue(sky->cieType);
         if (sky->cieType >= 1 && sky->cieType <= 15) cieTypeName_->setText(tr(kCieSkyNames[sky->cieType - 1]));
@@ -518,10 +533,71 @@ void DaylightPanel::moveSun(const void* field) {
     if (l == scene.lights[size_t(i)]) return;
     const QString text = tr("Move the sun to %1").arg(QString::fromStdString(localTime()).replace('T', ' '));
     doc_->undoStack()->push(new EditLightCommand(doc_, i, l, merge_.keyFor(field), text));
+    // A Perez sky takes the irradiances of the hour the clock is in (a step of its own when the
+    // hour changes); without its weather file it keeps the hour it has.
+    const Scene& moved = doc_->scene();
+    if (moved.sky && moved.sky->model == SkyModelType::Perez && weather_)
+        if (const auto e = weatherHourDaylight(moved, *weather_, localTime(), "sun"); e && e->sky != *moved.sky)
+            doc_->undoStack()->push(new EditSkyCommand(doc_, e->sky, 0, tr("Sky: the weather file's hour")));
+}
+
+QString DaylightPanel::useWeatherFile(const QString& path) {
+    try {
+        weather_ = readWeatherFile(path.toStdString());
+    } catch (const WeatherFileError& e) {
+        return QString::fromStdString(e.what());
+    }
+    weatherPath_ = path;
+    weatherLabel_->setText(tr("Weather: %1").arg(QString::fromStdString(weather_->describe())));
+    return {};
+}
+
+void DaylightPanel::applyDaylight(const DaylightEdit& e, const QString& text) {
+    const Scene& scene = doc_->scene();
+    QUndoStack* undo = doc_->undoStack();
+    undo->beginMacro(text);
+    if (!scene.site || e.site != *scene.site) undo->push(new EditSiteCommand(doc_, e.site, 0, text));
+    if (e.sunIndex >= 0) undo->push(new EditLightCommand(doc_, e.sunIndex, e.sun, 0, text));
+    else if (e.sun.type == LightType::Sun) undo->push(new AddLightCommand(doc_, int(scene.lights.size()), e.sun, text));
+    undo->push(new EditSkyCommand(doc_, e.sky, 0, text));
+    undo->endMacro();
+}
+
+void DaylightPanel::choosePerez() {
+    if (!weather_) {
+        const QString path = askWeather_ ? askWeather_() : QString();
+        if (path.isEmpty()) {
+            refresh();
+            return refuse(tr("A Perez sky is a weather file's hour: choose a weather file (.epw)."));
+        }
+        if (const QString error = useWeatherFile(path); !error.isEmpty()) {
+            refresh();
+            return refuse(error);
+        }
+    }
+    const auto e = weatherHourDaylight(doc_->scene(), *weather_, localTime(), doc_->uniqueName("sun"));
+    if (!e) {
+        refresh();
+        return refuse(tr("The weather file has no row for %1.").arg(QString::fromStdString(localTime()).replace('T', ' ')));
+    }
+    applyDaylight(*e, tr("Sky: the weather file's hour"));
+}
+
+void DaylightPanel::leavePerezFor(int item) {
+    const Scene& scene = doc_->scene();
+    DaylightEdit e = leavePerez(scene, item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast
+                                                                                                      : SkyModelType::CieGeneral);
+    QUndoStack* undo = doc_->undoStack();
+    const QString text = tr("Sky: %1").arg(skyModel_->itemText(item));
+    undo->beginMacro(text);
+    if (e.sunIndex >= 0) undo->push(new EditLightCommand(doc_, e.sunIndex, e.sun, 0, text));
+    undo->push(new EditSkyCommand(doc_, item == kNoSky ? std::optional<Sky>() : std::optional<Sky>(e.sky), 0, text));
+    undo->endMacro();
 }
 
 void DaylightPanel::chooseSkyModel(int item) {
     const Scene& scene = beginChoice();
+    if (item == kNoSky && scene.sky && scene.sky->model == SkyModelType::Perez) return leavePerezFor(item);
     if (item == kNoSky) {
         if (!scene.sky) return;
         lastSky_ = scene.sky;
@@ -530,13 +606,10 @@ void DaylightPanel::chooseSkyModel(int item) {
     }
     if (item == kCieGeneral && sunIndex(scene) < 0)
         return refuse(tr("A CIE general sky is shaped by the sun: add the sun first."));
-    // Not yet in the panel: choosing a weather file's hour here, and leaving one for another model
-    // (the sun would need an illuminance of its own).
-    if ((item == kPerez) != (scene.sky && scene.sky->model == SkyModelType::Perez)) {
-        refreshSky();
-        return refuse(item == kPerez ? tr("A Perez sky is a weather file's hour: lucerna annual --export-hour writes that scene.")
-                                     : tr("This sky is a weather file's hour; open a scene with another sky to change the model."));
-    }
+    const bool perez = scene.sky && scene.sky->model == SkyModelType::Perez;
+    if (item == kPerez && !perez) return choosePerez();
+    if (item != kPerez && perez) return leavePerezFor(item);
+    if (item == kPerez) return;
     Sky sky = scene.sky ? *scene.sky : lastSky_.value_or(defaultSky());
     const int remembered = sky.cieType;
     sky.model = item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast

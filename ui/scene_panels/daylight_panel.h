@@ -9,9 +9,11 @@
 
 #include "ui/document/document.h"
 #include "ui/properties/property_rows.h"
+#include "ui/scene_panels/weather_hour.h"
 
 #include <QWidget>
 
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -35,6 +37,10 @@ public:
     // "YYYY-MM-DDTHH:MM" of the date field and the time slider: the sun's time, or the one a
     // sun placed from now on gets.
     std::string localTime() const;
+    // Where a Perez sky's weather file comes from (a file dialog; empty: none chosen).
+    void setWeatherQuestion(std::function<QString()> ask) { askWeather_ = std::move(ask); }
+    // Reads the weather file a Perez sky takes its hours from; the one-line error, or empty.
+    QString useWeatherFile(const QString& path);
 
 signals:
     void message(const QString& text);
@@ -63,6 +69,11 @@ private:
     void chooseSkyModel(int item);
     void editSky(const void* field);
     void chooseSkyQuantity(int item);
+    // The Perez sky (weather_hour.h): the weather file's hour at the clock, and leaving it.
+    void choosePerez();
+    void leavePerezFor(int item);
+    // Site, sun and sky as one undo step.
+    void applyDaylight(const DaylightEdit& e, const QString& text);
 
     Document* doc_;
     MergeTracker merge_;
@@ -84,6 +95,10 @@ private:
     QDoubleSpinBox* skyValue_;
     QDoubleSpinBox* groundReflectance_;
     QLabel* error_;
+    QLabel* weatherLabel_;
+    std::function<QString()> askWeather_;
+    std::optional<WeatherFile> weather_;
+    QString weatherPath_;
 };
 
 }  // namespace lucerna

@@ -209,6 +209,8 @@ void MainWindow::createDocks() {
         settings.occupancy = annualPanel_->occupancy();
         report_->setSettings(settings);
     });
+    daylightPanel_->setWeatherQuestion(
+        [this] { return dialogs_->open(tr("Weather file"), tr("EnergyPlus weather files (*.epw *.EPW);;All files (*)")); });
     annualPanel_->setFileQuestion(
         [this] { return dialogs_->open(tr("Weather file"), tr("EnergyPlus weather files (*.epw *.EPW);;All files (*)")); });
     // Calculation grids drawn in the viewport.
