@@ -3,6 +3,7 @@
 #include "app/cli_support.h"
 #include "app/grid_placement.h"
 #include "core/atomic_file.h"
+#include "core/process_group.h"
 #include "core/resources.h"
 #include "core/daylight/annual_metrics.h"
 #include "core/daylight/epw_file.h"
@@ -160,24 +161,42 @@ int exportHour(const AnnualArgs& a, const Scene& scene, const WeatherFile& weath
                      "-" + std::to_string(hour));
 }
 
-int annualImpl(const std::vector<std::string>& args) {
-    exitOnInterrupt("annual interrupted; no file written\n");
-    AnnualArgs a = parseAnnualArgs(args);
-    for (const std::string* path : {&a.csv, &a.hourly, &a.hourlyError, &a.hourlyDirect, &a.exportPath})
-        if (!path->empty()) checkOutputPath(*path);
+// What a year needs once its arguments, scene and weather file are read.
+struct AnnualSetup {
+    AnnualArgs a;
     Scene scene;
+    WeatherFile weather;
+};
+
+// Everything that can fail on bad input before any work; of a shared year every rank does it,
+// and rank 0 alone checks the output paths (it alone writes).
+AnnualSetup setUpAnnual(const std::vector<std::string>& args, const ProcessGroup* processes) {
+    AnnualSetup s;
+    s.a = parseAnnualArgs(args);
+    if (rankOf(processes) == 0)
+        for (const std::string* path : {&s.a.csv, &s.a.hourly, &s.a.hourlyError, &s.a.hourlyDirect, &s.a.exportPath})
+            if (!path->empty()) checkOutputPath(*path);
     try {
-        scene = loadScene(a.scene);
+        s.scene = loadScene(s.a.scene);
     } catch (const SceneError& e) {
         throw UsageError(e.what());
     }
-    WeatherFile weather;
     try {
-        weather = readWeatherFile(a.weather);
+        s.weather = readWeatherFile(s.a.weather);
     } catch (const WeatherFileError& e) {
         throw UsageError(e.what());
     }
-    if (a.exportHour) return exportHour(a, scene, weather);
+    return s;
+}
+
+int annualImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
+    exitOnInterrupt("annual interrupted; no file written\n");
+    std::optional<AnnualSetup> setup = setUpTogether(processes, [&] { return setUpAnnual(args, processes); });
+    AnnualArgs& a = setup->a;
+    const Scene& scene = setup->scene;
+    const WeatherFile& weather = setup->weather;
+    const bool speaks = rankOf(processes) == 0;  // of a shared year, rank 0 prints and writes
+    if (a.exportHour) return speaks ? exportHour(a, scene, weather) : 0;
 
     CalculationGrid grid;
     if (a.workPlaneM) grid = workPlaneGridOf(scene, *a.workPlaneM, a.borderM, a.spacingM, a.gridName);
@@ -194,20 +213,30 @@ int annualImpl(const std::vector<std::string>& args) {
 
     // The traced points are kept as they go, so that an interrupted year can go on (--resume).
     a.settings.checkpointDirectory = cacheDirectory("annual");
+    a.settings.processes = processes;
     catchInterrupts();
     TaskSystem tasks(a.threads);
     std::optional<AnnualResult> result;
     auto job = tasks.submit([&](TaskContext& ctx) {
         result = computeAnnual(scene, layout.points, grid.normal(), weather, a.settings, ctx);
     });
-    waitShowingProgress(*job, "annual");
-    if (interrupted() || !result || result->cancelled) {
+    std::exception_ptr failure;
+    try {
+        waitShowingProgress(*job, "annual", 1,
+                            !processes ? ProgressLines::TerminalOnly : speaks ? ProgressLines::Also : ProgressLines::Never);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    agreeOnOutcome(processes, failure);
+    if (!result || result->cancelled || (!processes && interrupted())) {
+        if (!speaks) return 130;
         std::cerr << "annual interrupted; no file written"
                   << (result && !result->checkpointPath.empty() ? "; the same command with --resume goes on from the points traced"
                                                                 : "")
                   << "\n";
         return 130;
     }
+    if (!result->onRoot) return 0;
     if (result->resumedPoints > 0)
         std::fprintf(stderr, "resumed: %zu points read from %s\n", result->resumedPoints, result->checkpointPath.c_str());
     const AnnualResult& r = *result;
@@ -243,8 +272,8 @@ int annualImpl(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int annual(const std::vector<std::string>& args) {
-    return runCommand([&] { return annualImpl(args); });
+int annual(const std::vector<std::string>& args, ProcessGroup* processes) {
+    return runCommand([&] { return annualImpl(args, processes); });
 }
 
 }  // namespace lucerna::cli

@@ -6,6 +6,10 @@
 #include <string>
 #include <vector>
 
+namespace lucerna {
+class ProcessGroup;
+}
+
 namespace lucerna::cli {
 
 // annual SCENE.json --weather FILE.epw (--work-plane HEIGHT_M [--border M] | --task-area NAME)
@@ -17,6 +21,8 @@ namespace lucerna::cli {
 // --resume reads those of an interrupted run of the same year instead of tracing them again.
 // Returns the exit status of SPEC.md section 2 (2 with one line for bad usage or input, 130 when
 // interrupted, with no file written).
-int annual(const std::vector<std::string>& args);
+// Under mpirun (app/mpi_session.h), `processes` are the ranks that share the year
+// (AnnualSettings::processes): rank 0 prints and writes; nullptr: this process alone.
+int annual(const std::vector<std::string>& args, ProcessGroup* processes = nullptr);
 
 }  // namespace lucerna::cli

@@ -32,10 +32,10 @@ int main(int argc, char** argv) {
         if (command == "render" || command == "compare" || command == "info" || command == "convert" ||
             command == "bench" || command == "grid" || command == "import" || command == "standards" ||
             command == "glare" || command == "annual") {
-            // Started by mpirun: render and grid share their work among the ranks (MPI set up
+            // Started by mpirun: render, grid and annual share their work among the ranks (MPI set up
             // before Qt, finalised after it).
             std::unique_ptr<lucerna::ProcessGroup> processes;
-            if (command == "render" || command == "grid") {
+            if (command == "render" || command == "grid" || command == "annual") {
                 try {
                     processes = lucerna::startMpiSession(argc, argv);
                 } catch (const std::exception& e) {
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
             if (command == "import") return lucerna::cli::importModelCommand(rest);
             if (command == "standards") return lucerna::cli::standards(rest);
             if (command == "glare") return lucerna::cli::glare(rest);
-            if (command == "annual") return lucerna::cli::annual(rest);
+            if (command == "annual") return lucerna::cli::annual(rest, processes.get());
             return lucerna::cli::info(rest);
         }
         // The PDF report makes its own QGuiApplication (its fonts need one) once its input is good.

@@ -9,6 +9,7 @@
 #include "render/trace/warp.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <chrono>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include <memory>
 #include <cmath>
 #include <numbers>
+#include <span>
 
 namespace lucerna {
 
@@ -213,7 +215,11 @@ public:
         chooseCheckPoints();
         traceCoefficients();
         r_.tracingSeconds = secondsSince(t0);
-        if (ctx_.isCancelled()) return cancelled();
+        if (anyCancelled()) return cancelled();
+        if (!gatherOnRoot()) {
+            r_.onRoot = false;
+            return std::move(r_);
+        }
         const auto t1 = std::chrono::steady_clock::now();
         readHours();
         evaluateHours();
@@ -229,6 +235,56 @@ private:
     AnnualResult cancelled() {
         r_.cancelled = true;
         return std::move(r_);
+    }
+
+    // Whether any process was cancelled (every process asks, so that all leave or none).
+    bool anyCancelled() {
+        double mine = ctx_.isCancelled() ? 1 : 0;
+        if (sizeOf(settings_.processes) > 1)
+            for (double theirs : settings_.processes->allGather(std::span(&mine, 1))) mine = std::max(mine, theirs);
+        return mine > 0;
+    }
+
+    // Whether this process traces point p: the discretisation's points are rank 0's (their
+    // records stay there), the others dealt in turn.
+    bool mine(size_t p) const {
+        const int size = sizeOf(settings_.processes), rank = rankOf(settings_.processes);
+        return recordSlot_[p] >= 0 ? rank == 0 : int(p % size_t(size)) == rank;
+    }
+
+    // A shared year: every point's coefficients to rank 0 (zeros from the processes that did not
+    // trace it, so the sum is the tracer's); false on the other ranks.
+    bool gatherOnRoot() {
+        ProcessGroup* group = settings_.processes;
+        if (sizeOf(group) <= 1) return true;
+        const int batches = settings_.coefficients.batches, nodes = sunGrid_.nodeCount();
+        const size_t sizes[4] = {size_t(fine_.count() + 1), size_t(batches) * size_t(coarse_.count() + 1), size_t(nodes),
+                                 size_t(batches) * size_t(nodes)};
+        const size_t per = sizes[0] + sizes[1] + sizes[2] + sizes[3];
+        std::vector<double> flat(n_ * per, 0.0);
+        const auto parts = [&](PointCoefficients& c) {
+            return std::array<std::vector<float>*, 4>{&c.sky, &c.coarseSky, &c.sunIndirect, &c.sunIndirectBatches};
+        };
+        for (size_t p = 0; p < n_; ++p) {
+            if (!mine(p) || r_.insideGeometry[p]) continue;
+            size_t at = p * per;
+            for (std::vector<float>* v : parts(coefficients_[p])) {
+                std::copy(v->begin(), v->end(), flat.begin() + ptrdiff_t(at));
+                at += v->size();
+            }
+        }
+        group->sumToRoot(flat);
+        if (group->rank() != 0) return false;
+        for (size_t p = 0; p < n_; ++p) {
+            if (mine(p) || r_.insideGeometry[p]) continue;
+            size_t at = p * per;
+            const auto v = parts(coefficients_[p]);
+            for (int k = 0; k < 4; ++k) {
+                v[size_t(k)]->assign(flat.begin() + ptrdiff_t(at), flat.begin() + ptrdiff_t(at + sizes[k]));
+                at += sizes[k];
+            }
+        }
+        return true;
     }
 
     // The points that measure the discretisation: spread over those outside geometry.
@@ -252,8 +308,10 @@ private:
             std::to_string(c.batches) + "," + std::to_string(c.seed) + "," + std::to_string(settings_.sunDeclinationStepDeg) +
             "," + std::to_string(settings_.sunHourAngleStepDeg) + "," + std::to_string(north_.x) + "," + std::to_string(north_.z);
         const uint64_t key = annualCheckpointKey(scene_, points_, normal_, weather_.latitudeDeg, settingsText);
-        char name[64];
-        std::snprintf(name, sizeof name, "/annual-%016llx.checkpoint", static_cast<unsigned long long>(key));
+        // Each process of a shared year keeps its own points.
+        char name[96];
+        std::snprintf(name, sizeof name, "/annual-%016llx-%d-of-%d.checkpoint", static_cast<unsigned long long>(key),
+                      rankOf(settings_.processes), sizeOf(settings_.processes));
         r_.checkpointPath = settings_.checkpointDirectory + name;
         checkpoint_ = std::make_unique<AnnualCheckpoint>(r_.checkpointPath, key);
         return checkpoint_->open(settings_.resume);
@@ -273,8 +331,8 @@ private:
             const IrradianceSensor s = estimator.lifted({V3f(points_[p]), up_});
             sensors_[p] = s.position;
             const int slot = recordSlot_[p];
-            if (r_.insideGeometry[p]) {
-                // no light reaches it: its coefficients stay empty
+            if (r_.insideGeometry[p] || !mine(p)) {
+                // no light reaches it, or another process traces it: its coefficients stay empty
             } else if (const auto kept = restored.find(p); kept != restored.end() && slot < 0) {
                 coefficients_[p] = std::move(kept->second);
                 ++resumed;

@@ -12,6 +12,7 @@
 
 #include "core/daylight/annual_metrics.h"
 #include "core/daylight/epw_file.h"
+#include "core/process_group.h"
 #include "core/scene/scene.h"
 #include "core/task_system.h"
 #include "render/annual/daylight_coefficients.h"
@@ -34,6 +35,11 @@ struct AnnualSettings {
     // are read instead of traced again.
     std::string checkpointDirectory;
     bool resume = false;
+    // A year shared among processes (`mpirun -n N lucerna annual`, core/process_group.h): the
+    // points are dealt out (the discretisation's to rank 0), their coefficients gathered on rank
+    // 0, which alone evaluates the hours; each point's paths are drawn as one process draws them,
+    // so the values are those of one process. Every process calls computeAnnual; nullptr: alone.
+    ProcessGroup* processes = nullptr;
 };
 
 struct AnnualResult {
@@ -54,6 +60,7 @@ struct AnnualResult {
     double tracingSeconds = 0, hoursSeconds = 0;
     bool cancelled = false;
     size_t resumedPoints = 0;        // read from the checkpoint, not traced
+    bool onRoot = true;              // false on the other ranks of a shared year: nothing but this
     std::string checkpointPath;      // the checkpoint's file (left there when cancelled)
 };
 

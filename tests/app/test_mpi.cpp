@@ -117,6 +117,7 @@ private slots:
     void sceneErrorOnEveryRankIsOneLine();
     void deadRankLeavesNoFile();
     void interruptLeavesNoFile();
+    void annualOnTwoRanksEqualsOneProcess();
 
 private:
     QTemporaryDir dir_;
@@ -301,6 +302,30 @@ void TestMpi::interruptLeavesNoFile() {
     QVERIFY2(r.exitCode != 0, qPrintable(describe(r)));
     QVERIFY2(QDir(empty.path()).entryList(QDir::Files | QDir::Hidden).isEmpty(),
              qPrintable(QDir(empty.path()).entryList(QDir::Files | QDir::Hidden).join(' ')));
+}
+
+// `mpirun -n 2 lucerna annual` (issue 39): the points dealt out, gathered on rank 0: the year's
+// CSVs are those of one process, byte for byte (each point's paths depend on its index alone).
+void TestMpi::annualOnTwoRanksEqualsOneProcess() {
+    const QString office = QString(LUCERNA_RESOURCE_DIR) + "/scenes/daylit_office.json";
+    const QString weather = QString(LUCERNA_RESOURCE_DIR) + "/weather/paris_synthetic.epw";
+    const QStringList common{"annual", office, "--weather", weather, "--task-area", "Reference plane", "--spacing", "0.7",
+                             "--paths", "1024", "--sun-paths", "32"};
+    const QString one = dir_.filePath("annual1.csv"), two = dir_.filePath("annual2.csv");
+    const QString oneHourly = dir_.filePath("annual1_h.csv"), twoHourly = dir_.filePath("annual2_h.csv");
+    const Run alone = runAlone(common + QStringList{"--csv", one, "--hourly", oneHourly}, 120000);
+    QVERIFY2(alone.exitCode == 0, qPrintable(describe(alone)));
+    const Run shared = runMpi(2, common + QStringList{"--csv", two, "--hourly", twoHourly}, 180000);
+    QVERIFY2(shared.exitCode == 0, qPrintable(describe(shared)));
+    QVERIFY(shared.out.contains("sDA300/50%"));
+    QCOMPARE(shared.out.count("sDA300/50%"), 1);  // rank 0 alone speaks
+    const auto bytes = [](const QString& path) {
+        QFile f(path);
+        return f.open(QIODevice::ReadOnly) ? f.readAll() : QByteArray();
+    };
+    QVERIFY(!bytes(one).isEmpty());
+    QCOMPARE(bytes(two), bytes(one));
+    QCOMPARE(bytes(twoHourly), bytes(oneHourly));
 }
 
 QTEST_GUILESS_MAIN(TestMpi)
