@@ -12,12 +12,6 @@ namespace {
 
 constexpr float kPiF = std::numbers::pi_v<float>;
 
-// Two-sided materials shade with the geometric normal flipped toward wo, as the path tracer does.
-V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
-    if (mat.type == MaterialType::Dielectric) return ng;
-    return ng.dot(wo) < 0.0f ? -ng : ng;
-}
-
 }  // namespace
 
 DaylightCoefficientTracer::DaylightCoefficientTracer(const RenderScene& scene, const SkyPatches& patches,

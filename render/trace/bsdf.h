@@ -66,6 +66,14 @@ float bsdfPdf(const ShadingMaterial& m, const V3f& wo, const V3f& wi);
 // -> reflect, weight 1); radiance NOT scaled by eta^2, so the weight is always 1.
 bool bsdfSample(const ShadingMaterial& m, const V3f& wo, const V2f& u, float uLobe, BsdfSample& out);
 
+// The shading normal at a hit with unit geometric normal ng seen from wo: two-sided materials
+// shade with ng flipped toward wo (SPEC.md); glass keeps its front side, which tells entering
+// from leaving.
+inline V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
+    if (mat.type == MaterialType::Dielectric) return ng;
+    return ng.dot(wo) < 0.0f ? -ng : ng;
+}
+
 // Unpolarised Fresnel reflectance of a smooth dielectric interface, in [0, 1]. cosThetaI is the
 // cosine between the incident direction and the normal; eta = n_transmitted / n_incident for
 // cosThetaI >= 0. A negative cosThetaI means the incident direction is on the other side, and

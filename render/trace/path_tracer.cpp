@@ -2,15 +2,6 @@
 
 namespace lucerna {
 
-namespace {
-// Two-sided materials shade with the geometric normal flipped toward wo (SPEC.md); glass keeps
-// its front side, which tells entering from leaving.
-V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
-    if (mat.type == MaterialType::Dielectric) return ng;
-    return ng.dot(wo) < 0.0f ? -ng : ng;
-}
-}  // namespace
-
 Rgb PathTracer::nextEventEstimate(const SurfacePoint& hit, const ShadingMaterial& mat, const Frame& frame,
                                   const V3f& woLocal, SampleGenerator& rng) const {
     LightSample ls;

@@ -3,11 +3,6 @@
 namespace lucerna {
 
 namespace {
-V3f shadingNormal(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
-    if (mat.type == MaterialType::Dielectric) return ng;
-    return ng.dot(wo) < 0.0f ? -ng : ng;
-}
-
 PathSettings residualPathSettings() { return PathSettings{}; }
 }  // namespace
 

@@ -75,7 +75,7 @@ void BdptTracer::randomWalk(Ray ray, Rgb beta, float pdfDir, int maxAdded, bool 
         path.push_back(v);
         if (++bounces >= maxAdded) break;
 
-        const Frame frame(shadingNormalToward(mat, v.sp.ng, v.wo));
+        const Frame frame(shadingNormal(mat, v.sp.ng, v.wo));
         const V3f woLocal = frame.toLocal(v.wo);
         BsdfSample bs;
         const V2f u = rng.next2D();
@@ -277,7 +277,7 @@ Rgb BdptTracer::connect(int s, int t, bool weighted, SampleGenerator& rng, float
 }
 
 V3f BdptTracer::receivingNormal(const PathVertex& x1, const PathVertex& x2) const {
-    return shadingNormalToward(scene_.material(x1.sp.material), x1.sp.ng, x2.p() - x1.p());
+    return shadingNormal(scene_.material(x1.sp.material), x1.sp.ng, x2.p() - x1.p());
 }
 
 float BdptTracer::nextEventRatio(const PathVertex& x0, const PathVertex& x1, const PathVertex& x2) const {

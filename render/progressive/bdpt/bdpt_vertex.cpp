@@ -18,13 +18,13 @@ float VertexDensities::toArea(float pdfSolidAngle, const PathVertex& from, const
 
 float VertexDensities::bsdfPdf(const PathVertex& v, const V3f& wFrom, const V3f& wTo) const {
     const ShadingMaterial& mat = scene_.material(v.sp.material);
-    const Frame frame(shadingNormalToward(mat, v.sp.ng, wFrom));
+    const Frame frame(shadingNormal(mat, v.sp.ng, wFrom));
     return lucerna::bsdfPdf(mat, frame.toLocal(wFrom), frame.toLocal(wTo));
 }
 
 Rgb VertexDensities::bsdf(const PathVertex& v, const V3f& wi) const {
     const ShadingMaterial& mat = scene_.material(v.sp.material);
-    const Frame frame(shadingNormalToward(mat, v.sp.ng, v.wo));
+    const Frame frame(shadingNormal(mat, v.sp.ng, v.wo));
     return bsdfEval(mat, frame.toLocal(v.wo), frame.toLocal(wi));
 }
 

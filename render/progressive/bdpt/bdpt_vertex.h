@@ -94,11 +94,4 @@ private:
     const RenderScene& scene_;
 };
 
-// Two-sided materials shade with the geometric normal flipped toward wo (SPEC.md); glass keeps
-// its front side, which tells entering from leaving.
-inline V3f shadingNormalToward(const ShadingMaterial& mat, const V3f& ng, const V3f& wo) {
-    if (mat.type == MaterialType::Dielectric) return ng;
-    return ng.dot(wo) < 0.0f ? -ng : ng;
-}
-
 }  // namespace lucerna

@@ -12,7 +12,7 @@ bool followSpecular(const RenderScene& scene, const SurfacePoint& hit, bool refr
     const ShadingMaterial& mat = scene.material(hit.material);
     if (!mat.isDelta()) return false;
     const V3f wo = -ray.direction.normalized();
-    const Frame frame(shadingNormalToward(mat, hit.ng, wo));
+    const Frame frame(shadingNormal(mat, hit.ng, wo));
     const V3f woLocal = frame.toLocal(wo);
     BsdfSample bs;
     // The branch forced: uLobe 0 reflects whenever glass can, 1 refracts whenever it can. The
