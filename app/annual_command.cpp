@@ -9,6 +9,7 @@
 #include "core/daylight/epw_file.h"
 #include "core/scene/scene_io.h"
 #include "render/annual/annual_calculation.h"
+#include "render/annual/annual_text.h"
 
 #include <cstdio>
 #include <iostream>
@@ -86,37 +87,6 @@ AnnualArgs parseAnnualArgs(const std::vector<std::string>& args) {
     if (!a.exportHour && (a.workPlaneM.has_value() == !a.taskArea.empty()))
         throw UsageError("annual: give one of --work-plane HEIGHT or --task-area NAME");
     return a;
-}
-
-std::string percent(double fraction) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.1f%%", 100 * fraction);
-    return text;
-}
-
-// SPEC.md section 6's lines, one each.
-void printMetrics(const AnnualArgs& a, const WeatherFile& weather, const AnnualResult& r, const AnnualMetrics& m) {
-    std::printf("weather: %s; %d hours with missing values\n", weather.describe().c_str(), weather.hoursWithMissingValues);
-    std::printf("hours: %d with daylight (Ib > 0 or Ed > 0), %d occupied (%g:00 to %g:00 local standard time)\n",
-                r.daylightHours, m.occupiedHours, a.occupancy.fromHour, a.occupancy.toHour);
-    std::printf("sDA300/50%%: %.1f%% of %d points have 300 lx or more in at least half of the occupied hours "
-                "(blinds are not modelled)\n",
-                m.sda300, m.countedPoints);
-    std::printf("ASE1000,250h: %.1f%% of the points get more than 1000 lx of direct sun in more than 250 occupied hours\n",
-                m.ase);
-    std::printf("UDI: fell short (< 100 lx) %s, useful (100 to 3000 lx) %s, exceeded (> 3000 lx) %s of the occupied "
-                "hours, means over the points\n",
-                percent(m.udiFellShort).c_str(), percent(m.udiUseful).c_str(), percent(m.udiExceeded).c_str());
-    std::string en = "EN 17037 illuminance method, over " + std::to_string(m.daylightHours) + " daylight hours:";
-    for (const En17037Level& level : m.en17037) {
-        char text[256];
-        std::snprintf(text, sizeof text, " %s %s (%g lx on 50%% of the plane in %s of the hours, %g lx on 95%% in %s);",
-                      level.name.c_str(), level.met ? "met" : "not met", level.targetLux,
-                      percent(level.fractionTarget).c_str(), level.minimumTargetLux, percent(level.fractionMinimum).c_str());
-        en += text;
-    }
-    en.pop_back();
-    std::printf("%s\n", en.c_str());
 }
 
 std::string pointsCsv(const std::vector<V3d>& points, const AnnualMetrics& m) {
@@ -251,13 +221,8 @@ int annualImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
                 grid.name.c_str(), layout.nu, layout.nv, layout.spacingUMeters, layout.spacingVMeters,
                 a.settings.coefficients.skySubdivision, patches.count(), a.settings.coefficients.paths,
                 a.settings.coefficients.sunPaths);
-    printMetrics(a, weather, r, m);
-    std::printf("stated 95%% error of the hourly values: statistical %s of the value (median), sky and sun "
-                "discretisation %s (measured on a sample of points and hours: straight view %s, reflected sky %s, "
-                "sun's reflections %s); time: tracing %.1f s, hours %.1f s\n",
-                percent(r.statisticalRelative).c_str(), percent(r.discretisationRelative).c_str(),
-                percent(r.discretisationParts[0]).c_str(), percent(r.discretisationParts[1]).c_str(),
-                percent(r.discretisationParts[2]).c_str(), r.tracingSeconds, r.hoursSeconds);
+    for (const std::string& line : annualFigureLines(weather, r, m, a.occupancy)) std::printf("%s\n", line.c_str());
+    std::printf("%s; time: tracing %.1f s, hours %.1f s\n", annualErrorLine(r).c_str(), r.tracingSeconds, r.hoursSeconds);
     const auto write = [](const std::string& path, const std::string& text) {
         if (path.empty()) return;
         writeTextAtomically(path, text);

@@ -4,6 +4,7 @@
 #include "core/scene/scene_change.h"
 #include "core/scene/scene_geometry.h"
 #include "ui/calculation/annual_charts.h"
+#include "render/annual/annual_text.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -21,32 +22,11 @@ namespace lucerna {
 
 namespace {
 
-QString percent(double fraction) { return QStringLiteral("%1%").arg(100 * fraction, 0, 'f', 1); }
-
-// SPEC.md section 6's figures in the dock's words.
+// The command line's lines, one a paragraph.
 QString figuresText(const WeatherFile& weather, const AnnualResult& r, const AnnualMetrics& m, const Occupancy& o) {
     QStringList lines;
-    lines << QObject::tr("Weather: %1").arg(QString::fromStdString(weather.describe()));
-    if (weather.hoursWithMissingValues > 0)
-        lines << QObject::tr("%1 hours of the file had missing values (read as 0)").arg(weather.hoursWithMissingValues);
-    lines << QObject::tr("%1 hours with daylight, %2 occupied (%3:00 to %4:00)")
-                 .arg(r.daylightHours)
-                 .arg(m.occupiedHours)
-                 .arg(o.fromHour)
-                 .arg(o.toHour);
-    lines << QObject::tr("sDA300/50%: %1% of %2 points (blinds are not modelled)").arg(m.sda300, 0, 'f', 1).arg(m.countedPoints);
-    lines << QObject::tr("ASE1000,250h: %1% of the points").arg(m.ase, 0, 'f', 1);
-    lines << QObject::tr("UDI: fell short %1, useful %2, exceeded %3")
-                 .arg(percent(m.udiFellShort), percent(m.udiUseful), percent(m.udiExceeded));
-    for (const En17037Level& level : m.en17037)
-        lines << QObject::tr("EN 17037 %1: %2 (%3 lx on half the plane in %4 of the daylight hours, %5 lx on 95% in %6)")
-                     .arg(QString::fromStdString(level.name), level.met ? QObject::tr("met") : QObject::tr("not met"))
-                     .arg(level.targetLux)
-                     .arg(percent(level.fractionTarget))
-                     .arg(level.minimumTargetLux)
-                     .arg(percent(level.fractionMinimum));
-    lines << QObject::tr("Stated 95% error of an hour's value: %1 statistical (median), %2 discretisation")
-                 .arg(percent(r.statisticalRelative), percent(r.discretisationRelative));
+    for (const std::string& line : annualFigureLines(weather, r, m, o)) lines << QString::fromStdString(line);
+    lines << QString::fromStdString(annualErrorLine(r));
     return lines.join('\n');
 }
 
