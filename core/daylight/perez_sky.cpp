@@ -1,5 +1,7 @@
 #include "core/daylight/perez_sky.h"
 
+#include "core/daylight/hemisphere_quadrature.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -110,21 +112,9 @@ double PerezSky::relativeLuminance(const V3d& w) const {
 }
 
 double PerezSky::horizontalIntegral(int resolution) const {
-    const int nz = std::max(resolution, 8), nphi = 4 * nz;
-    const double dz = (kPiD / 2) / nz, dphi = 2 * kPiD / nphi;
-    double sum = 0;
-    for (int i = 0; i < nz; ++i) {
-        const double z = (i + 0.5) * dz, sz = std::sin(z), cz = std::cos(z);
-        double ring = 0;
-        for (int j = 0; j < nphi; ++j) {
-            const double phi = (j + 0.5) * dphi;
-            const V3d w(sz * std::cos(phi), cz, sz * std::sin(phi));
-            const double gamma = std::acos(std::clamp(w.dot(towardSun_), -1.0, 1.0));
-            ring += std::max(lvUnclamped(cz, gamma), 0.0);
-        }
-        sum += ring * cz * sz;
-    }
-    return sum * dz * dphi;
+    return lucerna::horizontalIntegral(
+        [&](const V3d& w) { return std::max(lvUnclamped(w.y, std::acos(std::clamp(w.dot(towardSun_), -1.0, 1.0))), 0.0); },
+        resolution);
 }
 
 }  // namespace lucerna

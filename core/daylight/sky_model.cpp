@@ -1,5 +1,7 @@
 #include "core/daylight/sky_model.h"
 
+#include "core/daylight/hemisphere_quadrature.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -79,22 +81,7 @@ double relativeHorizontalIlluminance(const Sky& sky, const V3d& towardSun, int r
 }
 
 double relativeHorizontalIlluminance(const SkyDistribution& relative, int resolution) {
-    // Midpoint rule in (Z, azimuth); the integrand is smooth except near the sun, where the
-    // indicatrix has a kink of bounded slope.
-    const int nz = std::max(resolution, 8), nphi = 4 * nz;
-    const double dz = (kPiD / 2) / nz;
-    const double dphi = 2 * kPiD / nphi;
-    double sum = 0;
-    for (int i = 0; i < nz; ++i) {
-        const double z = (i + 0.5) * dz, sz = std::sin(z), cz = std::cos(z);
-        double ring = 0;
-        for (int j = 0; j < nphi; ++j) {
-            const double phi = (j + 0.5) * dphi;
-            ring += relative(V3d(sz * std::cos(phi), cz, sz * std::sin(phi)));
-        }
-        sum += ring * cz * sz;
-    }
-    return sum * dz * dphi;
+    return horizontalIntegral(relative, resolution);
 }
 
 double zenithLuminance(const Sky& sky, const V3d& towardSun) {

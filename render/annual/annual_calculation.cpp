@@ -71,6 +71,7 @@ struct HourInputs {
     PerezInputs perez;
     V3d towardSun;
     bool daylight = false;
+    std::optional<PerezSky> sky;  // its shape (no scale): the averager scales it by Evd
 };
 
 class SkyAverager {
@@ -358,8 +359,11 @@ private:
                                    settings_.dewPointC.value_or(h.dewPointC), dayOfYear(weather_.year(), h.month, h.day),
                                    in.towardSun};
             in.daylight = h.directNormalIrradiance > 0 || h.diffuseHorizontalIrradiance > 0;
-            if (in.daylight) daylit.push_back(row);
-            const double evd = in.daylight ? PerezSky(in.perez, 0).diffuseIlluminance() : 0;
+            if (in.daylight) {
+                daylit.push_back(row);
+                in.sky.emplace(in.perez, 0);
+            }
+            const double evd = in.daylight ? in.sky->diffuseIlluminance() : 0;
             r_.hours[row] = AnnualHour{h.month, h.day, h.hour, evd};
         }
         r_.daylightHours = int(daylit.size());
@@ -405,7 +409,7 @@ private:
             for (size_t row = size_t(task) * kRowsPerTask; row < std::min(rows_, size_t(task + 1) * kRowsPerTask); ++row) {
                 const HourInputs& in = inputs_[row];
                 if (!in.daylight) continue;
-                const PerezSky sky(in.perez, 0);
+                const PerezSky& sky = *in.sky;
                 const bool sunUp = in.towardSun.y > 0 && sky.directNormalIlluminance() > 0;
                 const double evn = sunUp ? sky.directNormalIlluminance() : 0;
                 const double ground = groundReflectance * (sky.diffuseIlluminance() + evn * std::max(in.towardSun.y, 0.0)) / kPiD;

@@ -90,7 +90,9 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     std::vector<std::pair<double, QString>> shares;
     for (const QString& entry : QString::fromStdString(time->second).split(' ', Qt::SkipEmptyParts)) {
         const QStringList nameAndShare = entry.split('=');
-        if (nameAndShare.size() == 2) shares.emplace_back(nameAndShare[1].toDouble(), nameAndShare[0]);
+        bool number = false;
+        const double share = nameAndShare.size() == 2 ? nameAndShare[1].toDouble(&number) : 0.0;
+        if (number) shares.emplace_back(share, nameAndShare[0]);
     }
     std::ranges::sort(shares, std::greater<>());
     QStringList parts;

@@ -8,7 +8,6 @@
 #include "ui/commands/light_commands.h"
 #include "ui/scene_panels/site_cities.h"
 
-#include "core/daylight/epw_file.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -38,7 +37,6 @@ constexpr int kNoSite = 0;
 constexpr int kCustomSite = int(kSiteCities.size()) + 1;
 
 // The sky model list, in this order.
-constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3, kPerez = 4;
 // The sky quantity list.
 constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
 
@@ -539,60 +537,6 @@ void DaylightPanel::moveSun(const void* field) {
     if (moved.sky && moved.sky->model == SkyModelType::Perez && weather_)
         if (const auto e = weatherHourDaylight(moved, *weather_, localTime(), "sun"); e && e->sky != *moved.sky)
             doc_->undoStack()->push(new EditSkyCommand(doc_, e->sky, 0, tr("Sky: the weather file's hour")));
-}
-
-QString DaylightPanel::useWeatherFile(const QString& path) {
-    try {
-        weather_ = readWeatherFile(path.toStdString());
-    } catch (const WeatherFileError& e) {
-        return QString::fromStdString(e.what());
-    }
-    weatherPath_ = path;
-    weatherLabel_->setText(tr("Weather: %1").arg(QString::fromStdString(weather_->describe())));
-    return {};
-}
-
-void DaylightPanel::applyDaylight(const DaylightEdit& e, const QString& text) {
-    const Scene& scene = doc_->scene();
-    QUndoStack* undo = doc_->undoStack();
-    undo->beginMacro(text);
-    if (!scene.site || e.site != *scene.site) undo->push(new EditSiteCommand(doc_, e.site, 0, text));
-    if (e.sunIndex >= 0) undo->push(new EditLightCommand(doc_, e.sunIndex, e.sun, 0, text));
-    else if (e.sun.type == LightType::Sun) undo->push(new AddLightCommand(doc_, int(scene.lights.size()), e.sun, text));
-    undo->push(new EditSkyCommand(doc_, e.sky, 0, text));
-    undo->endMacro();
-}
-
-void DaylightPanel::choosePerez() {
-    if (!weather_) {
-        const QString path = askWeather_ ? askWeather_() : QString();
-        if (path.isEmpty()) {
-            refresh();
-            return refuse(tr("A Perez sky is a weather file's hour: choose a weather file (.epw)."));
-        }
-        if (const QString error = useWeatherFile(path); !error.isEmpty()) {
-            refresh();
-            return refuse(error);
-        }
-    }
-    const auto e = weatherHourDaylight(doc_->scene(), *weather_, localTime(), doc_->uniqueName("sun"));
-    if (!e) {
-        refresh();
-        return refuse(tr("The weather file has no row for %1.").arg(QString::fromStdString(localTime()).replace('T', ' ')));
-    }
-    applyDaylight(*e, tr("Sky: the weather file's hour"));
-}
-
-void DaylightPanel::leavePerezFor(int item) {
-    const Scene& scene = doc_->scene();
-    DaylightEdit e = leavePerez(scene, item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast
-                                                                                                      : SkyModelType::CieGeneral);
-    QUndoStack* undo = doc_->undoStack();
-    const QString text = tr("Sky: %1").arg(skyModel_->itemText(item));
-    undo->beginMacro(text);
-    if (e.sunIndex >= 0) undo->push(new EditLightCommand(doc_, e.sunIndex, e.sun, 0, text));
-    undo->push(new EditSkyCommand(doc_, item == kNoSky ? std::optional<Sky>() : std::optional<Sky>(e.sky), 0, text));
-    undo->endMacro();
 }
 
 void DaylightPanel::chooseSkyModel(int item) {

@@ -46,6 +46,9 @@ signals:
     void message(const QString& text);
 
 private:
+    // The sky model box's items.
+    static constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3, kPerez = 4;
+
     void refresh();
     void refreshSite();
     void refreshSun();
