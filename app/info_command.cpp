@@ -107,6 +107,7 @@ void printSky(const Scene& scene) {
     const double eh = d.sky->horizontalIlluminance;
     std::cout << "sky: " << model;
     if (scene.sky->model == SkyModelType::CieGeneral) std::cout << " type " << scene.sky->cieType;
+    if (scene.sky->levels == DaylightLevels::FollowAltitude) std::cout << ", levels following the sun's altitude (IES)";
     if (const auto& p = d.sky->perez)
         std::cout << " (Ib " << formatLumens(scene.sky->directNormalIrradiance) << " W/m2, Ed "
                   << formatLumens(scene.sky->diffuseHorizontalIrradiance) << " W/m2: clearness " << std::setprecision(3)

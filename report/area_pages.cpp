@@ -297,6 +297,7 @@ void addAreaPages(PageFlow& flow, const ReportData& data, const AreaReport& a) {
     plan.values = a.result.lux;
     plan.insideGeometry = a.result.insideGeometry;
     plan.statistics = a.statistics;
+    if (a.requirement) plan.requiredLux = a.requirement->maintainedLux;  // the colours centre on Em
     for (const ObserverGlare& o : a.glare) plan.observers.push_back(o.observer);
     addPlan(flow, data, a, std::move(plan), flow.mm(125));
 

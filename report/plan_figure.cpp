@@ -4,6 +4,8 @@
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "render/display/iso_lines.h"
+#include "render/display/legend_ticks.h"
+#include "render/display/luminaire_symbols.h"
 #include "render/display/plan_projection.h"
 #include "render/display/plan_scales.h"
 
@@ -232,39 +234,62 @@ double paintZoneEntries(QPainter& p, const QRectF& band, const std::vector<PlanZ
     return width + 4 * dpmm;
 }
 
-void paintLegend(QPainter& p, const QRectF& band, const PlanScale& s, const QString& unit, const QFont& font,
+void paintLegend(QPainter& p, const QRectF& band, const Legend& legend, const QString& unit, const QFont& font,
                  double dpmm, const std::vector<PlanZone>& zones) {
     const QFontMetricsF fm(font, p.device());
     const double unitWidth = fm.horizontalAdvance(unit) + 3 * dpmm;
     const double zonesWidth = paintZoneEntries(p, band, zones, font, dpmm);
     const QRectF ramp(band.left() + unitWidth, band.top() + 2 * dpmm,
                       band.width() - unitWidth - std::max(8 * dpmm, zonesWidth), 4 * dpmm);
-    const Legend legend = s.legend(QStringLiteral("lx"));
     const int steps = 200;
     for (int i = 0; i < steps; ++i) {
         const double t0 = double(i) / steps, t1 = double(i + 1) / steps;
         const QRectF cell(ramp.left() + t0 * ramp.width(), ramp.top(), (t1 - t0) * ramp.width() + 0.5, ramp.height());
-        p.fillRect(cell, falseColourRamp((t0 + t1) / 2));
+        // A banded legend's colour is its band's: the one of the value at the cell's middle.
+        const size_t bands = legend.bands.size() >= 2 ? legend.bands.size() - 1 : 0;
+        const double t = (t0 + t1) / 2;
+        p.fillRect(cell, bands ? falseColourRamp((std::min(std::floor(t * double(bands)), double(bands) - 1) + 0.5) / double(bands))
+                               : falseColourRamp(t));
     }
     p.setPen(QPen(Qt::black, 0.15 * dpmm));
     p.setBrush(Qt::NoBrush);
     p.drawRect(ramp);
     p.setFont(font);
     p.drawText(QPointF(band.left(), ramp.center().y() + fm.ascent() / 2 - fm.descent() / 2), unit);
-    std::vector<double> ticks{s.lo};
-    ticks.insert(ticks.end(), s.levels.begin(), s.levels.end());
-    ticks.push_back(s.hi);
-    double lastRight = -1e300;
     const double labelsRight = zonesWidth > 0 ? ramp.right() + 2 * dpmm : band.right();  // clear of the zones' entries
-    for (size_t i = 0; i < ticks.size(); ++i) {
-        const double x = ramp.left() + legendPosition(legend, ticks[i]) * ramp.width();
+    const double baseline = ramp.bottom() + 1.6 * dpmm + fm.ascent();
+    std::vector<std::pair<double, double>> taken;  // the labels' horizontal extents
+    const auto free = [&](double left, double right) {
+        return std::none_of(taken.begin(), taken.end(),
+                            [&](const auto& r) { return left < r.second + 1.5 * dpmm && right > r.first - 1.5 * dpmm; });
+    };
+    // The requirement first, across the ramp and in bold under it: the tick labels give way.
+    if (legend.target && *legend.target >= legend.lo && *legend.target <= legend.hi) {
+        const double x = ramp.left() + legendPosition(legend, *legend.target) * ramp.width();
+        p.setPen(QPen(Qt::white, 0.6 * dpmm));
+        p.drawLine(QPointF(x, ramp.top()), QPointF(x, ramp.bottom()));
+        p.setPen(QPen(Qt::black, 0.3 * dpmm));
+        p.drawLine(QPointF(x, ramp.top() - 0.8 * dpmm), QPointF(x, ramp.bottom() + 1.2 * dpmm));
+        QFont bold = font;
+        bold.setBold(true);
+        const QFontMetricsF bm(bold, p.device());
+        const double w = bm.horizontalAdvance(legend.targetLabel);
+        const double left = std::clamp(x - w / 2, band.left(), labelsRight - w);
+        p.setFont(bold);
+        p.drawText(QPointF(left, baseline), legend.targetLabel);
+        p.setFont(font);
+        taken.push_back({left, left + w});
+    }
+    p.setPen(QPen(Qt::black, 0.15 * dpmm));
+    for (double v : legendTicks(legend)) {
+        const double x = ramp.left() + legendPosition(legend, v) * ramp.width();
         p.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + 1.2 * dpmm));
-        const QString text = levelText(ticks[i]);
+        const QString text = tickText(v);
         const double w = fm.horizontalAdvance(text);
         const double left = std::clamp(x - w / 2, band.left(), labelsRight - w);
-        if (left < lastRight + 1.5 * dpmm) continue;  // labels never overlap
-        p.drawText(QPointF(left, ramp.bottom() + 1.6 * dpmm + fm.ascent()), text);
-        lastRight = left + w;
+        if (!free(left, left + w)) continue;  // labels never overlap
+        p.drawText(QPointF(left, baseline), text);
+        taken.push_back({left, left + w});
     }
 }
 
@@ -365,8 +390,12 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
     paintZones(p, view, g, plan.zones, frame, dpmm);  // under the area's values
 
     // The grid: each point's value over its cell.
-    const PlanScale scale = planScale(plan.statistics);
-    const Legend legend = scale.legend(QStringLiteral("lx"));
+    const PlanScale scale = plan.requiredLux ? requirementScale(*plan.requiredLux, plan.statistics) : planScale(plan.statistics);
+    Legend legend = scale.legend(QStringLiteral("lx"));
+    if (plan.requiredLux) {
+        legend.target = *plan.requiredLux;
+        legend.targetLabel = QStringLiteral("Em %1").arg(tickText(*plan.requiredLux));
+    }
     const int nu = layout.nu, nv = layout.nv;
     if (nu > 0 && nv > 0 && plan.values.size() == layout.points.size()) {
         const V3d du = g.edgeU / nu, dv = g.edgeV / nv;
@@ -446,16 +475,15 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
     // Luminaires and lamps within the view.
     if (frame.plan) {
         const double r = 1.2 * dpmm;
-        for (const Light& l : scene.lights) {
-            if (!l.on || l.type == LightType::Directional || l.type == LightType::Sun) continue;
+        const PlanLightTypes types = planLightTypes(scene);
+        for (size_t i = 0; i < scene.lights.size(); ++i) {
+            const Light& l = scene.lights[i];
+            if (!l.on || types.typeOfLight[i] < 0) continue;
             const QPointF c = frame.at(l.position);
             if (!view.adjusted(-r, -r, r, r).contains(c)) continue;
             p.setPen(QPen(kLuminaire, 0.3 * dpmm));
             p.setBrush(QColor(255, 255, 255, 200));
-            if (l.type == LightType::Luminaire) p.drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
-            else p.drawEllipse(c, r, r);
-            p.drawLine(c - QPointF(r, r), c + QPointF(r, r));
-            p.drawLine(c - QPointF(r, -r), c + QPointF(r, -r));
+            paintSymbol(p, types.types[size_t(types.typeOfLight[i])].shape, c, r);
         }
         paintObservers(p, view, frame, plan.observers, font, dpmm);
         paintScaleBar(p, view, frame, scene.metersPerUnit, font, dpmm);
@@ -466,7 +494,7 @@ void paintPlanFigure(QPainter& p, const QRectF& rect, const Scene& scene, const 
     p.drawRect(view);
 
     paintLegend(p, QRectF(rect.left(), rect.bottom() - (kPlanLegendMm - 2) * dpmm, rect.width(), (kPlanLegendMm - 2) * dpmm),
-                scale, plan.quantity, font, dpmm, plan.zones);
+                legend, plan.quantity, font, dpmm, plan.zones);
 }
 
 }  // namespace lucerna

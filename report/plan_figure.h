@@ -3,7 +3,7 @@
 // area seen from above (the faces below three quarters of the scene's height in a grey of their
 // material's reflectance, walls and partitions seen edge-on as dark lines), the area's grid in
 // false colour (points inside geometry hatched), iso-lux lines labelled with their level, the
-// luminaires and lamps as symbols, a scale bar and, when the site gives north, a north arrow;
+// luminaires and lamps as symbols (one shape per photometric file, as the window's plan), a scale bar and, when the site gives north, a north arrow;
 // a horizontal legend in lux below. A grid that is not horizontal (on a wall) is drawn in its own
 // frame, u to the right and v up, without the room.
 
@@ -11,6 +11,8 @@
 
 #include <QFont>
 #include <QString>
+
+#include <optional>
 
 class QPainter;
 class QRectF;
@@ -36,6 +38,10 @@ struct PlanValues {
     QString quantity = QStringLiteral("E [lx]");
     std::vector<GlareObserver> observers;  // drawn numbered from 1, looking along their view
     std::vector<PlanZone> zones;           // around the area, under its values
+    // The area's required maintained illuminance Em (lx; values in lx): the colours centre on it
+    // (render/display/plan_scales.h, requirementScale) and the legend marks it. Nothing: the
+    // colours follow the values (planScale).
+    std::optional<double> requiredLux;
 };
 
 // `dpmm`: device pixels per millimetre, for line widths and the raster of the room.

@@ -14,7 +14,8 @@ namespace lucerna {
 
 namespace {
 
-// The lux view's legend: a log ramp from lo to hi with labels at round numbers (1, 2, 5 per decade).
+// The lux view's legend: a log ramp from lo to hi with labels at round numbers (legendTicks: 1, 2,
+// 5 per decade).
 void paintLuxLegend(QPainter& p, const QRectF& band, double lo, double hi, const QFont& font, double dpmm) {
     const QFontMetricsF fm(font, p.device());
     const QString unit = QStringLiteral("E [lx]");
@@ -33,19 +34,16 @@ void paintLuxLegend(QPainter& p, const QRectF& band, double lo, double hi, const
     p.setFont(font);
     p.drawText(QPointF(band.left(), ramp.center().y() + fm.ascent() / 2 - fm.descent() / 2), unit);
     double lastRight = -1e300;
-    for (double decade = std::pow(10.0, std::floor(std::log10(lo))); decade <= hi * 1.0001; decade *= 10)
-        for (double m : {1.0, 2.0, 5.0}) {
-            const double v = m * decade;
-            if (v < lo * 0.9999 || v > hi * 1.0001) continue;
-            const double x = ramp.left() + legendPosition(legend, v) * ramp.width();
-            p.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + 1.2 * dpmm));
-            const QString text = QString::number(v, 'g', 6);
-            const double w = fm.horizontalAdvance(text);
-            const double left = std::clamp(x - w / 2, band.left(), band.right() - w);
-            if (left < lastRight + 1.5 * dpmm) continue;
-            p.drawText(QPointF(left, ramp.bottom() + 1.6 * dpmm + fm.ascent()), text);
-            lastRight = left + w;
-        }
+    for (double v : legendTicks(legend)) {
+        const double x = ramp.left() + legendPosition(legend, v) * ramp.width();
+        p.drawLine(QPointF(x, ramp.bottom()), QPointF(x, ramp.bottom() + 1.2 * dpmm));
+        const QString text = tickText(v);
+        const double w = fm.horizontalAdvance(text);
+        const double left = std::clamp(x - w / 2, band.left(), band.right() - w);
+        if (left < lastRight + 1.5 * dpmm) continue;
+        p.drawText(QPointF(left, ramp.bottom() + 1.6 * dpmm + fm.ascent()), text);
+        lastRight = left + w;
+    }
 }
 
 }  // namespace

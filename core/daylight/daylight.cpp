@@ -1,6 +1,7 @@
 #include "core/daylight/daylight.h"
 
 #include "core/scene/scene_io.h"
+#include "core/daylight/daylight_availability.h"
 #include "core/daylight/sky_model.h"
 #include "core/daylight/solar_position.h"
 
@@ -43,6 +44,18 @@ void resolvePerez(ResolvedSky& s, std::optional<ResolvedSun>& sun) {
     if (sun) sun->illuminanceLux = s.perez->directNormalIlluminance();
 }
 
+// A sky whose levels follow the sun's altitude (DaylightLevels::FollowAltitude): the IES model
+// gives the sky's horizontal illuminance and the sun's direct normal illuminance, from where the
+// sun stands (switched on or not) and its date when it has one.
+void resolveAltitudeLevels(ResolvedSky& s, std::optional<ResolvedSun>& sun, std::optional<int> day) {
+    const double altitudeDeg = std::asin(std::clamp(s.towardSun.y, -1.0, 1.0)) * 180.0 / kPiD;
+    const SkyCondition condition = skyCondition(s.sky);
+    s.horizontalIlluminance = skyHorizontalIlluminance(condition, altitudeDeg);
+    const double relativeEh = relativeHorizontalIlluminance(s.sky, s.towardSun);
+    s.zenithLuminance = relativeEh > 0 ? s.horizontalIlluminance / relativeEh : 0.0;
+    if (sun) sun->illuminanceLux = sunDirectNormalIlluminance(condition, altitudeDeg, day);
+}
+
 }  // namespace
 
 V3d sunDirection(const Scene& scene, const Light& sun) {
@@ -77,14 +90,20 @@ Daylight resolveDaylight(const Scene& scene) {
         // A cie_general or perez sky without a sun switched on keeps the sun's place (the reader
         // insists on a sun); other skies do not read it.
         s.towardSun = d.sun ? d.sun->towardSun : V3d(0, 1, 0);
+        std::optional<int> day;  // of the sun's time, when it has one
         for (const Light& l : scene.lights) {
             if (l.type != LightType::Sun) continue;
             if (!d.sun) s.towardSun = sunDirection(scene, l);
             if (l.sun && l.sun->time)
-                if (const auto t = parseLocalTime(*l.sun->time)) s.dayOfYear = dayOfYear(t->year, t->month, t->day);
+                if (const auto t = parseLocalTime(*l.sun->time)) {
+                    day = dayOfYear(t->year, t->month, t->day);
+                    s.dayOfYear = *day;
+                }
         }
         if (s.sky.model == SkyModelType::Perez) {
             resolvePerez(s, d.sun);
+        } else if (s.sky.levels == DaylightLevels::FollowAltitude) {
+            resolveAltitudeLevels(s, d.sun, day);
         } else {
             // Eh / Lz once: it gives Lz from a horizontal illuminance and the ground's light.
             const double relativeEh = relativeHorizontalIlluminance(s.sky, s.towardSun);
@@ -103,13 +122,15 @@ DaylightFactorScene daylightFactorScene(const Scene& scene) {
     DaylightFactorScene out{scene, 0.0};
     Scene& s = out.scene;
     Sky sky;
-    if (scene.sky) {
+    if (scene.sky && scene.sky->levels == DaylightLevels::Fixed) {
         sky.zenithLuminance = scene.sky->zenithLuminance;
         sky.horizontalIlluminance = scene.sky->horizontalIlluminance;
         sky.groundReflectance = scene.sky->groundReflectance;
         sky.groundReflectanceGiven = scene.sky->groundReflectanceGiven;
     } else {
-        sky.horizontalIlluminance = 10000.0;  // any quantity gives the same ratio
+        // Any quantity gives the same ratio (a sky whose levels follow the sun has none).
+        sky.horizontalIlluminance = 10000.0;
+        if (scene.sky) sky.groundReflectance = scene.sky->groundReflectance, sky.groundReflectanceGiven = scene.sky->groundReflectanceGiven;
     }
     sky.model = SkyModelType::CieOvercast;
     sky.cieType = 0;

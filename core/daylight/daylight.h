@@ -60,7 +60,9 @@ struct Daylight {
 V3d sunDirection(const Scene& scene, const Light& sun);
 
 // The daylight of a scene as renderers see it: its first sun that is switched on and its sky.
-// Both absent for a scene without daylight.
+// Both absent for a scene without daylight. A perez sky's model gives the sun's illuminance and
+// the sky's; so does the IES model of daylight_availability.h for a sky whose levels follow the
+// sun's altitude (DaylightLevels::FollowAltitude), from where the scene's sun stands.
 Daylight resolveDaylight(const Scene& scene);
 
 // The scene SPEC.md's daylight factor is measured in: the sky made `cie_overcast` with the same

@@ -70,7 +70,7 @@ Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
     else if (model == "cie_general") s.model = SkyModelType::CieGeneral;
     else if (model == "perez") return parsePerezSky(v, place);
     else fail(modelPlace, "unknown sky model " + quote(model) + " (expected uniform, cie_overcast, cie_general or perez)");
-    checkKeys(v, place, {"model", "cie_type", "zenith_luminance", "horizontal_illuminance", "ground_reflectance"});
+    checkKeys(v, place, {"model", "cie_type", "zenith_luminance", "horizontal_illuminance", "ground_reflectance", "daylight_levels"});
     const Value* type = v.find("cie_type");
     if (s.model == SkyModelType::CieGeneral) {
         const std::string here = member(place, "cie_type");
@@ -80,8 +80,26 @@ Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
     } else if (type) {
         fail(member(place, "cie_type"), "only for the cie_general model");
     }
+    if (const Value* g = v.find("ground_reflectance")) {
+        s.groundReflectance = numberIn(*g, member(place, "ground_reflectance"), 0, false, 1, false);
+        s.groundReflectanceGiven = true;
+    }
     const Value* lz = v.find("zenith_luminance");
     const Value* eh = v.find("horizontal_illuminance");
+    // An addition (README, "Daylight levels"): "altitude" computes the sky's quantity and the
+    // sun's illuminance from the sun's altitude; "fixed" (the default) takes the file's numbers.
+    if (const Value* levels = v.find("daylight_levels")) {
+        const std::string here = member(place, "daylight_levels");
+        const std::string name = text(*levels, here);
+        if (name == "altitude") s.levels = DaylightLevels::FollowAltitude;
+        else if (name != "fixed") fail(here, "expected \"altitude\" or \"fixed\", got " + quote(name));
+    }
+    if (s.levels == DaylightLevels::FollowAltitude) {
+        if (lz || eh)
+            fail(member(place, lz ? "zenith_luminance" : "horizontal_illuminance"),
+                 "with \"daylight_levels\": \"altitude\" the sun's altitude gives the sky's level: give no quantity");
+        return s;
+    }
     if ((lz != nullptr) == (eh != nullptr))
         fail(place, "give exactly one of zenith_luminance and horizontal_illuminance");
     const std::string quantityPlace = member(place, lz ? "zenith_luminance" : "horizontal_illuminance");
@@ -89,10 +107,6 @@ Sky SceneParser::parseSky(const Value& v, const std::string& place) const {
     if (!(quantity >= 0) || !std::isfinite(quantity))
         fail(quantityPlace, "must be a finite number at least 0, got " + shortestNumber(quantity));
     (lz ? s.zenithLuminance : s.horizontalIlluminance) = quantity;
-    if (const Value* g = v.find("ground_reflectance")) {
-        s.groundReflectance = numberIn(*g, member(place, "ground_reflectance"), 0, false, 1, false);
-        s.groundReflectanceGiven = true;
-    }
     return s;
 }
 
@@ -126,11 +140,17 @@ void SceneParser::checkDaylight(const Scene& scene) const {
         if (l.sun && l.sun->time && !scene.site)
             fail(member(item("lights", i), "time"), "a sun placed by time needs the scene's \"site\"");
         const bool perez = scene.sky && scene.sky->model == SkyModelType::Perez;
+        const bool altitude = scene.sky && scene.sky->levels == DaylightLevels::FollowAltitude;
         if (l.sun && perez && (l.sun->illuminanceGiven || !l.sun->time))
             fail(item("lights", i), "beside a perez sky the sun has a \"time\" and no \"illuminance\" (the sky's model gives it)");
-        if (l.sun && !perez && !l.sun->illuminanceGiven)
+        if (l.sun && altitude && l.sun->illuminanceGiven)
+            fail(member(item("lights", i), "illuminance"),
+                 "beside a sky with \"daylight_levels\": \"altitude\" the sun has no \"illuminance\" (its altitude gives it)");
+        if (l.sun && !perez && !altitude && !l.sun->illuminanceGiven)
             fail(member(item("lights", i), "illuminance"), "required key is missing");
     }
+    if (scene.sky && scene.sky->levels == DaylightLevels::FollowAltitude && suns == 0)
+        fail("sky.daylight_levels", "levels that follow the sun's altitude need a light of type \"sun\"");
     if (scene.sky && scene.sky->model == SkyModelType::Perez && suns == 0)
         fail("sky.model", "a perez sky needs a light of type \"sun\" with a \"time\"");
     if (scene.sky && scene.sky->model == SkyModelType::CieGeneral && suns == 0)

@@ -150,7 +150,8 @@ struct SunSpec {
     bool angularDiameterGiven = false;// written back only if it was there
     std::optional<std::string> time;  // "YYYY-MM-DDTHH:MM", local time at the site's utc_offset
     std::optional<Rgbd> colour;       // normalised to luminance 1; white by default
-    // False only beside a perez sky (SPEC.md section 6), whose model gives the illuminance.
+    // False only beside a perez sky (SPEC.md section 6) or a sky whose levels follow the sun's
+    // altitude (Sky::levels), whose model gives the illuminance.
     bool illuminanceGiven = true;
 
     bool operator==(const SunSpec&) const = default;
@@ -203,12 +204,21 @@ struct Site {
 
 enum class SkyModelType { Uniform, CieOvercast, CieGeneral, Perez };
 
+// How bright a uniform, cie_overcast or cie_general sky and its sun are (an addition to SPEC.md;
+// README, "Daylight levels"). Fixed: the numbers the file gives (the sky's zenith_luminance or
+// horizontal_illuminance, the sun's illuminance), whatever the time. FollowAltitude (the sky's
+// "daylight_levels": "altitude"): the file gives neither; resolveDaylight computes both from the
+// sun's altitude (core/daylight/daylight_availability.h).
+enum class DaylightLevels { Fixed, FollowAltitude };
+
 // The sky of SPEC.md section 5: an emitter at infinity, the ground below the horizon.
 struct Sky {
     SkyModelType model = SkyModelType::CieOvercast;
     int cieType = 0;                                 // CieGeneral: 1..15
     std::optional<double> zenithLuminance;           // cd/m^2; exactly one of the two is set
     std::optional<double> horizontalIlluminance;     // lx, of the sky alone on an open plane
+    // FollowAltitude: neither quantity is set (nor the sun's illuminance); never for perez.
+    DaylightLevels levels = DaylightLevels::Fixed;
     // Perez (SPEC.md section 6): one hour of a weather file, instead of the two quantities above.
     double directNormalIrradiance = 0;               // Ib, W/m^2
     double diffuseHorizontalIrradiance = 0;          // Ed, W/m^2

@@ -206,6 +206,7 @@ std::string sky(const Sky& s) {
         break;
     }
     if (s.model == SkyModelType::Perez) {}
+    else if (s.levels == DaylightLevels::FollowAltitude) out += ", \"daylight_levels\": \"altitude\"";
     else if (s.zenithLuminance) out += ", \"zenith_luminance\": " + num(*s.zenithLuminance);
     else out += ", \"horizontal_illuminance\": " + num(s.horizontalIlluminance.value_or(0.0));
     if (s.groundReflectanceGiven || s.groundReflectance != Sky().groundReflectance)

@@ -1,5 +1,7 @@
 #include "render/display/display.h"
 
+#include "render/display/false_colour.h"
+
 #include <QPainter>
 
 #include <algorithm>
@@ -23,11 +25,6 @@ float filmic(float x) {
     return std::clamp((x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f), 0.0f, 1.0f);
 }
 
-QRgb falseColourOf(double value, double lo, double hi) {
-    if (!(value > 0)) return falseColourRamp(0).rgb();
-    const double t = (std::log10(value) - std::log10(lo)) / (std::log10(hi) - std::log10(lo));
-    return falseColourRamp(std::clamp(t, 0.0, 1.0)).rgb();
-}
 }  // namespace
 
 QColor falseColourRamp(double t) {
@@ -65,6 +62,7 @@ std::optional<double> pixelIlluminance(const Image& image, size_t i) {
 QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
     QImage out(image.width, image.height, QImage::Format_RGB888);
     const float scale = std::exp2(settings.exposureStops);
+    const std::optional<Legend> legend = luminanceLegend(settings);
     for (int y = 0; y < image.height; ++y) {
         uchar* row = out.scanLine(y);
         for (int x = 0; x < image.width; ++x) {
@@ -76,7 +74,7 @@ QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
                     value = pixelIlluminance(image, size_t(y) * image.width + x).value_or(0.0);
                 else if (isFinite(p))
                     value = kLumensPerWatt * luminance(p);
-                const QRgb c = falseColourOf(value, settings.falseMin, settings.falseMax);
+                const QRgb c = legendColour(*legend, value).rgb();
                 row[3 * x] = uchar(qRed(c));
                 row[3 * x + 1] = uchar(qGreen(c));
                 row[3 * x + 2] = uchar(qBlue(c));
@@ -136,28 +134,6 @@ DifferenceImage differenceImage(const Image& a, const Image& bIn, DifferenceKind
         }
     }
     return out;
-}
-
-void drawLegend(QPainter& painter, const QRect& rect, double lo, double hi, bool logScale, const QString& unit) {
-    painter.save();
-    // Room above the ramp for the unit, clear of the top tick's label.
-    painter.fillRect(rect.adjusted(-4, -26, 70, 14), QColor(0, 0, 0, 170));
-    const int h = rect.height();
-    for (int i = 0; i < h; ++i) painter.fillRect(rect.x(), rect.bottom() - i, rect.width(), 1, falseColourRamp(double(i) / h));
-    painter.setPen(Qt::white);
-    QFont font = painter.font();
-    font.setPointSizeF(8);
-    painter.setFont(font);
-    const int ticks = 5;
-    for (int i = 0; i < ticks; ++i) {
-        const double t = double(i) / (ticks - 1);
-        const double v = logScale ? std::pow(10.0, std::log10(lo) + t * (std::log10(hi) - std::log10(lo))) : lo + t * (hi - lo);
-        const int y = rect.bottom() - int(t * h);
-        // 4 digits write 1000 as such; beyond, the exponent is shorter.
-        painter.drawText(rect.right() + 4, y + 4, QString::number(v, 'g', std::abs(v) >= 1e4 ? 3 : 4));
-    }
-    painter.drawText(rect.x(), rect.y() - 12, unit);
-    painter.restore();
 }
 
 }  // namespace lucerna

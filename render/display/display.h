@@ -5,6 +5,7 @@
 // exported is what the screen shows.
 
 #include "core/image/image.h"
+#include "render/display/legend_ticks.h"
 
 #include <QImage>
 #include <QString>
@@ -27,8 +28,9 @@ struct DisplaySettings {
     ToneCurve curve = ToneCurve::LinearSrgb;
     bool falseColour = false;
     FalseColourQuantity quantity = FalseColourQuantity::Luminance;
-    // False-colour range (cd/m^2 or lx), mapped on a log scale.
+    // False-colour range (cd/m^2 or lx), and how it is mapped (render/display/false_colour.h).
     double falseMin = 0.1, falseMax = 1000.0;
+    LegendScale scale = LegendScale::Logarithmic;
     // Follows "lx" in the legend: which illuminance it is, "MF 0.80" (maintained) or "new"
     // (README, "Maintained values"); set from the scene, not by the display controls.
     QString illuminanceNote;
@@ -60,8 +62,5 @@ DifferenceImage differenceImage(const Image& a, const Image& b, DifferenceKind k
 // `image` resampled (nearest) to width x height: comparisons of a smaller preview with the
 // converged image.
 Image resampledNearest(const Image& image, int width, int height);
-
-// A vertical legend in `rect`: the ramp, and labels from lo to hi (log scale when logScale).
-void drawLegend(QPainter& painter, const QRect& rect, double lo, double hi, bool logScale, const QString& unit);
 
 }  // namespace lucerna

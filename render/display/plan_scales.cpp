@@ -38,6 +38,14 @@ PlanScale planScale(const GridStatistics& s) {
     return out;
 }
 
+PlanScale requirementScale(double requiredLux, const GridStatistics& s) {
+    PlanScale out = planScale(s);
+    if (!(requiredLux > 0)) return out;
+    if (out.logScale) out.lo = requiredLux / 5, out.hi = requiredLux * 5;
+    else out.lo = 0, out.hi = 2 * requiredLux;
+    return out;
+}
+
 double scaleBarMeters(double pixelsPerMeter, double maxPixels) {
     if (!(pixelsPerMeter > 0) || !(maxPixels > 0)) return 0;
     double meters = std::pow(10.0, std::floor(std::log10(maxPixels / pixelsPerMeter)));

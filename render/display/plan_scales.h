@@ -8,6 +8,7 @@
 
 #include <QString>
 
+#include <optional>
 #include <vector>
 
 namespace lucerna {
@@ -21,9 +22,18 @@ struct PlanScale {
     bool logScale = false;
     std::vector<double> levels;
 
-    Legend legend(const QString& unit) const { return Legend{lo, hi, logScale, unit}; }
+    // The legend of this scale; `scale` given: on that scale instead of the plan's own.
+    Legend legend(const QString& unit, std::optional<LegendScale> scale = std::nullopt) const {
+        return scale ? makeLegend(lo, hi, *scale, unit) : Legend{lo, hi, logScale, unit};
+    }
 };
 PlanScale planScale(const GridStatistics& statistics);
+
+// The scale of a task area's plan centred on its requirement, so that the requirement reads in
+// the middle of the ramp and compliant area is not saturated: linear from 0 to 2 Em; or, where
+// planScale would go logarithmic (Emax over ten times Emin), logarithmic from Em / 5 to 5 Em.
+// The iso-lux levels stay planScale's, which follow the values. Em in lx, above 0.
+PlanScale requirementScale(double requiredLux, const GridStatistics& statistics);
 
 // The scale bar's length in metres: the longest round length (1, 2 or 5 times a power of ten)
 // no longer than `maxPixels` at `pixelsPerMeter`.

@@ -8,6 +8,10 @@
 // Through the window: the dock is in the View menu, Save then Open gives the same scene and the
 // panel shows it, and the sun selected shows in the light panel without a place. A picture of
 // the panel goes to the working directory.
+// Issue 40: the levels follow the sun's altitude (the default for a sky added here; a file with
+// numbers opens as Fixed), one undo step, the fields then showing what the model gives and the
+// evening far dimmer than noon; a typed time sets the hour wherever the field was clicked; a
+// listed city's coordinates show its name.
 
 #include "core/daylight/daylight.h"
 #include "core/scene/scene_io.h"
@@ -26,6 +30,7 @@
 #include <QDockWidget>
 #include <QLabel>
 #include <QLineEdit>
+#include <QUndoStack>
 #include <QMenuBar>
 #include <QSlider>
 #include <QSpinBox>
@@ -109,6 +114,9 @@ private slots:
     void editsEveryPartOfTheDaylight();
     void savedAndOpenedThroughTheWindow();
     void aSunByDirectionTakesTheClock();
+    void levelsFollowTheSunThroughTheDay();
+    void typedTimesSetTheHour();
+    void listedCitiesShowTheirNames();
 };
 
 void TestDaylightPanel::editsEveryPartOfTheDaylight() {
@@ -192,11 +200,26 @@ void TestDaylightPanel::editsEveryPartOfTheDaylight() {
     typeInto(child<QDoubleSpinBox>(panel, "daylightSunIlluminance"), 90000);
     QCOMPARE(sunOf(doc.scene()).sun->illuminanceLux, 90000.0);
 
-    // The sky: CIE overcast of 10,000 lx, then given by its zenith luminance (the same sky:
-    // Eh / (7 pi / 9)), then a typed zenith luminance.
+    // The sky: CIE overcast, its levels following the sun's altitude (new daylight's default: the
+    // sun's illuminance key goes with it, in the same step); then fixed, where a typed 10,000 lx
+    // holds; then given by its zenith luminance (the same sky: Eh / (7 pi / 9)), then a typed
+    // zenith luminance.
+    const int beforeSky = undo->count();
     choose(child<QComboBox>(panel, "daylightSkyModel"), "CIE overcast (traditional)");
     QVERIFY(doc.scene().sky);
     QCOMPARE(doc.scene().sky->model, SkyModelType::CieOvercast);
+    QVERIFY(doc.scene().sky->levels == DaylightLevels::FollowAltitude);
+    QVERIFY(!doc.scene().sky->horizontalIlluminance && !doc.scene().sky->zenithLuminance);
+    QVERIFY(!sunOf(doc.scene()).sun->illuminanceGiven);
+    QCOMPARE(undo->count(), beforeSky + 1);
+    auto* levels = child<QComboBox>(panel, "daylightLevels");
+    QCOMPARE(levels->currentIndex(), 0);
+    QVERIFY(child<QDoubleSpinBox>(panel, "daylightSkyValue")->isReadOnly());
+    choose(levels, "Fixed");
+    QVERIFY(doc.scene().sky->levels == DaylightLevels::Fixed);
+    QVERIFY(sunOf(doc.scene()).sun->illuminanceGiven);
+    QVERIFY(!child<QDoubleSpinBox>(panel, "daylightSkyValue")->isReadOnly());
+    typeInto(child<QDoubleSpinBox>(panel, "daylightSkyValue"), 10000);
     QCOMPARE(*doc.scene().sky->horizontalIlluminance, 10000.0);
     choose(child<QComboBox>(panel, "daylightSkyQuantity"), "Lz (cd/m²)");
     QVERIFY(!doc.scene().sky->horizontalIlluminance);
@@ -307,7 +330,7 @@ void TestDaylightPanel::savedAndOpenedThroughTheWindow() {
     LightProperties& light = *w.lightProperties();
     QVERIFY(child<QLabel>(light, "lightSunNote")->isVisibleTo(&light));
     QVERIFY(!light.positionFields()[0]->isVisibleTo(&light));
-    QVERIFY(!light.directionFields()[0]->isVisibleTo(&light));
+    QVERIFY(!light.tiltField()->isVisibleTo(&light));  // a sun placed by time has no aim
     QCOMPARE(light.nameField()->text(), QStringLiteral("sun"));
 }
 
@@ -341,6 +364,195 @@ void TestDaylightPanel::aSunByDirectionTakesTheClock() {
     QCOMPARE(parseScene(saveSceneToString(doc.scene()), "t.json"), doc.scene());
     doc.undoStack()->undo();
     QCOMPARE(sunOf(doc.scene()).direction, V3d(0.3, -1, -0.2));
+}
+
+namespace {
+
+// The number of lux in "... 12,345 lx ..." after `word` in the dock's summary line.
+double luxAfter(const QString& text, const QString& word) {
+    const int at = text.indexOf(word);
+    if (at < 0) return -1;
+    QString digits;
+    for (int k = at + int(word.size()); k < text.size() && text[k] != QLatin1Char('l'); ++k)
+        if (text[k].isDigit()) digits += text[k];
+    return digits.toDouble();
+}
+
+// Types `keys` into the time field as a designer would: focus elsewhere, a click into the field
+// at `x` (pixels from its left), the keys, Enter.
+void typeTime(QTimeEdit* time, QWidget* elsewhere, int x, const QString& keys) {
+    elsewhere->setFocus(Qt::OtherFocusReason);
+    auto* edit = time->findChild<QLineEdit*>();
+    QTest::mouseClick(edit, Qt::LeftButton, {}, QPoint(x, edit->height() / 2));
+    QCoreApplication::processEvents();  // the click's release selects the hour after Qt's handling
+    QTest::keyClicks(time, keys);
+    QTest::keyClick(time, Qt::Key_Return);
+}
+
+}  // namespace
+
+// The bundled office (Paris, 21 March, a CIE clear sky of 12,000 lx and a sun of 70,000 lx) opens
+// Fixed; Follow is one undo step; through the day the dock shows the model's levels, and at 18:55
+// (the sun 1.2 degrees up) the open plane gets less than a tenth of noon's.
+void TestDaylightPanel::levelsFollowTheSunThroughTheDay() {
+    Document doc(loadScene(LUCERNA_RESOURCE_DIR "/scenes/daylit_office.json"));
+    QUndoStack* undo = doc.undoStack();
+    const Scene opened = doc.scene();
+    DaylightPanel panel(&doc);
+    panel.resize(360, 900);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* levels = child<QComboBox>(panel, "daylightLevels");
+    auto* sunLux = child<QDoubleSpinBox>(panel, "daylightSunIlluminance");
+    auto* skyValue = child<QDoubleSpinBox>(panel, "daylightSkyValue");
+    auto* slider = child<QSlider>(panel, "daylightTimeSlider");
+    auto* eh = child<QLabel>(panel, "daylightHorizontalIlluminance");
+    QCOMPARE(levels->currentText(), QStringLiteral("Fixed"));
+    QVERIFY(!sunLux->isReadOnly());
+    // Fixed: 18:55 is as bright as 11:00 (what the designer saw).
+    slider->setValue(18 * 60 + 55);
+    QVERIFY2(luxAfter(eh->text(), "sky") == 12000, qPrintable(eh->text()));
+    undo->undo();
+    QCOMPARE(doc.scene(), opened);
+
+    choose(levels, "Follow the sun's altitude (IES)");
+    QCOMPARE(undo->count(), 1);  // one step for the sky and the sun's key
+    QVERIFY(doc.scene().sky->levels == DaylightLevels::FollowAltitude);
+    QVERIFY(!sunOf(doc.scene()).sun->illuminanceGiven);
+    QVERIFY(sunLux->isReadOnly() && skyValue->isReadOnly());
+    QVERIFY(!child<QComboBox>(panel, "daylightSkyQuantity")->isEnabled());
+
+    // The fields and the summary show what resolveDaylight gives, hour by hour.
+    const auto at = [&](int minutes) {
+        slider->setValue(minutes);
+        const Daylight d = resolveDaylight(doc.scene());
+        if (std::abs(skyValue->value() - d.sky->horizontalIlluminance) > 0.5 || std::abs(sunLux->value() - d.sun->illuminanceLux) > 0.5 ||
+            std::abs(luxAfter(eh->text(), "sky") - d.sky->horizontalIlluminance) > 0.5)
+            qWarning("shown %g %g, %s; resolved %g %g", skyValue->value(), sunLux->value(), qPrintable(eh->text()),
+                     d.sky->horizontalIlluminance, d.sun->illuminanceLux);
+        return std::abs(skyValue->value() - d.sky->horizontalIlluminance) <= 0.5 && std::abs(sunLux->value() - d.sun->illuminanceLux) <= 0.5 &&
+               std::abs(luxAfter(eh->text(), "sky") - d.sky->horizontalIlluminance) <= 0.5;
+    };
+    QVERIFY(at(8 * 60));
+    const double morning = luxAfter(eh->text(), "Eh");
+    QVERIFY(at(12 * 60));
+    const double noon = luxAfter(eh->text(), "Eh"), noonSky = skyValue->value(), noonSun = sunLux->value();
+    QVERIFY(at(18 * 60 + 55));
+    const double evening = luxAfter(eh->text(), "Eh");
+    QVERIFY2(morning < noon && evening < noon, qPrintable(QString("%1 %2 %3").arg(morning).arg(noon).arg(evening)));
+    QVERIFY2(evening < 0.1 * noon, qPrintable(eh->text()));
+    QVERIFY2(sunLux->value() < 0.01 * noonSun, qPrintable(eh->text()));
+    // A clear sky alone keeps about a fifth of noon's at 1.2 degrees (the published sqrt(sin h));
+    // a partly cloudy one (CIE type 9) drops below a tenth.
+    QVERIFY2(skyValue->value() < 0.25 * noonSky, qPrintable(eh->text()));
+    child<QSpinBox>(panel, "daylightCieType")->setValue(9);
+    const double partlyCloudyEvening = skyValue->value();
+    QVERIFY(at(12 * 60));
+    QVERIFY2(partlyCloudyEvening < 0.1 * skyValue->value(),
+             qPrintable(QString("%1 %2").arg(partlyCloudyEvening).arg(skyValue->value())));
+    // The file keeps it; undo takes it all back, to Fixed and its numbers.
+    QCOMPARE(parseScene(saveSceneToString(doc.scene()), "t.json"), doc.scene());
+    undo->setIndex(0);
+    QCOMPARE(doc.scene(), opened);
+    QCOMPARE(levels->currentText(), QStringLiteral("Fixed"));
+    QCOMPARE(skyValue->value(), 12000.0);
+    QCOMPARE(sunLux->value(), 70000.0);
+    QVERIFY(!skyValue->isReadOnly());
+    // Fixed again from Follow keeps the light it gave at that moment, as numbers.
+    undo->redo();
+    slider->setValue(12 * 60);
+    const Daylight followed = resolveDaylight(doc.scene());
+    choose(levels, "Fixed");
+    const Daylight fixed = resolveDaylight(doc.scene());
+    QVERIFY(std::abs(fixed.sky->horizontalIlluminance - followed.sky->horizontalIlluminance) < 1e-6);
+    QCOMPARE(fixed.sun->illuminanceLux, followed.sun->illuminanceLux);
+    QVERIFY(sunOf(doc.scene()).sun->illuminanceGiven);
+    // Following, removing the sun leaves the sky fixed at what it gave (nothing is left to
+    // follow), in one step.
+    choose(levels, "Follow the sun's altitude (IES)");
+    choose(child<QComboBox>(panel, "daylightSkyModel"), "Uniform");
+    const Scene beforeRemoval = doc.scene();
+    const double skyNow = resolveDaylight(beforeRemoval).sky->horizontalIlluminance;
+    const int stepsBefore = undo->count();
+    clickBox(child<QCheckBox>(panel, "daylightSunPresent"));
+    QCOMPARE(sunIndex(doc.scene()), -1);
+    QVERIFY(doc.scene().sky->levels == DaylightLevels::Fixed);
+    QVERIFY(std::abs(*doc.scene().sky->horizontalIlluminance - skyNow) < 1e-6);
+    QCOMPARE(undo->count(), stepsBefore + 1);
+    QCOMPARE(parseScene(saveSceneToString(doc.scene()), "t.json"), doc.scene());
+    undo->undo();
+    QCOMPARE(doc.scene(), beforeRemoval);
+}
+
+// The designer's case: a click into the field left a bare cursor, the typed hour was refused and
+// only the minutes took the keys ("18:55" gave 12:55). Wherever the click lands, a typed time now
+// starts at the hour; a whole selection too.
+void TestDaylightPanel::typedTimesSetTheHour() {
+    Document doc(loadScene(LUCERNA_RESOURCE_DIR "/scenes/daylit_office.json"));
+    DaylightPanel panel(&doc);
+    panel.resize(360, 900);
+    panel.show();
+    QApplication::setActiveWindow(&panel);
+    QVERIFY(QTest::qWaitForWindowActive(&panel));
+    auto* time = child<QTimeEdit>(panel, "daylightTime");
+    auto* date = child<QDateEdit>(panel, "daylightDate");
+    auto* slider = child<QSlider>(panel, "daylightTimeSlider");
+    auto* edit = time->findChild<QLineEdit*>();
+    const int hourX = 6, minuteX = edit->fontMetrics().horizontalAdvance(QStringLiteral("12:0")) + 2;
+    struct Case {
+        int x;
+        const char* keys;
+        const char* time;
+    } cases[] = {{hourX, "18:55", "18:55"}, {hourX, "8", "08:55"},  // the hour alone keeps the minutes
+                 {minuteX, "08:00", "08:00"}, {minuteX, "18:55", "18:55"}, {hourX, "7:5", "07:05"}, {minuteX, "12", "12:05"}};
+    for (const Case& c : cases) {
+        typeTime(time, date, c.x, QString::fromLatin1(c.keys));
+        const std::string expected = std::string("2026-03-21T") + c.time;
+        QVERIFY2(*sunOf(doc.scene()).sun->time == expected,
+                 qPrintable(QString("%1 typed at x %2: %3").arg(c.keys).arg(c.x).arg(QString::fromStdString(*sunOf(doc.scene()).sun->time))));
+        QCOMPARE(slider->value(), QTime::fromString(QString::fromLatin1(c.time), "HH:mm").msecsSinceStartOfDay() / 60000);
+    }
+    // The whole text selected (Ctrl+A), then a time typed.
+    date->setFocus(Qt::OtherFocusReason);
+    time->setFocus(Qt::OtherFocusReason);
+    QTest::keyClick(time, Qt::Key_A, Qt::ControlModifier);
+    QTest::keyClicks(time, "16:40");
+    QTest::keyClick(time, Qt::Key_Return);
+    QCOMPARE(QString::fromStdString(*sunOf(doc.scene()).sun->time), QStringLiteral("2026-03-21T16:40"));
+    // Once in the field, a click on the minutes edits the minutes.
+    QTest::mouseClick(edit, Qt::LeftButton, {}, QPoint(minuteX, edit->height() / 2));
+    QCoreApplication::processEvents();
+    QTest::keyClicks(time, "05");
+    QTest::keyClick(time, Qt::Key_Return);
+    QCOMPARE(QString::fromStdString(*sunOf(doc.scene()).sun->time), QStringLiteral("2026-03-21T16:05"));
+}
+
+// A listed city's place shows its name, within 0.01 degrees (the bundled office's Paris is 48.857,
+// 2.352; the list's 48.8566, 2.3522) and at its standard offset; anywhere else is a custom site.
+void TestDaylightPanel::listedCitiesShowTheirNames() {
+    Document doc(loadScene(LUCERNA_RESOURCE_DIR "/scenes/daylit_office.json"));
+    DaylightPanel panel(&doc);
+    panel.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&panel));
+    auto* city = child<QComboBox>(panel, "daylightCity");
+    QCOMPARE(city->currentText(), QStringLiteral("Paris"));
+    const auto siteAt = [&](double latitude, double longitude, double offset) {
+        Site s = *doc.scene().site;
+        s.latitudeDeg = latitude, s.longitudeDeg = longitude, s.utcOffsetHours = offset;
+        doc.undoStack()->push(new EditSiteCommand(&doc, s, 0, "site"));
+        return city->currentText();
+    };
+    QCOMPARE(siteAt(48.8566, 2.3522, 1), QStringLiteral("Paris"));
+    QCOMPARE(siteAt(48.866, 2.343, 1), QStringLiteral("Paris"));        // 0.0094 and 0.0092 degrees away
+    QCOMPARE(siteAt(48.87, 2.3522, 1), QStringLiteral("Custom site"));  // 0.0134 degrees north
+    QCOMPARE(siteAt(48.857, 2.352, 2), QStringLiteral("Custom site"));  // summer time: another clock
+    QCOMPARE(siteAt(19.08, 72.88, 5.5), QStringLiteral("Mumbai"));      // a fractional offset
+    QCOMPARE(siteAt(-33.87, 151.21, 10), QStringLiteral("Sydney"));
+    // Typed into the fields, as a designer would.
+    typeInto(child<QDoubleSpinBox>(panel, "daylightUtcOffset"), 0);
+    typeInto(child<QDoubleSpinBox>(panel, "daylightLatitude"), 51.507);
+    typeInto(child<QDoubleSpinBox>(panel, "daylightLongitude"), -0.128);
+    QCOMPARE(city->currentText(), QStringLiteral("London"));
 }
 
 QTEST_MAIN(TestDaylightPanel)

@@ -3,6 +3,7 @@
 // flux are undoable document edits that the scene file keeps.
 
 #include "core/photometry/luminaire.h"
+#include "core/scene/aim_angles.h"
 #include "core/scene/scene_io.h"
 #include "ui/document/document.h"
 #include "ui/properties/light_properties.h"
@@ -17,6 +18,7 @@ class TestLuminairePanel : public QObject {
     Q_OBJECT
 private slots:
     void showsAndEditsALuminaire();
+    void aimAsTiltAndAzimuth();
 };
 
 void TestLuminairePanel::showsAndEditsALuminaire() {
@@ -53,6 +55,56 @@ void TestLuminairePanel::showsAndEditsALuminaire() {
     QCOMPARE(*doc.scene().lights[size_t(washer)].luminaire->lumens, 1000.0);
     QCOMPARE(panel.rotationField()->value(), 0.0);
     QCOMPARE(panel.lumensField()->value(), 1000.0);
+}
+
+// The aim as a tilt from straight down and a bearing from north (core/scene/aim_angles.h), each
+// edit one undo step "Aim NAME" as the direction's fields made.
+void TestLuminairePanel::aimAsTiltAndAzimuth() {
+    const std::string path = std::string(LUCERNA_RESOURCE_DIR) + "/scenes/luminaire.json";
+    Document doc(loadScene(path), path);
+    LightProperties panel(&doc);
+    panel.show();
+    const int washer = 2;
+    QCOMPARE(doc.scene().lights[washer].name, std::string("washer"));
+    panel.setLight(washer);
+    QVERIFY(panel.tiltField()->isVisibleTo(&panel));
+    QVERIFY(panel.azimuthField()->isVisibleTo(&panel));
+    QCOMPARE(panel.tiltField()->value(), 0.0);  // straight down
+    QUndoStack* undo = doc.undoStack();
+    const auto direction = [&] { return doc.scene().lights[washer].direction; };
+    const auto near = [](const V3d& a, const V3d& b) { return (a - b).length() < 1e-12; };
+
+    // Straight down has no bearing to turn: no edit, and the field keeps the bearing for the tilt.
+    panel.azimuthField()->setValue(90);
+    QCOMPARE(undo->count(), 0);
+    QCOMPARE(panel.azimuthField()->value(), 90.0);
+    // Tilted 30 degrees that way: toward the east, +x (no site: north is -z).
+    panel.tiltField()->setValue(30);
+    QCOMPARE(undo->count(), 1);
+    QCOMPARE(undo->text(0), QString("Aim washer"));
+    const V3d east(0.5, -std::sqrt(3.0) / 2, 0);
+    QVERIFY2(near(direction(), east), qPrintable(QString("%1 %2 %3").arg(direction().x).arg(direction().y).arg(direction().z)));
+    // The arrows' steps of one field merge into that step until its editing finishes.
+    panel.tiltField()->setValue(31);
+    QCOMPARE(undo->count(), 1);
+    panel.tiltField()->setValue(30);
+    emit panel.tiltField()->editingFinished();
+    QVERIFY(near(direction(), east));
+    // Turned to the south (+z): the tilt stays exactly 30 degrees.
+    panel.azimuthField()->setValue(180);
+    QCOMPARE(undo->count(), 2);
+    QVERIFY(near(direction(), V3d(0, -std::sqrt(3.0) / 2, 0.5)));
+    QVERIFY(std::abs(aimAngles(direction(), V3d(0, 0, -1)).tiltDeg - 30) < 1e-12);
+    const std::string saved = saveSceneToString(doc.scene());
+    QVERIFY(saved.find(R"("name": "washer")") != std::string::npos);
+    // Undone step by step; the fields follow.
+    undo->undo();
+    QVERIFY(near(direction(), east));
+    QCOMPARE(panel.azimuthField()->value(), 90.0);
+    QCOMPARE(panel.tiltField()->value(), 30.0);
+    undo->undo();
+    QCOMPARE(direction(), V3d(0, -1, 0));
+    QCOMPARE(panel.tiltField()->value(), 0.0);
 }
 
 QTEST_MAIN(TestLuminairePanel)

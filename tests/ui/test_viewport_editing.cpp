@@ -11,6 +11,7 @@
 #include "ui/viewport/camera_navigation.h"
 #include "ui/viewport/light_gizmo.h"
 #include "ui/viewport/light_placement.h"
+#include "ui/viewport/light_symbols.h"
 #include "ui/rendering/live_preview.h"
 #include "ui/window/main_window.h"
 #include "ui/scene_panels/outliner.h"
@@ -27,6 +28,8 @@
 #include <QStatusBar>
 #include <QTemporaryDir>
 #include <QtTest>
+
+#include <numeric>
 
 using namespace lucerna;
 using namespace lucerna::test;
@@ -114,6 +117,7 @@ class TestViewportEditing : public QObject {
 private slots:
     void initTestCase();
     void gizmoGeometry();
+    void lightSymbolsShrinkAndStayInThePicture();
     void pickerFollowsTheSpecCamera();
     void placeAimMoveUndoSaveInTheWindow();
     void selectAndFly();
@@ -196,6 +200,95 @@ void TestViewportEditing::gizmoGeometry() {
     const auto lg = LightGizmo::of(luminaire, view);
     QVERIFY(lg && lg->aimTip && lg->axisTips[0]);
     QVERIFY(near(aimedLight(luminaire, hit)->direction, V3d(0, 0, -1), 1e-12));
+}
+
+// The office floor (108 luminaires) in a square viewport, its wide picture letterboxed: the
+// lights' balls shrink with distance, none is drawn (or picked) behind or just beside the camera
+// or outside the picture, and nothing of the overlays reaches the bands, even with every light
+// selected (their aim lines drawn) and the one just above the camera among them.
+void TestViewportEditing::lightSymbolsShrinkAndStayInThePicture() {
+    Scene scene = loadScene(LUCERNA_RESOURCE_DIR "/scenes/office_floor.json");
+    const Camera cam = scene.camera;
+    const V3d f = (cam.target - cam.position).normalized();
+    const double mpu = scene.metersPerUnit;
+    // Three more: behind the camera, a tenth of a metre in front of it, and above the picture.
+    const auto extra = [&](const char* name, const V3d& at) {
+        Light l = scene.lights.front();
+        l.name = name;
+        l.position = at;
+        scene.lights.push_back(l);
+        return int(scene.lights.size()) - 1;
+    };
+    const int behind = extra("behind", cam.position - f * (2 / mpu) + V3d(0, 0.4 / mpu, 0));
+    const int tooNear = extra("too_near", cam.position + f * (0.1 / mpu) + V3d(0, 0.05 / mpu, 0));
+    const int above = extra("above", cam.position + specRay(cam, cam.width / 2.0, -40) * (3 / mpu));
+    Document doc(scene);
+    YieldGate gate;
+    Viewport vp(&doc, gate);
+    vp.resize(600, 600);
+    QImage grey(cam.width, cam.height, QImage::Format_RGB32);
+    grey.fill(QColor(128, 128, 128));
+    vp.setImage(grey);
+    vp.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&vp));
+    const QRectF picture = vp.imageRect();
+    QCOMPARE_GT(picture.top(), 100.0);  // bands above and below
+
+    const ViewMapping view = vp.mapping();
+    QVERIFY(!vp.lightMarker(behind) && !vp.lightMarker(tooNear));
+    QVERIFY(view.toWidget(scene.lights[size_t(above)].position));  // in front, but over the picture
+    QVERIFY(!vp.lightMarker(above));
+    QVERIFY(!lightSymbol(scene.lights[size_t(tooNear)], view, mpu));
+    // Balls that shrink with distance, within their bounds; picked where drawn.
+    int drawn = 0;
+    double nearest = 1e300, farthest = 0, nearRadius = 0, farRadius = 0;
+    for (int i = 0; i < 108; ++i) {
+        const auto s = lightSymbol(doc.scene().lights[size_t(i)], view, mpu);
+        QCOMPARE(bool(s), bool(vp.lightMarker(i)));
+        if (!s) continue;
+        ++drawn;
+        QVERIFY(picture.contains(s->centre));
+        QVERIFY(s->radius >= kSmallestSymbolPx && s->radius <= kLargestSymbolPx);
+        const double depth = depthAlongView(view, doc.scene().lights[size_t(i)].position);
+        if (depth < nearest) nearest = depth, nearRadius = s->radius;
+        if (depth > farthest) farthest = depth, farRadius = s->radius;
+    }
+    QCOMPARE_GT(drawn, 50);
+    QCOMPARE_GT(nearRadius, 2 * farRadius);
+    QCOMPARE(farRadius, kSmallestSymbolPx);  // dots far away
+
+    // Every light selected, the one nearest above the camera the gizmo's: the bands stay empty.
+    std::vector<int> all(doc.scene().lights.size());
+    std::iota(all.begin(), all.end(), 0);
+    vp.setSelectedLights(all);
+    vp.setSelectedLight(tooNear);
+    QVERIFY(!vp.gizmo());  // its light is not drawn: no gizmo either
+    int nearestDrawn = -1;
+    for (int i = 0; i < 108; ++i)
+        if (vp.lightMarker(i) && (nearestDrawn < 0 || depthAlongView(view, doc.scene().lights[size_t(i)].position) <
+                                                          depthAlongView(view, doc.scene().lights[size_t(nearestDrawn)].position)))
+            nearestDrawn = i;
+    vp.setSelectedLight(nearestDrawn);
+    QVERIFY(vp.gizmo());
+    const QImage shot = vp.grab().toImage();
+    shot.save("viewport_office_overlays.png");
+    const QRgb band = QColor(32, 32, 36).rgb();
+    int inBand = 0;
+    for (int y = 0; y < shot.height(); ++y)
+        for (int x = 0; x < shot.width(); ++x)
+            if ((y < picture.top() - 1 || y > picture.bottom() + 1) && shot.pixel(x, y) != band) ++inBand;
+    QCOMPARE(inBand, 0);
+    // The picture does show them: the selected light's ball is white-ringed yellow.
+    const QPointF c = *vp.lightMarker(nearestDrawn);
+    QCOMPARE(QColor(shot.pixel(c.toPoint())), QColor(255, 210, 60));
+
+    // An aim line is cut where it passes the near plane, and ends where the aim meets the floor.
+    const auto cut = projectedSegment(view, cam.position - f * 1.0, cam.position + f * 5.0, nearPlaneDepth(mpu));
+    QVERIFY(cut);
+    QVERIFY(!projectedSegment(view, cam.position - f * 1.0, cam.position + f * 0.01, nearPlaneDepth(mpu)));
+    QCOMPARE(aimLineLength(2.6 / mpu, mpu), 2.6 / mpu);
+    QCOMPARE(aimLineLength(std::nullopt, mpu), kLongestAimLineM / mpu);
+    QCOMPARE(aimLineLength(100 / mpu, mpu), kLongestAimLineM / mpu);
 }
 
 void TestViewportEditing::pickerFollowsTheSpecCamera() {

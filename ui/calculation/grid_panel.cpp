@@ -9,6 +9,7 @@
 #include "core/scene/scene_change.h"
 #include "core/scene/scene_geometry.h"
 #include "render/display/display.h"
+#include "render/display/plan_scales.h"
 #include "render/photometry/grid_text.h"
 #include "render/photometry/task_area_figures.h"
 #include "ui/calculation/ugr_table.h"
@@ -396,6 +397,10 @@ void GridPanel::showResult() {
     table_->setRowCount(layout_.nv);
     table_->setColumnCount(layout_.nu);
     const double lo = std::max(s.minimum, 1e-3), hi = std::max(s.maximum, lo * 1.001);
+    // The plan's colours (ui/plan/plan_view.h): a task area's lux centred on its Em, else a log
+    // scale over the values.
+    const Legend legend = requirement_ && !dfPerLux_ ? requirementScale(requirement_->maintainedLux, s).legend(tr("lx"))
+                                                     : Legend(lo, hi, true, QString());
     for (int j = 0; j < layout_.nv; ++j)
         for (int i = 0; i < layout_.nu; ++i) {
             const size_t k = size_t(j) * size_t(layout_.nu) + size_t(i);
@@ -412,8 +417,7 @@ void GridPanel::showResult() {
             }
             auto* item = new QTableWidgetItem(QString::number(e, 'f', dfPerLux_ ? 2 : 0));
             item->setTextAlignment(Qt::AlignCenter);
-            const double t = e > 0 ? std::log(e / lo) / std::log(hi / lo) : 0.0;
-            const QColor c = falseColourRamp(std::clamp(t, 0.0, 1.0));
+            const QColor c = legendColour(legend, e);
             item->setBackground(c);
             item->setForeground(c.lightnessF() > 0.55 ? Qt::black : Qt::white);
             const QString unit = dfPerLux_ ? tr("%") : tr(" lx");

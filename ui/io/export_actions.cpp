@@ -26,29 +26,34 @@ ExportActions::ExportActions(const Document& doc, const ConvergingRender& render
 
 void ExportActions::addTo(QMenu* menu) {
     addMenuEntry(menu, tr("&Export EXR..."), "actionExportExr", QKeySequence(tr("Ctrl+E")), this, [this] {
-        const QString path = dialogs_.save(tr("Export the converged image"), tr("OpenEXR (*.exr)"));
+        const QString path = dialogs_.save(tr("Export the converged image"), tr("OpenEXR (*.exr)"), suggested("exr", "render"));
         if (!path.isEmpty()) messages_.warnUnless(exportExr(path), tr("Export EXR"));
     });
     addMenuEntry(menu, tr("Export &Preview EXR..."), "actionExportPreviewExr", QKeySequence(tr("Ctrl+Alt+E")), this, [this] {
-        const QString path = dialogs_.save(tr("Export the preview"), tr("OpenEXR (*.exr)"));
+        const QString path = dialogs_.save(tr("Export the preview"), tr("OpenEXR (*.exr)"), suggested("exr", "preview"));
         if (!path.isEmpty()) messages_.warnUnless(exportPreviewExr(path), tr("Export EXR"));
     });
     addMenuEntry(menu, tr("Export &Both EXR..."), "actionExportBothExr", {}, this, [this] {
         const QString path = dialogs_.save(tr("Export preview and converged image (NAME-preview.exr, NAME-converged.exr)"),
-                                           tr("OpenEXR (*.exr)"));
+                                           tr("OpenEXR (*.exr)"), suggested("exr", "render"));
         if (!path.isEmpty()) messages_.warnUnless(exportBothExr(path), tr("Export EXR"));
     });
     addMenuEntry(menu, tr("Export P&NG..."), "actionExportPng", QKeySequence(tr("Ctrl+Shift+E")), this, [this] {
-        const QString path = dialogs_.save(tr("Export the converged image as a picture"), tr("PNG (*.png)"));
+        const QString path =
+            dialogs_.save(tr("Export the converged image as a picture"), tr("PNG (*.png)"), suggested("png", "render"));
         if (!path.isEmpty()) messages_.warnUnless(exportPng(path), tr("Export PNG"));
     });
     addMenuEntry(menu, tr("Export &Report..."), "actionExportReport", QKeySequence(tr("Ctrl+Shift+R")), this, [this] {
-        QString path = dialogs_.save(tr("Export the lighting design report"), tr("PDF (*.pdf)"));
+        QString path = dialogs_.save(tr("Export the lighting design report"), tr("PDF (*.pdf)"), suggested("pdf", "report"));
         if (path.isEmpty()) return;
         if (!path.endsWith(QStringLiteral(".pdf"), Qt::CaseInsensitive)) path += QStringLiteral(".pdf");
         if (!report_.start(doc_.snapshot(), QString::fromStdString(doc_.path()), path))
             messages_.show(tr("A report is being computed already"), 5000);
     });
+}
+
+QString ExportActions::suggested(const QString& extension, const QString& fallback) const {
+    return suggestedFileName(QString::fromStdString(doc_.path()), extension, fallback);
 }
 
 bool ExportActions::written(const std::function<void()>& write, const QString& done) {

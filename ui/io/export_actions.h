@@ -44,6 +44,8 @@ public:
 private:
     // Runs `write`; a failure it throws is said, a success is `done` in the status bar.
     bool written(const std::function<void()>& write, const QString& done);
+    // The file name the save dialogs offer: the scene's name with `extension`, else `fallback`'s.
+    QString suggested(const QString& extension, const QString& fallback) const;
 
     const Document& doc_;
     const ConvergingRender& render_;

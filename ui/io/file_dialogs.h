@@ -11,10 +11,15 @@ class QWidget;
 
 namespace lucerna {
 
+// The file name a save dialog offers for what is made from the scene at `scenePath`: the scene's
+// base name with `extension` ("office_floor.pdf"), or `fallback` with it for an untitled scene.
+QString suggestedFileName(const QString& scenePath, const QString& extension, const QString& fallback);
+
 class FileDialogs {
 public:
     enum class Mode { Open, Save };
-    // caption, the folder the dialog opens in, the name filter; returns the chosen path or "".
+    // caption, where the dialog opens (the folder; for a save with a suggested name, that name
+    // in the folder), the name filter; returns the chosen path or "".
     using Ask = std::function<QString(Mode mode, const QString& caption, const QString& folder, const QString& filter)>;
 
     // `sceneFolder` gives the open document's folder ("" for an untitled scene, or one whose
@@ -22,13 +27,16 @@ public:
     FileDialogs(QWidget* parent, std::function<QString()> sceneFolder);
 
     QString open(const QString& caption, const QString& filter);
-    QString save(const QString& caption, const QString& filter);
+    // `suggestedName`: the file name the save dialog offers ("" for none); never a folder's name,
+    // which Qt's dialog would put in the name field when given a folder that does not exist.
+    QString save(const QString& caption, const QString& filter, const QString& suggestedName = {});
     void replace(Ask ask) { ask_ = std::move(ask); }
-    // Where the next dialog opens.
+    // Where the next dialog opens: a folder that exists (the scene's, the last dialog's, the
+    // user's documents, else home).
     QString folder() const;
 
 private:
-    QString ask(Mode mode, const QString& caption, const QString& filter);
+    QString ask(Mode mode, const QString& caption, const QString& filter, const QString& suggestedName = {});
 
     QWidget* parent_;
     std::function<QString()> sceneFolder_;

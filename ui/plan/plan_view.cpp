@@ -1,5 +1,6 @@
 #include "ui/plan/plan_view.h"
 
+#include "core/photometry/lighting_standards.h"
 #include "core/scene/scene_change.h"
 #include "core/scene/scene_geometry.h"
 #include "render/display/display.h"
@@ -10,7 +11,9 @@
 #include "ui/plan/task_area_drawing.h"
 #include "ui/plan/task_area_outlines.h"
 
+#include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
 #include <QLabel>
@@ -27,15 +30,12 @@ namespace lucerna {
 namespace {
 const QColor kBackground(246, 246, 242);
 const QColor kWallColour(60, 60, 64);
-const QColor kSelectionColour(30, 110, 230);
-constexpr int kMaxRings = 50;  // selections larger than this show as blue symbols
-
-QString nameOf(const Light& light) { return QString::fromStdString(light.name); }
 }  // namespace
 
 PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     : QWidget(parent), doc_(doc), title_(new QLabel(this)), snap_(new QCheckBox(tr("Snap"), this)),
-      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)), interaction_(new PlanInteraction(this, doc, gate)),
+      snapStep_(new QDoubleSpinBox(this)), drawField_(new QToolButton(this)), scaleChoice_(new QComboBox(this)),
+      labels_(new QAction(tr("Luminaire &Labels"), this)), interaction_(new PlanInteraction(this, doc, gate)),
       taskAreaDrawing_(new TaskAreaDrawing(this, doc)), taskAreaOutlines_(std::make_unique<TaskAreaOutlines>()),
       roomDrawing_(new RoomDrawing(this, doc)) {
     setMouseTracking(false);
@@ -63,6 +63,19 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     bar->addWidget(drawField_);
     bar->addWidget(taskAreaDrawing_->button());
     bar->addWidget(roomDrawing_->button());
+    bar->addSpacing(8);
+    // The grid's legend: the plan's own scale (planScale), or the user's.
+    scaleChoice_->setObjectName("planLegendScale");
+    scaleChoice_->addItem(tr("Auto scale"));
+    for (LegendScale s : {LegendScale::Linear, LegendScale::Logarithmic, LegendScale::Bands})
+        scaleChoice_->addItem(legendScaleName(s), int(s));
+    scaleChoice_->setToolTip(tr("The false-colour scale of the grid: the plan's own (linear, or logarithmic over a wide "
+                                "range), linear, logarithmic, or bands between round values"));
+    bar->addWidget(scaleChoice_);
+    labels_->setObjectName("actionLuminaireLabels");
+    labels_->setCheckable(true);
+    labels_->setChecked(true);
+    labels_->setToolTip(tr("Write the lights' names in the plan where they fit"));
     // The draw buttons give way to a narrow plan (their text clipped) rather than widen the
     // window's central area past what the docks leave it.
     for (QToolButton* b : {drawField_, taskAreaDrawing_->button(), roomDrawing_->button()})
@@ -85,6 +98,8 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
         connect(roomDrawing_->button(), &QToolButton::toggled, other, [other](bool on) { if (on) other->setChecked(false); });
     }
     connect(snap_, &QCheckBox::toggled, this, [this] { update(); });
+    connect(labels_, &QAction::toggled, this, [this] { update(); });
+    connect(scaleChoice_, &QComboBox::currentIndexChanged, this, [this] { update(); });
     connect(snapStep_, &QDoubleSpinBox::valueChanged, this, [this] { update(); });
     connect(doc_, &Document::changed, this, [this] { update(); });
     connect(doc_, &Document::replaced, this, [this] {
@@ -148,7 +163,8 @@ void PlanView::setGridResult(const CalculationGrid& grid, const GridLayout& layo
     result_ = std::move(result);
     resultScene_ = doc_->snapshot();
     gridScale_ = {};
-    if (result_ && !result_->lux.empty()) gridScale_ = planScale(gridStatistics(result_->lux));
+    gridStatistics_ = {};
+    if (result_ && !result_->lux.empty()) gridStatistics_ = gridStatistics(result_->lux), gridScale_ = planScale(gridStatistics_);
     update();
 }
 
@@ -160,6 +176,7 @@ void PlanView::setSnapMeters(double meters) {
 }
 
 QColor PlanView::lightColour() { return QColor(230, 120, 0); }
+QColor PlanView::selectionColour() { return QColor(30, 110, 230); }
 QColor PlanView::isoLineColour() { return QColor(0, 0, 0); }
 QColor PlanView::cameraColour() { return QColor(140, 40, 200); }
 
@@ -196,7 +213,33 @@ std::optional<Legend> PlanView::gridLegend() const {
     if (!result_ || result_->lux.empty() || layout_.points.size() != result_->lux.size()) return std::nullopt;
     const V3d axis = projection_ == Projection::Top ? V3d(0, 1, 0) : projection_ == Projection::Front ? V3d(0, 0, 1) : V3d(1, 0, 0);
     if (std::abs(grid_.normal().dot(axis)) < 0.9) return std::nullopt;  // the grid is not on a plane of this view
-    return gridScale_.legend(gridUnit_.isEmpty() ? tr("lx") : gridUnit_);
+    // A task area's grid (the grid dock's grid is the area's own) whose activity states Em: the
+    // colours centre on it, as the report's plan of the area does.
+    std::optional<double> required;
+    const Scene& scene = doc_->scene();
+    for (const TaskArea& t : scene.taskAreas)
+        if (gridUnit_.isEmpty() && t.grid.name == grid_.name && t.grid.corner == grid_.corner && !t.activity.empty()) {
+            if (const ActivityRequirement* a = findActivity(t.activity, lightingStandardOf(scene))) required = a->maintainedLux;
+            break;
+        }
+    PlanScale scale = required ? requirementScale(*required, gridStatistics_) : gridScale_;
+    // Chosen logarithmic, a requirement's scale runs over the same factors either side of Em.
+    if (required && !scale.logScale && legendScale() == LegendScale::Logarithmic) scale.lo = *required / 5, scale.hi = *required * 5;
+    Legend legend = scale.legend(gridUnit_.isEmpty() ? tr("lx") : gridUnit_, legendScale());
+    if (required) {
+        legend.target = *required;
+        legend.targetLabel = tr("Em %1").arg(tickText(*required));
+    }
+    return legend;
+}
+
+void PlanView::setLegendScale(std::optional<LegendScale> scale) {
+    scaleChoice_->setCurrentIndex(scale ? scaleChoice_->findData(int(*scale)) : 0);
+}
+
+std::optional<LegendScale> PlanView::legendScale() const {
+    if (scaleChoice_->currentIndex() <= 0) return std::nullopt;
+    return LegendScale(scaleChoice_->currentData().toInt());
 }
 
 bool PlanView::gridOutOfDate() const {
@@ -294,7 +337,6 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
         painter.drawText(at, Qt::AlignCenter, text);
     }
     painter.setFont(font());
-    paintLegend(painter, rect(), *legend);
     if (gridOutOfDate()) {
         const QString text = tr("Grid out of date (the scene changed): compute it again.");
         const double lineHeight = painter.fontMetrics().height();
@@ -305,100 +347,11 @@ void PlanView::paintCalculationGrid(QPainter& painter) const {
     }
 }
 
-void PlanView::paintLights(QPainter& painter) const {
-    const Scene& scene = doc_->scene();
-    std::vector<QRectF> labels;
-    for (size_t i = 0; i < scene.lights.size(); ++i) {
-        const Light& l = scene.lights[i];
-        if (l.type == LightType::Directional || l.type == LightType::Sun) continue;  // at infinity
-        const QPointF c = widgetOf(l.position);
-        const double r = kSymbolRadius;
-        // Selected: a ring; in a large selection (a dense field) the symbol itself turns blue,
-        // where rings would cover the field.
-        const bool inSet = i < selectedSet_.size() && selectedSet_[i];
-        if (int(i) == selected_ || (inSet && selectedCount_ <= kMaxRings)) {
-            painter.setPen(QPen(kSelectionColour, 2.5));
-            painter.setBrush(Qt::NoBrush);
-            painter.drawEllipse(c, r + 5, r + 5);
-        }
-        // A light switched off is drawn grey.
-        const QColor symbol = !l.on ? QColor(150, 150, 150) : inSet && selectedCount_ > kMaxRings ? kSelectionColour : lightColour();
-        painter.setPen(QPen(symbol, 2));
-        painter.setBrush(QColor(255, 255, 255, 200));
-        if (l.type == LightType::Luminaire) painter.drawRect(QRectF(c - QPointF(r, r), c + QPointF(r, r)));
-        else painter.drawEllipse(c, r, r);
-        painter.drawLine(c - QPointF(r, 0), c + QPointF(r, 0));
-        painter.drawLine(c - QPointF(0, r), c + QPointF(0, r));
-        if (l.type == LightType::Spot || l.type == LightType::Luminaire) {
-            // The axis's direction in this view, as a wedge of the cone's half-angle.
-            const QPointF d = planPoint(projection_, l.position + l.direction.normalized()) - planPoint(projection_, l.position);
-            const double len = std::hypot(d.x(), d.y());
-            if (len > 0.05) {
-                const double angle = std::atan2(d.y(), d.x());
-                const double half = l.type == LightType::Spot ? l.coneAngleDeg * M_PI / 180 : M_PI / 6;
-                const double reach = r + 6 + 14 * len;
-                QPolygonF wedge;
-                wedge << c << c + reach * QPointF(std::cos(angle - half), std::sin(angle - half))
-                      << c + reach * QPointF(std::cos(angle + half), std::sin(angle + half));
-                painter.setBrush(Qt::NoBrush);
-                painter.drawPolygon(wedge);
-            }
-        }
-        if (!l.group.empty()) continue;  // named once for its group (paintGroups)
-        painter.setPen(Qt::black);
-        const QString name = nameOf(l);
-        const QRectF box = painter.fontMetrics().boundingRect(name).adjusted(-2, 0, 2, 0);
-        QRectF at(c + QPointF(r + 4, -r - 4 - box.height()), box.size());
-        // Lights one above another in this view: their names stack instead of overwriting.
-        for (bool moved = true; moved;) {
-            moved = false;
-            for (const QRectF& other : labels)
-                if (other.intersects(at)) {
-                    at.moveTop(other.bottom() + 1);
-                    moved = true;
-                }
-        }
-        labels.push_back(at);
-        painter.fillRect(at, QColor(255, 255, 255));
-        painter.drawText(at, Qt::AlignCenter, name);
-    }
-}
-
-void PlanView::paintGroups(QPainter& painter) const {
-    // Each group's box around its lights, dashed, with its name and count once above it.
-    struct Box {
-        double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-        int count = 0;
-    };
-    std::map<std::string, Box> boxes;
-    for (const Light& l : doc_->scene().lights) {
-        if (l.group.empty() || l.type == LightType::Directional || l.type == LightType::Sun) continue;
-        const QPointF c = widgetOf(l.position);
-        Box& b = boxes[l.group];
-        b.x0 = std::min(b.x0, c.x()), b.x1 = std::max(b.x1, c.x());
-        b.y0 = std::min(b.y0, c.y()), b.y1 = std::max(b.y1, c.y());
-        ++b.count;
-    }
-    const double pad = kSymbolRadius + 5;
-    for (const auto& [name, b] : boxes) {
-        const QRectF r = QRectF(QPointF(b.x0, b.y0), QPointF(b.x1, b.y1)).adjusted(-pad, -pad, pad, pad);
-        painter.setPen(QPen(lightColour().darker(130), 1, Qt::DashLine));
-        painter.setBrush(Qt::NoBrush);
-        painter.drawRect(r);
-        const QString text = tr("%1 (%2)").arg(QString::fromStdString(name)).arg(b.count);
-        const QRectF box = painter.fontMetrics().boundingRect(text).adjusted(-3, 0, 3, 0);
-        const QRectF at(r.topLeft() - QPointF(0, box.height() + 1), box.size());
-        painter.fillRect(at, QColor(255, 255, 255));
-        painter.setPen(Qt::black);
-        painter.drawText(at, Qt::AlignCenter, text);
-    }
-}
-
 void PlanView::paintField(QPainter& painter) const {
     const std::optional<QRectF> field = interaction_->fieldBeingDrawn();
     if (!field) return;
     const QRectF r(widgetOfPlan(field->topLeft()), widgetOfPlan(field->bottomRight()));
-    painter.setPen(QPen(kSelectionColour, 1.5, Qt::DashLine));
+    painter.setPen(QPen(selectionColour(), 1.5, Qt::DashLine));
     QColor fill(30, 110, 230, 30);
     painter.setBrush(fill);
     painter.drawRect(r);
@@ -462,12 +415,16 @@ void PlanView::paintEvent(QPaintEvent*) {
     if (projection_ == Projection::Top)
         taskAreaOutlines_->paint(painter, doc_->snapshot(), [this](const V3d& p) { return widgetOf(p); }, selectedTaskArea_);
     paintCamera(painter);
+    lightTypes_ = planLightTypes(doc_->scene());
     paintLights(painter);
-    paintGroups(painter);
+    const std::vector<QRectF> captions = paintGroups(painter);
+    layOutLegends(font());
+    paintLabels(painter, captions);
     paintField(painter);
     taskAreaDrawing_->paint(painter);
     roomDrawing_->paint(painter);
     paintScaleBar(painter);
+    paintLegends(painter);  // last: nothing covers them
 }
 
 void PlanView::resizeEvent(QResizeEvent* event) {

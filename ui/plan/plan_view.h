@@ -8,7 +8,9 @@
 // a spot, a square with a cross for a luminaire (directional lights have no position); the scene
 // camera is a dot with its field of view.
 // The newest calculation grid facing the view is drawn on its plane in false colour, with
-// iso-lux lines and a legend as the report's plans have them (render/display/plan_scales.h).
+// iso-lux lines and a legend as the report's plans have them (render/display/plan_scales.h), on
+// the scale the bar's choice gives (the plan's own, linear, logarithmic or bands); a task area's
+// grid has its required Em marked on the legend, in the middle of the ramp.
 // The mouse and keys (ui/plan/plan_interaction.h):
 // - Left drag on a light moves it in the view's plane (the plan: x and z, y unchanged), its
 //   moved coordinates snapped to the snap step (a grid in metres, drawn faintly); one undo step
@@ -24,6 +26,7 @@
 
 #include "core/photometry/calculation_grid.h"
 #include "render/display/plan_projection.h"
+#include "render/display/luminaire_symbols.h"
 #include "render/display/plan_scales.h"
 #include "render/photometry/grid_calculation.h"
 #include "ui/document/document.h"
@@ -34,7 +37,9 @@
 #include <memory>
 #include <optional>
 
+class QAction;
 class QCheckBox;
+class QComboBox;
 class QDoubleSpinBox;
 class QLabel;
 class QToolButton;
@@ -100,8 +105,20 @@ public:
     void zoomAbout(const QPointF& widget, double factor);
     // The widget position of a light's symbol (nothing for directional lights).
     std::optional<QPointF> lightSymbol(int index) const;
-    // The false-colour legend of the grid drawn now (nothing without a grid shown).
+    // The false-colour legend of the grid drawn now (nothing without a grid shown), on the
+    // chosen scale. A task area's grid whose activity states Em has it as the legend's target,
+    // and its colours centre on it (requirementScale: 0 to 2 Em), as in the report.
     std::optional<Legend> gridLegend() const;
+    // The legend's scale: nothing for the plan's own (planScale's), else the one given.
+    void setLegendScale(std::optional<LegendScale> scale);
+    std::optional<LegendScale> legendScale() const;
+
+    // Shows or hides the lights' names (the View menu's Luminaire Labels; checkable, on).
+    QAction* labelsAction() const { return labels_; }
+    // The lights' names' rectangles as last painted, and the legends' (the false-colour legend's
+    // box, the key of light types), widget pixels.
+    const std::vector<QRectF>& visibleLabelRects() const { return labelRects_; }
+    const std::vector<QRectF>& legendRects() const { return legendRects_; }
     // The scene changed since the grid's result was computed in a way that changes its values
     // (lights, geometry, materials): the plan says so over the grid.
     bool gridOutOfDate() const;
@@ -109,6 +126,7 @@ public:
     const std::vector<double>& isoLevelsShown() const { return gridScale_.levels; }
     // The colours the view draws lights and iso-lux lines in (for tests reading pixels back).
     static QColor lightColour();
+    static QColor selectionColour();
     static QColor isoLineColour();
     static QColor cameraColour();
 
@@ -135,7 +153,13 @@ private:
     void paintSnapGrid(QPainter& painter) const;
     void paintCalculationGrid(QPainter& painter) const;
     void paintLights(QPainter& painter) const;
-    void paintGroups(QPainter& painter) const;
+    // Returns the groups' captions' rectangles.
+    std::vector<QRectF> paintGroups(QPainter& painter) const;
+    // Where the legends go this time (the false-colour legend's box, the key's): set in
+    // legendRects_ before the names are placed.
+    void layOutLegends(const QFont& font);
+    void paintLabels(QPainter& painter, const std::vector<QRectF>& groupCaptions);
+    void paintLegends(QPainter& painter) const;
     void paintField(QPainter& painter) const;
     void paintCamera(QPainter& painter) const;
     void paintScaleBar(QPainter& painter) const;
@@ -146,6 +170,8 @@ private:
     QCheckBox* snap_;
     QDoubleSpinBox* snapStep_;
     QToolButton* drawField_;
+    QComboBox* scaleChoice_;
+    QAction* labels_;
 
     std::vector<PlanFace> faces_;      // of the geometry, for the projection
     SceneSnapshot facesScene_;         // the scene faces_ were built from
@@ -162,6 +188,7 @@ private:
     std::shared_ptr<const GridResult> result_;
     SceneSnapshot resultScene_;  // the scene when the result arrived
     PlanScale gridScale_;        // the result's legend and iso-lux levels
+    GridStatistics gridStatistics_;  // the result's
     QString gridUnit_;           // the legend's unit; empty: lx
 
     PlanInteraction* interaction_;  // the mouse and keys (a child)
@@ -169,6 +196,11 @@ private:
     std::unique_ptr<TaskAreaOutlines> taskAreaOutlines_;
     RoomDrawing* roomDrawing_;  // the room tool (a child; sees the mouse before the plan's own)
     int selectedTaskArea_ = -1;
+
+    PlanLightTypes lightTypes_;         // of the scene, at the last paint
+    std::vector<QRectF> labelRects_;    // the names painted last
+    std::vector<QRectF> legendRects_;   // the legends' boxes painted last
+    QRectF keyRect_;                    // the key of light types (empty: none)
 };
 
 }  // namespace lucerna

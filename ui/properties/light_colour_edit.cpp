@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
+#include <QVBoxLayout>
 #include <QSignalBlocker>
 
 namespace lucerna {
@@ -14,8 +15,12 @@ namespace lucerna {
 LightColourEdit::~LightColourEdit() { disconnectChildren(this); }
 
 LightColourEdit::LightColourEdit(QWidget* parent) : QWidget(parent) {
-    auto* h = new QHBoxLayout(this);
-    h->setContentsMargins(0, 0, 0, 0);
+    // The mode beside the temperature; a colour's three channels on a line of their own, so that
+    // the field fits a narrow dock.
+    auto* v = new QVBoxLayout(this);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(2);
+    auto* h = new QHBoxLayout;
     mode_ = new QComboBox(this);
     mode_->setObjectName("lightColourMode");
     mode_->addItem(tr("Temperature"));
@@ -31,7 +36,8 @@ LightColourEdit::LightColourEdit(QWidget* parent) : QWidget(parent) {
     colour_->setObjectName("lightColour");
     h->addWidget(mode_);
     h->addWidget(temperature_, 1);
-    h->addWidget(colour_, 1);
+    v->addLayout(h);
+    v->addWidget(colour_);
     connect(mode_, &QComboBox::activated, this, [this] {
         showMode();
         emit edited(mode_);

@@ -4,6 +4,7 @@
 #include "core/photometry/light_output.h"
 #include "core/number_format.h"
 #include "core/photometry/luminaire.h"
+#include "core/scene/aim_angles.h"
 #include "core/scene/scene_geometry.h"
 #include "ui/properties/colour_edit.h"
 #include "ui/commands/light_commands.h"
@@ -36,6 +37,9 @@ Rgbd editedColour(const LightColourEdit* edit, const void* sender, Rgbd base) {
     return base;
 }
 
+// Straight down or up (to the fields' 0.01 degrees): no bearing to show or keep.
+bool verticalAim(const AimAngles& aim) { return aim.tiltDeg < 0.005 || aim.tiltDeg > 179.995; }
+
 // The colour a light's colour field shows: the temperature's, or the colour's, brightest channel 1.
 Rgbd shownColour(std::optional<double> temperatureK, std::optional<Rgbd> colour) {
     if (temperatureK) return chromaticity(blackbodyColour(*temperatureK));
@@ -56,10 +60,22 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     group_->setToolTip(tr("The light's group (the outliner shows it under the group's node); empty: none"));
     addPropertyRow(rows_, tr("Group"), {group_});
     position_ = makeTriple(Field::Position);
-    positionRow_ = addPropertyRow(rows_, tr("Position"), {position_[0], position_[1], position_[2]});
+    positionRow_ = addTripleRow(rows_, tr("Position"), {position_[0], position_[1], position_[2]});
     rowLabel(positionRow_)->setObjectName("positionLabel");
-    direction_ = makeTriple(Field::Direction);
-    directionRow_ = addPropertyRow(rows_, tr("Direction"), {direction_[0], direction_[1], direction_[2]});
+    // The aim (core/scene/aim_angles.h).
+    tilt_ = makeSpin(Field::Tilt, 0, 180, 2);
+    tilt_->setSuffix(QStringLiteral(" °"));
+    tilt_->setObjectName("lightTilt");
+    tilt_->setToolTip(tr("Degrees from straight down: 0 hangs straight down, 90 is horizontal, 180 points up"));
+    tiltRow_ = addPropertyRow(rows_, tr("Tilt"), {tilt_});
+    azimuth_ = makeSpin(Field::Azimuth, 0, 360, 2);
+    azimuth_->setSuffix(QStringLiteral(" °"));
+    azimuth_->setWrapping(true);
+    azimuth_->setObjectName("lightAzimuth");
+    azimuth_->setToolTip(tr("The way the light leans, in degrees clockwise from the site's north seen from above "
+                            "(0 north, 90 east, 180 south, 270 west; north is -z unless the Daylight panel's site "
+                            "says otherwise). Nothing to turn while the tilt is 0 or 180."));
+    azimuthRow_ = addPropertyRow(rows_, tr("Azimuth"), {azimuth_});
 
     // Luminaire.
     file_ = makeWrappingLabel(fields_, "luminaireFile");
@@ -67,6 +83,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     rotation_ = makeSpin(Field::Rotation, -360, 360, 2);
     rotation_->setSuffix(QStringLiteral(" °"));
     rotation_->setObjectName("luminaireRotation");
+    rotation_->setToolTip(tr("The luminaire turned about its own axis (its C0 plane), in degrees"));
     rotationRow_ = addPropertyRow(rows_, tr("Rotation"), {rotation_});
     // Point and spot: lumens or candela.
     output_ = makeSpin(Field::Output, 0, 1e9, 1);
@@ -99,7 +116,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     colour_->setObjectName("lightColourEdit");
     connect(colour_, &LightColourEdit::edited, this, [this](const void* source) { apply(Field::Colour, source); });
     connect(colour_, &LightColourEdit::editingFinished, this, [this] { merge_.finish(); });
-    colourRow_ = addPropertyRow(rows_, tr("Colour"), {colour_});
+    colourRow_ = addStackedPropertyRow(rows_, tr("Colour"), {colour_});
 
     cone_ = makeSpin(Field::Cone, 0.1, 179.9, 2);
     cone_->setSuffix(QStringLiteral(" °"));
@@ -125,8 +142,7 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     maintenance_->setObjectName("lightMaintenance");
     connect(maintenance_, &MaintenanceFactorEdit::edited, this, [this](const void* source) { apply(Field::Maintenance, source); });
     connect(maintenance_, &MaintenanceFactorEdit::editingFinished, this, [this] { merge_.finish(); });
-    maintenanceRow_ = addPropertyRow(rows_, tr("Maintenance"), {maintenance_});
-    maintenanceRow_->layout()->setAlignment(rowLabel(maintenanceRow_), Qt::AlignTop);  // beside the mode list
+    maintenanceRow_ = addStackedPropertyRow(rows_, tr("Maintenance"), {maintenance_});
 
     sunNote_ = makeWrappingLabel(fields_, "lightSunNote",
                                  tr("The sun's illuminance, disc, date and time are in the Daylight panel."));
@@ -147,7 +163,8 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     advanced_->setAutoRaise(true);
     rows_->addWidget(advanced_);
     power_ = makeTriple(Field::Power);
-    powerRow_ = addPropertyRow(rows_, tr("Intensity"), {power_[0], power_[1], power_[2]});
+    powerRow_ = addTripleRow(rows_, tr("Intensity"), {power_[0], power_[1], power_[2]},
+                             {QStringLiteral("R"), QStringLiteral("G"), QStringLiteral("B")});
     rowLabel(powerRow_)->setObjectName("powerLabel");
     connect(advanced_, &QToolButton::toggled, this, [this](bool on) {
         advanced_->setArrowType(on ? Qt::DownArrow : Qt::RightArrow);
@@ -156,10 +173,6 @@ LightProperties::LightProperties(Document* doc, QWidget* parent)
     rows_->addStretch(1);
     for (int i = 0; i < 3; ++i) {
         position_[size_t(i)]->setObjectName(QStringLiteral("lightPosition%1").arg(i));
-        direction_[size_t(i)]->setObjectName(QStringLiteral("lightDirection%1").arg(i));
-        direction_[size_t(i)]->setRange(-1e6, 1e6);
-        direction_[size_t(i)]->setDecimals(4);
-        direction_[size_t(i)]->setSingleStep(0.05);
         power_[size_t(i)]->setObjectName(QStringLiteral("lightPower%1").arg(i));
         power_[size_t(i)]->setRange(0, 1e12);
         power_[size_t(i)]->setDecimals(4);
@@ -204,15 +217,20 @@ void LightProperties::refresh() {
     const bool pointOrSpot = l.type == LightType::Point || spot;
     const bool sun = l.type == LightType::Sun;
     positionRow_->setVisible(!directional && !sun);
-    directionRow_->setVisible(l.type != LightType::Point && !(sun && l.sun && l.sun->time));
+    const bool aimed = l.type != LightType::Point && !(sun && l.sun && l.sun->time);
+    tiltRow_->setVisible(aimed);
+    azimuthRow_->setVisible(aimed);
     colourRow_->setVisible(!sun);
     sunNote_->setVisible(sun);
-    rowLabel(directionRow_)->setText(luminaire ? tr("Nadir") : tr("Direction"));
     rowLabel(positionRow_)->setText(tr("Position (%1)").arg(lengthUnit(scene)));
-    for (int i = 0; i < 3; ++i) {
-        position_[size_t(i)]->setValue(l.position[i]);
-        direction_[size_t(i)]->setValue(l.direction[i]);
-    }
+    for (int i = 0; i < 3; ++i) position_[size_t(i)]->setValue(l.position[i]);
+    const AimAngles aim = aimAngles(l.direction, horizontalNorth(scene));
+    tilt_->setValue(aim.tiltDeg);
+    // Straight down or up has no bearing: the field keeps the one shown for this light, for the
+    // next tilt (another light's starts from north).
+    if (!verticalAim(aim)) azimuth_->setValue(aim.azimuthDeg);
+    else if (aimLight_ != index_) azimuth_->setValue(0);
+    aimLight_ = index_;
 
     outputRow_->setVisible(pointOrSpot);
     outputOther_->setVisible(pointOrSpot);
@@ -296,13 +314,21 @@ void LightProperties::apply(Field field, const void* sender) {
         l.position = take(position_, l.position);
         what = tr("Move %1");
         break;
-    case Field::Direction: {
-        const V3d d = take(direction_, l.direction);
-        // SPEC.md: directions are non-zero. Refuse the edit and show the light as it is.
-        if (d.length() == 0) {
-            refresh();
-            return;
+    case Field::Tilt:
+    case Field::Azimuth: {
+        // The angle typed, and the other one exactly as the light has it (the field shows it
+        // rounded), but for a vertical light's bearing, which only the field holds.
+        const V3d north = horizontalNorth(scene);
+        AimAngles aim = aimAngles(l.direction, north);
+        if (field == Field::Tilt) {
+            aim.tiltDeg = tilt_->value();
+            if (verticalAim(aimAngles(l.direction, north))) aim.azimuthDeg = azimuth_->value();
+        } else {
+            aim.azimuthDeg = azimuth_->value();
         }
+        const V3d d = aimDirection(aim, north);
+        // A vertical light turned about the vertical stays as it is.
+        if (verticalAim(aimAngles(l.direction, north)) && verticalAim(aim)) return;
         l.direction = d;
         what = tr("Aim %1");
         break;

@@ -8,6 +8,8 @@
 // maintenance factor or the scene's (ui/scene_panels/maintenance_factor_edit.h). The radiometric
 // values (W/sr, W/m²) are an advanced view behind a toggle. A sun shows its name, group and (when
 // placed by direction) its direction; the rest of it is the daylight panel's. Lengths are in the scene's unit.
+// A spot's, luminaire's or directional light's aim is a tilt from straight down and an azimuth
+// from the site's north (core/scene/aim_angles.h), not the scene's direction vector.
 // Every edit of a field is one EditLightCommand holding the whole light before and after; the
 // arrow steps of one field merge into it until the field's editing finishes.
 
@@ -41,7 +43,12 @@ public:
     // The group the light belongs to (empty: none); typing a name moves it there.
     QLineEdit* groupField() const { return group_; }
     const std::array<QDoubleSpinBox*, 3>& positionFields() const { return position_; }
-    const std::array<QDoubleSpinBox*, 3>& directionFields() const { return direction_; }
+    // The aim (spot, luminaire, directional light, a sun placed by direction): degrees from
+    // straight down, 0 to 180; and the bearing in degrees clockwise from the site's north, seen
+    // from above. A vertical aim has no bearing: the azimuth field then keeps what it shows, and
+    // a tilt typed afterwards leans the light that way.
+    QDoubleSpinBox* tiltField() const { return tilt_; }
+    QDoubleSpinBox* azimuthField() const { return azimuth_; }
     // Point and spot: the flux or candela value, its unit (0 lm, 1 cd).
     QDoubleSpinBox* outputField() const { return output_; }
     QComboBox* outputUnitField() const { return outputUnit_; }
@@ -63,7 +70,7 @@ public:
     MaintenanceFactorEdit* maintenanceField() const { return maintenance_; }
 
 private:
-    enum class Field { Position, Direction, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens, Maintenance };
+    enum class Field { Position, Tilt, Azimuth, Output, OutputUnit, Illuminance, Colour, Power, Cone, Falloff, Rotation, Lumens, Maintenance };
     std::array<QDoubleSpinBox*, 3> makeTriple(Field field);
     QDoubleSpinBox* makeSpin(Field field, double lo, double hi, int decimals);
     void refresh() override;
@@ -73,18 +80,19 @@ private:
     void applyCircuitWatts();
 
     QLabel *type_, *outputOther_, *file_, *sunNote_;
-    QWidget *positionRow_, *directionRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
+    QWidget *positionRow_, *tiltRow_, *azimuthRow_, *outputRow_, *illuminanceRow_, *colourRow_, *powerRow_;
     QWidget *coneRow_, *falloffRow_, *fileRow_, *rotationRow_, *lumensRow_, *polarRow_, *circuitRow_, *maintenanceRow_;
     QLineEdit* name_;
     QLineEdit* group_;
     QLineEdit* circuit_;
-    std::array<QDoubleSpinBox*, 3> position_{}, direction_{}, power_{};
-    QDoubleSpinBox *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
+    std::array<QDoubleSpinBox*, 3> position_{}, power_{};
+    QDoubleSpinBox *tilt_, *azimuth_, *output_, *illuminance_, *cone_, *falloff_, *rotation_, *lumens_;
     QComboBox* outputUnit_;
     LightColourEdit* colour_;
     QToolButton* advanced_;
     LuminairePolarPlot* polar_;
     MaintenanceFactorEdit* maintenance_;
+    int aimLight_ = -1;  // the light whose bearing the azimuth field shows
 };
 
 }  // namespace lucerna

@@ -12,17 +12,19 @@
 
 namespace lucerna {
 
-// The drawing surface: square, as wide as the panel allows.
+// The drawing surface: square, as wide as the panel allows (a narrow dock scales it down rather
+// than scrolling sideways to it).
 class PolarCanvas : public QWidget {
 public:
+    static constexpr int kSmallest = 150, kLargest = 320;
     PolarCanvas(LuminairePolarPlot* plot, QWidget* parent) : QWidget(parent), plot_(plot) {
-        setMinimumSize(240, 240);
-        QSizePolicy p(QSizePolicy::Preferred, QSizePolicy::Preferred);
+        setMinimumSize(kSmallest, kSmallest);
+        QSizePolicy p(QSizePolicy::Ignored, QSizePolicy::Preferred);
         p.setHeightForWidth(true);
         setSizePolicy(p);
     }
     bool hasHeightForWidth() const override { return true; }
-    int heightForWidth(int w) const override { return std::clamp(w, 240, 320); }
+    int heightForWidth(int w) const override { return std::clamp(w, kSmallest, kLargest); }
     QSize sizeHint() const override { return {280, 280}; }
 
 protected:

@@ -37,6 +37,16 @@ PropertiesPanel::PropertiesPanel(Document* doc, LightProperties* lights, QWidget
     connect(objects_, &ObjectProperties::materialAssigned, materials_, &MaterialProperties::setMaterial);
     // Undo of an assignment, or a rename of the object's material: the panel follows the object.
     connect(doc_, &Document::changed, this, &PropertiesPanel::followObjectMaterial);
+    // The dock as wide and tall as the page shown needs, not as the widest of all pages (a
+    // stacked widget's own rule), so that a narrow dock does not scroll sideways to a page that
+    // is not there.
+    connect(this, &QStackedWidget::currentChanged, this, [this](int shown) {
+        for (int i = 0; i < count(); ++i) {
+            const QSizePolicy::Policy p = i == shown ? QSizePolicy::Preferred : QSizePolicy::Ignored;
+            widget(i)->setSizePolicy(p, p);
+        }
+        updateGeometry();
+    });
     showSelection({});
 }
 

@@ -3,6 +3,7 @@
 #include "ui/viewport/viewport.h"
 
 #include <QDoubleSpinBox>
+#include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QVBoxLayout>
@@ -19,6 +20,47 @@ QWidget* addPropertyRow(QVBoxLayout* rows, const QString& label, std::initialize
     for (QWidget* f : fields) {
         f->setParent(row);
         h->addWidget(f, 1);
+    }
+    rows->addWidget(row);
+    return row;
+}
+
+QWidget* addStackedPropertyRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields) {
+    auto* row = new QWidget(rows->parentWidget());
+    auto* v = new QVBoxLayout(row);
+    v->setContentsMargins(0, 0, 0, 0);
+    v->setSpacing(2);
+    v->addWidget(new QLabel(label, row));
+    auto* h = new QHBoxLayout;
+    for (QWidget* f : fields) {
+        f->setParent(row);
+        h->addWidget(f, 1);
+    }
+    v->addLayout(h);
+    rows->addWidget(row);
+    return row;
+}
+
+QWidget* addTripleRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields,
+                      std::initializer_list<QString> names) {
+    auto* row = new QWidget(rows->parentWidget());
+    auto* grid = new QGridLayout(row);
+    grid->setContentsMargins(0, 0, 0, 0);
+    grid->setHorizontalSpacing(4);
+    grid->addWidget(new QLabel(label, row), 0, 0, 1, 2 * int(fields.size()));
+    int column = 0;
+    auto name = names.begin();
+    for (QWidget* f : fields) {
+        auto* short_ = new QLabel(name != names.end() ? *name++ : QString(), row);
+        short_->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
+        f->setParent(row);
+        // Narrower than a row's fields may be elsewhere: three of them and their names share
+        // the dock's width.
+        f->setMinimumWidth(44);
+        grid->addWidget(short_, 1, column);
+        grid->addWidget(f, 1, column + 1);
+        grid->setColumnStretch(column + 1, 1);
+        column += 2;
     }
     rows->addWidget(row);
     return row;

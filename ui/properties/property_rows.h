@@ -18,6 +18,14 @@ namespace lucerna {
 // row's first QLabel child.
 QWidget* addPropertyRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields);
 QLabel* rowLabel(QWidget* row);
+// A row for a field too wide to stand beside its label in a narrow dock (a colour's mode and
+// value, a maintenance factor's mode and assistant): `label` on a line of its own, the fields
+// under it at the row's full width. rowLabel() finds `label`.
+QWidget* addStackedPropertyRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields);
+// A row of three fields that fits a narrow dock: `label` on a line of its own, under it the
+// fields side by side, each after its short name (x, y, z). rowLabel() finds `label`.
+QWidget* addTripleRow(QVBoxLayout* rows, const QString& label, std::initializer_list<QWidget*> fields,
+                      std::initializer_list<QString> names = {QStringLiteral("x"), QStringLiteral("y"), QStringLiteral("z")});
 
 // A label whose text wraps to the panel's width, named `name` (tests find it by it).
 QLabel* makeWrappingLabel(QWidget* parent, const QString& name, const QString& text = {});

@@ -1,5 +1,7 @@
 #include "ui/rendering/display_controls.h"
 
+#include "render/display/false_colour.h"
+
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QHBoxLayout>
@@ -46,6 +48,11 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     };
     falseMin_ = range("falseMin", settings_.falseMin);
     falseMax_ = range("falseMax", settings_.falseMax);
+    scale_ = new QComboBox(this);
+    scale_->setObjectName("falseScale");
+    for (LegendScale s : {LegendScale::Logarithmic, LegendScale::Linear, LegendScale::Bands})
+        scale_->addItem(legendScaleName(s), int(s));
+    scale_->setToolTip(tr("How the range maps to the colours: logarithmic, linear, or bands between round values"));
     layout->addWidget(new QLabel(tr("Exposure"), this));
     layout->addWidget(exposure_);
     layout->addWidget(mode_);
@@ -53,6 +60,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     rangeTo_ = new QLabel(tr("to"), this);
     layout->addWidget(rangeTo_);
     layout->addWidget(falseMax_);
+    layout->addWidget(scale_);
     layout->addStretch();
     setSettings(settings_);
 
@@ -76,11 +84,13 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     connect(falseMin_, &QDoubleSpinBox::valueChanged, this, rangeEdited);
     connect(falseMax_, &QDoubleSpinBox::valueChanged, this, rangeEdited);
     connect(mode_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
+    connect(scale_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
 }
 
 void DisplayControls::setSettings(const DisplaySettings& s) {
     {
-        const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_);
+        const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_), b5(scale_);
+        scale_->setCurrentIndex(std::max(0, scale_->findData(int(s.scale))));
         exposure_->setValue(s.exposureStops);
         mode_->setCurrentIndex(!s.falseColour                                     ? (s.curve == ToneCurve::Filmic ? Filmic : Linear)
                                : s.quantity == FalseColourQuantity::Illuminance ? FalseColourLux
@@ -106,6 +116,7 @@ void DisplayControls::read() {
     // one would divide by zero or flip the legend, so a bad one keeps the previous.
     s.falseMin = falseMin_->value();
     s.falseMax = falseMax_->value();
+    s.scale = LegendScale(scale_->currentData().toInt());
     if (!(s.falseMax > s.falseMin)) {
         s.falseMin = settings_.falseMin;
         s.falseMax = settings_.falseMax;
@@ -115,6 +126,7 @@ void DisplayControls::read() {
     falseMin_->setVisible(s.falseColour);
     falseMax_->setVisible(s.falseColour);
     rangeTo_->setVisible(s.falseColour);
+    scale_->setVisible(s.falseColour);
     if (s == settings_) return;
     settings_ = s;
     emit settingsChanged(settings_);

@@ -1,6 +1,7 @@
 #pragma once
 // The display settings a user changes: exposure in stops, and how radiance becomes a picture
-// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range). The range's
+// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range and its
+// scale: logarithmic, linear, or bands between round values). The range's
 // fields take what is typed when the typing ends (Enter or leaving the field), neither field
 // moving the other; a maximum not above the minimum is refused with a message and the previous
 // range kept.
@@ -35,6 +36,7 @@ private:
     DisplaySettings settings_;
     QDoubleSpinBox *exposure_, *falseMin_, *falseMax_;
     QComboBox* mode_;
+    QComboBox* scale_;  // the false colour's LegendScale
     QWidget* rangeTo_;  // the "to" between the range's ends
 };
 

@@ -7,7 +7,7 @@
 #include "ui/commands/daylight_commands.h"
 #include "ui/commands/light_commands.h"
 #include "ui/scene_panels/site_cities.h"
-
+#include "ui/scene_panels/time_of_day_edit.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -18,7 +18,6 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
-#include <QTimeEdit>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -35,10 +34,6 @@ namespace {
 // The city list: "No site", the cities, then "Custom site" for any other place.
 constexpr int kNoSite = 0;
 constexpr int kCustomSite = int(kSiteCities.size()) + 1;
-
-// The sky model list, in this order.
-// The sky quantity list.
-constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
 
 // A field's edit: `value` takes the field's value; returns the undo step's name.
 template <class T, class Field> QString taken(T& value, const Field* field, const QString& step) {
@@ -65,36 +60,15 @@ const char* const kCieSkyNames[15] = {
     "White-blue turbid sky, broad solar corona",
 };
 
-// A sky for a scene that had none: 10,000 lx on an open plane, a bright overcast day.
-Sky defaultSky() {
+// A sky for a scene that had none: beside a sun, its levels follow the sun's altitude; without
+// one (nothing to follow), 10,000 lx on an open plane, a bright overcast day.
+Sky defaultSky(const Scene& scene) {
     Sky s;
     s.model = SkyModelType::CieOvercast;
-    s.horizontalIlluminance = 10000;
+    if (sunIndex(scene) >= 0) s.levels = DaylightLevels::FollowAltitude;
+    else s.horizontalIlluminance = 10000;
     return s;
 }
-
-// Toward the sun of the scene's sun (switched on or not: a CIE general sky keeps its place), or
-// the zenith when there is none or its time cannot be placed.
-V3d towardSun(const Scene& scene) {
-    const int i = sunIndex(scene);
-    if (i < 0) return V3d(0, 1, 0);
-    try {
-        return sunDirection(scene, scene.lights[size_t(i)]);
-    } catch (const std::exception&) {
-        return V3d(0, 1, 0);
-    }
-}
-
-// The sky's horizontal illuminance on an open plane, lx (the sky alone). A coarse integral for
-// a CIE general sky: the panel shows it on every step of a slider drag.
-double skyHorizontalIlluminance(const Sky& sky, const V3d& sun) {
-    if (sky.horizontalIlluminance) return *sky.horizontalIlluminance;
-    return sky.zenithLuminance.value_or(0.0) * relativeHorizontalIlluminance(sky, sun, 64);
-}
-
-double degrees(double radians) { return radians * 180.0 / std::numbers::pi; }
-
-QString lux(double value) { return QStringLiteral("%L1 lx").arg(value, 0, 'f', 0); }
 
 }  // namespace
 
@@ -194,9 +168,8 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
         if (!timeSlider_->isSliderDown()) merge_.finish();
     });
     connect(timeSlider_, &QSlider::sliderReleased, this, [this] { merge_.finish(); });
-    time_ = new QTimeEdit(QTime(12, 0), this);
+    time_ = new TimeOfDayEdit(QTime(12, 0), this);
     time_->setObjectName("daylightTime");
-    time_->setDisplayFormat(QStringLiteral("HH:mm"));
     time_->setKeyboardTracking(false);
     connect(time_, &QTimeEdit::timeChanged, this, [this] { moveSun(time_); });
     connect(time_, &QTimeEdit::editingFinished, this, [this] { merge_.finish(); });
@@ -223,6 +196,15 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     connect(skyModel_, &QComboBox::activated, this, &DaylightPanel::chooseSkyModel);
     row(sky, tr("Model"), {skyModel_});
     sky->addWidget(weatherLabel_);
+    levels_ = new QComboBox(this);
+    levels_->setObjectName("daylightLevels");
+    levels_->addItems({tr("Follow the sun's altitude (IES)"), tr("Fixed")});
+    levels_->setToolTip(tr("Follow: the sun's direct normal illuminance and the sky's horizontal illuminance come "
+                           "from the sun's altitude (IES daylight availability; CIE types 11-15 clear, 6-10 partly "
+                           "cloudy, 1-5, CIE overcast and uniform overcast, without direct sun). Fixed: the numbers "
+                           "below, at any time. A Perez sky takes them from its weather file's hour."));
+    connect(levels_, &QComboBox::activated, this, &DaylightPanel::chooseLevels);
+    row(sky, tr("Daylight levels"), {levels_});
     cieType_ = new QSpinBox(this);
     cieType_->setObjectName("daylightCieType");
     cieType_->setRange(1, 15);
@@ -248,7 +230,7 @@ DaylightPanel::DaylightPanel(Document* doc, QWidget* parent) : QWidget(parent), 
     row(sky, tr("Ground reflectance"), {groundReflectance_});
 
     // Lists and date fields narrow with the dock like the number fields (makePropertySpin).
-    for (QWidget* w : std::initializer_list<QWidget*>{city_, date_, time_, skyModel_, cieType_, skyQuantity_}) {
+    for (QWidget* w : std::initializer_list<QWidget*>{city_, date_, time_, skyModel_, levels_, cieType_, skyQuantity_}) {
         w->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Fixed);
         w->setMinimumWidth(50);
     }
@@ -285,6 +267,7 @@ void DaylightPanel::refresh() {
     refreshSite();
     refreshSun();
     refreshSky();
+    refreshLevels();
     showSunPosition();
 }
 
@@ -370,51 +353,6 @@ void DaylightPanel::refreshSky() {
     skyValue_->setValue(zenith ? *sky->zenithLuminance : sky->horizontalIlluminance.value_or(0.0));
 }
 
-void DaylightPanel::showSunPosition() {
-    const Scene& scene = doc_->scene();
-    const int i = sunIndex(scene);
-    double sunEh = 0;
-    if (i < 0) {
-        sunPosition_->setText(tr("No sun."));
-    } else {
-        const Light& sun = scene.lights[size_t(i)];
-        try {
-            const V3d toward = sunDirection(scene, sun);
-            const V3d north = scene.site ? scene.site->north.normalized() : Site().north;
-            const V3d east = north.cross(V3d(0, 1, 0));
-            const double elevation = degrees(std::asin(std::clamp(toward.y, -1.0, 1.0)));
-            double azimuth = degrees(std::atan2(toward.dot(east), toward.dot(north)));
-            if (azimuth < 0) azimuth += 360;
-            QString where = tr("Elevation %1°, azimuth %2° (from north, eastward)")
-                                .arg(elevation, 0, 'f', 1)
-                                .arg(azimuth, 0, 'f', 1);
-            if (elevation <= 0) where += tr("; below the horizon: no sunlight");
-            if (!(sun.sun && sun.sun->time))
-                where += scene.site ? tr(". Placed by direction: a date or time places it by the site's clock.")
-                                    : tr(". Placed by direction: choose a site to place it by date and time.");
-            if (!sun.on) where += tr(" The sun is switched off.");
-            sunPosition_->setText(where);
-            if (sun.on && sun.sun && toward.y > 0) sunEh = sun.sun->illuminanceLux * toward.y;
-        } catch (const std::exception& e) {
-            sunPosition_->setText(QString::fromStdString(e.what()));
-        }
-    }
-    if (!scene.sky) {
-        horizontalIlluminance_->setText(i < 0 ? QString() : tr("Eh %1 from the sun (no sky)").arg(lux(sunEh)));
-        return;
-    }
-    double skyEh = 0;
-    if (scene.sky->model == SkyModelType::Perez) {  // the hour's model gives both
-        const Daylight d = resolveDaylight(scene);
-        skyEh = d.sky->horizontalIlluminance;
-        sunEh = d.sun && d.sun->aboveHorizon ? d.sun->illuminanceLux * d.sun->towardSun.y : 0;
-    } else {
-        skyEh = skyHorizontalIlluminance(*scene.sky, towardSun(scene));
-    }
-    horizontalIlluminance_->setText(
-        tr("Eh %1: sun %2, sky %3").arg(lux(sunEh + skyEh), lux(sunEh), lux(skyEh)));
-}
-
 const Scene& DaylightPanel::beginChoice() {
     merge_.finish();
     error_->clear();
@@ -490,6 +428,15 @@ void DaylightPanel::setSunPresent(bool present) {
             return refuse(tr("A CIE general sky is shaped by the sun: choose another sky model before removing the sun."));
         if (scene.sky && scene.sky->model == SkyModelType::Perez)
             return refuse(tr("A Perez sky needs its hour's sun: choose another sky model before removing the sun."));
+        if (scene.sky && scene.sky->levels == DaylightLevels::FollowAltitude) {
+            // Nothing left to follow: the sky keeps, fixed, what it gives now.
+            QUndoStack* undo = doc_->undoStack();
+            undo->beginMacro(tr("Delete %1").arg(QString::fromStdString(scene.lights[size_t(i)].name)));
+            chooseLevels(kFixedLevels);
+            undo->push(new DeleteLightCommand(doc_, i));
+            undo->endMacro();
+            return;
+        }
         doc_->undoStack()->push(new DeleteLightCommand(doc_, i));
     }
 }
@@ -503,6 +450,7 @@ void DaylightPanel::editSun(const void* field) {
     if (!l.sun) l.sun = SunSpec();
     QString text;
     if (field == sunIlluminance_) {
+        if (!l.sun->illuminanceGiven) return;  // a model gives it; the field only shows it
         l.sun->illuminanceLux = sunIlluminance_->value();
         text = tr("Change the sun's illuminance");
     } else {
@@ -545,7 +493,7 @@ void DaylightPanel::chooseSkyModel(int item) {
     if (item == kNoSky) {
         if (!scene.sky) return;
         lastSky_ = scene.sky;
-        doc_->undoStack()->push(new EditSkyCommand(doc_, std::nullopt, 0, tr("Remove the sky")));
+        setSkyAndSun(std::nullopt, tr("Remove the sky"));
         return;
     }
     if (item == kCieGeneral && sunIndex(scene) < 0)
@@ -554,19 +502,21 @@ void DaylightPanel::chooseSkyModel(int item) {
     if (item == kPerez && !perez) return choosePerez();
     if (item != kPerez && perez) return leavePerezFor(item);
     if (item == kPerez) return;
-    Sky sky = scene.sky ? *scene.sky : lastSky_.value_or(defaultSky());
+    Sky sky = scene.sky ? *scene.sky : lastSky_.value_or(defaultSky(scene));
+    if (sky.levels == DaylightLevels::FollowAltitude && sunIndex(scene) < 0) sky = defaultSky(scene);
     const int remembered = sky.cieType;
     sky.model = item == kUniform ? SkyModelType::Uniform : item == kCieOvercast ? SkyModelType::CieOvercast
                                                                                 : SkyModelType::CieGeneral;
     // The standard clear sky unless a type was chosen before; other models have no type.
     sky.cieType = item == kCieGeneral ? (remembered >= 1 && remembered <= 15 ? remembered : 12) : 0;
     if (sky == scene.sky) return;
-    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, 0, tr("Sky: %1").arg(skyModel_->itemText(item))));
+    setSkyAndSun(sky, tr("Sky: %1").arg(skyModel_->itemText(item)));
 }
 
 void DaylightPanel::editSky(const void* field) {
     editValue<EditSkyCommand>(field, doc_->scene().sky, [&](Sky& sky) {
         if (field == cieType_) return taken(sky.cieType, cieType_, tr("Change the CIE sky type"));
+        if (field == skyValue_ && sky.levels == DaylightLevels::FollowAltitude) return QString();  // shown, not edited
         if (field == skyValue_)
             return taken(sky.zenithLuminance ? sky.zenithLuminance : sky.horizontalIlluminance, skyValue_,
                          sky.zenithLuminance ? tr("Change the zenith luminance") : tr("Change the sky's illuminance"));
@@ -574,27 +524,6 @@ void DaylightPanel::editSky(const void* field) {
         sky.groundReflectanceGiven = true;
         return tr("Change the ground reflectance");
     });
-}
-
-void DaylightPanel::chooseSkyQuantity(int item) {
-    const Scene& scene = beginChoice();
-    if (!scene.sky) return;
-    const bool zenith = item == kZenithLuminance;
-    if (zenith == scene.sky->zenithLuminance.has_value()) return;
-    // The same sky, given by the other quantity.
-    Sky sky = *scene.sky;
-    const V3d sun = towardSun(scene);
-    const double lz = zenithLuminance(sky, sun);
-    if (zenith) {
-        sky.zenithLuminance = lz;
-        sky.horizontalIlluminance.reset();
-    } else {
-        sky.horizontalIlluminance = lz * relativeHorizontalIlluminance(sky, sun);
-        sky.zenithLuminance.reset();
-    }
-    doc_->undoStack()->push(new EditSkyCommand(doc_, sky, 0,
-                                               zenith ? tr("Give the sky by its zenith luminance")
-                                                      : tr("Give the sky by its horizontal illuminance")));
 }
 
 }  // namespace lucerna

@@ -4,6 +4,9 @@
 // its date and a time-of-day slider that moves it), and the sky (model, CIE type, its quantity as
 // zenith luminance or horizontal illuminance, ground reflectance). It shows where the sun stands
 // (elevation and azimuth) and the horizontal illuminance Eh the sun and sky give an open plane.
+// The daylight levels (sun and sky brightness) are fixed numbers or follow the sun's altitude (the
+// IES model, daylight_availability.h: the fields then show what it gives and are read-only); a
+// Perez sky takes them from its weather file's hour.
 // Every edit is an undo step (a slider drag or a run of arrow steps is one); what would make the
 // scene invalid (a CIE general sky without a sun) is refused with a line saying why.
 
@@ -24,9 +27,10 @@ class QDoubleSpinBox;
 class QLabel;
 class QSlider;
 class QSpinBox;
-class QTimeEdit;
 
 namespace lucerna {
+
+class TimeOfDayEdit;
 
 class DaylightPanel : public QWidget {
     Q_OBJECT
@@ -48,6 +52,10 @@ signals:
 private:
     // The sky model box's items.
     static constexpr int kNoSky = 0, kUniform = 1, kCieOvercast = 2, kCieGeneral = 3, kPerez = 4;
+    // The daylight levels box's items.
+    static constexpr int kFollowAltitude = 0, kFixedLevels = 1;
+    // The sky quantity box's items.
+    static constexpr int kHorizontalIlluminance = 0, kZenithLuminance = 1;
 
     void refresh();
     void refreshSite();
@@ -77,6 +85,13 @@ private:
     void leavePerezFor(int item);
     // Site, sun and sky as one undo step.
     void applyDaylight(const DaylightEdit& e, const QString& text);
+    // The levels (daylight_panel_levels.cpp): following the sun's altitude or fixed, one undo
+    // step; the sky (or none) with the sun's keys made to match it, as one step (a sky whose
+    // levels follow takes the sun's illuminance key away; one that does not gives it back, at what
+    // the sun gave); the fields of the levels.
+    void chooseLevels(int item);
+    void setSkyAndSun(const std::optional<Sky>& sky, const QString& text);
+    void refreshLevels();
 
     Document* doc_;
     MergeTracker merge_;
@@ -88,9 +103,10 @@ private:
     QDoubleSpinBox *sunIlluminance_, *sunDiameter_;
     QDateEdit* date_;
     QSlider* timeSlider_;
-    QTimeEdit* time_;
+    TimeOfDayEdit* time_;
     QLabel *sunPosition_, *horizontalIlluminance_;
     QComboBox* skyModel_;
+    QComboBox* levels_;
     QWidget* cieTypeRow_;
     QSpinBox* cieType_;
     QLabel* cieTypeName_;

@@ -39,6 +39,9 @@ MaintenanceFactorEdit::MaintenanceFactorEdit(Absent absent, QWidget* parent) : Q
     mode_->addItem(tr("One number"));
     mode_->addItem(tr("CIE 97's four factors"));
     mode_->setToolTip(tr("MF = LLMF x LSF x LMF x RSMF (CIE 97:2005)"));
+    // Narrower than its longest entry when the panel is (a dock at its default width).
+    mode_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    mode_->setMinimumContentsLength(10);
 
     stack_ = new QStackedWidget(this);
     stack_->addWidget(new QWidget(stack_));

@@ -33,12 +33,16 @@ inline constexpr std::array<SiteCity, 16> kSiteCities{{
     {"Sydney", -33.8688, 151.2093, 10},
 }};
 
-// The index of the city at that place (to the table's four decimals), or -1.
+// The index of the city at that place, or -1: within 0.01 degrees of latitude and longitude
+// (about a kilometre; sources round a city's centre differently: Paris is 48.8566, 2.3522 here and
+// 48.857, 2.352 in the bundled office) and at the city's standard UTC offset (within a second: a
+// site on another clock, summer time say, is not what choosing the city would make it).
 inline int siteCityAt(double latitudeDeg, double longitudeDeg, double utcOffsetHours) {
+    constexpr double kToleranceDeg = 0.01, kOffsetToleranceHours = 1.0 / 3600;
     for (size_t i = 0; i < kSiteCities.size(); ++i) {
         const SiteCity& c = kSiteCities[i];
-        if (std::abs(c.latitudeDeg - latitudeDeg) < 5e-5 && std::abs(c.longitudeDeg - longitudeDeg) < 5e-5 &&
-            c.utcOffsetHours == utcOffsetHours)
+        if (std::abs(c.latitudeDeg - latitudeDeg) <= kToleranceDeg && std::abs(c.longitudeDeg - longitudeDeg) <= kToleranceDeg &&
+            std::abs(c.utcOffsetHours - utcOffsetHours) < kOffsetToleranceHours)
             return int(i);
     }
     return -1;

@@ -22,6 +22,8 @@ public:
 
     const Camera& camera() const { return camera_; }
     bool isValid() const { return !rect_.isEmpty(); }
+    // Where the picture is in the widget.
+    const QRectF& rect() const { return rect_; }
     // Raster position (camera pixels) of a widget point, and back.
     QPointF toRaster(const QPointF& widget) const;
     QPointF fromRaster(double x, double y) const;

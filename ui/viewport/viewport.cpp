@@ -6,6 +6,7 @@
 #include "ui/commands/scene_commands.h"
 #include "ui/viewport/light_pick.h"
 #include "ui/viewport/light_placement.h"
+#include "ui/viewport/light_symbols.h"
 
 #include <QAction>
 #include <QKeyEvent>
@@ -20,13 +21,6 @@
 namespace lucerna {
 
 namespace {
-// Outlines of bigger objects would cost more than a frame to draw.
-constexpr size_t kMaxOutlinedTriangles = 20000;
-
-const QColor kAxisColours[3] = {QColor(235, 70, 60), QColor(90, 200, 70), QColor(70, 130, 255)};
-const QColor kLightColour(255, 210, 60);
-constexpr size_t kCrowdedLights = 200;  // past this many lights, markers are small dots
-
 QString nameOf(const Light& light) { return QString::fromStdString(light.name); }
 }  // namespace
 
@@ -82,6 +76,11 @@ void Viewport::setSelectedLight(int index) {
     update();
 }
 
+void Viewport::setSelectedLights(const std::vector<int>& lights) {
+    selectedLights_ = QSet<int>(lights.begin(), lights.end());
+    update();
+}
+
 void Viewport::setSelectedObject(int index) {
     selectedObject_ = index;
     update();
@@ -113,9 +112,7 @@ bool Viewport::setTool(Tool tool) {
     return tool_ == requested;
 }
 
-std::optional<SurfaceHit> Viewport::surfaceAt(const QPointF& widget) const {
-    const ViewMapping view = mapping();
-    if (!view.isValid() || !imageRect().contains(widget)) return std::nullopt;
+const SurfacePicker* Viewport::picker() const {
     const Scene& scene = doc_->scene();
     if (!picker_ || !picker_->sameGeometry(scene)) {
         picker_.reset();
@@ -124,199 +121,37 @@ std::optional<SurfaceHit> Viewport::surfaceAt(const QPointF& widget) const {
             pickerFailed_ = false;
         } catch (const std::exception&) {
             pickerFailed_ = true;  // placeAt() says so in the status bar
-            return std::nullopt;
         }
     }
+    return picker_.get();
+}
+
+std::optional<SurfaceHit> Viewport::surfaceAt(const QPointF& widget) const {
+    const ViewMapping view = mapping();
+    if (!view.isValid() || !imageRect().contains(widget)) return std::nullopt;
+    const SurfacePicker* surfaces = picker();
+    if (!surfaces) return std::nullopt;
     const QPointF r = view.toRaster(widget);
-    return picker_->pick(scene.camera, r.x(), r.y());
+    return surfaces->pick(doc_->scene().camera, r.x(), r.y());
 }
 
 std::optional<QPointF> Viewport::lightMarker(int index) const {
     const Scene& scene = doc_->scene();
     if (index < 0 || index >= int(scene.lights.size())) return std::nullopt;
-    const Light& light = scene.lights[size_t(index)];
-    const ViewMapping view = mapping();
-    // Lights at infinity (directional, sun) have no place to draw.
-    if (light.type == LightType::Directional || light.type == LightType::Sun || !view.isValid()) return std::nullopt;
-    return view.toWidget(light.position);
+    // Picked where drawn (viewport_painting.cpp); the selected light's symbol has the same centre.
+    const auto symbol = lightSymbol(scene.lights[size_t(index)], mapping(), scene.metersPerUnit);
+    return symbol ? std::optional(symbol->centre) : std::nullopt;
 }
 
 std::optional<LightGizmo> Viewport::gizmo() const {
     const Scene& scene = doc_->scene();
-    if (selected_ < 0 || selected_ >= int(scene.lights.size())) return std::nullopt;
+    if (selected_ < 0 || selected_ >= int(scene.lights.size()) || !lightMarker(selected_)) return std::nullopt;
     return LightGizmo::of(scene.lights[size_t(selected_)], mapping());
 }
 
 int Viewport::lightAt(const QPointF& pos) const {
     // The selected light wins a tie: it is the one being worked on.
     return lightNear(int(doc_->scene().lights.size()), [this](int i) { return lightMarker(i); }, pos, 10.0, selected_);
-}
-
-// ---- painting ----
-
-void Viewport::paintOverlay(QPainter& painter) {
-    painter.setRenderHint(QPainter::Antialiasing);
-    paintSelectedObject(painter);
-    const Scene& scene = doc_->scene();
-    const ViewMapping view = mapping();
-    // Many lights (a field of luminaires): small dots without their axes, which would cover the
-    // ceiling; the selected light keeps its full marker.
-    const bool crowded = scene.lights.size() > kCrowdedLights;
-    for (int i = 0; i < int(scene.lights.size()) && !crowded; ++i) {
-        const auto m = lightMarker(i);
-        if (!m) continue;
-        const Light& light = scene.lights[size_t(i)];
-        const bool aimed = light.type == LightType::Spot || light.type == LightType::Luminaire;
-        if (aimed && i != selected_) {
-            // The spot's or luminaire's axis, a tenth of the way to the target's distance (the selected one
-            // shows its aim handle instead).
-            const double len = 0.1 * (scene.camera.target - scene.camera.position).length();
-            if (const auto tip = view.toWidget(light.position + light.direction.normalized() * len)) {
-                painter.setPen(QPen(light.on ? kLightColour : QColor(150, 150, 150), 2));
-                painter.drawLine(*m, *tip);
-            }
-        }
-    }
-    if (const auto g = gizmo()) paintGizmo(painter, *g);
-    for (int i = 0; i < int(scene.lights.size()); ++i) {
-        const auto m = lightMarker(i);
-        if (!m) continue;
-        const bool selected = i == selected_;
-        painter.setPen(QPen(selected ? Qt::white : QColor(40, 40, 40), selected ? 3 : 1.5));
-        // A light switched off: a hollow grey marker.
-        painter.setBrush(scene.lights[size_t(i)].on ? QBrush(kLightColour) : QBrush(Qt::NoBrush));
-        if (!scene.lights[size_t(i)].on && !selected) painter.setPen(QPen(QColor(150, 150, 150), 1.5));
-        const double r = selected ? 7 : crowded ? 2.5 : 5;
-        if (crowded && !selected) painter.setPen(scene.lights[size_t(i)].on ? QPen(Qt::NoPen) : QPen(QColor(150, 150, 150), 1));
-        painter.drawEllipse(*m, r, r);
-    }
-    paintToolHint(painter);
-}
-
-void Viewport::paintGizmo(QPainter& painter, const LightGizmo& g) const {
-    const GizmoHandle active = drag_ == Drag::Axis || drag_ == Drag::Aim ? dragHandle_ : hoverHandle_;
-    for (int i = 0; i < 3; ++i) {
-        const auto& tip = g.axisTips[size_t(i)];
-        if (!tip) continue;
-        const bool hot = active == GizmoHandle(int(GizmoHandle::X) + i);
-        painter.setPen(QPen(kAxisColours[i], hot ? 4 : 2.5, Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(g.centre, *tip);
-        // An arrowhead, unless the axis points nearly at the viewer and has no length on screen.
-        const QPointF d = *tip - g.centre;
-        const double len = std::hypot(d.x(), d.y());
-        if (len < 12) continue;
-        const QPointF u = d / len, n(-u.y(), u.x());
-        QPainterPath head;
-        head.moveTo(*tip + u * 4);
-        head.lineTo(*tip - u * 9 + n * 5);
-        head.lineTo(*tip - u * 9 - n * 5);
-        head.closeSubpath();
-        painter.setPen(Qt::NoPen);
-        painter.setBrush(kAxisColours[i]);
-        painter.drawPath(head);
-    }
-    if (g.aimTip) {
-        const bool hot = active == GizmoHandle::Aim;
-        painter.setPen(QPen(kLightColour, hot ? 3.5 : 2, Qt::DashLine));
-        painter.drawLine(g.centre, *g.aimTip);
-        painter.setPen(QPen(QColor(40, 40, 40), 1.5));
-        painter.setBrush(hot ? Qt::white : kLightColour);
-        painter.drawEllipse(*g.aimTip, 5.5, 5.5);
-    }
-}
-
-void Viewport::paintSelectedObject(QPainter& painter) const {
-    const Scene& scene = doc_->scene();
-    if (selectedObject_ < 0 || selectedObject_ >= int(scene.objects.size())) return;
-    const auto& mesh = scene.objects[size_t(selectedObject_)].worldMesh;
-    if (!mesh || mesh->triangles.size() > kMaxOutlinedTriangles) return;
-    const ViewMapping view = mapping();
-    std::vector<std::optional<QPointF>> p;
-    p.reserve(mesh->vertices.size());
-    for (const V3d& v : mesh->vertices) p.push_back(view.toWidget(v));
-    // The outline: edges of one triangle only, or between triangles that meet at an angle;
-    // not the diagonals inside flat faces (a quad's).
-    struct Edge {
-        int a, b;
-        V3d normal;
-    };
-    std::vector<Edge> edges;
-    edges.reserve(3 * mesh->triangles.size());
-    for (const V3i& t : mesh->triangles) {
-        const auto& v = mesh->vertices;
-        const V3d n = (v[size_t(t.y)] - v[size_t(t.x)]).cross(v[size_t(t.z)] - v[size_t(t.x)]).normalized();
-        for (const auto& [a, b] : {std::pair(t.x, t.y), std::pair(t.y, t.z), std::pair(t.z, t.x)})
-            edges.push_back({std::min(a, b), std::max(a, b), n});
-    }
-    std::sort(edges.begin(), edges.end(), [](const Edge& x, const Edge& y) { return std::pair(x.a, x.b) < std::pair(y.a, y.b); });
-    QPainterPath path;
-    for (size_t i = 0; i < edges.size();) {
-        size_t j = i + 1;
-        bool crease = false;
-        for (; j < edges.size() && edges[j].a == edges[i].a && edges[j].b == edges[i].b; ++j)
-            crease = crease || edges[j].normal.dot(edges[i].normal) < 0.9999;
-        const auto &pa = p[size_t(edges[i].a)], &pb = p[size_t(edges[i].b)];
-        if ((j - i == 1 || crease) && pa && pb) {
-            path.moveTo(*pa);
-            path.lineTo(*pb);
-        }
-        i = j;
-    }
-    painter.setPen(QPen(QColor(110, 200, 255, 220), 1.5));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawPath(path);
-}
-
-void Viewport::paintToolHint(QPainter& painter) const {
-    if (tool_ == Tool::Navigate) return;
-    const ViewMapping view = mapping();
-    const Scene& scene = doc_->scene();
-    if (hover_) {
-        const auto at = view.toWidget(hover_->point);
-        if (at && (tool_ == Tool::PlacePoint || tool_ == Tool::PlaceSpot)) {
-            // Where the light would land: off the surface along its normal.
-            const double offset = placementOffset(scene.metersPerUnit, picker_ ? picker_->diagonal() : 0);
-            if (const auto light = view.toWidget(hover_->point + hover_->normal * offset)) {
-                painter.setPen(QPen(Qt::white, 1.5, Qt::DashLine));
-                painter.drawLine(*at, *light);
-                painter.setPen(QPen(QColor(40, 40, 40), 1.5));
-                painter.setBrush(kLightColour);
-                painter.drawEllipse(*light, 5, 5);
-            }
-        } else if (at && tool_ == Tool::GridRectangle && gridCorner_) {
-            // The rectangle the second click would make, on the first corner's surface.
-            const CalculationGrid g =
-                gridFromCorners(gridCorner_->point, gridCorner_->normal, hover_->point, scene.metersPerUnit, 0.0);
-            QPolygonF outline;
-            for (const V3d& p : {g.corner, g.corner + g.edgeU, g.corner + g.edgeU + g.edgeV, g.corner + g.edgeV})
-                if (const auto w = view.toWidget(p)) outline << *w;
-            painter.setPen(QPen(Qt::white, 1.5, Qt::DashLine));
-            painter.setBrush(QColor(255, 255, 255, 40));
-            if (outline.size() == 4) painter.drawPolygon(outline);
-        } else if (at && tool_ == Tool::Aim) {
-            if (const auto from = lightMarker(selected_)) {
-                painter.setPen(QPen(kLightColour, 1.5, Qt::DashLine));
-                painter.drawLine(*from, *at);
-            }
-        }
-        if (at) {
-            painter.setPen(QPen(Qt::white, 2));
-            painter.setBrush(Qt::NoBrush);
-            painter.drawEllipse(*at, 6, 6);
-            painter.drawLine(*at - QPointF(10, 0), *at + QPointF(10, 0));
-            painter.drawLine(*at - QPointF(0, 10), *at + QPointF(0, 10));
-        }
-    }
-    const QString text =
-        tool_ == Tool::PlacePoint      ? tr("Click a surface to place a point light (Esc cancels)")
-        : tool_ == Tool::PlaceSpot     ? tr("Click a surface to place a spot light (Esc cancels)")
-        : tool_ == Tool::GridRectangle ? (gridCorner_ ? tr("Click the opposite corner of the grid (Esc cancels)")
-                                                      : tr("Click a corner of the grid on a floor, table or wall (Esc cancels)"))
-                                       : tr("Click a surface to aim the light at it (Esc cancels)");
-    const QRectF band(0, 0, width(), painter.fontMetrics().height() + 10);
-    painter.fillRect(band, QColor(0, 0, 0, 160));
-    painter.setPen(Qt::white);
-    painter.drawText(band, Qt::AlignCenter, text);
 }
 
 // ---- mouse ----

@@ -1,6 +1,9 @@
 #pragma once
 // The viewport: the live preview's newest frame, the lights drawn over it, and editing with the
 // mouse and keyboard.
+// - Over the picture, and only there: each light a ball that shrinks with distance
+//   (ui/viewport/light_symbols.h), the selected lights' aims as dashed lines to where they meet
+//   the scene, the selected light's gizmo, the selected object's outline.
 // - Left drag on a light moves it in the image plane at its depth; on an arrow of the selected
 //   light's gizmo, along that world axis; on a spot's (or luminaire's) aim handle, re-aims it. Left drag elsewhere
 //   orbits the camera about its target; right or middle drag pans; the wheel zooms.
@@ -40,11 +43,14 @@ public:
     ~Viewport() override;
 
     void setSelectedLight(int index);
+    // The lights selected together (a group, several lights): their aims are drawn too.
+    void setSelectedLights(const std::vector<int>& lights);
     // The selected object is outlined (-1: none).
     void setSelectedObject(int index);
-    // Widget position of a light's marker (nothing for directional lights or off-screen ones).
+    // Widget position of a light's symbol; nothing where none is drawn (directional lights,
+    // lights behind or too near the camera, or outside the picture): a click there picks nothing.
     std::optional<QPointF> lightMarker(int index) const;
-    // The selected light's gizmo as drawn now (nothing without a selected light that has a position).
+    // The selected light's gizmo as drawn now (nothing without a selected light whose symbol is drawn).
     std::optional<LightGizmo> gizmo() const;
 
     Tool tool() const { return tool_; }
@@ -96,6 +102,10 @@ private:
     void gridCornerAt(const QPointF& pos);
     bool aimable(int light) const;
     void endDrag();
+    // The picker over the document's geometry, built when first needed and again after the
+    // geometry changes; null when the ray tracer cannot start.
+    const SurfacePicker* picker() const;
+    void paintAimLines(QPainter& painter) const;
     void paintGizmo(QPainter& painter, const LightGizmo& g) const;
     void paintSelectedObject(QPainter& painter) const;
     void paintToolHint(QPainter& painter) const;
@@ -103,6 +113,7 @@ private:
     Document* doc_;
     YieldGate gate_;
     int selected_ = -1, selectedObject_ = -1;
+    QSet<int> selectedLights_;
     Tool tool_ = Tool::Navigate;
     QAction *placePoint_, *placeSpot_, *aim_, *drawGrid_;
     mutable std::unique_ptr<SurfacePicker> picker_;

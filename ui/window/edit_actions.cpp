@@ -32,7 +32,11 @@ void EditActions::addTo(QMenu* menu) {
     undo->setShortcut(QKeySequence::Undo);
     QAction* redo = doc_.undoStack()->createRedoAction(messages_.window(), tr("&Redo"));
     redo->setObjectName("actionRedo");
-    redo->setShortcut(QKeySequence::Redo);
+    // The platform's keys (Ctrl+Shift+Z on Linux) and Ctrl+Y, which designers bring from other
+    // programs.
+    QList<QKeySequence> redoKeys = QKeySequence::keyBindings(QKeySequence::Redo);
+    if (const QKeySequence ctrlY(Qt::CTRL | Qt::Key_Y); !redoKeys.contains(ctrlY)) redoKeys.append(ctrlY);
+    redo->setShortcuts(redoKeys);
     menu->addAction(undo);
     menu->addAction(redo);
     menu->addSeparator();

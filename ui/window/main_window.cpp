@@ -22,11 +22,13 @@
 #include "ui/scene_panels/outliner.h"
 #include "ui/scene_panels/project_dialog.h"
 #include "ui/viewport/viewport.h"
+#include "ui/window/help_actions.h"
 #include "ui/window/layout_state.h"
 #include "ui/window/menu_entry.h"
 #include "ui/window/room_actions.h"
 #include "ui/window/task_area_actions.h"
 #include "ui/window/view_area.h"
+#include "ui/window/wheel_guard.h"
 
 #include <QCloseEvent>
 #include <QDir>
@@ -46,6 +48,7 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
       render_(std::make_unique<ConvergingRender>(tasks_, gate_)),
       preview_(std::make_unique<LivePreview>(gate_, LivePreview::engineFromEnvironment())) {
     setObjectName("MainWindow");
+    new WheelGuard(this);  // the docks' wheels scroll them, never edit an unfocused field
     viewport_ = new Viewport(doc_.get(), gate_, this);
     viewport_->setObjectName("viewport");
     dialogs_ = std::make_unique<FileDialogs>(this, [this] {
@@ -159,6 +162,7 @@ void MainWindow::createDocks() {
         const int light = s.kind == Outliner::Kind::Light ? s.index : -1;
         propertiesPanel_->showSelection(s);
         viewport_->setSelectedLight(light);
+        viewport_->setSelectedLights(s.lights);
         plan_->setSelectedLight(light);
         plan_->setSelectedLights(s.lights);
         plan_->setSelectedTaskArea(s.kind == Outliner::Kind::TaskArea ? s.index : -1);
@@ -279,10 +283,13 @@ void MainWindow::createMenus() {
     });
     addMenuEntry(view, tr("&Reset Camera"), "actionResetCamera", QKeySequence(Qt::SHIFT | Qt::Key_Home), this,
                  [this] { cameraPanel_->resetCamera(); });
+    view->addAction(plan_->labelsAction());
     view->addSeparator();
     for (QDockWidget* d : findChildren<QDockWidget*>()) view->addAction(d->toggleViewAction());
     view->addSeparator();
     addMenuEntry(view, tr("&Reset Layout"), "actionResetLayout", {}, this, [this] { layout_->reset(); });
+
+    (new HelpActions(*this, messages_))->addTo(menuBar()->addMenu(tr("&Help")));
 
     // The menus' shortcuts work whatever has the focus, a dock (floating ones too) included; a
     // text field still takes the keys it edits with (Qt asks it first).
