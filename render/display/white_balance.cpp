@@ -38,17 +38,6 @@ double lightFlux(const Light& light) {
     }
 }
 
-Rgbd dominantLightColour(const Scene& scene) {
-    Rgbd sum(0, 0, 0);
-    for (const Light& l : scene.lights) {
-        if (!l.on) continue;
-        const double flux = lightFlux(l);
-        if (std::isfinite(flux) && flux > 0) sum += lightColour(l) * flux;
-    }
-    const double y = luminance(sum);
-    return y > 0 ? sum / y : Rgbd(1, 1, 1);
-}
-
 // The correlated colour temperature of a white (McCamy 1992, from its CIE 1931 xy; within a few
 // kelvin of the Planckian locus from 2,000 to 12,500 K), for labels only.
 double correlatedTemperatureK(const Rgbd& white) {
@@ -61,10 +50,21 @@ double correlatedTemperatureK(const Rgbd& white) {
 
 }  // namespace
 
-Rgbd referenceWhite(const WhiteBalance& balance, const Scene& scene) {
+Rgbd lightsWhite(const Scene& scene) {
+    Rgbd sum(0, 0, 0);
+    for (const Light& l : scene.lights) {
+        if (!l.on) continue;
+        const double flux = lightFlux(l);
+        if (std::isfinite(flux) && flux > 0) sum += lightColour(l) * flux;
+    }
+    const double y = luminance(sum);
+    return y > 0 ? sum / y : Rgbd(1, 1, 1);
+}
+
+Rgbd referenceWhite(const WhiteBalance& balance, const Rgbd& lights) {
     switch (balance.reference) {
     case WhiteReference::Temperature: return blackbodyColour(std::clamp(balance.kelvin, 1000.0, 40000.0));
-    case WhiteReference::DominantLights: return dominantLightColour(scene);
+    case WhiteReference::DominantLights: return lights;
     case WhiteReference::D65: break;
     }
     return Rgbd(1, 1, 1);
@@ -85,11 +85,11 @@ Imath::M33d whiteBalanceMatrix(const Rgbd& white) {
     return toCone * gain * toCone.inverse();
 }
 
-std::string whiteBalanceLabel(const WhiteBalance& balance, const Scene& scene) {
+std::string whiteBalanceLabel(const WhiteBalance& balance, const Rgbd& lights) {
     switch (balance.reference) {
     case WhiteReference::Temperature: return std::to_string(std::lround(balance.kelvin)) + " K";
     case WhiteReference::DominantLights: {
-        const double k = correlatedTemperatureK(dominantLightColour(scene));
+        const double k = correlatedTemperatureK(lights);
         return "the lights (" + (k > 0 ? std::to_string(std::lround(k / 10) * 10) + " K" : std::string("D65")) + ")";
     }
     case WhiteReference::D65: break;

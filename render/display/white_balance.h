@@ -25,12 +25,15 @@ struct WhiteBalance {
     bool operator==(const WhiteBalance&) const = default;
 };
 
-// The linear Rec.709 colour, of luminance 1, that `balance` makes white in `scene`; (1, 1, 1)
-// for D65, and for DominantLights in a scene without an electric light that is on. The lights'
-// colour is the mean of the point, spot and luminaire lights' colours weighted by their luminous
-// flux (daylight and emissive surfaces are left out: a daylit room is balanced to D65, which is
-// daylight's own white).
-Rgbd referenceWhite(const WhiteBalance& balance, const Scene& scene);
+// The colour of the scene's electric lights, linear Rec.709 of luminance 1: the point, spot and
+// luminaire lights that are on, their colours weighted by their luminous flux; (1, 1, 1) without
+// any. Daylight and emissive surfaces are left out: a daylit room is balanced to D65, which is
+// daylight's own white.
+Rgbd lightsWhite(const Scene& scene);
+
+// The linear Rec.709 colour, of luminance 1, that `balance` makes white: (1, 1, 1) for D65,
+// `lights` (lightsWhite of the scene shown) for DominantLights.
+Rgbd referenceWhite(const WhiteBalance& balance, const Rgbd& lights);
 
 // The matrix on linear Rec.709 column vectors that takes `white` to (1, 1, 1) by the Bradford
 // chromatic adaptation (CIE 1931 XYZ <-> Bradford's cone responses), keeping luminance of the
@@ -38,7 +41,7 @@ Rgbd referenceWhite(const WhiteBalance& balance, const Scene& scene);
 // D65. The identity for white (1, 1, 1) or a white with a channel <= 0.
 Imath::M33d whiteBalanceMatrix(const Rgbd& white);
 
-// "D65", "4000 K", "the lights (3,850 K)": for status lines and picture metadata.
-std::string whiteBalanceLabel(const WhiteBalance& balance, const Scene& scene);
+// "D65", "4000 K", "the lights (3850 K)": for status lines and tooltips.
+std::string whiteBalanceLabel(const WhiteBalance& balance, const Rgbd& lights);
 
 }  // namespace lucerna

@@ -1,6 +1,7 @@
 #pragma once
 // The display settings a user changes: exposure in stops, and how radiance becomes a picture
-// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range). The range's
+// (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range), and the
+// picture's white (D65, the scene's lights, or a colour temperature). The range's
 // fields take what is typed when the typing ends (Enter or leaving the field), neither field
 // moving the other; a maximum not above the minimum is refused with a message and the previous
 // range kept.
@@ -34,7 +35,7 @@ private:
 
     DisplaySettings settings_;
     QDoubleSpinBox *exposure_, *falseMin_, *falseMax_;
-    QComboBox* mode_;
+    QComboBox *mode_, *white_;
     QWidget* rangeTo_;  // the "to" between the range's ends
 };
 
