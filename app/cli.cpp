@@ -11,6 +11,7 @@
 #include "render/backend/pass_loop.h"
 #include "render/backend/pooled_films.h"
 #include "render/display/display.h"
+#include "render/display/white_balance.h"
 #include "render/engine/backend_table.h"
 #include "render/engine/measured_auto/measured_auto_settings.h"
 #include "render/photometry/illuminance_layer.h"
@@ -44,6 +45,7 @@ struct RenderArgs {
     int illuminanceSpp = 16;  // estimates per pixel of the illuminance layer
     bool png = false;             // -o NAME.png: a tone-mapped picture instead of the EXR
     bool saveOnInterrupt = false; // Ctrl-C ends at a pass boundary and writes the passes done
+    std::optional<WhiteBalance> white;  // --white-balance: the PNG's white (D65 without)
 };
 
 bool endsWithNoCase(const std::string& s, const std::string& suffix) {
@@ -52,13 +54,31 @@ bool endsWithNoCase(const std::string& s, const std::string& suffix) {
                       [](char a, char b) { return std::tolower((unsigned char)a) == std::tolower((unsigned char)b); });
 }
 
-// The sRGB picture of an image (render/display/display.h's tone curve at `exposure` stops),
-// written whole or not at all, as `convert` writes it.
-void writePngPicture(const Image& image, const std::string& path, float exposure) {
-    const QImage png = toDisplayImage(image, exposure);
+// The sRGB picture of an image (render/display/display.h's tone curve), written whole or not at
+// all, as `convert` writes it.
+void writePngPicture(const Image& image, const std::string& path, const DisplaySettings& display) {
+    const QImage png = toDisplayImage(image, display);
     QSaveFile file(QString::fromStdString(path));
     if (!file.open(QIODevice::WriteOnly) || !png.save(&file, "PNG") || !file.commit())
         throw UsageError(path + ": cannot write");
+}
+
+// --white-balance: "D65", "lights" (the scene's lights' colour) or a colour temperature in kelvin.
+WhiteBalance parseWhiteBalance(const std::string& option, const std::string& text) {
+    WhiteBalance w;
+    if (text == "D65" || text == "d65") return w;
+    if (text == "lights") {
+        w.reference = WhiteReference::DominantLights;
+        return w;
+    }
+    w.reference = WhiteReference::Temperature;
+    try {
+        w.kelvin = parseNumber<double>(option, text, 1000.0, 40000.0);
+    } catch (const UsageError&) {
+        throw UsageError(option + " takes D65, lights or a colour temperature from 1000 to 40000 (kelvin), not '" +
+                         text + "'");
+    }
+    return w;
 }
 
 RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
@@ -85,6 +105,7 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
             r.layers = *bits;
         } else if (a == "--option") addBackendOption(value(), r.settings.options);
         else if (a == "--save-on-interrupt") r.saveOnInterrupt = true;
+        else if (a == "--white-balance") r.white = parseWhiteBalance(a, value());
         else if (!a.empty() && a[0] == '-') throw UsageError("unknown option " + a);
         else if (r.scene.empty()) r.scene = a;
         else throw UsageError("unexpected argument '" + a + "'");
@@ -96,6 +117,8 @@ RenderArgs parseRenderArgs(const std::vector<std::string>& args) {
     if (!r.png && !endsWithNoCase(r.output, ".exr"))
         throw UsageError(r.output + ": unknown image type (-o NAME.exr for radiance, NAME.png for a tone-mapped picture)");
     if (r.png && r.layers) throw UsageError("--layers needs an EXR output (-o NAME.exr), not " + r.output);
+    if (!r.png && r.white)
+        throw UsageError("--white-balance needs a PNG output (-o NAME.png): an EXR keeps the rendered values");
     return r;
 }
 
@@ -305,7 +328,12 @@ int renderImpl(const std::vector<std::string>& args, ProcessGroup* processes) {
     try {
         if (r.layers & kAllLayers) addSurfaceLayers(result->image, s.scene, r.layers);
         if (r.layers & kIlluminanceLayer) result->image.channels["illuminance.Y"] = std::move(illuminance);
-        if (r.png) writePngPicture(result->image, r.output, 0.0f);
+        if (r.png) {
+            DisplaySettings display;
+            display.white = r.white.value_or(WhiteBalance{});
+            display.lights = lightsWhite(*s.scene);
+            writePngPicture(result->image, r.output, display);
+        }
         else writeExr(r.output, result->image);
     } catch (const std::bad_alloc&) {
         throw UsageError(tooLargeForMemory(s.width, s.height));
@@ -357,7 +385,9 @@ int convertImpl(const std::vector<std::string>& args) {
     } catch (const ImageError& e) {
         throw UsageError(e.what());
     }
-    writePngPicture(image, args[1], exposure);
+    DisplaySettings display;
+    display.exposureStops = exposure;
+    writePngPicture(image, args[1], display);
     return 0;
 }
 
@@ -378,6 +408,7 @@ void printUsage() {
                  "                 [--layers albedo,normal,depth,illuminance,lights] [--illuminance-spp N]\n"
                  "                 extra EXR layers: the first visible surface, its illuminance in lux,\n"
                  "                 one layer per light\n"
+                 "                 [--white-balance D65|lights|KELVIN]   the PNG's white (D65 by default)\n"
                  "  lucerna compare TEST.exr REFERENCE.exr    error metrics (SPEC.md section 4)\n"
                  "  lucerna info SCENE.json                   validate and print statistics\n"
                  "  lucerna convert IN.exr OUT.png [--exposure STOPS]   sRGB picture of an EXR\n"

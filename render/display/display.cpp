@@ -63,6 +63,8 @@ QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
     QImage out(image.width, image.height, QImage::Format_RGB888);
     const float scale = std::exp2(settings.exposureStops);
     const std::optional<Legend> legend = luminanceLegend(settings);
+    const Imath::M33f balance(whiteBalanceMatrix(referenceWhite(settings.white, settings.lights)));
+    const bool balanced = balance != Imath::M33f();
     for (int y = 0; y < image.height; ++y) {
         uchar* row = out.scanLine(y);
         for (int x = 0; x < image.width; ++x) {
@@ -80,8 +82,9 @@ QImage toDisplayImage(const Image& image, const DisplaySettings& settings) {
                 row[3 * x + 2] = uchar(qBlue(c));
                 continue;
             }
+            const Rgb q = balanced && isFinite(p) ? Rgb(V3f(p) * balance) : p;
             for (int c = 0; c < 3; ++c) {
-                float v = std::isfinite(p[c]) ? p[c] * scale : 0.0f;
+                float v = std::isfinite(q[c]) ? std::max(0.0f, q[c]) * scale : 0.0f;
                 if (settings.curve == ToneCurve::Filmic) v = filmic(v);
                 row[3 * x + c] = encodeSrgb(v);
             }

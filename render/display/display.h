@@ -6,6 +6,7 @@
 
 #include "core/image/image.h"
 #include "render/display/legend_ticks.h"
+#include "render/display/white_balance.h"
 
 #include <QImage>
 #include <QString>
@@ -34,6 +35,11 @@ struct DisplaySettings {
     // Follows "lx" in the legend: which illuminance it is, "MF 0.80" (maintained) or "new"
     // (README, "Maintained values"); set from the scene, not by the display controls.
     QString illuminanceNote;
+    // The picture's white (render/display/white_balance.h), before exposure and the tone curve;
+    // never in false colour. `lights`: the scene's lights' colour (lightsWhite), set from the
+    // scene like illuminanceNote.
+    WhiteBalance white;
+    Rgbd lights{1, 1, 1};
     bool operator==(const DisplaySettings&) const = default;
 };
 

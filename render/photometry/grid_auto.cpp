@@ -49,12 +49,18 @@ GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>
             pilot.autoMethod = false;
             pilot.method = m;
             pilot.timeLimitSeconds = round;
-            pilot.targetRelativeError = 0;  // the time decides
             pilot.seed = settings.seed + 0x70696c6f + uint64_t(r);
-            eff.push_back(efficiency(computeGridIlluminance(scene, points, normal, pilot, ctx)));
+            GridResult result = computeGridIlluminance(scene, points, normal, pilot, ctx);
+            eff.push_back(efficiency(result));
             measured[size_t(std::ranges::find(all, m) - all.begin())] = eff.back();
-            if (ctx.isCancelled()) return {GridMethod::Path, "", 0};
+            if (ctx.isCancelled()) return {GridMethod::Path, {}, "", 0};
+            if (result.converged) {
+                choice.method = m;
+                choice.finished = std::move(result);
+                break;
+            }
         }
+        if (choice.finished) break;
         const double best = *std::ranges::max_element(eff);
         std::vector<GridMethod> next;
         for (size_t i = 0; i < alive.size(); ++i)
@@ -68,7 +74,8 @@ GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>
     for (size_t i = 0; i < all.size(); ++i)
         choice.measured += std::string(i ? ", " : " ") + gridMethodName(all[i]) + " " +
                            formatNumber(best > 0 ? measured[i] / best : 0.0, 2);
-    choice.measured += "; " + formatDuration(choice.seconds) + "; chose " + gridMethodName(choice.method);
+    choice.measured += "; " + formatDuration(choice.seconds) + "; chose " + gridMethodName(choice.method) +
+                       (choice.finished ? ", whose pilot reached the target" : "");
     return choice;
 }
 

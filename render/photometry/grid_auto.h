@@ -9,12 +9,16 @@
 
 #include "render/photometry/grid_calculation.h"
 
+#include <optional>
 #include <string>
 
 namespace lucerna {
 
 struct GridAutoChoice {
     GridMethod method = GridMethod::Path;
+    // A pilot that reached the grid's error target: the grid's result (a grid that one method
+    // finishes within a pilot costs no more than that pilot).
+    std::optional<GridResult> finished;
     // "pilots: path 1, bdpt 0.31, ... (efficiency, best 1), 1.2 s": what was measured.
     std::string measured;
     double seconds = 0;  // the pilots' time
@@ -23,8 +27,9 @@ struct GridAutoChoice {
 // Runs the pilots on `points` (computeGridIlluminance with each method). `litThroughGlass`: a
 // lamp reaches some point only through glass. The pilots' first round is a fiftieth of the time
 // limit (0.2 s where there is none, at least 0.1 s), each next round twice the last; a method
-// stays while its efficiency is at least a quarter of the best's; at most four rounds. Cancelled:
-// path.
+// stays while its efficiency is at least a quarter of the best's; at most four rounds. A pilot
+// runs to the grid's own error target, and the first that reaches it ends the choice with its
+// result. Cancelled: path.
 GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, bool litThroughGlass, TaskContext& ctx);
 

@@ -95,7 +95,14 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     for (size_t i = 0; i < points.size(); ++i) start.litThroughGlass += throughGlass[i] && !start.insideGeometry[i];
     GridSettings settings = requested;
     if (settings.autoMethod && !settings.processes) {
-        const GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
+        GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
+        if (choice.finished) {
+            // The pilot's result is the grid's: its callers see it as a pass like any other
+            // (the window's grid dock shows only what onPass gave it).
+            choice.finished->autoMeasured = choice.measured;
+            if (onPass) onPass(*choice.finished);
+            return std::move(*choice.finished);
+        }
         settings.method = choice.method;
         start.autoMeasured = choice.measured;
         if (settings.timeLimitSeconds > 0)

@@ -15,6 +15,8 @@
 #include <QTest>
 
 #include <cmath>
+#include <functional>
+#include <optional>
 #include <fstream>
 
 using namespace lucerna;
@@ -184,12 +186,13 @@ private slots:
         grid.edgeV = V3d(0, 0, -1);
         grid.spacingMeters = 0.5;
         const GridLayout layout = layoutGrid(grid, 1.0);
-        const auto compute = [&](const std::string& json, GridSettings settings) {
+        const auto compute = [&](const std::string& json, GridSettings settings,
+                                 const std::function<void(const GridResult&)>& onPass = {}) {
             const RenderScene scene(sceneFromJson(json), 8, 8);
             TaskSystem tasks(0);
             GridResult result;
             auto job = tasks.submit([&](TaskContext& ctx) {
-                result = computeGridIlluminance(scene, layout.points, grid.normal(), settings, ctx);
+                result = computeGridIlluminance(scene, layout.points, grid.normal(), settings, ctx, onPass);
             });
             job->wait();
             job->rethrowIfFailed();
@@ -215,6 +218,17 @@ private slots:
         const GridResult viaPath = compute(lampOverPaneJson(true), settings);
         QVERIFY(viaPath.errorBarUnknown);
         QCOMPARE(gridStatistics(viaPath.lux).average, 0.0);
+
+        // A pilot that reaches the grid's target ends the choice with its result, which the
+        // callers see as a pass (the window's dock shows only those).
+        settings.autoMethod = true;
+        settings.targetRelativeError = 0.1;
+        std::optional<GridResult> lastPass;
+        const GridResult early = compute(lampOverPaneJson(false), settings, [&](const GridResult& r) { lastPass = r; });
+        QVERIFY2(early.converged && early.autoMeasured.find("whose pilot reached the target") != std::string::npos,
+                 early.autoMeasured.c_str());
+        QVERIFY(lastPass);
+        QCOMPARE(lastPass->lux, early.lux);
     }
 };
 

@@ -117,6 +117,12 @@ void CompareView::setIlluminanceNote(const QString& note) {
     setDisplaySettings(s);
 }
 
+void CompareView::setLightsWhite(const Rgbd& lights) {
+    DisplaySettings s = display_;
+    s.lights = lights;
+    setDisplaySettings(s);
+}
+
 void CompareView::showEvent(QShowEvent*) {
     if (stale_) refresh();
 }

@@ -42,6 +42,8 @@ public:
     DisplaySettings displaySettings() const { return display_; }
     // What the lux legend says of the values (DisplaySettings::illuminanceNote).
     void setIlluminanceNote(const QString& note);
+    // The scene's lights' colour (lightsWhite), for the white balance "the lights".
+    void setLightsWhite(const Rgbd& lights);
 
     // The relmse of the preview against the converged image; nothing until both exist.
     std::optional<double> relmse() const { return relmse_; }

@@ -5,6 +5,7 @@
 #include "render/engine/measured_auto/measured_auto_settings.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 namespace lucerna {
@@ -128,12 +129,18 @@ void ConvergingRender::relaunch() {
     settings.seed = 1;
     job_ = tasks_.submit([scene = scene_, settings, name = inUse_, make = info->make, layered = lightLayers_,
                           latest = latest_, paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
-        auto backend = layered ? makeLayeredBackend(make, scene, settings) : make(scene, settings);
-        backend->prepare(ctx);
         PassLoopOptions loop;
         loop.openEnded = true;
         loop.eagerPasses = 4;
         loop.hold = [&paused = *paused, &gate = *gate] { return paused.load() || gate.load() > 0; };
+        // The preview's answer first (the gate: a scene's first, coarse frame; an edit's frame),
+        // but never more than a few seconds: preparing (auto's replicas, VPL sets, chains' seeds)
+        // takes the cores as passes do.
+        const auto waitUntil = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+        while (gate->load() > 0 && std::chrono::steady_clock::now() < waitUntil && !ctx.isCancelled())
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        auto backend = layered ? makeLayeredBackend(make, scene, settings) : make(scene, settings);
+        backend->prepare(ctx);
         loop.albedoScene = scene;
         runPasses(*backend, name, settings, ctx, latest.get(), loop);
     });

@@ -9,12 +9,35 @@
 #include <QSignalBlocker>
 
 #include <algorithm>
+#include <cmath>
+#include <iterator>
 
 namespace lucerna {
 
 namespace {
 enum Mode { Linear, Filmic, FalseColour, FalseColourLux };
+// The white balance's choices after D65 and the lights: the usual lamp colours and daylight's.
+constexpr int kWhiteTemperaturesK[] = {2700, 3000, 3500, 4000, 5000, 6500};
+enum WhiteItem { WhiteD65, WhiteLights, WhiteFirstTemperature };
+
+int whiteItem(const WhiteBalance& w) {
+    if (w.reference == WhiteReference::DominantLights) return WhiteLights;
+    if (w.reference == WhiteReference::Temperature)
+        for (int i = 0; i < int(std::size(kWhiteTemperaturesK)); ++i)
+            if (std::abs(w.kelvin - kWhiteTemperaturesK[i]) < 0.5) return WhiteFirstTemperature + i;
+    return WhiteD65;
 }
+
+WhiteBalance whiteOfItem(int item) {
+    WhiteBalance w;
+    if (item == WhiteLights) w.reference = WhiteReference::DominantLights;
+    if (item >= WhiteFirstTemperature && item < WhiteFirstTemperature + int(std::size(kWhiteTemperaturesK))) {
+        w.reference = WhiteReference::Temperature;
+        w.kelvin = kWhiteTemperaturesK[item - WhiteFirstTemperature];
+    }
+    return w;
+}
+}  // namespace
 
 DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     auto* layout = new QHBoxLayout(this);
@@ -33,6 +56,13 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
                        tr("Illuminance at the surface each pixel sees: the illuminance layer where the image has one, "
                           "else pi x luminance / albedo (exact on matt surfaces under white light)"),
                        Qt::ToolTipRole);
+    white_ = new QComboBox(this);
+    white_->setObjectName("whiteBalance");
+    white_->addItems({tr("White D65"), tr("White: the lights")});
+    for (int k : kWhiteTemperaturesK) white_->addItem(tr("White %1 K").arg(k));
+    white_->setToolTip(tr("White balance of the picture: the colour shown as white. D65 shows the values as rendered "
+                          "(a 4000 K lamp looks warm); \"the lights\" takes the scene's lights' colour, weighted by their "
+                          "flux. Never applied to false colour, lux figures or EXR files."));
     // The false-colour range; a log scale, so decades are the natural steps.
     const auto range = [this](const char* name, double value) {
         auto* spin = new QDoubleSpinBox(this);
@@ -56,6 +86,7 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     layout->addWidget(new QLabel(tr("Exposure"), this));
     layout->addWidget(exposure_);
     layout->addWidget(mode_);
+    layout->addWidget(white_);
     layout->addWidget(falseMin_);
     rangeTo_ = new QLabel(tr("to"), this);
     layout->addWidget(rangeTo_);
@@ -85,13 +116,18 @@ DisplayControls::DisplayControls(QWidget* parent) : QWidget(parent) {
     connect(falseMax_, &QDoubleSpinBox::valueChanged, this, rangeEdited);
     connect(mode_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
     connect(scale_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
+    connect(white_, &QComboBox::currentIndexChanged, this, &DisplayControls::read);
 }
 
 void DisplayControls::setSettings(const DisplaySettings& s) {
+    // What the scene sets, no field shows: read() keeps it.
+    settings_.illuminanceNote = s.illuminanceNote;
+    settings_.lights = s.lights;
     {
-        const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_), b5(scale_);
+        const QSignalBlocker b1(exposure_), b2(mode_), b3(falseMin_), b4(falseMax_), b5(scale_), b6(white_);
         scale_->setCurrentIndex(std::max(0, scale_->findData(int(s.scale))));
         exposure_->setValue(s.exposureStops);
+        white_->setCurrentIndex(whiteItem(s.white));
         mode_->setCurrentIndex(!s.falseColour                                     ? (s.curve == ToneCurve::Filmic ? Filmic : Linear)
                                : s.quantity == FalseColourQuantity::Illuminance ? FalseColourLux
                                                                                 : FalseColour);
@@ -104,6 +140,8 @@ void DisplayControls::setSettings(const DisplaySettings& s) {
 void DisplayControls::read() {
     DisplaySettings s;
     s.illuminanceNote = settings_.illuminanceNote;
+    s.lights = settings_.lights;
+    s.white = whiteOfItem(white_->currentIndex());
     s.exposureStops = float(exposure_->value());
     s.curve = mode_->currentIndex() == Filmic ? ToneCurve::Filmic : ToneCurve::LinearSrgb;
     s.falseColour = mode_->currentIndex() == FalseColour || mode_->currentIndex() == FalseColourLux;
@@ -123,6 +161,7 @@ void DisplayControls::read() {
     }
     // Exposure does not apply to absolute luminance, and the range only to false colour.
     exposure_->setEnabled(!s.falseColour);
+    white_->setVisible(!s.falseColour);
     falseMin_->setVisible(s.falseColour);
     falseMax_->setVisible(s.falseColour);
     rangeTo_->setVisible(s.falseColour);

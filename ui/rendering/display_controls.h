@@ -1,7 +1,8 @@
 #pragma once
 // The display settings a user changes: exposure in stops, and how radiance becomes a picture
 // (linear sRGB, the filmic curve, or false-colour luminance in cd/m^2 with its range and its
-// scale: logarithmic, linear, or bands between round values). The range's
+// scale: logarithmic, linear, or bands between round values), and the picture's white (D65, the
+// scene's lights, or a colour temperature). The range's
 // fields take what is typed when the typing ends (Enter or leaving the field), neither field
 // moving the other; a maximum not above the minimum is refused with a message and the previous
 // range kept.
@@ -37,6 +38,7 @@ private:
     QDoubleSpinBox *exposure_, *falseMin_, *falseMax_;
     QComboBox* mode_;
     QComboBox* scale_;  // the false colour's LegendScale
+    QComboBox* white_;  // the white balance (render/display/white_balance.h)
     QWidget* rangeTo_;  // the "to" between the range's ends
 };
 

@@ -61,7 +61,8 @@ Image pathFrame(const SceneSnapshot& scene, int w, int h, TaskContext& ctx) {
 QString previewStatusText(const QString& engine, const LiveFrame& frame) {
     const QString frames = frame.frames == 1 ? LivePreview::tr("1 frame") : LivePreview::tr("%1 frames").arg(frame.frames);
     QString text = LivePreview::tr("Preview: %1, %2, %3 ms").arg(engine, frames).arg(frame.milliseconds, 0, 'f', 0);
-    if (!frame.degradation.empty()) text += "; " + QString::fromStdString(frame.degradation);
+    if (frame.coarse) text += LivePreview::tr("; a coarse first frame, the full one follows");
+    else if (!frame.degradation.empty()) text += "; " + QString::fromStdString(frame.degradation);
     return text;
 }
 
@@ -202,11 +203,42 @@ private:
         previewSize(request.scene->camera, longSide_, w, h);
         if (!gl_ && engine_ != Engine::Path && !glFailed_) startOpenGl();
         if (!gl_) return pathFrame(request.scene, w, h, ctx);
-        if (rebuild_) gl_->setScene(request.scene, w, h);
-        else gl_->update(request.scene, w, h);  // the preview redraws what changed
-        rebuild_ = false;
         gl_->setAlbedoLayer(request.albedoLayer);
+        if (!rebuild_) {
+            gl_->update(request.scene, w, h);  // the preview redraws what changed
+            return gl_->render();
+        }
+        rebuild_ = false;
+        const PreviewSettings full = gl_->settings();
+        const auto t0 = Clock::now();
+        gl_->setSettings(coarseSettings(full));
+        gl_->setScene(request.scene, w, h);
+        publishCoarse(gl_->render(), millisecondsSince(t0), request, ctx);
+        gl_->setSettings(full);  // new VPLs and shadow maps at the preview's own settings
         return gl_->render();
+    }
+
+    // A scene's first frame comes first at these settings (issue 40): the office floor's first
+    // frame took 9 s in the window on llvmpipe, nearly all of it the cube shadow maps of 108
+    // lights at 128 px a face and of 256 VPLs, drawn while the converging render took half the
+    // cores. Its light is unbiased but blotchy (32 VPLs) and its shadows soft (32 px maps); the
+    // frame at the full settings replaces it as soon as it is drawn.
+    static PreviewSettings coarseSettings(PreviewSettings s) {
+        s.vplCount = std::min(s.vplCount, 32);
+        s.shadowSize = std::min(s.shadowSize, 32);
+        s.vplShadowSize = std::min(s.vplShadowSize, 16);
+        s.skySamples = std::min(s.skySamples, 16);
+        s.skyShadowSize = std::min(s.skyShadowSize, 128);
+        return s;
+    }
+
+    // Accumulation starts from the full frame.
+    void publishCoarse(Image image, double milliseconds, const Request& request, TaskContext& ctx) {
+        current_ = request;
+        sum_.restart(image.width, image.height);
+        sum_.add(image);
+        totalMilliseconds_ = milliseconds;
+        publish(std::move(image), milliseconds, ctx, true);
     }
 
     // Auto falls back to the path tracer for good; OpenGL alone fails every request with the
@@ -227,8 +259,9 @@ private:
         }
     }
 
-    void publish(Image image, double milliseconds, TaskContext& ctx) {
+    void publish(Image image, double milliseconds, TaskContext& ctx, bool coarse = false) {
         auto frame = std::make_shared<LiveFrame>();
+        frame->coarse = coarse;
         frame->image = std::move(image);
         frame->scene = current_.scene;
         frame->frames = sum_.count();
@@ -286,7 +319,7 @@ private:
 };
 
 LivePreview::LivePreview(const YieldGate& gate, Engine engine, int longSide, QObject* parent)
-    : QObject(parent), shared_(std::make_shared<Shared>()) {
+    : QObject(parent), shared_(std::make_shared<Shared>()), gate_(gate.counter()) {
     // The job, and the OpenGL context in it, live and die on the job's thread.
     job_ = tasks_.submit([shared = shared_, gate = gate.counter(), engine, longSide](TaskContext& ctx) {
         Job(shared, gate, engine, longSide).run(ctx);
@@ -309,6 +342,7 @@ LivePreview::Engine LivePreview::engineFromEnvironment() {
 }
 
 void LivePreview::setScene(SceneSnapshot scene) {
+    if (!answered_ && !firstHold_) firstHold_ = std::make_unique<YieldGate::Scope>(gate_);
     {
         std::lock_guard lock(shared_->mutex);
         shared_->requested = std::move(scene);
@@ -346,6 +380,8 @@ void LivePreview::poll() {
     const auto outcome = shared_->out.get();
     if (!outcome || outcome->sequence == shownSequence_) return;
     shownSequence_ = outcome->sequence;
+    answered_ = true;
+    firstHold_.reset();
     if (outcome->request < firstShownRequest_) return;  // of a scene dropped since
     frame_ = outcome->frame;
     error_ = QString::fromStdString(outcome->error);

@@ -35,6 +35,9 @@ struct LiveFrame {
     // What the preview gave up to stay within the GPU's limits (Preview::degradation()); empty
     // when nothing, and always for the path tracer.
     std::string degradation;
+    // A quick first answer to a new scene (fewer VPLs, smaller shadow maps, lower resolution),
+    // shown while the frame at the preview's own settings draws.
+    bool coarse = false;
 };
 
 // "Preview: ENGINE, N frames, M ms" (and "; DEGRADATION" when the preview gave something up),
@@ -94,6 +97,11 @@ private:
     QString error_;
     uint64_t shownSequence_ = 0;
     uint64_t firstShownRequest_ = 0;  // outcomes of earlier requests are of a dropped scene
+    // The window's first picture comes before the converging render takes the cores: the gate
+    // is held from the first scene until the job's first answer (a coarse frame: issue 40).
+    std::shared_ptr<std::atomic<int>> gate_;
+    std::unique_ptr<YieldGate::Scope> firstHold_;
+    bool answered_ = false;
     int frames_ = 0;
     QTimer poll_;
 };

@@ -3,6 +3,7 @@
 #include "core/resources.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
+#include "render/display/white_balance.h"
 #include "ui/calculation/annual_panel.h"
 #include "ui/calculation/grid_panel.h"
 #include "ui/calculation/report_export.h"
@@ -75,6 +76,7 @@ MainWindow::MainWindow(const QString& scenePath, QWidget* parent)
     connect(doc_.get(), &Document::changed, this, [this] {
         preview_->setScene(doc_->snapshot());
         render_->setScene(doc_->snapshot());
+        compare_->setLightsWhite(lightsWhite(*doc_->snapshot()));
         const MaintenanceRange mf = maintenanceRange(*doc_->snapshot());
         compare_->setIlluminanceNote(!mf.electric       ? QString()
                                      : !mf.maintained() ? tr("new")
