@@ -76,10 +76,11 @@ PlanView::PlanView(Document* doc, const YieldGate& gate, QWidget* parent)
     labels_->setCheckable(true);
     labels_->setChecked(true);
     labels_->setToolTip(tr("Write the lights' names in the plan where they fit"));
-    // The draw buttons give way to a narrow plan (their text clipped) rather than widen the
-    // window's central area past what the docks leave it.
+    // The draw buttons and the scale's choice give way to a narrow plan (their text clipped)
+    // rather than widen the window's central area past what the docks leave it.
     for (QToolButton* b : {drawField_, taskAreaDrawing_->button(), roomDrawing_->button()})
         b->setMinimumWidth(1);
+    scaleChoice_->setMinimumWidth(1);
     bar->addStretch(1);
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(8, 6, 8, 6);
