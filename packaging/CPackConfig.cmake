@@ -2,12 +2,15 @@
 # from the top CMakeLists.txt after the targets exist; app/ installs the executable to bin/.
 #
 # The layout is what core/resources.cpp looks for at run time: <prefix>/bin/lucerna and the
-# bundled scenes and shaders in <prefix>/share/lucerna.
+# bundled scenes, shaders, weather file and the README in <prefix>/share/lucerna.
 
 include(GNUInstallDirs)
 
 install(DIRECTORY ${CMAKE_SOURCE_DIR}/resources/scenes ${CMAKE_SOURCE_DIR}/resources/shaders
+                  ${CMAKE_SOURCE_DIR}/resources/weather
         DESTINATION ${CMAKE_INSTALL_DATADIR}/lucerna)
+# Help > User Guide shows it (ui/window/help_actions.h).
+install(FILES ${CMAKE_SOURCE_DIR}/README.md DESTINATION ${CMAKE_INSTALL_DATADIR}/lucerna)
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/lucerna.desktop DESTINATION ${CMAKE_INSTALL_DATADIR}/applications)
 install(FILES ${CMAKE_CURRENT_LIST_DIR}/lucerna.svg
         DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps)
