@@ -6,6 +6,7 @@
 // go to the test's working directory (the build's tests/ folder).
 
 #include "core/image/image_metrics.h"
+#include "core/photometry/photometric_units.h"
 #include "render/display/display.h"
 #include "render/display/false_colour.h"
 #include "ui/compare/compare_canvas.h"
@@ -283,6 +284,27 @@ void TestCompareView::exposureAndToneCurve() {
     const QImage shot = grabbed(view->firstCanvas());
     QCOMPARE(shot.pixelColor(view->firstCanvas()->imageRect().center().toPoint() + QPoint(0, 30)),
              toDisplayImage(uniform(1, 1, Rgb(0.2f, 0.2f, 0.2f))).pixelColor(0, 0));
+
+    // White balance through the controls: a grey lit at 3000 K shows neutral with "White 3000 K"
+    // and with "the lights" when the scene's lights are 3000 K; amber with D65.
+    const Rgbd lamp = blackbodyColour(3000);
+    const Image warm = uniform(10, 10, Rgb(float(0.05 * lamp.x), float(0.05 * lamp.y), float(0.05 * lamp.z)));
+    view->setPreview(warm);
+    view->setConverged(warm);
+    const QPoint centre = view->firstCanvas()->imageRect().center().toPoint() + QPoint(0, 30);
+    const QColor amber = grabbed(view->firstCanvas()).pixelColor(centre);
+    QCOMPARE_GT(amber.red() - amber.blue(), 40);
+    auto* white = view->displayControls()->findChild<QComboBox*>("whiteBalance");
+    QVERIFY(white && white->isVisible());
+    white->setCurrentIndex(white->findText("White 3000 K"));
+    QCOMPARE(view->displaySettings().white.reference, WhiteReference::Temperature);
+    const QColor balanced = grabbed(view->firstCanvas()).pixelColor(centre);
+    QVERIFY_NEAR_COLOUR(balanced, QColor(balanced.green(), balanced.green(), balanced.green()), 1);
+    view->setLightsWhite(lamp);
+    white->setCurrentIndex(white->findText("White: the lights"));
+    QVERIFY_NEAR_COLOUR(grabbed(view->firstCanvas()).pixelColor(centre), balanced, 1);
+    white->setCurrentIndex(white->findText("White D65"));
+    QCOMPARE(grabbed(view->firstCanvas()).pixelColor(centre), amber);
 }
 
 void TestCompareView::probeReadsThePixelUnderTheCursor() {
