@@ -62,11 +62,17 @@ GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>
         }
         if (choice.finished) break;
         const double best = *std::ranges::max_element(eff);
-        std::vector<GridMethod> next;
+        // The next round runs the survivors best first: the leader is the likeliest to reach the
+        // target within its pilot, which then ends the choice before the others' rounds.
+        std::vector<size_t> order;
         for (size_t i = 0; i < alive.size(); ++i)
-            if (eff[i] >= 0.25 * best && best > 0) next.push_back(alive[i]);
+            if (eff[i] >= 0.25 * best && best > 0) order.push_back(i);
+        std::ranges::stable_sort(order, [&](size_t a, size_t b) { return eff[a] > eff[b]; });
         choice.method = alive[size_t(std::ranges::max_element(eff) - eff.begin())];
-        if (!next.empty()) alive = next;
+        if (order.empty()) continue;
+        std::vector<GridMethod> next;
+        for (size_t i : order) next.push_back(alive[i]);
+        alive = next;
     }
     choice.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     const double best = *std::ranges::max_element(measured);

@@ -27,9 +27,9 @@ struct GridAutoChoice {
 // Runs the pilots on `points` (computeGridIlluminance with each method). `litThroughGlass`: a
 // lamp reaches some point only through glass. The pilots' first round is a fiftieth of the time
 // limit (0.2 s where there is none, at least 0.1 s), each next round twice the last; a method
-// stays while its efficiency is at least a quarter of the best's; at most four rounds. A pilot
-// runs to the grid's own error target, and the first that reaches it ends the choice with its
-// result. Cancelled: path.
+// stays while its efficiency is at least a quarter of the best's, and the survivors run best
+// first; at most four rounds. A pilot runs to the grid's own error target, and the first that
+// reaches it ends the choice with its result. Cancelled: path.
 GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
                                 const GridSettings& settings, bool litThroughGlass, TaskContext& ctx);
 
