@@ -12,6 +12,7 @@
 #include <QtTest>
 
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 using namespace lucerna::test;
@@ -20,14 +21,6 @@ namespace {
 
 const QString kOffice = LUCERNA_RESOURCE_DIR "/scenes/daylit_office.json";
 const QString kWeather = LUCERNA_RESOURCE_DIR "/weather/paris_synthetic.epw";
-
-// A CSV field as a number; a field that is none stops the test (toDouble alone would read 0).
-double number(const QString& field) {
-    bool ok = false;
-    const double x = field.toDouble(&ok);
-    if (!ok) qFatal("not a number: %s", qPrintable(field));
-    return x;
-}
 
 }  // namespace
 
@@ -54,17 +47,19 @@ void TestAnnualCommand::bundledOffice() {
     QCOMPARE(points.header, (QStringList{"x", "y", "z", "da300", "udi_fell_short", "udi_useful", "udi_exceeded",
                                          "ase_hours", "mean_lux"}));
     QVERIFY(points.rows.size() >= 20);
-    for (const auto& row : points.rows) {
-        const double da = number(row[3]), a = number(row[4]), b = number(row[5]), c = number(row[6]);
-        QVERIFY(da >= 0 && da <= 1);
-        QVERIFY(std::abs(a + b + c - 1) < 1e-4);  // the three UDI bands cover the occupied hours
+    for (size_t i = 0; i < points.rows.size(); ++i) {
+        const auto da = points.number(i, "da300"), a = points.number(i, "udi_fell_short"),
+                   b = points.number(i, "udi_useful"), c = points.number(i, "udi_exceeded");
+        QVERIFY(da && a && b && c);
+        QVERIFY(*da >= 0 && *da <= 1);
+        QVERIFY(std::abs(*a + *b + *c - 1) < 1e-4);  // the three UDI bands cover the occupied hours
     }
     const CsvTable hours = CsvTable::read(hourly);
     QCOMPARE(hours.rows.size(), size_t(8760));
     QCOMPARE(size_t(hours.header.size()), 3 + points.rows.size());
     QCOMPARE(hours.header[3], QString("p1"));
     QCOMPARE(hours.rows[0].mid(0, 3).join('-'), QString("1-1-1"));
-    QCOMPARE(number(hours.rows[0][3]), 0.0);  // 00:30 on 1 January: night
+    QCOMPARE(hours.number(0, "p1"), std::optional<double>(0.0));  // 00:30 on 1 January: night
 }
 
 void TestAnnualCommand::exportHour() {

@@ -6,12 +6,17 @@
 
 #include <QAction>
 #include <QApplication>
+#include <QColor>
 #include <QDoubleSpinBox>
+#include <QImage>
 #include <QMouseEvent>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
 #include <QtTest>
+
+#include <algorithm>
+#include <cmath>
 
 namespace lucerna::test {
 
@@ -69,6 +74,22 @@ T* child(QObject& parent, const char* name) {
     T* w = parent.findChild<T*>(name);
     if (!w) qFatal("no widget %s", name);
     return w;
+}
+
+// The sum of the channels' differences (0 to 765).
+inline double colourDistance(const QColor& a, const QColor& b) {
+    return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
+}
+
+// The smallest colourDistance between `want` and a pixel within `radius` of p.
+inline double nearestColour(const QImage& image, QPointF p, const QColor& want, int radius = 1) {
+    double best = 1e9;
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            const QPoint q(int(std::lround(p.x())) + dx, int(std::lround(p.y())) + dy);
+            if (image.rect().contains(q)) best = std::min(best, colourDistance(image.pixelColor(q), want));
+        }
+    return best;
 }
 
 }  // namespace lucerna::test

@@ -375,7 +375,7 @@ double luxAfter(const QString& text, const QString& word) {
     QString digits;
     for (int k = at + int(word.size()); k < text.size() && text[k] != QLatin1Char('l'); ++k)
         if (text[k].isDigit()) digits += text[k];
-    return digits.toDouble();
+    return double(digits.toLongLong());  // digits only: a whole number of lux
 }
 
 // Types `keys` into the time field as a designer would: focus elsewhere, a click into the field

@@ -37,21 +37,6 @@ using namespace lucerna::test;
 
 namespace {
 
-double colourDistance(const QColor& a, const QColor& b) {
-    return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
-}
-
-// The smallest distance between `want` and a pixel within `radius` of p.
-double nearestColour(const QImage& image, QPointF p, const QColor& want, int radius = 1) {
-    double best = 1e9;
-    for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-            const QPoint q(int(std::lround(p.x())) + dx, int(std::lround(p.y())) + dy);
-            if (image.rect().contains(q)) best = std::min(best, colourDistance(image.pixelColor(q), want));
-        }
-    return best;
-}
-
 }  // namespace
 
 class TestPlanLabels : public QObject {

@@ -45,21 +45,6 @@ void drag(QWidget* w, QPointF from, QPointF to, int steps = 6) {
     sendMouse(w, QEvent::MouseButtonRelease, to, Qt::LeftButton, Qt::NoButton);
 }
 
-double colourDistance(const QColor& a, const QColor& b) {
-    return std::abs(a.red() - b.red()) + std::abs(a.green() - b.green()) + std::abs(a.blue() - b.blue());
-}
-
-// The smallest distance between `want` and a pixel within `radius` of p.
-double nearestColour(const QImage& image, QPointF p, const QColor& want, int radius = 1) {
-    double best = 1e9;
-    for (int dy = -radius; dy <= radius; ++dy)
-        for (int dx = -radius; dx <= radius; ++dx) {
-            const QPoint q(int(std::lround(p.x())) + dx, int(std::lround(p.y())) + dy);
-            if (image.rect().contains(q)) best = std::min(best, colourDistance(image.pixelColor(q), want));
-        }
-    return best;
-}
-
 // Two rooms under one ceiling, 2.8 m high: A is 6 x 4 m (x 0..6), B is 3 x 4 m (x 6..9), with a
 // partition at x = 6. Coordinates in units of `unit` metres.
 QString twoRoomObj(double unit) {

@@ -91,7 +91,7 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     for (const QString& entry : QString::fromStdString(time->second).split(' ', Qt::SkipEmptyParts)) {
         const QStringList nameAndShare = entry.split('=');
         bool number = false;
-        const double share = nameAndShare.size() == 2 ? nameAndShare[1].toDouble(&number) : 0.0;
+        const double share = nameAndShare.size() == 2 ? nameAndShare[1].toFloat(&number) : 0.0f;
         if (number) shares.emplace_back(share, nameAndShare[0]);
     }
     std::ranges::sort(shares, std::greater<>());
