@@ -1,88 +1,252 @@
 #include "render/photometry/grid_auto.h"
 
 #include "core/number_format.h"
+#include "core/sub_task.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <utility>
 
 namespace lucerna {
 
 namespace {
 
-// 1 / (mean squared relative error x seconds) of a pilot's result: the error bars are 95%
-// half-widths, relative to the point's value (at least a thousandth of the mean); points inside
-// geometry left out. 0 when no error bar is known yet.
-double efficiency(const GridResult& r) {
-    double sum = 0, mean = 0;
-    int n = 0;
-    for (size_t i = 0; i < r.lux.size(); ++i)
-        if (r.insideGeometry.empty() || !r.insideGeometry[i]) mean += std::max(0.0, r.lux[i]), ++n;
-    if (n == 0 || !(r.seconds > 0)) return 0;
-    mean /= n;
-    for (size_t i = 0; i < r.lux.size(); ++i) {
-        if (!r.insideGeometry.empty() && r.insideGeometry[i]) continue;
-        const double e = r.errorLux[i] / 1.96 / std::max(std::abs(r.lux[i]), 1e-3 * mean + 1e-300);
-        if (!std::isfinite(e)) return 0;
-        sum += e * e;
-    }
-    return sum > 0 ? 1.0 / (sum / n * r.seconds) : 0.0;
+using Clock = std::chrono::steady_clock;
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// A pilot lasts this share of the running method's projected rest, and all pilots together take
+// at most the larger share of its projected total; shorter than the shortest, a pilot is not
+// worth running (its method would barely start). A method that gave no measure in its pilot
+// (still preparing at the deadline) is tried again with a pilot four times as long, when the
+// running method's rest allows one. A pilot's deadline (preparation included) is its length
+// times the overrun, plus the grace.
+constexpr double kPilotShare = 0.05;
+constexpr double kPilotsShare = 0.1;
+constexpr double kShortestPilotSeconds = 0.05;
+constexpr double kRetryFactor = 4;
+constexpr double kPilotOverrun = 1.5;
+constexpr double kPilotGraceSeconds = 0.02;
+// The margin by which a challenger must beat the running method (challengerTakesOver).
+constexpr double kTakeOverRatio = 0.7;
+
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+std::string seconds(double s) { return std::isfinite(s) ? formatNumber(s, 2) : "-"; }
+
+// The methods auto may run, the cheapest to start first (the first runs from the start).
+std::vector<GridMethod> candidates(bool litThroughGlass) {
+    if (litThroughGlass) return {GridMethod::Bdpt, GridMethod::Mlt, GridMethod::Cmlt};
+    return {GridMethod::Vpl, GridMethod::Path, GridMethod::Bdpt, GridMethod::Mir, GridMethod::Mlt, GridMethod::Cmlt};
 }
+
+// A result's projected seconds to the target from its method's start, `ran` seconds of its own
+// so far; infinite while its error bars are not to be trusted (path and ir before minPasses
+// passes, the replicas' methods before their first).
+double projectedSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {
+    const bool byPasses = method == GridMethod::Path || method == GridMethod::Vpl;
+    if (r.passes < (byPasses ? std::max(2, settings.minPasses) : 1) || !std::isfinite(r.maxRelativeError) ||
+        !(ran > 0) || !(settings.targetRelativeError > 0))
+        return kInfinity;
+    const double ratio = r.maxRelativeError / settings.targetRelativeError;
+    return ran * ratio * ratio;
+}
+
+// The running method's projections as it ran: (its own seconds, projected seconds).
+using History = std::vector<std::pair<double, double>>;
+
+// What a pilot is weighed against: the running method's history and where it stands now.
+struct Opponent {
+    double budgetSeconds;
+    const History* history;
+    double needsSeconds, ranSeconds;
+};
+
+class AutoGrid {
+public:
+    AutoGrid(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal, const GridSettings& settings,
+             TaskContext& ctx, const std::function<void(const GridResult&)>& onPass, bool litThroughGlass)
+        : scene_(scene), points_(points), normal_(normal), settings_(settings), ctx_(ctx), onPass_(onPass),
+          limit_(settings.timeLimitSeconds > 0 ? settings.timeLimitSeconds : kInfinity) {
+        for (GridMethod m : candidates(litThroughGlass)) pending_.push_back({m, 0.0});
+        first_ = pending_.front().method;
+        pending_.erase(pending_.begin());
+    }
+
+    GridResult compute() {
+        GridResult result = *run(first_, std::nullopt);
+        result.seconds = secondsSince(begin_);
+        result.autoMeasured = line(result.method);
+        if (onPass_) onPass_(result);
+        return result;
+    }
+
+private:
+    struct Pending {
+        GridMethod method;
+        double triedSeconds;  // its last pilot's length, which gave no measure (0: none yet)
+    };
+
+    // Runs `method` to the grid's end (its target or time limit, or cancelled), or, as a pilot
+    // against an opponent, until it has run the pilot's length: then it goes on to the end only
+    // if it takes over. Nothing for a pilot that did not (nor where the job was cancelled in it).
+    // A method piloted between this one's passes that takes over ends this one with its result.
+    std::optional<GridResult> run(GridMethod method, std::optional<Opponent> opponent) {
+        SubTask task(ctx_, opponent ? kPilotOverrun * opponent->budgetSeconds + kPilotGraceSeconds : kInfinity);
+        bool piloting = opponent.has_value(), lost = false;
+        const auto start = Clock::now();
+        std::optional<GridResult> overtaken;
+        History history;
+        double pilotsWithin = 0;  // seconds of pilots within this run (its clock counts them)
+        GridSettings own = settings_;
+        own.autoMethod = false;
+        own.method = method;
+        own.timeLimitSeconds = std::isfinite(limit_) ? std::max(0.01, limit_ - secondsSince(begin_)) : 0;
+        if (piloting) own.seed = settings_.seed + 0x70696c6f + uint64_t(pilotCount_++);
+        GridResult last = computeGridIlluminance(scene_, points_, normal_, own, task.context(), [&](const GridResult& r) {
+            if (ctx_.isCancelled() || overtaken || lost) return;
+            const double ran = r.seconds - pilotsWithin;
+            const double needs = projectedSeconds(r, ran, method, settings_);
+            if (piloting) {
+                if (ran < opponent->budgetSeconds && !r.converged) return;
+                piloting = false;
+                pilotSeconds_ += ran;
+                if (!takesOver(method, r, needs, *opponent)) {
+                    lost = true;
+                    task.cancel();
+                    return;
+                }
+                task.setDeadline(kInfinity);
+            }
+            ctx_.setProgress(task.context().progress());
+            if (onPass_) {
+                GridResult shown = r;
+                shown.autoMeasured = line(method);
+                onPass_(shown);
+            }
+            if (!std::isfinite(needs) || r.converged) return;
+            history.emplace_back(ran, needs);
+            const auto pilotStart = Clock::now();
+            const std::optional<GridMethod> challenger = nextPilot(ran, needs);
+            if (!challenger) return;
+            std::optional<GridResult> won = run(*challenger, Opponent{budget(ran, needs), &history, needs, ran});
+            if (won) {
+                overtaken = std::move(won);
+                task.cancel();
+                return;
+            }
+            pilotsWithin += secondsSince(pilotStart);
+        });
+        if (overtaken) return overtaken;
+        if (piloting && !ctx_.isCancelled()) {  // cut at its deadline, still preparing
+            pilotSeconds_ += secondsSince(start);
+            noMeasure(method, opponent->budgetSeconds, secondsSince(start));
+        }
+        if (piloting || lost) return std::nullopt;
+        last.method = method;
+        return last;
+    }
+
+    // A pilot's length now: a share of the running method's rest, within the pilots' share of
+    // its total; it waits until that method has run as long (so that the two are weighed at
+    // equal times, takesOver).
+    double budget(double ran, double needs) const {
+        return std::min(kPilotShare * std::min(needs - ran, limit_ - secondsSince(begin_)),
+                        kPilotsShare * needs - pilotSeconds_);
+    }
+
+    // The next method to pilot between the running method's passes, taken off the pending list;
+    // nothing when no pilot is worth its cost now.
+    std::optional<GridMethod> nextPilot(double ran, double needs) {
+        const double b = budget(ran, needs);
+        if (ran < b) return std::nullopt;
+        const auto next = std::ranges::find_if(
+            pending_, [&](const Pending& p) { return b >= std::max(kShortestPilotSeconds, kRetryFactor * p.triedSeconds); });
+        if (next == pending_.end()) return std::nullopt;
+        const GridMethod m = next->method;
+        pending_.erase(next);
+        return m;
+    }
+
+    // A short run's projection is biased (an error bar from few batches, heavy tails not yet
+    // sampled or just met; on the caustic grid path's projection from 0.1 s is 3.3 times its
+    // projection from 3 s, ir's 1.1 times), so a pilot is weighed against the running method's
+    // projection when that one had run as long, and the ratio scales the running method's
+    // projection now.
+    bool takesOver(GridMethod method, const GridResult& pilot, double pilotNeeds, const Opponent& o) {
+        const std::string name = gridMethodName(method);
+        if (pilot.converged) {
+            pilots_.push_back(name + " reached the target in its pilot");
+            return true;
+        }
+        if (!std::isfinite(pilotNeeds)) {
+            noMeasure(method, o.budgetSeconds, pilot.seconds);
+            return false;
+        }
+        const History& h = *o.history;
+        const auto then = std::ranges::find_if(h, [&](const auto& e) { return e.first >= pilot.seconds; });
+        const double needs = pilotNeeds * o.needsSeconds / (then != h.end() ? then->second : h.back().second);
+        pilots_.push_back(name + " " + seconds(needs) + " (" + seconds(o.needsSeconds) + ")");
+        if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_)))
+            return false;
+        pilots_.back() += ", took over";
+        return true;
+    }
+
+    void noMeasure(GridMethod method, double budgetSeconds, double spent) {
+        pilots_.push_back(std::string(gridMethodName(method)) + " none within " + formatDuration(spent));
+        pending_.push_back({method, budgetSeconds});
+    }
+
+    // "started with ir; pilots (...): path 8 (28), took over, ...; not measured: ...; ran path; ..."
+    std::string line(GridMethod running) const {
+        std::string s = "started with " + std::string(gridMethodName(first_));
+        if (!pilots_.empty()) {
+            s += "; pilots (projected seconds to the target, the running method's in brackets):";
+            for (size_t i = 0; i < pilots_.size(); ++i) s += (i ? ", " : " ") + pilots_[i];
+        }
+        std::vector<GridMethod> unmeasured;
+        for (const Pending& p : pending_)
+            if (std::ranges::find(unmeasured, p.method) == unmeasured.end()) unmeasured.push_back(p.method);
+        if (!unmeasured.empty()) {
+            s += "; not measured:";
+            for (size_t i = 0; i < unmeasured.size(); ++i) s += std::string(i ? ", " : " ") + gridMethodName(unmeasured[i]);
+        }
+        return s + "; ran " + gridMethodName(running) + "; pilots took " + formatDuration(pilotSeconds_);
+    }
+
+    const RenderScene& scene_;
+    const std::vector<V3d>& points_;
+    const V3d normal_;
+    const GridSettings& settings_;
+    TaskContext& ctx_;
+    const std::function<void(const GridResult&)>& onPass_;
+    const Clock::time_point begin_ = Clock::now();
+    const double limit_;  // seconds (infinite: none)
+    GridMethod first_;
+    std::vector<Pending> pending_;     // the methods not yet measured, in order
+    std::vector<std::string> pilots_;  // what each pilot measured, in order
+    double pilotSeconds_ = 0;          // the pilots' own time, up to their decisions
+    int pilotCount_ = 0;
+};
 
 }  // namespace
 
-GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
-                                const GridSettings& settings, bool litThroughGlass, TaskContext& ctx) {
-    const auto start = std::chrono::steady_clock::now();
-    std::vector<GridMethod> alive = litThroughGlass ? std::vector{GridMethod::Bdpt, GridMethod::Mlt, GridMethod::Cmlt}
-                                                    : std::vector{GridMethod::Path, GridMethod::Vpl, GridMethod::Bdpt,
-                                                                  GridMethod::Mir, GridMethod::Mlt, GridMethod::Cmlt};
-    std::vector<double> measured(alive.size(), 0.0);
-    const std::vector<GridMethod> all = alive;
-    double round = settings.timeLimitSeconds > 0 ? std::max(0.1, 0.02 * settings.timeLimitSeconds) : 0.2;
-    GridAutoChoice choice;
-    choice.method = alive.front();
-    for (int r = 0; r < 4 && alive.size() > 1 && !ctx.isCancelled(); ++r, round *= 2) {
-        std::vector<double> eff;
-        for (GridMethod m : alive) {
-            GridSettings pilot = settings;
-            pilot.autoMethod = false;
-            pilot.method = m;
-            pilot.timeLimitSeconds = round;
-            pilot.seed = settings.seed + 0x70696c6f + uint64_t(r);
-            GridResult result = computeGridIlluminance(scene, points, normal, pilot, ctx);
-            eff.push_back(efficiency(result));
-            measured[size_t(std::ranges::find(all, m) - all.begin())] = eff.back();
-            if (ctx.isCancelled()) return {GridMethod::Path, {}, "", 0};
-            if (result.converged) {
-                choice.method = m;
-                choice.finished = std::move(result);
-                break;
-            }
-        }
-        if (choice.finished) break;
-        const double best = *std::ranges::max_element(eff);
-        // The next round runs the survivors best first: the leader is the likeliest to reach the
-        // target within its pilot, which then ends the choice before the others' rounds.
-        std::vector<size_t> order;
-        for (size_t i = 0; i < alive.size(); ++i)
-            if (eff[i] >= 0.25 * best && best > 0) order.push_back(i);
-        std::ranges::stable_sort(order, [&](size_t a, size_t b) { return eff[a] > eff[b]; });
-        choice.method = alive[size_t(std::ranges::max_element(eff) - eff.begin())];
-        if (order.empty()) continue;
-        std::vector<GridMethod> next;
-        for (size_t i : order) next.push_back(alive[i]);
-        alive = next;
-    }
-    choice.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double best = *std::ranges::max_element(measured);
-    choice.measured = "pilots (efficiency, best 1):";
-    for (size_t i = 0; i < all.size(); ++i)
-        choice.measured += std::string(i ? ", " : " ") + gridMethodName(all[i]) + " " +
-                           formatNumber(best > 0 ? measured[i] / best : 0.0, 2);
-    choice.measured += "; " + formatDuration(choice.seconds) + "; chose " + gridMethodName(choice.method) +
-                       (choice.finished ? ", whose pilot reached the target" : "");
-    return choice;
+bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft) {
+    if (!std::isfinite(challenger.needsSeconds)) return false;
+    const double challengerRest = std::max(0.0, challenger.needsSeconds - challenger.ranSeconds);
+    const double runningRest = std::max(0.0, running.needsSeconds - running.ranSeconds);
+    if (std::min(challengerRest, runningRest) <= secondsLeft) return challengerRest < kTakeOverRatio * runningRest;
+    // Neither reaches the target within the limit: the variance at the limit, as 1 / time.
+    return challenger.needsSeconds / (challenger.ranSeconds + secondsLeft) <
+           kTakeOverRatio * running.needsSeconds / (running.ranSeconds + secondsLeft);
+}
+
+GridResult computeGridByAuto(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                             const GridSettings& settings, TaskContext& ctx,
+                             const std::function<void(const GridResult&)>& onPass, GridResult start) {
+    return AutoGrid(scene, points, normal, settings, ctx, onPass, start.litThroughGlass > 0).compute();
 }
 
 }  // namespace lucerna

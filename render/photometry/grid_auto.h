@@ -1,36 +1,41 @@
 #pragma once
-// A grid's `--method auto` as a measurement: short pilots of every method that can carry the
-// scene's light to the points (path, vpl, bdpt, mir, mlt, cmlt; bdpt, mlt and cmlt where a lamp
-// reaches a point only through glass), each one's error per unit of time from its own error bars,
-// in rounds of doubling length with the methods far behind left out (successive halving); the
-// grid then runs with the method that measured best. The pilots' work is not reused: a grid's
-// methods keep their samples in different forms (points, replicas), so their results are not
-// combined; the pilots cost their time, which the rounds keep to a share of the budget.
+// A grid's `--method auto` as a measurement (issue 38). The grid starts with the method that is
+// cheapest to start (ir; bdpt where a lamp reaches some point only through glass) and, between its
+// passes, short pilots of the other methods that can carry the scene's light to the points (path,
+// ir, bdpt, mir, mlt, cmlt; bdpt, mlt and cmlt through glass) measure each one's seconds to the
+// grid's error target. A method whose pilot shows it would reach the target clearly sooner than
+// the running one takes over: its pilot goes on to the end, the running one's passes dropped.
+//
+// A pilot costs a share of the running method's projected remaining time: a grid that the first
+// method finishes in a second is not held up by measuring five others, and a slow grid gives long
+// enough pilots for the methods that prepare (mlt's and cmlt's bootstrap counts in the pilot) to
+// show their pace. The methods keep their samples in different forms (points, replicas), so
+// their results are not combined: a pilot that does not take over is lost.
 
 #include "render/photometry/grid_calculation.h"
 
-#include <optional>
-#include <string>
-
 namespace lucerna {
 
-struct GridAutoChoice {
-    GridMethod method = GridMethod::Path;
-    // A pilot that reached the grid's error target: the grid's result (a grid that one method
-    // finishes within a pilot costs no more than that pilot).
-    std::optional<GridResult> finished;
-    // "pilots: path 1, bdpt 0.31, ... (efficiency, best 1), 1.2 s": what was measured.
-    std::string measured;
-    double seconds = 0;  // the pilots' time
+// The grid on `points` by auto; `start` is the grid's empty result (points inside geometry and lit
+// through glass marked). The result's method is the one that ran to the end, its autoMeasured
+// the pilots' line, its seconds the whole time, pilots included. Cancelled: the running method's
+// result so far.
+GridResult computeGridByAuto(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
+                             const GridSettings& settings, TaskContext& ctx,
+                             const std::function<void(const GridResult&)>& onPass, GridResult start);
+
+// Where a method stands: the seconds it needs from its start to reach the grid's target
+// (projected: seconds x (error / target)^2, error bars shrinking as 1 / sqrt(time)), and the
+// seconds it has run.
+struct MethodStand {
+    double needsSeconds, ranSeconds;
 };
 
-// Runs the pilots on `points` (computeGridIlluminance with each method). `litThroughGlass`: a
-// lamp reaches some point only through glass. The pilots' first round is a fiftieth of the time
-// limit (0.2 s where there is none, at least 0.1 s), each next round twice the last; a method
-// stays while its efficiency is at least a quarter of the best's, and the survivors run best
-// first; at most four rounds. A pilot runs to the grid's own error target, and the first that
-// reaches it ends the choice with its result. Cancelled: path.
-GridAutoChoice chooseGridMethod(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,
-                                const GridSettings& settings, bool litThroughGlass, TaskContext& ctx);
+// Whether a piloted method, which goes on from its pilot, replaces the running one, with
+// `secondsLeft` of the time limit (infinite: none): when the rest it needs is under 0.7 times the
+// running one's rest, or, where neither finishes within the limit, when it would end with under
+// 0.7 times the running one's variance. The margin: pilots are short and their error bars noisy,
+// and the running one's passes are lost by the change.
+bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft);
 
 }  // namespace lucerna

@@ -94,22 +94,9 @@ GridResult computeGridIlluminance(const RenderScene& scene, const std::vector<V3
     const std::vector<uint8_t> throughGlass = pointsLitThroughGlass(scene, points, normal);
     for (size_t i = 0; i < points.size(); ++i) start.litThroughGlass += throughGlass[i] && !start.insideGeometry[i];
     GridSettings settings = requested;
-    if (settings.autoMethod && !settings.processes) {
-        GridAutoChoice choice = chooseGridMethod(scene, points, normal, settings, start.litThroughGlass > 0, ctx);
-        if (choice.finished) {
-            // The pilot's result is the grid's: its callers see it as a pass like any other
-            // (the window's grid dock shows only what onPass gave it).
-            choice.finished->autoMeasured = choice.measured;
-            if (onPass) onPass(*choice.finished);
-            return std::move(*choice.finished);
-        }
-        settings.method = choice.method;
-        start.autoMeasured = choice.measured;
-        if (settings.timeLimitSeconds > 0)
-            settings.timeLimitSeconds = std::max(0.05 * settings.timeLimitSeconds, settings.timeLimitSeconds - choice.seconds);
-    } else if (settings.autoMethod) {
-        settings.method = start.litThroughGlass > 0 ? GridMethod::Bdpt : GridMethod::Path;
-    }
+    if (settings.autoMethod && !settings.processes)
+        return computeGridByAuto(scene, points, normal, settings, ctx, onPass, std::move(start));
+    if (settings.autoMethod) settings.method = start.litThroughGlass > 0 ? GridMethod::Bdpt : GridMethod::Path;
     start.method = settings.method;
     start.errorBarUnknown = start.litThroughGlass > 0 && !carriesLightThroughGlass(settings.method);
     if (settings.method == GridMethod::Preview)

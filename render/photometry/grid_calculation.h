@@ -48,9 +48,10 @@ enum class GridQuantity { Planar, Cylindrical };
 struct GridSettings {
     GridMethod method = GridMethod::Path;
     GridQuantity quantity = GridQuantity::Planar;
-    // Auto: the method measured best on the points in short pilots (grid_auto.h), among those
-    // that carry light through glass where a lamp reaches some point only through it
-    // (grid_diagnosis.h); in a distributed grid, where the processes must agree without
+    // Auto: the cheapest method to start, replaced by one that short pilots between its passes
+    // measure to be clearly faster on the points (grid_auto.h), among those that carry light
+    // through glass where a lamp reaches some point only through it (grid_diagnosis.h); in a
+    // distributed grid, where the processes must agree without
     // measuring alike, bdpt when a lamp reaches a point only through glass, else path. The time
     // limit covers the pilots. `method` is then ignored.
     bool autoMethod = false;
@@ -87,7 +88,7 @@ struct GridResult {
     double maxRelativeError = 0;     // max over points of errorLux / max(lux, Eavg / 1000) (0 / 0: 0), points inside geometry left out
     bool converged = false;          // every point within the target
     GridMethod method = GridMethod::Path;  // the method used (auto's choice)
-    // auto: what its pilots measured and chose (grid_auto.h), one line; empty otherwise.
+    // auto: what its pilots measured and which method ran (grid_auto.h), one line; empty otherwise.
     std::string autoMeasured;
     // Per point, 1 when inside closed geometry (grid_diagnosis.h): left out of the figures and of
     // the convergence test. Empty when nothing was checked.

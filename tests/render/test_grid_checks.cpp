@@ -166,16 +166,17 @@ private slots:
 
         const Run bare = runGrid(QStringList{open} + kPaneGrid + QStringList{"--method", "auto"});
         QCOMPARE(bare.exitCode, 0);
-        // auto measures (render/photometry/grid_auto.h): pilots of every method, then the best.
-        QVERIFY2(bare.out.contains(" (auto)") && bare.out.contains("auto: pilots (efficiency, best 1): path ") &&
+        // auto measures (render/photometry/grid_auto.h): it starts with ir, the cheapest to
+        // start, and pilots the others while ir's rest is worth sharing.
+        QVERIFY2(bare.out.contains(" (auto)") && bare.out.contains("auto: started with ir;") &&
                      !bare.out.contains("glass"),
                  qPrintable(bare.out));
 
         // Through glass only the methods that carry a lamp's light through it are piloted.
         const Run chosen = runGrid(QStringList{glass} + kPaneGrid + QStringList{"--method", "auto"});
         QCOMPARE(chosen.exitCode, 0);
-        const QString pilots = chosen.out.section("auto: pilots", 1, 1).section('\n', 0, 0);
-        QVERIFY2(pilots.startsWith(" (efficiency, best 1): bdpt ") && !pilots.contains("path") &&
+        const QString pilots = chosen.out.section("auto: ", 1, 1).section('\n', 0, 0);
+        QVERIFY2(pilots.startsWith("started with bdpt;") && !pilots.contains("path") && !pilots.contains(" ir") &&
                      !chosen.out.contains("cannot carry"),
                  qPrintable(chosen.out));
 
@@ -219,16 +220,17 @@ private slots:
         QVERIFY(viaPath.errorBarUnknown);
         QCOMPARE(gridStatistics(viaPath.lux).average, 0.0);
 
-        // A pilot that reaches the grid's target ends the choice with its result, which the
-        // callers see as a pass (the window's dock shows only those).
+        // The callers see auto's result as its last pass, with the line of what was measured
+        // (the window's dock shows only the passes).
         settings.autoMethod = true;
         settings.targetRelativeError = 0.1;
         std::optional<GridResult> lastPass;
         const GridResult early = compute(lampOverPaneJson(false), settings, [&](const GridResult& r) { lastPass = r; });
-        QVERIFY2(early.converged && early.autoMeasured.find("whose pilot reached the target") != std::string::npos,
-                 early.autoMeasured.c_str());
+        QVERIFY2(early.converged && early.autoMeasured.starts_with("started with ir;"), early.autoMeasured.c_str());
         QVERIFY(lastPass);
         QCOMPARE(lastPass->lux, early.lux);
+        QCOMPARE(lastPass->autoMeasured, early.autoMeasured);
+        QCOMPARE(lastPass->method, early.method);
     }
 };
 

@@ -382,6 +382,7 @@ void GridPanel::showFigures() {
     }
     if (s.excluded > 0) lines << text(excludedPointsLine(s, shown_->lux.size(), dfPerLux_.has_value()));
     lines << tr("method %1").arg(QString::fromLatin1(gridMethodName(shown_->method)));
+    if (!shown_->autoMeasured.empty()) lines.back() += tr(" (auto: %1)").arg(text(shown_->autoMeasured));
     lines << text(gridErrorLines(*shown_, s.counted));
     figures_->setText(lines.join('\n'));
 }
