@@ -37,6 +37,11 @@ struct RenderSettings {
     // tracing backends take their render scene from here, one per way of sampling lights, so
     // that they share one BVH and one set of light tables. nullptr: each builds its own.
     std::shared_ptr<RenderSceneCache> sharedScenes;
+    // The window: a backend of several methods (auto) prepares each just before its first pass,
+    // so that the first frame comes after one method's preparation. Otherwise all are prepared
+    // in prepare(), so that `seconds` (and a benchmark's clock) counts passes only, as for a
+    // single method.
+    bool firstFrameSoon = false;
 };
 
 class Backend {

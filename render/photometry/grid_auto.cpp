@@ -19,13 +19,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 // A pilot lasts this share of the running method's projected rest, and all pilots together take
 // at most the larger share of its projected total; shorter than the shortest, a pilot is not
-// worth running (its method would barely start). A method that gave no measure in its pilot
+// worth running (its method would barely start: path and ir start at once, the replicas' methods
+// prepare each replica first). A method that gave no measure in its pilot
 // (still preparing at the deadline) is tried again with a pilot four times as long, when the
 // running method's rest allows one. A pilot's deadline (preparation included) is its length
 // times the overrun, plus the grace.
 constexpr double kPilotShare = 0.05;
 constexpr double kPilotsShare = 0.1;
 constexpr double kShortestPilotSeconds = 0.05;
+constexpr double kShortestPointPilotSeconds = 0.01;  // path, ir
 constexpr double kRetryFactor = 4;
 constexpr double kPilotOverrun = 1.5;
 constexpr double kPilotGraceSeconds = 0.02;
@@ -161,8 +163,10 @@ private:
     std::optional<GridMethod> nextPilot(double ran, double needs) {
         const double b = budget(ran, needs);
         if (ran < b) return std::nullopt;
-        const auto next = std::ranges::find_if(
-            pending_, [&](const Pending& p) { return b >= std::max(kShortestPilotSeconds, kRetryFactor * p.triedSeconds); });
+        const auto next = std::ranges::find_if(pending_, [&](const Pending& p) {
+            const bool byPoints = p.method == GridMethod::Path || p.method == GridMethod::Vpl;
+            return b >= std::max(byPoints ? kShortestPointPilotSeconds : kShortestPilotSeconds, kRetryFactor * p.triedSeconds);
+        });
         if (next == pending_.end()) return std::nullopt;
         const GridMethod m = next->method;
         pending_.erase(next);

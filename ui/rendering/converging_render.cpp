@@ -127,6 +127,7 @@ void ConvergingRender::relaunch() {
     weights_.assign(groups_.size(), Rgb(1, 1, 1));
     RenderSettings settings;
     settings.seed = 1;
+    settings.firstFrameSoon = true;
     job_ = tasks_.submit([scene = scene_, settings, name = inUse_, make = info->make, layered = lightLayers_,
                           latest = latest_, paused = paused_, gate = gate_.counter()](TaskContext& ctx) {
         PassLoopOptions loop;

@@ -53,7 +53,8 @@ struct Measures {
 class MeasuredAutoBackend : public Backend {
 public:
     MeasuredAutoBackend(SceneSnapshot scene, const RenderSettings& settings)
-        : auto_(MeasuredAutoSettings::forScene(*scene, settings)), start_(std::chrono::steady_clock::now()) {
+        : auto_(MeasuredAutoSettings::forScene(*scene, settings)), firstFrameSoon_(settings.firstFrameSoon),
+          start_(std::chrono::steady_clock::now()) {
         RenderSettings each = settings;
         if (!each.sharedScenes) each.sharedScenes = std::make_shared<RenderSceneCache>();
         if (auto_.cost == AutoCost::Rays && !each.rayRecorder) {
@@ -72,12 +73,15 @@ public:
         }
     }
 
-    // Only the first method is prepared here; each other one before its first pass, so that the
-    // first frame comes after one method's preparation, not six (the office floor's first frame
-    // in the window: 20 s, most of it MLT's and CMLT's bootstrap and the VPL sets; issue 40).
-    // Preparing is not counted in a method's cost, as when all were prepared first.
+    // In the window (firstFrameSoon) only the first method is prepared here, each other one before
+    // its first pass, so that the first frame comes after one method's preparation, not six (the
+    // office floor's first frame in the window: 20 s, most of it MLT's and CMLT's bootstrap and
+    // the VPL sets; issue 40); elsewhere all are, so that a time budget counts passes only, as
+    // for a single method. Preparing is counted in no method's cost.
     void prepare(TaskContext& ctx) override {
-        if (methods_.empty() || !prepareMethod(methods_[0], ctx)) return;  // the film stays empty (0 x 0)
+        if (methods_.empty()) return;  // the film stays empty (0 x 0)
+        for (size_t k = 0; k < (firstFrameSoon_ ? 1 : methods_.size()); ++k)
+            if (!prepareMethod(methods_[k], ctx)) return;
         const Film& f = methods_[0].replicas[0]->film();
         film_ = std::make_unique<Film>(f.width(), f.height());
     }
@@ -384,6 +388,7 @@ private:
     }
 
     MeasuredAutoSettings auto_;
+    bool firstFrameSoon_;
     std::chrono::steady_clock::time_point start_;
     std::unique_ptr<RayRecorder> rays_;
     RayRecorder* recorder_ = nullptr;
