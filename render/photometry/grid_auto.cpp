@@ -43,12 +43,14 @@ std::vector<GridMethod> candidates(bool litThroughGlass) {
     return {GridMethod::Vpl, GridMethod::Path, GridMethod::Bdpt, GridMethod::Mir, GridMethod::Mlt, GridMethod::Cmlt};
 }
 
+// Path and ir estimate each point pass by pass; the other methods render replicas.
+bool estimatesPoints(GridMethod m) { return m == GridMethod::Path || m == GridMethod::Vpl; }
+
 // A result's projected seconds to the target from its method's start, `ran` seconds of its own
 // so far; infinite while its error bars are not to be trusted (path and ir before minPasses
 // passes, the replicas' methods before their first).
 double projectedSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {
-    const bool byPasses = method == GridMethod::Path || method == GridMethod::Vpl;
-    if (r.passes < (byPasses ? std::max(2, settings.minPasses) : 1) || !std::isfinite(r.maxRelativeError) ||
+    if (r.passes < (estimatesPoints(method) ? std::max(2, settings.minPasses) : 1) || !std::isfinite(r.maxRelativeError) ||
         !(ran > 0) || !(settings.targetRelativeError > 0))
         return kInfinity;
     const double ratio = r.maxRelativeError / settings.targetRelativeError;
@@ -164,8 +166,7 @@ private:
         const double b = budget(ran, needs);
         if (ran < b) return std::nullopt;
         const auto next = std::ranges::find_if(pending_, [&](const Pending& p) {
-            const bool byPoints = p.method == GridMethod::Path || p.method == GridMethod::Vpl;
-            return b >= std::max(byPoints ? kShortestPointPilotSeconds : kShortestPilotSeconds, kRetryFactor * p.triedSeconds);
+            return b >= std::max(estimatesPoints(p.method) ? kShortestPointPilotSeconds : kShortestPilotSeconds, kRetryFactor * p.triedSeconds);
         });
         if (next == pending_.end()) return std::nullopt;
         const GridMethod m = next->method;

@@ -5,6 +5,7 @@
 #include "core/image/image_metrics.h"
 #include "core/mesh/mesh_file.h"
 #include "core/scene/scene_change.h"
+#include "core/sub_task.h"
 #include "core/task_system.h"
 
 #include <QFile>
@@ -12,6 +13,7 @@
 #include <QtTest>
 
 #include <atomic>
+#include <limits>
 #include <thread>
 
 using namespace lucerna;
@@ -27,6 +29,7 @@ private slots:
     void taskRunsOffTheCallingThread();
     void taskCancellationStopsParallelLoop();
     void taskExceptionIsKept();
+    void subTaskEndsAtItsDeadlineOrTheJobs();
     void latestKeepsNewest();
     void plyFilesKeepEveryTriangle();
     void daylightChangesAreLightChanges();
@@ -162,6 +165,37 @@ void TestCore::taskExceptionIsKept() {
     auto h = tasks.submit([](TaskContext&) { throw std::runtime_error("boom"); });
     h->wait();
     QVERIFY_THROWS_EXCEPTION(std::runtime_error, h->rethrowIfFailed());
+}
+
+// A sub-task (a grid auto's pilot) is cancelled at its deadline, by its own cancel() or when the
+// job is, and never cancels the job; a deadline moved to infinity holds.
+void TestCore::subTaskEndsAtItsDeadlineOrTheJobs() {
+    const auto waitCancelled = [](const TaskContext& ctx, double seconds) {
+        const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (!ctx.isCancelled() && std::chrono::steady_clock::now() < until)
+            std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        return ctx.isCancelled();
+    };
+    CancellationToken jobToken;
+    const TaskContext job(jobToken);
+    {
+        SubTask part(job, 0.05);
+        QVERIFY(!part.context().isCancelled());
+        QVERIFY(waitCancelled(part.context(), 5));
+        QVERIFY(!job.isCancelled());
+    }
+    {
+        SubTask part(job, 0.05);
+        part.setDeadline(std::numeric_limits<double>::infinity());
+        QVERIFY(!waitCancelled(part.context(), 0.2));
+        part.cancel();
+        QVERIFY(part.context().isCancelled() && !job.isCancelled());
+    }
+    {
+        SubTask part(job, std::numeric_limits<double>::infinity());
+        jobToken.cancel();
+        QVERIFY(waitCancelled(part.context(), 5));
+    }
 }
 
 void TestCore::latestKeepsNewest() {
