@@ -35,7 +35,7 @@ constexpr double kPilotGraceSeconds = 0.02;
 constexpr double kTakeOverRatio = 0.7;
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-std::string seconds(double s) { return std::isfinite(s) ? formatNumber(s, 2) : "-"; }
+std::string secondsText(double s) { return std::isfinite(s) ? formatNumber(s, 2) : "-"; }
 
 // The methods auto may run, the cheapest to start first (the first runs from the start).
 std::vector<GridMethod> candidates(bool litThroughGlass) {
@@ -144,8 +144,9 @@ private:
         });
         if (overtaken) return overtaken;
         if (piloting && !ctx_.isCancelled()) {  // cut at its deadline, still preparing
-            pilotSeconds_ += secondsSince(start);
-            noMeasure(method, opponent->budgetSeconds, secondsSince(start));
+            const double spent = secondsSince(start);
+            pilotSeconds_ += spent;
+            noMeasure(method, opponent->budgetSeconds, spent);
         }
         if (piloting || lost) return std::nullopt;
         last.method = method;
@@ -192,7 +193,7 @@ private:
         const History& h = *o.history;
         const auto then = std::ranges::find_if(h, [&](const auto& e) { return e.first >= pilot.seconds; });
         const double needs = pilotNeeds * o.needsSeconds / (then != h.end() ? then->second : h.back().second);
-        pilots_.push_back(name + " " + seconds(needs) + " (" + seconds(o.needsSeconds) + ")");
+        pilots_.push_back(name + " " + secondsText(needs) + " (" + secondsText(o.needsSeconds) + ")");
         if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_)))
             return false;
         pilots_.back() += ", took over";
@@ -211,12 +212,9 @@ private:
             s += "; pilots (projected seconds to the target, the running method's in brackets):";
             for (size_t i = 0; i < pilots_.size(); ++i) s += (i ? ", " : " ") + pilots_[i];
         }
-        std::vector<GridMethod> unmeasured;
-        for (const Pending& p : pending_)
-            if (std::ranges::find(unmeasured, p.method) == unmeasured.end()) unmeasured.push_back(p.method);
-        if (!unmeasured.empty()) {
+        if (!pending_.empty()) {
             s += "; not measured:";
-            for (size_t i = 0; i < unmeasured.size(); ++i) s += std::string(i ? ", " : " ") + gridMethodName(unmeasured[i]);
+            for (size_t i = 0; i < pending_.size(); ++i) s += std::string(i ? ", " : " ") + gridMethodName(pending_[i].method);
         }
         return s + "; ran " + gridMethodName(running) + "; pilots took " + formatDuration(pilotSeconds_);
     }
@@ -230,7 +228,9 @@ private:
     const Clock::time_point begin_ = Clock::now();
     const double limit_;  // seconds (infinite: none)
     GridMethod first_;
-    std::vector<Pending> pending_;     // the methods not yet measured, in order
+    // The methods not yet measured, in order; each is in it at most once (a pilot takes its method
+    // off, one that measured nothing puts it back).
+    std::vector<Pending> pending_;
     std::vector<std::string> pilots_;  // what each pilot measured, in order
     double pilotSeconds_ = 0;          // the pilots' own time, up to their decisions
     int pilotCount_ = 0;

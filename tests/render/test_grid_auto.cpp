@@ -2,9 +2,9 @@
 // over from the running one, that a method far ahead does, and that a grid the first method
 // finishes quickly is not held up by pilots. Through the command line.
 
+#include "process_run.h"
 #include "render/photometry/grid_auto.h"
 
-#include <QProcess>
 #include <QRegularExpression>
 #include <QTest>
 
@@ -14,11 +14,11 @@
 using namespace lucerna;
 
 namespace {
+// `lucerna grid SCENE ARGS` on a bundled scene: what it printed, or why it failed.
 QString runGrid(const QString& scene, const QStringList& args) {
-    QProcess p;
-    p.start(LUCERNA_BINARY, QStringList{"grid", QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/") + scene} + args);
-    if (!p.waitForFinished(60000) || p.exitCode() != 0) return "failed: " + QString::fromUtf8(p.readAllStandardError());
-    return QString::fromUtf8(p.readAllStandardOutput());
+    const lucerna::test::Run r =
+        lucerna::test::runLucerna(QStringList{"grid", QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/") + scene} + args, 60000);
+    return r.exitCode == 0 ? r.out : "failed: " + r.err;
 }
 }  // namespace
 
