@@ -5,6 +5,8 @@
 # FAM: bench_make_scenes' folder (the closed spheres and their references); DAYLIT:
 # make_daylit_family.py's folder; E_REF: room (e)'s reference (R58). Then:
 #   python3 bench/auto_seeds_table.py OUT
+# With SINGLES=EARLIER_OUT in the environment it runs auto only and takes the single methods' rows
+# from an earlier run of the same TIME and seeds (to measure a change to auto against them).
 build=$1 fam=$2 daylit=$3 eref=$4 out=$5 time=${6:-30}
 shift 6 2>/dev/null
 seeds=${*:-1 2 3 4}
@@ -23,8 +25,14 @@ for seed in $seeds; do
         IFS=: read name scene ref w h best <<<"$line"
         size=""; [ -n "$w" ] && size="--width $w --height $h"
         dir=$out/$name-s$seed; mkdir -p "$dir"
+        backends="auto,$best"; [ -n "$SINGLES" ] && backends=auto
         "$build/app/lucerna" bench "$scene" --reference "$ref" --time "$time" --seed "$seed" $size \
-            --backends "auto,$best" --out "$dir" > "$dir/bench.log" 2>&1
+            --backends "$backends" --out "$dir" > "$dir/bench.log" 2>&1
+        if [ -n "$SINGLES" ]; then
+            earlier=$SINGLES/$name-s$seed/bench.csv
+            { head -1 "$earlier"; grep -v '^auto,' "$earlier" | tail -n +2; tail -n +2 "$dir/bench.csv"; } > "$dir/merged.csv"
+            mv "$dir/merged.csv" "$dir/bench.csv"
+        fi
         echo "$name seed $seed: $(grep -E '^(auto|path|bdpt|ir|mir|mlt|cmlt) ' "$dir/bench.log" | awk '{print $1, $5}' | tr '\n' ' ')"
     done
 done

@@ -1,6 +1,7 @@
 // `--backend auto` as a measurement (render/engine/measured_auto/): the measures of constructed
 // films (weights that follow each method's noise tile by tile, a chain's understated halves, a
-// method that has not seen a rare event), where the time goes on a scene one method wins by far,
+// method that has not seen a rare event, the allocation's relmse of each method as SPEC weighs
+// it), where the time goes on a scene one method wins by far,
 // what it says it decided, and that a render with a seed is reproducible. Its consistency on the
 // closed forms is in test_closed_form (its "auto" rows).
 
@@ -57,6 +58,7 @@ private slots:
     void weightsFollowEachMethodsNoise();
     void chainHalvesAreInflated();
     void rareEventTakesNoWeight();
+    void allocationKeepsEachRelmse();
     void candidatesAreConsistent();
     void bestByFarTakesTheTime();
     void saysWhatItDecided();
@@ -119,6 +121,36 @@ void TestMeasuredAuto::rareEventTakesNoWeight() {
         QCOMPARE(w[2][size_t(t)], 0.0);
         QVERIFY(w[0][size_t(t)] > w[1][size_t(t)]);  // a is the less noisy
     }
+}
+
+void TestMeasuredAuto::allocationKeepsEachRelmse() {
+    // Half the tiles bright (1), half dark (0.01). Two methods of equal relmse by SPEC's weighting
+    // 1 / (m^2 + 0.01): one with its error in the dark tiles, one in the bright. The allocation
+    // must see them as equal (the weights' spreading made the first look 1.7 times worse on the
+    // deep-plan daylit room), and pool each one's tiles halfway to its mean.
+    const size_t n = 8;
+    std::vector<double> means(n);
+    for (size_t t = 0; t < n; ++t) means[t] = t < n / 2 ? 1.0 : 0.01;
+    const auto relative = [&](size_t t) { return means[t] * means[t] + 0.01; };
+    TileStats dark{means, std::vector(n, 0.0), std::vector(n, 0.0)}, bright = dark;
+    for (size_t t = 0; t < n; ++t) (t < n / 2 ? bright : dark).variance[t] = 0.02 * relative(t);
+    const std::vector<const TileStats*> stats{&dark, &bright};
+    const auto measured = measuredSquaredErrors(stats);
+    const auto relmse = [&](const std::vector<double>& e) {
+        double sum = 0;
+        for (size_t t = 0; t < n; ++t) sum += e[t] / relative(t) / double(n);
+        return sum;
+    };
+    for (size_t k = 0; k < 2; ++k)
+        for (size_t t = 0; t < n; ++t) QCOMPARE(measured[k][t], stats[k]->variance[t]);  // the means agree: no distance
+    const auto pooled = pooledTowardMean(measured, means);
+    for (size_t k = 0; k < 2; ++k) {
+        QCOMPARE_LE(std::abs(relmse(pooled[k]) - 0.01), 1e-12);
+        for (size_t t = 0; t < n; ++t)  // halfway between 0 or 0.02 and the mean 0.01
+            QCOMPARE_LE(std::abs(pooled[k][t] / relative(t) - (stats[k]->variance[t] > 0 ? 0.015 : 0.005)), 1e-12);
+    }
+    const auto gains = marginalGains(pooled, std::vector{1.0, 1.0}, means);
+    QCOMPARE_LE(std::abs(gains[0] / gains[1] - 1.0), 1e-9);
 }
 
 void TestMeasuredAuto::candidatesAreConsistent() {

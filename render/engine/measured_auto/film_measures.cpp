@@ -120,17 +120,13 @@ std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
     return r;
 }
 
-std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods,
-                                                       std::span<const double> floors) {
+std::vector<std::vector<double>> measuredSquaredErrors(std::span<const TileStats* const> methods) {
     const size_t k = methods.size();
     if (k == 0) return {};
     const size_t n = methods[0]->mean.size();
-    const std::vector<double> bright = squaredBrightness(methods);
-
     std::vector<std::vector<double>> e(k, std::vector<double>(n, 0.0));
     std::vector<double> distances;
-    for (size_t i = 0; i < k; ++i) {
-        std::vector<double> relative(n);
+    for (size_t i = 0; i < k; ++i)
         for (size_t t = 0; t < n; ++t) {
             distances.clear();
             for (size_t j = 0; j < k; ++j) {
@@ -139,10 +135,20 @@ std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats
                 distances.push_back(std::max(0.0, d * d - 3.0 * (methods[i]->meanVariance[t] + methods[j]->meanVariance[t])));
             }
             e[i][t] = methods[i]->variance[t] + lowerMedian(distances);
-            relative[t] = e[i][t] / bright[t];
         }
+    return e;
+}
+
+std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods,
+                                                       std::span<const double> floors) {
+    std::vector<std::vector<double>> e = measuredSquaredErrors(methods);
+    if (e.empty()) return e;
+    const std::vector<double> bright = squaredBrightness(methods);
+    const size_t n = bright.size();
+    for (size_t i = 0; i < e.size(); ++i) {
+        std::vector<double> relative(n);
         double mean = 0;
-        for (double r : relative) mean += r / double(n);
+        for (size_t t = 0; t < n; ++t) relative[t] = e[i][t] / bright[t], mean += relative[t] / double(n);
         const double floor = std::max(0.25 * lowerMedian(relative), floors.empty() ? 0.0 : floors[i]);
         for (size_t t = 0; t < n; ++t)
             e[i][t] = std::max(std::sqrt(relative[t] * mean), floor) * bright[t];
@@ -200,6 +206,17 @@ Image combineImages(std::span<const Image* const> images, const std::vector<std:
         }
     }
     return out;
+}
+
+std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<double>>& errors,
+                                                  std::span<const double> tileMeans) {
+    std::vector<std::vector<double>> pooled = errors;
+    for (auto& e : pooled) {
+        double mean = 0;
+        for (size_t t = 0; t < e.size(); ++t) mean += e[t] / (tileMeans[t] * tileMeans[t] + 0.01) / double(e.size());
+        for (size_t t = 0; t < e.size(); ++t) e[t] = 0.5 * (e[t] + mean * (tileMeans[t] * tileMeans[t] + 0.01));
+    }
+    return pooled;
 }
 
 std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs,

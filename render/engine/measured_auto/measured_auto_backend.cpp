@@ -215,7 +215,9 @@ private:
         // Each method's image-wide error from the spread of its replicas (pair), relative.
         std::vector<const TileStats*> pair;
         for (const MethodMeasure& x : m) pair.push_back(&x.pair);
-        const auto pairErrors = expectedSquaredErrors(pair);
+        // The allocation weighs each method's relmse as measured (not spread over the tiles as the
+        // weights' errors are: film_measures.h).
+        const auto pairErrors = measuredSquaredErrors(pair);
         allocate(measured, m, pairErrors, tiles);
         weigh(measured, m, relativeErrors(pair, pairErrors), tiles);
         compose();
@@ -231,7 +233,8 @@ private:
             costs.push_back(methods_[measured[i]].cost);
             for (size_t t = 0; t < tileMean.size(); ++t) tileMean[t] += weights[i][t] * m[i].pair.mean[t];
         }
-        const std::vector<double> gains = marginalGains(errors, costs, tileMean);
+        const auto pooled = pooledTowardMean(errors, tileMean);
+        const std::vector<double> gains = marginalGains(pooled, costs, tileMean);
         measures_ = Measures{};
         measures_.gain.assign(methods_.size(), 0.0);
         measures_.efficiency.assign(methods_.size(), 0.0);
@@ -241,7 +244,7 @@ private:
         measures_.taken = true;
         for (size_t i = 0; i < m.size(); ++i) {
             double relmse = 0;
-            for (size_t t = 0; t < tileMean.size(); ++t) relmse += errors[i][t] / (tileMean[t] * tileMean[t] + 0.01);
+            for (size_t t = 0; t < tileMean.size(); ++t) relmse += pooled[i][t] / (tileMean[t] * tileMean[t] + 0.01);
             measures_.gain[measured[i]] = gains[i];
             measures_.efficiency[measured[i]] = relmse > 0 && costs[i] > 0 ? 1.0 / (relmse * costs[i]) : 0.0;
         }
