@@ -37,7 +37,6 @@ private slots:
     void badFiles();
 
 private:
-    QString gltfPath();
     QTemporaryDir dir_;
 };
 
@@ -186,12 +185,6 @@ void TestModelImport::initTestCase() {
     QVERIFY(dir_.isValid());
 }
 
-QString TestModelImport::gltfPath() {
-    const QString path = dir_.filePath("model.gltf");
-    if (!QFile::exists(path)) writeFile(path, gltfText());
-    return path;
-}
-
 void TestModelImport::objWithMtl() {
     writeFile(dir_.filePath("two.obj"), kObj);
     writeFile(dir_.filePath("two.mtl"), kMtl);
@@ -243,7 +236,7 @@ void TestModelImport::objWithMtl() {
 void TestModelImport::gltfMaterialsLightsAndTransforms() {
     ImportOptions options;
     options.sceneMetersPerUnit = 0.001;
-    const ModelImport m = importModel(gltfPath().toStdString(), options);
+    const ModelImport m = importModel(gltfModelPath(dir_).toStdString(), options);
     const QString report = joined(m.report);
     QCOMPARE(m.objects.size(), size_t(5));
     QCOMPARE(m.triangles, size_t(10));

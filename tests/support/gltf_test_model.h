@@ -2,7 +2,11 @@
 // The glTF 2.0 model the import tests write (test_model_import, test_model_import_window): five
 // squares with the five SPEC materials, a point light and a spot, a camera.
 
+#include "import_test_helpers.h"
+
 #include <QByteArray>
+#include <QFile>
+#include <QTemporaryDir>
 
 #include <cstdint>
 
@@ -61,6 +65,13 @@ inline QByteArray gltfText() {
     {"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]},
     {"bufferView": 1, "componentType": 5123, "count": 6, "type": "SCALAR"}]
 })";
+}
+
+// The model as `model.gltf` in `dir`, written on the first call: its path.
+inline QString gltfModelPath(const QTemporaryDir& dir) {
+    const QString path = dir.filePath("model.gltf");
+    if (!QFile::exists(path)) writeFile(path, gltfText());
+    return path;
 }
 
 }  // namespace lucerna::test

@@ -32,7 +32,6 @@ private slots:
     void importThroughTheWindow();
 
 private:
-    QString gltfPath();
     QTemporaryDir dir_;
 };
 
@@ -45,16 +44,10 @@ void TestModelImportWindow::initTestCase() {
     QVERIFY(dir_.isValid());
 }
 
-QString TestModelImportWindow::gltfPath() {
-    const QString path = dir_.filePath("model.gltf");
-    if (!QFile::exists(path)) writeFile(path, gltfText());
-    return path;
-}
-
 void TestModelImportWindow::importCommand() {
     const QString out = dir_.filePath("imported.json");
     QProcess p;
-    p.start(LUCERNA_BINARY, {"import", gltfPath(), "-o", out, "--meters-per-unit", "0.001"});
+    p.start(LUCERNA_BINARY, {"import", gltfModelPath(dir_), "-o", out, "--meters-per-unit", "0.001"});
     QVERIFY(p.waitForFinished(60000));
     const QString stdoutText = QString::fromUtf8(p.readAllStandardOutput());
     QVERIFY2(p.exitCode() == 0, qPrintable(QString::fromUtf8(p.readAllStandardError())));
@@ -70,7 +63,7 @@ void TestModelImportWindow::importCommand() {
     // Meshes in PLY files beside the scene, read back as the inline ones, to the float precision
     // that OpenMesh's PLY reader keeps (and the renderer traces in).
     const QString inlineOut = dir_.filePath("imported-inline.json");
-    p.start(LUCERNA_BINARY, {"import", gltfPath(), "-o", inlineOut, "--meters-per-unit", "0.001", "--inline-meshes"});
+    p.start(LUCERNA_BINARY, {"import", gltfModelPath(dir_), "-o", inlineOut, "--meters-per-unit", "0.001", "--inline-meshes"});
     QVERIFY(p.waitForFinished(60000));
     QCOMPARE(p.exitCode(), 0);
     const Scene inlined = loadScene(inlineOut.toStdString());
@@ -134,7 +127,7 @@ void TestModelImportWindow::importThroughTheWindow() {
     QCOMPARE(doc->undoStack()->count(), steps);
     QVERIFY(doc->snapshot() == original);
 
-    QVERIFY2(w.importModelFile(gltfPath()), qPrintable(w.lastError()));
+    QVERIFY2(w.importModelFile(gltfModelPath(dir_)), qPrintable(w.lastError()));
     QCOMPARE(doc->scene().objects.size(), objects + 5);
     QCOMPARE(doc->scene().lights.size(), lights + 2);
     QCOMPARE(doc->scene().materials.size(), materials + 5);
@@ -187,7 +180,7 @@ void TestModelImportWindow::importThroughTheWindow() {
     QCOMPARE(doc->scene().objects.size(), objects + 5);
     QCOMPARE(doc->scene().lights.size(), lights + 2);
     // A second import of the same file gets fresh names (SPEC.md: unique across objects and lights).
-    QVERIFY(w.importModelFile(gltfPath()));
+    QVERIFY(w.importModelFile(gltfModelPath(dir_)));
     std::set<std::string> names;
     for (const Object& o : doc->scene().objects) names.insert(o.name);
     for (const Light& l : doc->scene().lights) names.insert(l.name);

@@ -213,8 +213,8 @@ std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<
     std::vector<std::vector<double>> pooled = errors;
     for (auto& e : pooled) {
         double mean = 0;
-        for (size_t t = 0; t < e.size(); ++t) mean += e[t] / (tileMeans[t] * tileMeans[t] + 0.01) / double(e.size());
-        for (size_t t = 0; t < e.size(); ++t) e[t] = 0.5 * (e[t] + mean * (tileMeans[t] * tileMeans[t] + 0.01));
+        for (size_t t = 0; t < e.size(); ++t) mean += e[t] / relmseDenominator(tileMeans[t]) / double(e.size());
+        for (size_t t = 0; t < e.size(); ++t) e[t] = 0.5 * (e[t] + mean * relmseDenominator(tileMeans[t]));
     }
     return pooled;
 }
@@ -227,7 +227,7 @@ std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors
         double precision = 0;
         for (const auto& e : errors) precision += e[t] > 0 ? 1.0 / e[t] : 0.0;
         if (!(precision > 0)) continue;
-        const double v = 1.0 / precision, relative = 1.0 / (tileMeans[t] * tileMeans[t] + 0.01);
+        const double v = 1.0 / precision, relative = 1.0 / relmseDenominator(tileMeans[t]);
         for (size_t k = 0; k < errors.size(); ++k)
             if (errors[k][t] > 0 && costs[k] > 0) g[k] += v * v / (errors[k][t] * costs[k]) * relative;
     }

@@ -56,6 +56,9 @@ struct MethodMeasure {
 MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const TileGrid& tiles, bool withHalves,
                             double samples0 = 1, double samples1 = 1);
 
+// What SPEC.md's relmse divides a squared error by where the true value is `mean`.
+inline double relmseDenominator(double mean) { return mean * mean + 0.01; }
+
 // Per method and tile, the squared error of one value as measured: its variance plus the squared
 // distance of its tile mean from the other methods' that their variances do not explain (a bias
 // such as the residual of ir's clamp, or a rare event a short run has not seen: path on a

@@ -244,7 +244,7 @@ private:
         measures_.taken = true;
         for (size_t i = 0; i < m.size(); ++i) {
             double relmse = 0;
-            for (size_t t = 0; t < tileMean.size(); ++t) relmse += pooled[i][t] / (tileMean[t] * tileMean[t] + 0.01);
+            for (size_t t = 0; t < tileMean.size(); ++t) relmse += pooled[i][t] / relmseDenominator(tileMean[t]);
             measures_.gain[measured[i]] = gains[i];
             measures_.efficiency[measured[i]] = relmse > 0 && costs[i] > 0 ? 1.0 / (relmse * costs[i]) : 0.0;
         }
