@@ -127,8 +127,14 @@ std::string formatValue(double v) {
 // milliseconds and measures
 // the newest frame once it has passed the next log-spaced time. Each sample carries the frame's
 // own time, so a slow pass shows as a sparser curve, never as a wrong time.
-std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const SceneSnapshot& scene,
-                                const Image& reference, TaskSystem& tasks) {
+// One backend's curve, and what it says of itself at the end (auto: what it measured and decided).
+struct BenchCurve {
+    std::vector<BenchSample> samples;
+    std::string decision;
+};
+
+BenchCurve runOne(const BenchArgs& b, const BenchRun& run, const SceneSnapshot& scene, const Image& reference,
+                  TaskSystem& tasks) {
     RenderSettings settings = b.settings;
     for (const auto& [k, v] : run.options) settings.options[k] = v;
     // Arena slots run from 0 to the arena's concurrency (one more for a master thread).
@@ -174,11 +180,16 @@ std::vector<BenchSample> runOne(const BenchArgs& b, const BenchRun& run, const S
     }
     job->wait();
     job->rethrowIfFailed();
-    if (interrupted()) return samples;
+    if (interrupted()) return {samples, ""};
     // The final frame (published at the end) closes every curve at the budget.
     const auto final = latest.get();
     if (final && final->passes > 0 && (samples.empty() || samples.back().seconds < final->seconds)) measure(*final);
-    return samples;
+    std::string decision;
+    if (final) {
+        const auto it = final->image.attributes.find("lucerna:auto");
+        if (it != final->image.attributes.end()) decision = it->second;
+    }
+    return {samples, decision};
 }
 
 void writeText(const std::string& path, const std::string& text) {
@@ -226,7 +237,7 @@ int benchImpl(const std::vector<std::string>& args) {
     std::printf("%-24s %10s %10s %14s %14s %14s %12s %9s\n", "backend", "seconds", "spp", "rmse", "relmse",
                 "est. relmse", "mean/ref", "Mrays/s");
     for (const BenchRun& run : b.runs) {
-        const std::vector<BenchSample> samples = runOne(b, run, scene, reference, tasks);
+        const auto [samples, decision] = runOne(b, run, scene, reference, tasks);
         if (interrupted()) {
             std::cerr << "bench interrupted; no file written\n";
             return 130;
@@ -238,6 +249,7 @@ int benchImpl(const std::vector<std::string>& args) {
         std::printf("%-24s %10.3f %10.6g %14.6g %14.6g %14s %12.6f %9.3f\n", run.label.c_str(), s.seconds, s.spp,
                     s.rmse, s.relmse, formatValue(s.estimatedRelmse).c_str(),
                     s.meanRef > 0 ? s.meanTest / s.meanRef : NAN, s.seconds > 0 ? s.rays / s.seconds * 1e-6 : 0.0);
+        if (!decision.empty()) std::printf("  %s: %s\n", run.label.c_str(), decision.c_str());
         std::fflush(stdout);
     }
 

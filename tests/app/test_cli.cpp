@@ -375,7 +375,8 @@ void TestCli::benchWritesCsvAndPlot() {
 
 void TestCli::benchTakesAuto() {
     // `auto` as a bench entry: the measured combination, its options any backend's; `auto-rule`:
-    // the backend the rule auto was before it measured picks (said on stdout).
+    // the backend the rule auto was before it measured picks (said on stdout). Under auto's row,
+    // what it measured and decided.
     QTemporaryDir dir;
     const QString ref = dir.filePath("ref.exr");
     QVERIFY(renderReference(ref, 64, 16));
@@ -384,6 +385,7 @@ void TestCli::benchTakesAuto() {
                               "--time", "0.3", "--start", "0.05", "--out", out});
     QVERIFY2(r.exitCode == 0, qPrintable(r.err));
     QVERIFY2(r.out.contains("auto-rule: path: "), qPrintable(r.out));  // the Cornell box: path
+    QVERIFY2(r.out.contains("  auto:light_sampler=power: measured path bdpt ir mir mlt cmlt"), qPrintable(r.out));
     const CsvTable csv = CsvTable::read(out + "/bench.csv");
     QSet<QString> labels;
     for (size_t row = 0; row < csv.rows.size(); ++row) labels.insert(csv.text(row, "backend"));
