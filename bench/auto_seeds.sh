@@ -8,7 +8,7 @@
 # With SINGLES=EARLIER_OUT in the environment it runs auto only and takes the single methods' rows
 # from an earlier run of the same TIME and seeds (to measure a change to auto against them).
 build=$1 fam=$2 daylit=$3 eref=$4 out=$5 time=${6:-30}
-shift 6 2>/dev/null
+shift $(($# < 6 ? $# : 6))
 seeds=${*:-1 2 3 4}
 root=$(cd "$(dirname "$0")/.." && pwd)
 R=$root/resources/scenes
