@@ -13,6 +13,7 @@
 #include "core/image/exr_io.h"
 #include "core/image/image_metrics.h"
 
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <stdexcept>
@@ -24,7 +25,7 @@ using namespace lucerna;
 namespace {
 
 // Per tile of `size` pixels, the sum over its pixels and channels of SPEC's relmse terms,
-// (x - ref)^2 / (ref^2 + 0.01).
+// (x - ref)^2 / (ref^2 + 0.01), non-finite values left out.
 std::vector<double> tileErrors(const Image& test, const Image& ref, int size) {
     const int nx = (ref.width + size - 1) / size, ny = (ref.height + size - 1) / size;
     std::vector<double> e(size_t(nx * ny), 0.0);
@@ -32,7 +33,7 @@ std::vector<double> tileErrors(const Image& test, const Image& ref, int size) {
         for (int x = 0; x < ref.width; ++x)
             for (int c = 0; c < 3; ++c) {
                 const double r = ref.at(x, y)[c], d = double(test.at(x, y)[c]) - r;
-                e[size_t((y / size) * nx + x / size)] += d * d / (r * r + 0.01);
+                if (std::isfinite(d)) e[size_t((y / size) * nx + x / size)] += d * d / (r * r + 0.01);  // as compareImages
             }
     return e;
 }
