@@ -31,6 +31,13 @@ inline void useTestSettings(const char* applicationName) {
 
 inline QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
 
+// Saves what `w` shows as the PNG `name` (in the test's working folder), after the posted events:
+// rows just shown or hidden take their places first.
+inline void screenshot(QWidget& w, const QString& name) {
+    QCoreApplication::processEvents();
+    QVERIFY(w.grab().save(name));
+}
+
 // Triggers the window's action of that object name; fails the test when it is missing or disabled.
 inline void trigger(MainWindow& w, const char* name) {
     auto* action = w.findChild<QAction*>(name);

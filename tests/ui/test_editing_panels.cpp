@@ -94,11 +94,6 @@ V3d specRay(const Camera& c, int x, int y, int W, int H) {
 // The red wall in the Cornell box's view (SPEC.md: on the left), away from its edges.
 Rgbd redWallMean(const Image& image) { return regionMean(image, 0.03, 0.09, 0.3, 0.7); }
 
-void screenshot(QWidget& w, const QString& name) {
-    QCoreApplication::processEvents();
-    QVERIFY(w.grab().save(name));
-}
-
 struct Window {
     explicit Window(const QString& path) : w(path) {
         w.show();

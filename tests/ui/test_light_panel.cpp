@@ -36,11 +36,6 @@ double pointFlux(const Light& l) { return kLumensPerWatt * luminance(l.intensity
 
 bool near(double a, double b, double relative) { return std::abs(a - b) <= relative * std::abs(b); }
 
-void screenshot(QWidget& w, const QString& name) {
-    QCoreApplication::processEvents();
-    QVERIFY(w.grab().save(name));
-}
-
 struct Window {
     explicit Window(const QString& path) : w(path) {
         w.show();

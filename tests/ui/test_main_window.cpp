@@ -78,11 +78,6 @@ double bandMean(const Image& image, int x0, int x1) {
     return sum / (double(x1 - x0) * image.height);
 }
 
-void screenshot(QWidget& w, const QString& name) {
-    // Layouts update on posted events: let rows just shown or hidden take their places first.
-    QCoreApplication::processEvents();
-    QVERIFY(w.grab().save(name));
-}
 }  // namespace
 
 class TestMainWindow : public QObject {

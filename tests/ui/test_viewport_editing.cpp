@@ -104,11 +104,6 @@ double meanAround(const LiveFrame& frame, const Camera& c, const V3d& p, int r) 
     return n ? sum / n : 0;
 }
 
-void screenshot(QWidget& w, const QString& name) {
-    QCoreApplication::processEvents();
-    QVERIFY(w.grab().save(name));
-}
-
 bool near(const V3d& a, const V3d& b, double tolerance) { return (a - b).length() <= tolerance; }
 }  // namespace
 

@@ -60,10 +60,8 @@ QString widths(MainWindow& w) {
 
 bool viewportHasHalf(MainWindow& w) { return w.viewport()->width() >= w.width() / 2; }
 
-void screenshot(QWidget& w, const QString& name) {
-    QCoreApplication::processEvents();
-    w.grab().save(QString("window_files_%1.png").arg(name));
-}
+// The window as window_files_NAME.png.
+void windowShot(QWidget& w, const QString& name) { screenshot(w, QString("window_files_%1.png").arg(name)); }
 
 // The last file dialog the window asked, answered with `answer`.
 struct DialogLog {
@@ -165,7 +163,7 @@ void TestWindowFiles::newSceneAndImportIntoEither() {
     QCOMPARE(fresh.lights.size(), size_t(1));  // the model has none: the new scene's stays
     QCOMPARE_GT(fresh.lights[0].position.y, 0.75);
     QVERIFY(previewOf(w, w.document()->snapshot()));
-    screenshot(w, "import_new_scene");
+    windowShot(w, "import_new_scene");
     // Cancel changes nothing.
     target = MainWindow::ImportTarget::Cancel;
     const SceneSnapshot before = w.document()->snapshot();
@@ -179,7 +177,7 @@ void TestWindowFiles::newSceneAndImportIntoEither() {
     QVERIFY(w.document()->path().empty());
     QVERIFY(!w.document()->isModified());
     QVERIFY(previewOf(w, w.document()->snapshot()));
-    screenshot(w, "new_scene");
+    windowShot(w, "new_scene");
     // A click that places nothing says why: the sky above the floor has no surface.
     QVERIFY(w.viewport()->setTool(Viewport::Tool::PlacePoint));
     const QRectF image = w.viewport()->imageRect();
@@ -305,7 +303,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
     QVERIFY(QTest::qWaitForWindowExposed(&w));
     QTest::qWaitFor([&] { return viewportHasHalf(w); }, 2000);
     QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
-    screenshot(w, "layout_restored");
+    windowShot(w, "layout_restored");
     // View > Reset Layout: docks squeezed again, one floating and one hidden, then the defaults.
     auto* grid = w.findChild<QDockWidget*>("gridDock");
     auto* outliner = w.findChild<QDockWidget*>("outlinerDock");
@@ -318,7 +316,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
     QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
     QVERIFY(!grid->isFloating());
     QVERIFY(w.findChild<QDockWidget*>("propertiesDock")->isVisible());
-    screenshot(w, "layout_reset");
+    windowShot(w, "layout_reset");
 }
 
 void TestWindowFiles::shortcutsFromAnyDock() {
@@ -403,7 +401,7 @@ void TestWindowFiles::lightDragUpdatesThePreviewBeforeRelease() {
     const SceneSnapshot moved = w.document()->snapshot();
     QVERIFY(moved->lights[0].position == during);
     QVERIFY(previewOf(w, moved));
-    screenshot(w, "light_drag_before_release");
+    windowShot(w, "light_drag_before_release");
     // One more step, then the release: one undo step for the whole drag.
     sendMouse(viewport, QEvent::MouseMove, from + QPointF(-70, 40), Qt::NoButton, Qt::LeftButton);
     sendMouse(viewport, QEvent::MouseButtonRelease, from + QPointF(-70, 40), Qt::LeftButton, Qt::NoButton);
