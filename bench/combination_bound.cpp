@@ -12,6 +12,7 @@
 
 #include "core/image/exr_io.h"
 #include "core/image/image_metrics.h"
+#include "render/engine/measured_auto/film_measures.h"
 
 #include <cmath>
 #include <cstdio>
@@ -24,27 +25,26 @@ using namespace lucerna;
 
 namespace {
 
-// Per tile of `size` pixels, the sum over its pixels and channels of SPEC's relmse terms,
-// (x - ref)^2 / (ref^2 + 0.01), non-finite values left out.
-std::vector<double> tileErrors(const Image& test, const Image& ref, int size) {
-    const int nx = (ref.width + size - 1) / size, ny = (ref.height + size - 1) / size;
-    std::vector<double> e(size_t(nx * ny), 0.0);
+// Per tile of auto's grid, the sum over its pixels and channels of SPEC's relmse terms,
+// (x - ref)^2 / (ref^2 + 0.01), non-finite values left out (as compareImages).
+std::vector<double> tileErrors(const Image& test, const Image& ref, const TileGrid& tiles) {
+    if (test.width != ref.width || test.height != ref.height) throw std::runtime_error("an image differs in size from REF");
+    std::vector<double> e(size_t(tiles.count()), 0.0);
     for (int y = 0; y < ref.height; ++y)
         for (int x = 0; x < ref.width; ++x)
             for (int c = 0; c < 3; ++c) {
                 const double r = ref.at(x, y)[c], d = double(test.at(x, y)[c]) - r;
-                if (std::isfinite(d)) e[size_t((y / size) * nx + x / size)] += d * d / (r * r + 0.01);  // as compareImages
+                if (std::isfinite(d)) e[size_t(tiles.of(x, y))] += d * d / relmseDenominator(r);
             }
     return e;
 }
 
-// Each pixel wa * a + (1 - wa) * b, wa the weight of the pixel's tile.
-Image blend(const Image& a, const Image& b, const std::vector<double>& wa, int size) {
-    const int nx = (a.width + size - 1) / size;
+// Each pixel wa * a + (1 - wa) * b, wa the weight of the pixel's tile (constant over the tile).
+Image blend(const Image& a, const Image& b, const std::vector<double>& wa, const TileGrid& tiles) {
     Image out(a.width, a.height);
     for (int y = 0; y < a.height; ++y)
         for (int x = 0; x < a.width; ++x) {
-            const float w = float(wa[size_t((y / size) * nx + x / size)]);
+            const float w = float(wa[size_t(tiles.of(x, y))]);
             out.at(x, y) = a.at(x, y) * w + b.at(x, y) * (1 - w);
         }
     return out;
@@ -61,11 +61,12 @@ int main(int argc, char** argv) {
         const Image ref = readExr(argv[1]);
         const int size = std::stoi(argv[2]);
         if (size < 1) throw std::runtime_error("TILE must be at least 1");
+        const TileGrid grid(ref.width, ref.height, size);
         std::vector<Image> a, b;
         for (int i = 3; i < argc; i += 2) a.push_back(readExr(argv[i])), b.push_back(readExr(argv[i + 1]));
         std::vector<std::vector<double>> ea, eb;
-        for (size_t s = 0; s < a.size(); ++s) ea.push_back(tileErrors(a[s], ref, size)), eb.push_back(tileErrors(b[s], ref, size));
-        const size_t tiles = ea[0].size();
+        for (size_t s = 0; s < a.size(); ++s) ea.push_back(tileErrors(a[s], ref, grid)), eb.push_back(tileErrors(b[s], ref, grid));
+        const size_t tiles = size_t(grid.count());
         double sumA = 0, sumB = 0, sumTiles = 0, sumImage = 0;
         std::printf("%-6s %12s %12s %12s %12s\n", "seed", "A", "B", "per tile", "one weight");
         for (size_t s = 0; s < a.size(); ++s) {
@@ -80,8 +81,8 @@ int main(int argc, char** argv) {
             for (size_t t = 0; t < tiles; ++t)
                 wTiles[t] = otherA[t] + otherB[t] > 0 ? otherB[t] / (otherA[t] + otherB[t]) : 0.5;
             const double ra = compareImages(a[s], ref).relmse, rb = compareImages(b[s], ref).relmse;
-            const double rt = compareImages(blend(a[s], b[s], wTiles, size), ref).relmse;
-            const double ri = compareImages(blend(a[s], b[s], wImage, size), ref).relmse;
+            const double rt = compareImages(blend(a[s], b[s], wTiles, grid), ref).relmse;
+            const double ri = compareImages(blend(a[s], b[s], wImage, grid), ref).relmse;
             std::printf("%-6zu %12.4g %12.4g %12.4g %12.4g\n", s + 1, ra, rb, rt, ri);
             sumA += ra, sumB += rb, sumTiles += rt, sumImage += ri;
         }
@@ -103,7 +104,7 @@ int main(int argc, char** argv) {
         };
         double bestShare = 0, best = predicted(0);
         for (int k = 1; k <= 100; ++k)
-            if (predicted(k / 100.0) < best) best = predicted(k / 100.0), bestShare = k / 100.0;
+            if (const double e = predicted(k / 100.0); e < best) best = e, bestShare = k / 100.0;
         std::printf("twice the time, predicted: all to A %.4g, all to B %.4g, best split %.2f to A %.4g\n", predicted(1),
                     predicted(0), bestShare, best);
     } catch (const std::exception& e) {

@@ -131,7 +131,7 @@ void TestMeasuredAuto::allocationKeepsEachRelmse() {
     const size_t n = 8;
     std::vector<double> means(n);
     for (size_t t = 0; t < n; ++t) means[t] = t < n / 2 ? 1.0 : 0.01;
-    const auto relative = [&](size_t t) { return means[t] * means[t] + 0.01; };
+    const auto relative = [&](size_t t) { return relmseDenominator(means[t]); };
     TileStats dark{means, std::vector(n, 0.0), std::vector(n, 0.0)}, bright = dark;
     for (size_t t = 0; t < n; ++t) (t < n / 2 ? bright : dark).variance[t] = 0.02 * relative(t);
     const std::vector<const TileStats*> stats{&dark, &bright};
