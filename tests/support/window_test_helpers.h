@@ -2,17 +2,20 @@
 // Driving the application's window from tests as a user would: the bundled scene, menu actions,
 // typed values, mouse events and named child widgets.
 
+#include "ui/rendering/live_preview.h"
 #include "ui/window/main_window.h"
 
 #include <QAction>
 #include <QApplication>
 #include <QColor>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QImage>
 #include <QMouseEvent>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
+#include <QTemporaryDir>
 #include <QtTest>
 
 #include <algorithm>
@@ -30,6 +33,25 @@ inline void useTestSettings(const char* applicationName) {
 }
 
 inline QString cornellPath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/cornell-box.json"); }
+
+// A writable copy of the Cornell box named `name` in `dir` (any older one replaced); empty if it
+// could not be made.
+inline QString copyOfCornell(const QTemporaryDir& dir, const QString& name) {
+    const QString path = dir.filePath(name);
+    QFile::remove(path);
+    if (!QFile::copy(cornellPath(), path)) return {};
+    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
+    return path;
+}
+
+// The live preview's frame of exactly the document's current snapshot, after waiting up to
+// `timeoutMs` (generous for a loaded machine, never a timing assertion); null if none came.
+inline std::shared_ptr<const LiveFrame> previewOfCurrent(MainWindow& w, int timeoutMs = 30000) {
+    const SceneSnapshot want = w.document()->snapshot();
+    const auto ok = [&] { return w.livePreview()->frame() && w.livePreview()->frame()->scene == want; };
+    if (!QTest::qWaitFor(ok, timeoutMs)) return nullptr;
+    return w.livePreview()->frame();
+}
 
 // Saves what `w` shows as the PNG `name` (in the test's working folder), after the posted events:
 // rows just shown or hidden take their places first.

@@ -1,7 +1,7 @@
-// The material and object panels, mesh import and export, driven through the real window on the
-// Cornell box: edit the red wall's albedo, move and reassign an object, import a mesh, export the
-// preview and the converged image with their layers and read them back, export the PNG on
-// screen; and `lucerna render --layers`. Checks the document, the undo stack and the pixels.
+// The material and object panels, mesh import and luminaires, driven through the real window on
+// the Cornell box: edit the red wall's albedo, move and reassign an object, add a luminaire,
+// import a mesh. Checks the document, the undo stack and the pixels. The exports with their
+// layers: test_export_layers.
 
 #include "sanitizers.h"
 #include "core/image/exr_io.h"
@@ -49,13 +49,6 @@ constexpr int kTimeout = int(60000 * kResourceScale);
 
 QString icospherePath() { return QStringLiteral(LUCERNA_RESOURCE_DIR "/scenes/meshes/icosphere.ply"); }
 
-std::shared_ptr<const LiveFrame> previewOfCurrent(MainWindow& w) {
-    const SceneSnapshot want = w.document()->snapshot();
-    const auto ok = [&] { return w.livePreview()->frame() && w.livePreview()->frame()->scene == want; };
-    if (!QTest::qWaitFor(ok, kTimeout)) return nullptr;
-    return w.livePreview()->frame();
-}
-
 // The live preview of the document's current scene once it has averaged `frames` idle frames:
 // single frames of two scenes differ by their VPL sets' noise (one changed light path reorders
 // the whole resampled set), which would drown what an edit changed.
@@ -82,14 +75,6 @@ Rgbd regionMean(const Image& image, double x0, double x1, double y0, double y1) 
     return sum / double(std::max(n, 1));
 }
 
-// The unit direction through the centre of pixel (x, y) of a W x H image, from SPEC.md's camera
-// formula (independent of render/trace/camera.h).
-V3d specRay(const Camera& c, int x, int y, int W, int H) {
-    const V3d f = (c.target - c.position).normalized(), r = f.cross(c.up).normalized(), u = r.cross(f);
-    const double t = std::tan(c.fovYDeg * M_PI / 360.0);
-    const double sx = 2.0 * (x + 0.5) / W - 1.0, sy = 1.0 - 2.0 * (y + 0.5) / H;
-    return (f + r * (sx * t * double(W) / H) + u * (sy * t)).normalized();
-}
 
 // The red wall in the Cornell box's view (SPEC.md: on the left), away from its edges.
 Rgbd redWallMean(const Image& image) { return regionMean(image, 0.03, 0.09, 0.3, 0.7); }
@@ -112,11 +97,8 @@ private slots:
     void objectPanelMovesAndReassigns();
     void importMesh();
     void addLuminaire();
-    void exportImagesWithLayers();
-    void renderCommandWritesLayers();
 
 private:
-    QString copyOfCornell(const QString& name);
     QTemporaryDir dir_;
 };
 
@@ -125,23 +107,15 @@ void TestEditingPanels::initTestCase() {
     QVERIFY(dir_.isValid());
 }
 
-QString TestEditingPanels::copyOfCornell(const QString& name) {
-    const QString path = dir_.filePath(name);
-    QFile::remove(path);
-    if (!QFile::copy(cornellPath(), path)) return {};
-    QFile::setPermissions(path, QFile::ReadOwner | QFile::WriteOwner);
-    return path;
-}
-
 void TestEditingPanels::materialPanelEditsTheMaterial() {
-    Window win(copyOfCornell("materials.json"));
+    Window win(copyOfCornell(dir_, "materials.json"));
     QVERIFY(win.exposed);
     MainWindow& w = win.w;
     Document* doc = w.document();
     const int red = doc->scene().materialIndex("red");
     QVERIFY(red >= 0);
     const Material original = doc->scene().materials[size_t(red)];
-    const auto before = previewOfCurrent(w);
+    const auto before = previewOfCurrent(w, kTimeout);
     QVERIFY(before);
     const Rgbd wallBefore = redWallMean(before->image);
     QVERIFY2(wallBefore.x > 3 * wallBefore.y, "the red wall is red");
@@ -170,7 +144,7 @@ void TestEditingPanels::materialPanelEditsTheMaterial() {
     QCOMPARE(doc->scene().materials[size_t(red)].albedo, Rgbd(0.05, 0.6, 0.05));
 
     // The preview answers: the wall's G/R ratio rises by far.
-    const auto green = previewOfCurrent(w);
+    const auto green = previewOfCurrent(w, kTimeout);
     QVERIFY(green);
     const Rgbd wallGreen = redWallMean(green->image);
     const double ratioBefore = wallBefore.y / wallBefore.x, ratioGreen = wallGreen.y / wallGreen.x;
@@ -183,7 +157,7 @@ void TestEditingPanels::materialPanelEditsTheMaterial() {
     w.findChild<QAction*>("actionUndo")->trigger();
     QCOMPARE(doc->scene().materials[size_t(red)], original);
     QCOMPARE(panel->albedoField()->channel(0)->value(), 0.63);
-    const auto restored = previewOfCurrent(w);
+    const auto restored = previewOfCurrent(w, kTimeout);
     QVERIFY(restored);
     const Rgbd wallRestored = redWallMean(restored->image);
     QVERIFY2(std::abs(wallRestored.y / wallRestored.x - ratioBefore) < 0.1 * ratioBefore + 1e-3,
@@ -250,7 +224,7 @@ void TestEditingPanels::materialPanelEditsTheMaterial() {
 }
 
 void TestEditingPanels::objectPanelMovesAndReassigns() {
-    Window win(copyOfCornell("objects.json"));
+    Window win(copyOfCornell(dir_, "objects.json"));
     QVERIFY(win.exposed);
     MainWindow& w = win.w;
     Document* doc = w.document();
@@ -286,7 +260,7 @@ void TestEditingPanels::objectPanelMovesAndReassigns() {
     QCOMPARE(moved.worldMesh->vertices.size(), original.worldMesh->vertices.size());
     for (size_t k = 0; k < moved.worldMesh->vertices.size(); ++k)
         QCOMPARE(moved.worldMesh->vertices[k], original.worldMesh->vertices[k] + V3d(50, 0, 0));
-    QVERIFY(previewOfCurrent(w));
+    QVERIFY(previewOfCurrent(w, kTimeout));
 
     // Arrow steps of one field are one undo step until its editing finishes.
     for (int i = 0; i < 3; ++i) panel->translateFields()[2]->stepBy(1);
@@ -345,12 +319,12 @@ void TestEditingPanels::objectPanelMovesAndReassigns() {
 // luminaire hung over the middle of the room, nadir down, at the file's flux; one undo step,
 // selected, saved with a path relative to the scene and read back; the floor under it brightens.
 void TestEditingPanels::addLuminaire() {
-    const QString scenePath = copyOfCornell("luminaire.json");
+    const QString scenePath = copyOfCornell(dir_, "luminaire.json");
     Window win(scenePath);
     QVERIFY(win.exposed);
     MainWindow& w = win.w;
     Document* doc = w.document();
-    const auto before = previewOfCurrent(w);
+    const auto before = previewOfCurrent(w, kTimeout);
     QVERIFY(before);
     const size_t lights = doc->scene().lights.size();
     const int steps = doc->undoStack()->count();
@@ -381,7 +355,7 @@ void TestEditingPanels::addLuminaire() {
     QVERIFY(std::abs(luminaireFlux(reloaded.lights.back()) / fileFlux - 1) < 1e-9);
 
     // The floor in the middle of the image brightens (the downlight points at it).
-    const auto after = previewOfCurrent(w);
+    const auto after = previewOfCurrent(w, kTimeout);
     QVERIFY(after);
     const double floorBefore = luminance(regionMean(before->image, 0.35, 0.65, 0.8, 0.95));
     const double floorAfter = luminance(regionMean(after->image, 0.35, 0.65, 0.8, 0.95));
@@ -393,7 +367,7 @@ void TestEditingPanels::addLuminaire() {
 }
 
 void TestEditingPanels::importMesh() {
-    const QString scenePath = copyOfCornell("import.json");
+    const QString scenePath = copyOfCornell(dir_, "import.json");
     Window win(scenePath);
     QVERIFY(win.exposed);
     MainWindow& w = win.w;
@@ -496,133 +470,6 @@ void TestEditingPanels::importMesh() {
     doc->reset(untitled);
     QVERIFY(w.importMeshFile(icospherePath()));
     QVERIFY(QDir::isAbsolutePath(QString::fromStdString(doc->scene().objects.back().mesh.file)));
-}
-
-void TestEditingPanels::exportImagesWithLayers() {
-    Window win(copyOfCornell("export.json"));
-    QVERIFY(win.exposed);
-    MainWindow& w = win.w;
-    Document* doc = w.document();
-    const auto frame = previewOfCurrent(w);
-    QVERIFY(frame);
-
-    // The File menu offers the exports (their dialogs are modal; the test calls what they call).
-    for (const char* name : {"actionExportExr", "actionExportPreviewExr", "actionExportBothExr", "actionExportPng",
-                             "actionImportMesh"}) {
-        auto* action = w.findChild<QAction*>(name);
-        QVERIFY2(action && action->isEnabled(), name);
-    }
-    QCOMPARE(w.findChild<QAction*>("actionExportPng")->shortcut(), QKeySequence("Ctrl+Shift+E"));
-
-    // The preview with its layers.
-    const QString previewPath = dir_.filePath("preview.exr");
-    QVERIFY2(w.exportPreviewExr(previewPath), qPrintable(w.lastError()));
-    const Image p = readExr(previewPath.toStdString());
-    QCOMPARE(p.width, frame->image.width);
-    QCOMPARE(p.height, frame->image.height);
-    QVERIFY(p.pixels == frame->image.pixels);
-    std::set<std::string> names;
-    for (const auto& [name, data] : p.channels) names.insert(name);
-    QCOMPARE(names, (std::set<std::string>{"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z",
-                                           "depth.Z"}));
-    for (const char* key : {"lucerna:backend", "lucerna:spp", "lucerna:seconds", "lucerna:seed"})
-        QVERIFY2(p.attributes.count(key), key);
-    const auto at = [&](const char* channel, int x, int y) { return p.channels.at(channel)[size_t(y) * p.width + x]; };
-
-    // A pixel on the red wall carries the red wall's albedo.
-    const int W = p.width, H = p.height;
-    const Rgbd redAlbedo = doc->scene().findMaterial("red")->albedo;
-    QCOMPARE(at("albedo.R", W / 20, H / 2), float(redAlbedo.x));
-    QCOMPARE(at("albedo.G", W / 20, H / 2), float(redAlbedo.y));
-    QCOMPARE(at("albedo.B", W / 20, H / 2), float(redAlbedo.z));
-    // Normals unit and depths positive wherever something is hit (nearly everywhere: the box
-    // fills the view but for its open front's rim); no normal and infinite depth elsewhere.
-    int hits = 0;
-    for (int y = 0; y < H; ++y)
-        for (int x = 0; x < W; ++x) {
-            const float d = at("depth.Z", x, y);
-            const V3f n(at("normal.X", x, y), at("normal.Y", x, y), at("normal.Z", x, y));
-            if (std::isfinite(d)) {
-                ++hits;
-                QVERIFY(d > 0);
-                QCOMPARE_LT(std::abs(n.length() - 1.0f), 1e-4f);
-            } else {
-                QCOMPARE(n.length(), 0.0f);
-            }
-        }
-    QVERIFY2(hits > 0.9 * W * H, qPrintable(QString::number(hits)));
-    // A floor pixel: the depth is the distance along the ray through the pixel's centre to the
-    // plane y = 0, computed here from SPEC.md's camera, and the normal is the floor's.
-    const Camera& c = doc->scene().camera;
-    const int fx = W / 2, fy = H - 1 - H / 20;
-    const V3d dir = specRay(c, fx, fy, W, H);
-    QVERIFY(dir.y < 0);
-    const double floorDistance = -c.position.y / dir.y;
-    QCOMPARE_LT(std::abs(at("depth.Z", fx, fy) - floorDistance), 1e-4 * floorDistance);
-    QCOMPARE_LT(std::abs(std::abs(at("normal.Y", fx, fy)) - 1.0f), 1e-5f);
-    QCOMPARE(at("albedo.R", fx, fy), float(doc->scene().findMaterial("white")->albedo.x));
-
-    // An extra channel may not shadow R, G or B.
-    Image clash = p;
-    clash.channels["G"] = clash.channels.at("depth.Z");
-    QVERIFY_THROWS_EXCEPTION(ImageError, writeExr(dir_.filePath("clash.exr").toStdString(), clash));
-    QVERIFY(!QFile::exists(dir_.filePath("clash.exr")));
-
-    // The converged image with its layers, and both at once.
-    QTRY_VERIFY_WITH_TIMEOUT(w.convergingRender()->frame() != nullptr, kTimeout);
-    const QString convergedPath = dir_.filePath("converged.exr");
-    QVERIFY2(w.exportExr(convergedPath), qPrintable(w.lastError()));
-    const Image cimg = readExr(convergedPath.toStdString());
-    QCOMPARE(cimg.width, c.width);
-    QCOMPARE(cimg.channels.size(), size_t(7));
-    QCOMPARE(cimg.channels.at("albedo.R")[size_t(c.height / 2) * c.width + c.width / 20], float(redAlbedo.x));
-    QCOMPARE(cimg.attributes.at("lucerna:backend"), w.convergingRender()->backendInUse());
-    QVERIFY2(w.exportBothExr(dir_.filePath("both.exr")), qPrintable(w.lastError()));
-    QCOMPARE(readExr(dir_.filePath("both-preview.exr").toStdString()).attributes.at("lucerna:backend"),
-             p.attributes.at("lucerna:backend"));
-    QCOMPARE(readExr(dir_.filePath("both-converged.exr").toStdString()).channels.size(), size_t(7));
-
-    // The PNG of the converged image at full resolution (the camera's), as the display shows it.
-    const QString pngPath = dir_.filePath("screen.png");
-    QVERIFY2(w.exportPng(pngPath), qPrintable(w.lastError()));
-    const QImage png(pngPath);
-    QCOMPARE(png.size(), QSize(c.width, c.height));
-    std::set<QRgb> colours;
-    for (int y = 0; y < png.height(); y += 4)
-        for (int x = 0; x < png.width(); x += 4) colours.insert(png.pixel(x, y));
-    QVERIFY2(colours.size() > 50, qPrintable(QString::number(colours.size())));
-    const QColor wall = png.pixelColor(png.width() / 20, png.height() / 2);
-    QVERIFY2(wall.red() > 2 * wall.green(), qPrintable(wall.name()));
-}
-
-void TestEditingPanels::renderCommandWritesLayers() {
-    const auto run = [](const QStringList& args, QString* err = nullptr) {
-        QProcess proc;
-        proc.start(LUCERNA_BINARY, args);
-        if (!proc.waitForFinished(120000)) return -1;
-        if (err) *err = QString::fromUtf8(proc.readAllStandardError());
-        return proc.exitStatus() == QProcess::NormalExit ? proc.exitCode() : -1;
-    };
-    const QString plain = dir_.filePath("plain.exr"), layered = dir_.filePath("layered.exr");
-    const QStringList common = {"--backend", "path", "--spp", "1", "--width", "32", "--height", "32", "--seed", "3",
-                                "--threads", "1"};
-    QCOMPARE(run(QStringList{"render", cornellPath(), "-o", plain} + common), 0);
-    QCOMPARE(run(QStringList{"render", cornellPath(), "-o", layered, "--layers", "albedo,depth"} + common), 0);
-    const Image a = readExr(plain.toStdString()), b = readExr(layered.toStdString());
-    QVERIFY(a.channels.empty());  // the default output is exactly SPEC.md's
-    QCOMPARE(b.channels.size(), size_t(4));
-    QVERIFY(b.channels.count("albedo.G") && b.channels.count("depth.Z") && !b.channels.count("normal.X"));
-    QVERIFY(a.pixels == b.pixels);  // the layers change nothing else
-    QCOMPARE(b.width, 32);
-    // The red wall on the left; above the blocks, the depth of the back wall (z = 559.2).
-    QCOMPARE(b.channels.at("albedo.R")[size_t(16) * 32 + 1], 0.63f);
-    const Scene cornell = loadScene(cornellPath().toStdString());
-    const V3d dir = specRay(cornell.camera, 16, 9, 32, 32);
-    const double backWall = (559.2 - cornell.camera.position.z) / dir.z;
-    QCOMPARE_LT(std::abs(b.channels.at("depth.Z")[size_t(9) * 32 + 16] - backWall), 1e-4 * backWall);
-    QString err;
-    QCOMPARE(run(QStringList{"render", cornellPath(), "-o", plain, "--layers", "albedo,colour"}, &err), 2);
-    QVERIFY2(err.trimmed().count('\n') == 0 && err.contains("colour"), qPrintable(err));
 }
 
 QTEST_MAIN(TestEditingPanels)

@@ -62,13 +62,6 @@ void drag(QWidget* w, QPointF from, QPointF to, Qt::MouseButton button, int step
     sendMouse(w, QEvent::MouseButtonRelease, to, button, Qt::NoButton);
 }
 
-// Waits for a preview frame of exactly the document's current snapshot.
-std::shared_ptr<const LiveFrame> previewOfCurrent(MainWindow& w) {
-    const SceneSnapshot want = w.document()->snapshot();
-    const auto ok = [&] { return w.livePreview()->frame() && w.livePreview()->frame()->scene == want; };
-    if (!QTest::qWaitFor(ok, kTimeout)) return nullptr;
-    return w.livePreview()->frame();
-}
 
 // Mean luminance of a column band [x0, x1) of an image.
 double bandMean(const Image& image, int x0, int x1) {

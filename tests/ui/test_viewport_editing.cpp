@@ -35,8 +35,6 @@ using namespace lucerna;
 using namespace lucerna::test;
 
 namespace {
-constexpr int kTimeout = 30000;  // ms; generous for a loaded 2-core machine, never a timing assertion
-
 
 QString str(const V3d& v) { return QString("(%1, %2, %3)").arg(v.x, 0, 'g', 12).arg(v.y, 0, 'g', 12).arg(v.z, 0, 'g', 12); }
 
@@ -83,13 +81,6 @@ double geometryDiagonal(const Scene& scene) {
         for (const V3d& v : o.worldMesh->vertices)
             for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], v[k]), hi[k] = std::max(hi[k], v[k]);
     return (hi - lo).length();
-}
-
-std::shared_ptr<const LiveFrame> previewOfCurrent(MainWindow& w) {
-    const SceneSnapshot want = w.document()->snapshot();
-    const auto ok = [&] { return w.livePreview()->frame() && w.livePreview()->frame()->scene == want; };
-    if (!QTest::qWaitFor(ok, kTimeout)) return nullptr;
-    return w.livePreview()->frame();
 }
 
 // Mean luminance of the preview in a square of half-size `r` preview pixels around a world point.
