@@ -1,6 +1,6 @@
 #pragma once
-// Driving the application's window from tests as a user would: the bundled scene, menu actions,
-// typed values, mouse events and named child widgets.
+// Driving the application's window from tests as a user would: the bundled scene and copies of
+// it, menu actions, typed values, mouse events, named child widgets and the live preview's frame.
 
 #include "ui/rendering/live_preview.h"
 #include "ui/window/main_window.h"
