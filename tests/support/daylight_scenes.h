@@ -30,7 +30,9 @@ inline std::optional<EnvironmentLight> cieEnvironment(int type, double skyLx, co
         sun.name = "sun";
         sun.type = LightType::Sun;
         sun.direction = sunTravel;
-        sun.sun = SunSpec{sunLx, sunDiameterDeg};
+        sun.sun = SunSpec{};
+        sun.sun->illuminanceLux = sunLx;
+        sun.sun->angularDiameterDeg = sunDiameterDeg;
         scene.lights.push_back(sun);
     }
     return EnvironmentLight::fromDaylight(resolveDaylight(scene));

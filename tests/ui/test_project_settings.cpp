@@ -340,7 +340,8 @@ private slots:
         QVERIFY(QTest::qWaitForWindowActive(&w));
         Document* doc = w.document();
         ProjectSettings settings;
-        settings.maintenance = MaintenanceFactor{.value = 0.85};
+        settings.maintenance = MaintenanceFactor{};
+        settings.maintenance->value = 0.85;
         doc->setProjectSettings(settings);
         const int pendant = 6;
         QCOMPARE(doc->light(pendant).name, std::string("pendant"));

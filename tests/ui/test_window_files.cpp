@@ -290,8 +290,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
         w.show();
         QVERIFY(QTest::qWaitForWindowExposed(&w));
         // The first-start layout already leaves the viewport half the window.
-        QTest::qWaitFor([&] { return viewportHasHalf(w); }, 2000);
-        QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
+        QTRY_VERIFY2_WITH_TIMEOUT(viewportHasHalf(w), qPrintable(widths(w)), 2000);
         // Docks dragged wide: the viewport squeezed, and saved so at the close.
         w.resizeDocks({w.findChild<QDockWidget*>("outlinerDock"), w.findChild<QDockWidget*>("renderDock")},
                       {w.width() / 3, w.width() / 2}, Qt::Horizontal);
@@ -301,8 +300,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
     MainWindow w(cornellPath());
     w.show();
     QVERIFY(QTest::qWaitForWindowExposed(&w));
-    QTest::qWaitFor([&] { return viewportHasHalf(w); }, 2000);
-    QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
+    QTRY_VERIFY2_WITH_TIMEOUT(viewportHasHalf(w), qPrintable(widths(w)), 2000);
     windowShot(w, "layout_restored");
     // View > Reset Layout: docks squeezed again, one floating and one hidden, then the defaults.
     auto* grid = w.findChild<QDockWidget*>("gridDock");
@@ -312,8 +310,7 @@ void TestWindowFiles::savedLayoutKeepsHalfForTheViewport() {
     w.findChild<QDockWidget*>("propertiesDock")->hide();
     QTRY_VERIFY_WITH_TIMEOUT(w.viewport()->width() < w.width() / 2, kTimeout);
     trigger(w, "actionResetLayout");
-    QTest::qWaitFor([&] { return viewportHasHalf(w); }, 2000);
-    QVERIFY2(viewportHasHalf(w), qPrintable(widths(w)));
+    QTRY_VERIFY2_WITH_TIMEOUT(viewportHasHalf(w), qPrintable(widths(w)), 2000);
     QVERIFY(!grid->isFloating());
     QVERIFY(w.findChild<QDockWidget*>("propertiesDock")->isVisible());
     windowShot(w, "layout_reset");
