@@ -23,12 +23,6 @@ using namespace lucerna::test;
 
 namespace {
 
-double channelMean(const Image& img) {
-    double s = 0;
-    for (const Rgb& p : img.pixels) s += double(p.x) + p.y + p.z;
-    return s / (3.0 * double(img.pixels.size()));
-}
-
 double relmse(const Image& t, const std::vector<double>& r) {
     double s = 0;
     for (size_t i = 0; i < t.pixels.size(); ++i)

@@ -40,12 +40,6 @@ using namespace lucerna::test;
 
 namespace {
 
-double channelMean(const Image& img) {
-    double s = 0;
-    for (const Rgb& p : img.pixels) s += double(p.x) + p.y + p.z;
-    return s / (3.0 * double(img.pixels.size()));
-}
-
 // SPEC.md's relmse.
 double relmse(const Image& t, const Image& r) {
     double s = 0;

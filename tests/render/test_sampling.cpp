@@ -19,12 +19,11 @@
 
 using namespace lucerna;
 using lucerna::test::direction;
+using lucerna::test::logChi2;
 
 namespace {
 
 constexpr int kSamples = 1'000'000;
-
-void reportChi2(const char* what, const ChiSquareResult& r) { qInfo("%s: %s", what, r.message.c_str()); }
 
 }  // namespace
 
@@ -59,7 +58,7 @@ private slots:
             [](Rng& rng, V3f& w) { w = squareToUniformHemisphere(rng.next2D()); return true; },
             [](const V3f& w) { return double(cosineHemispherePdf(w)); }, 20, 40, 100'000, checks_.nextSeed(),
             checks_.level());
-        reportChi2("wrong pdf (uniform sampled, cosine claimed)", r);
+        logChi2("wrong pdf (uniform sampled, cosine claimed)", r);
         QVERIFY2(!r.passed && r.pValue < 1e-12, r.message.c_str());
     }
 
@@ -72,7 +71,7 @@ private slots:
             [&](Rng& rng, V3f& h) { h = sampleGGXVisibleNormal(wo, alpha, rng.next2D()); return true; },
             [&](const V3f& h) { return double(ggxD(h, alpha)) * std::max(0.0f, h.z); }, 20, 40,
             kSamples, checks_.nextSeed(), checks_.level());
-        reportChi2("wrong GGX pdf (D cos claimed for VNDF samples)", r);
+        logChi2("wrong GGX pdf (D cos claimed for VNDF samples)", r);
         QVERIFY2(!r.passed, r.message.c_str());
     }
 
@@ -87,13 +86,13 @@ private slots:
             },
             [](const V3f& w) { return double(cosineHemispherePdf(w)); }, 20, 40, 200'000,
             checks_.nextSeed(), checks_.level());
-        reportChi2("unaccounted failures", a);
+        logChi2("unaccounted failures", a);
         QVERIFY2(!a.passed, a.message.c_str());
         const auto b = chiSquareSphere(
             [](Rng& rng, V3f& w) { w = squareToCosineHemisphere(rng.next2D()); return true; },
             [](const V3f& w) { return 0.9 * cosineHemispherePdf(w); }, 20, 40, 200'000,
             checks_.nextSeed(), checks_.level());
-        reportChi2("missing failures", b);
+        logChi2("missing failures", b);
         QVERIFY2(!b.passed, b.message.c_str());
     }
 

@@ -47,4 +47,11 @@ inline Image render(const std::string& backendName, const SceneSnapshot& scene, 
     return renderFrame(backendName, scene, s).image;
 }
 
+// The mean over an image's pixels and channels.
+inline double channelMean(const Image& img) {
+    double s = 0;
+    for (const Rgb& p : img.pixels) s += double(p.x) + p.y + p.z;
+    return s / (3.0 * double(img.pixels.size()));
+}
+
 }  // namespace lucerna::test

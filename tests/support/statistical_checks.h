@@ -36,6 +36,9 @@ private:
     uint64_t seed_;
 };
 
+// Logs a chi-square result under `what` (the test's log shows every statistic, passed or not).
+inline void logChi2(const char* what, const ChiSquareResult& r) { qInfo("%s: %s", what, r.message.c_str()); }
+
 // Unit direction at polar angle theta (degrees from +z) and azimuth phi (degrees).
 inline V3f direction(double thetaDeg, double phiDeg = 0.0) {
     const double t = thetaDeg * std::numbers::pi / 180.0, p = phiDeg * std::numbers::pi / 180.0;
@@ -47,6 +50,6 @@ inline V3f direction(double thetaDeg, double phiDeg = 0.0) {
 // Logs a chi-square result and fails the test function where it did not pass.
 #define VERIFY_CHI2(what, r)                                 \
     do {                                                     \
-        qInfo("%s: %s", what, (r).message.c_str());          \
+        lucerna::test::logChi2(what, r);                     \
         QVERIFY2((r).passed, (r).message.c_str());           \
     } while (0)
