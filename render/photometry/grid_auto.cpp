@@ -25,6 +25,14 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // running method's rest allows one. A pilot's deadline (preparation included) is its length
 // times the overrun, plus the grace.
 constexpr double kPilotShare = 0.05;
+// Path and ir, which start at once, have a short first pilot, a hundredth of the running one's
+// rest (at least kShortestPointPilotSeconds): one clearly ahead shows it that soon (the caustic
+// floor: path's projection from 0.3 s is 0.55 times ir's, ir waiting 0.3 s for path's first
+// pilot instead of 1.4 s). One that does not take over but is close (its rest under kCloseRatio
+// times the running one's) is piloted again at the full share, before the others; one further
+// behind is beaten (revisitBeaten). The short pilot's passes are lost.
+constexpr double kFirstPointPilotShare = 0.01;
+constexpr double kCloseRatio = 3;
 constexpr double kPilotsShare = 0.1;
 constexpr double kShortestPilotSeconds = 0.05;
 constexpr double kShortestPointPilotSeconds = 0.01;  // path, ir
@@ -46,16 +54,8 @@ std::vector<GridMethod> candidates(bool litThroughGlass) {
 // Path and ir estimate each point pass by pass; the other methods render replicas.
 bool estimatesPoints(GridMethod m) { return m == GridMethod::Path || m == GridMethod::Vpl; }
 
-// A result's projected seconds to the target from its method's start, `ran` seconds of its own
-// so far; infinite while its error bars are not to be trusted (path and ir before minPasses
-// passes, the replicas' methods before their first).
-double projectedSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {
-    if (r.passes < (estimatesPoints(method) ? std::max(2, settings.minPasses) : 1) || !std::isfinite(r.maxRelativeError) ||
-        !(ran > 0) || !(settings.targetRelativeError > 0))
-        return kInfinity;
-    const double ratio = r.maxRelativeError / settings.targetRelativeError;
-    return ran * ratio * ratio;
-}
+double shortestPilot(GridMethod m) { return estimatesPoints(m) ? kShortestPointPilotSeconds : kShortestPilotSeconds; }
+
 
 // The running method's projections as it ran: (its own seconds, projected seconds).
 using History = std::vector<std::pair<double, double>>;
@@ -63,6 +63,7 @@ using History = std::vector<std::pair<double, double>>;
 // What a pilot is weighed against: the running method's history and where it stands now.
 struct Opponent {
     double budgetSeconds;
+    bool shortPilot;  // path's or ir's first pilot (kFirstPointPilotShare)
     const History* history;
     double needsSeconds, ranSeconds;
 };
@@ -73,7 +74,7 @@ public:
              TaskContext& ctx, const std::function<void(const GridResult&)>& onPass, bool litThroughGlass)
         : scene_(scene), points_(points), normal_(normal), settings_(settings), ctx_(ctx), onPass_(onPass),
           limit_(settings.timeLimitSeconds > 0 ? settings.timeLimitSeconds : kInfinity) {
-        for (GridMethod m : candidates(litThroughGlass)) pending_.push_back({m, 0.0});
+        for (GridMethod m : candidates(litThroughGlass)) pending_.push_back({m, 0.0, estimatesPoints(m)});
         first_ = pending_.front().method;
         pending_.erase(pending_.begin());
     }
@@ -90,6 +91,7 @@ private:
     struct Pending {
         GridMethod method;
         double triedSeconds;  // its last pilot's length, which gave no measure (0: none yet)
+        bool shortPilot;      // its next pilot is path's or ir's first (kFirstPointPilotShare)
     };
 
     // Runs `method` to the grid's end (its target or time limit, or cancelled), or, as a pilot
@@ -111,7 +113,7 @@ private:
         GridResult last = computeGridIlluminance(scene_, points_, normal_, own, task.context(), [&](const GridResult& r) {
             if (ctx_.isCancelled() || overtaken || lost) return;
             const double ran = r.seconds - pilotsWithin;
-            const double needs = projectedSeconds(r, ran, method, settings_);
+            const double needs = projectedGridSeconds(r, ran, method, settings_);
             if (piloting) {
                 if (ran < opponent->budgetSeconds && !r.converged) return;
                 piloting = false;
@@ -131,10 +133,12 @@ private:
             }
             if (!std::isfinite(needs) || r.converged) return;
             history.emplace_back(ran, needs);
+            revisitBeaten(ran, needs);
             const auto pilotStart = Clock::now();
-            const std::optional<GridMethod> challenger = nextPilot(ran, needs);
+            const std::optional<Pending> challenger = nextPilot(ran, needs);
             if (!challenger) return;
-            std::optional<GridResult> won = run(*challenger, Opponent{budget(ran, needs), &history, needs, ran});
+            std::optional<GridResult> won = run(challenger->method, Opponent{budget(ran, needs, *challenger),
+                                                                             challenger->shortPilot, &history, needs, ran});
             if (won) {
                 overtaken = std::move(won);
                 task.cancel();
@@ -153,26 +157,27 @@ private:
         return last;
     }
 
-    // A pilot's length now: a share of the running method's rest, within the pilots' share of
-    // its total; it waits until that method has run as long (so that the two are weighed at
-    // equal times, takesOver).
-    double budget(double ran, double needs) const {
-        return std::min(kPilotShare * std::min(needs - ran, limit_ - secondsSince(begin_)),
-                        kPilotsShare * needs - pilotSeconds_);
+    // The length of p's pilot now: a share of the running method's rest, within the pilots'
+    // share of its total; it waits until that method has run as long (so that the two are
+    // weighed at equal times, takesOver).
+    double budget(double ran, double needs, const Pending& p) const {
+        const double rest = std::min(needs - ran, limit_ - secondsSince(begin_));
+        const double share = p.shortPilot ? std::max(kFirstPointPilotShare * rest, kShortestPointPilotSeconds) : kPilotShare * rest;
+        return std::min({share, kPilotShare * rest, kPilotsShare * needs - pilotSeconds_});
     }
 
     // The next method to pilot between the running method's passes, taken off the pending list;
     // nothing when no pilot is worth its cost now.
-    std::optional<GridMethod> nextPilot(double ran, double needs) {
-        const double b = budget(ran, needs);
-        if (ran < b) return std::nullopt;
+    std::optional<Pending> nextPilot(double ran, double needs) {
         const auto next = std::ranges::find_if(pending_, [&](const Pending& p) {
-            return b >= std::max(estimatesPoints(p.method) ? kShortestPointPilotSeconds : kShortestPilotSeconds, kRetryFactor * p.triedSeconds);
+            const double b = budget(ran, needs, p);
+            return ran >= b &&
+                   b >= std::max(shortestPilot(p.method), kRetryFactor * p.triedSeconds);
         });
         if (next == pending_.end()) return std::nullopt;
-        const GridMethod m = next->method;
+        const Pending p = *next;
         pending_.erase(next);
-        return m;
+        return p;
     }
 
     // A short run's projection is biased (an error bar from few batches, heavy tails not yet
@@ -194,15 +199,38 @@ private:
         const auto then = std::ranges::find_if(h, [&](const auto& e) { return e.first >= pilot.seconds; });
         const double needs = pilotNeeds * o.needsSeconds / (then != h.end() ? then->second : h.back().second);
         pilots_.push_back(name + " " + secondsText(needs) + " (" + secondsText(o.needsSeconds) + ")");
-        if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_)))
+        measured_.push_back(method);
+        if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_))) {
+            if (o.shortPilot && needs - pilot.seconds < kCloseRatio * (o.needsSeconds - o.ranSeconds)) {
+                pilots_.back() += ", again later";
+                pending_.insert(pending_.begin(), {method, 0.0, false});
+            } else {
+                beaten_.push_back({method, {needs, pilot.seconds}});
+            }
             return false;
+        }
         pilots_.back() += ", took over";
         return true;
     }
 
+    // A beaten method goes back to the front of the pending list, to be piloted again, once what
+    // its pilot showed would take over from where the running method, `ran` seconds in, stands
+    // now: the projection that beat it was too low (heavy tails met late: on the glass cube ir's
+    // went from 0.4 s to 14 s after beating path's short pilot, which projected 4.8 s).
+    void revisitBeaten(double ran, double needs) {
+        for (auto b = beaten_.begin(); b != beaten_.end();) {
+            if (!challengerTakesOver(b->stand, {needs, ran}, limit_ - secondsSince(begin_))) {
+                ++b;
+                continue;
+            }
+            pending_.insert(pending_.begin(), {b->method, 0.0, false});
+            b = beaten_.erase(b);
+        }
+    }
+
     void noMeasure(GridMethod method, double budgetSeconds, double spent) {
         pilots_.push_back(std::string(gridMethodName(method)) + " none within " + formatDuration(spent));
-        pending_.push_back({method, budgetSeconds});
+        pending_.push_back({method, budgetSeconds, false});
     }
 
     // "started with ir; pilots (...): path 8 (28), took over, ...; not measured: ...; ran path; ..."
@@ -212,10 +240,11 @@ private:
             s += "; pilots (projected seconds to the target, the running method's in brackets):";
             for (size_t i = 0; i < pilots_.size(); ++i) s += (i ? ", " : " ") + pilots_[i];
         }
-        if (!pending_.empty()) {
-            s += "; not measured:";
-            for (size_t i = 0; i < pending_.size(); ++i) s += std::string(i ? ", " : " ") + gridMethodName(pending_[i].method);
-        }
+        std::string unmeasured;
+        for (const Pending& p : pending_)
+            if (std::ranges::find(measured_, p.method) == measured_.end())
+                unmeasured += (unmeasured.empty() ? " " : ", ") + std::string(gridMethodName(p.method));
+        if (!unmeasured.empty()) s += "; not measured:" + unmeasured;
         return s + "; ran " + gridMethodName(running) + "; pilots took " + formatDuration(pilotSeconds_);
     }
 
@@ -228,9 +257,16 @@ private:
     const Clock::time_point begin_ = Clock::now();
     const double limit_;  // seconds (infinite: none)
     GridMethod first_;
-    // The methods not yet measured, in order; each is in it at most once (a pilot takes its method
-    // off, one that measured nothing puts it back).
+    // The methods to pilot, in order; each is in it at most once (a pilot takes its method off;
+    // one that measured nothing, a short pilot, and revisitBeaten put it back).
     std::vector<Pending> pending_;
+    // The methods beaten in a pilot, and where each stood at its pilot's end.
+    struct Beaten {
+        GridMethod method;
+        MethodStand stand;
+    };
+    std::vector<Beaten> beaten_;
+    std::vector<GridMethod> measured_;  // the methods a pilot has measured
     std::vector<std::string> pilots_;  // what each pilot measured, in order
     double pilotSeconds_ = 0;          // the pilots' own time, up to their decisions
     int pilotCount_ = 0;
@@ -246,6 +282,15 @@ bool challengerTakesOver(const MethodStand& challenger, const MethodStand& runni
     // Neither reaches the target within the limit: the variance at the limit, as 1 / time.
     return challenger.needsSeconds / (challenger.ranSeconds + secondsLeft) <
            kTakeOverRatio * running.needsSeconds / (running.ranSeconds + secondsLeft);
+}
+
+double projectedGridSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {
+    if (r.passes < (estimatesPoints(method) ? std::max(2, settings.minPasses) : 1) || !std::isfinite(r.maxRelativeError) ||
+        !(ran > 0) || !(settings.targetRelativeError > 0))
+        return kInfinity;
+    const double ratio = r.maxRelativeError / settings.targetRelativeError;
+    const double prepared = std::clamp(r.prepareSeconds, 0.0, ran);
+    return prepared + (ran - prepared) * ratio * ratio;
 }
 
 GridResult computeGridByAuto(const RenderScene& scene, const std::vector<V3d>& points, const V3d& normal,

@@ -38,6 +38,7 @@ GridResult computeGridByBackend(const RenderScene& scene, const std::vector<V3d>
                                                              seed, options);
         replicas[size_t(r)]->prepare(ctx);
     }
+    result.prepareSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     // Rounds of passes over every replica, their values read once a round.
     const int pixelsPerSensor = settings.sensorPixelsPerSide * settings.sensorPixelsPerSide;

@@ -85,6 +85,7 @@ struct GridResult {
     int passes = 0;                  // path, ir: passes; the others: passes of each replica
     long long samplesPerPoint = 0;   // estimates (camera samples) per point, all replicas together
     double seconds = 0;
+    double prepareSeconds = 0;       // of seconds, before the first pass (bdpt, mir, mlt, cmlt: preparing the replicas)
     double maxRelativeError = 0;     // max over points of errorLux / max(lux, Eavg / 1000) (0 / 0: 0), points inside geometry left out
     bool converged = false;          // every point within the target
     GridMethod method = GridMethod::Path;  // the method used (auto's choice)

@@ -1,6 +1,7 @@
-// A grid's --method auto (render/photometry/grid_auto.h, issue 38): when a piloted method takes
-// over from the running one, that a method far ahead does, and that a grid the first method
-// finishes quickly is not held up by pilots. Through the command line.
+// A grid's --method auto (render/photometry/grid_auto.h, issue 38): how a method's time to the
+// target is projected, when a piloted method takes over from the running one, that a method far
+// ahead does, and that a grid the first method finishes quickly is not held up by pilots (the
+// last two through the command line).
 
 #include "process_run.h"
 #include "render/photometry/grid_auto.h"
@@ -8,6 +9,7 @@
 #include <QRegularExpression>
 #include <QTest>
 
+#include <cmath>
 #include <limits>
 #include <string>
 
@@ -39,6 +41,28 @@ private slots:
         QVERIFY(!challengerTakesOver({20, 0}, {40, 10}, 8));        // neither: variances 20/8 against 40/18
         QVERIFY(challengerTakesOver({10, 0}, {40, 10}, 8));         // 10/8 = 1.25 against 0.7 x 40/18 = 1.56
         QVERIFY(challengerTakesOver({12, 2}, {40, 10}, 8));         // 12/10 = 1.2 against 1.56
+    }
+
+    // Seconds x (error / target)^2 for the passes, the preparation added unscaled; infinite
+    // before the error bars are trusted.
+    void projectsThePassesNotThePreparation() {
+        GridSettings settings;
+        settings.targetRelativeError = 0.03;
+        settings.minPasses = 8;
+        GridResult r;
+        r.passes = 4;
+        r.maxRelativeError = 0.06;  // twice the target: the passes need 4 times their time
+        QCOMPARE(projectedGridSeconds(r, 2.0, GridMethod::Bdpt, settings), 8.0);
+        r.prepareSeconds = 1.5;
+        QCOMPARE(projectedGridSeconds(r, 2.0, GridMethod::Bdpt, settings), 1.5 + 0.5 * 4);
+        r.prepareSeconds = 3;  // timed past `ran` (a pilot's clock): all of it preparation
+        QCOMPARE(projectedGridSeconds(r, 2.0, GridMethod::Bdpt, settings), 2.0);
+        r.prepareSeconds = 0;
+        QVERIFY(std::isinf(projectedGridSeconds(r, 2.0, GridMethod::Path, settings)));  // 4 of 8 passes
+        r.passes = 8;
+        QCOMPARE(projectedGridSeconds(r, 2.0, GridMethod::Path, settings), 8.0);
+        r.maxRelativeError = std::numeric_limits<double>::infinity();
+        QVERIFY(std::isinf(projectedGridSeconds(r, 2.0, GridMethod::Path, settings)));
     }
 
     // The caustic scene's floor: ir, auto's first method, reaches 6% in about 7 s (its worst
