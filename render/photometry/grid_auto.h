@@ -5,12 +5,15 @@
 // ir, bdpt, mir, mlt, cmlt; bdpt, mlt and cmlt through glass) measure each one's seconds to the
 // grid's error target. A method whose pilot shows it would reach the target clearly sooner than
 // the running one takes over: its pilot goes on to the end, the running one's passes dropped.
+// One that lost is piloted again once the running method's projection has grown past what would
+// have let it take over (heavy tails met late).
 //
 // A pilot costs a share of the running method's projected remaining time (path's and ir's first
 // a smaller share, grid_auto.cpp): a grid that the first method finishes in a second is not held
 // up by measuring five others, and a slow grid gives long enough pilots for the methods that
-// prepare (mlt's and cmlt's bootstrap counts in the pilot) to show their pace. The methods keep their samples in different forms (points, replicas), so
-// their results are not combined: a pilot that does not take over is lost.
+// prepare (mlt's and cmlt's bootstrap counts in the pilot) to show their pace. The methods keep
+// their samples in different forms (points, replicas), so their results are not combined: a
+// pilot that does not take over is lost.
 
 #include "render/photometry/grid_calculation.h"
 
