@@ -203,16 +203,15 @@ private:
         const auto then = std::ranges::find_if(h, [&](const auto& e) { return e.first >= pilot.seconds; });
         const double needs = pilotNeeds * o.needsSeconds / (then != h.end() ? then->second : h.back().second);
         pilots_.push_back(name + " " + secondsText(needs) + " (" + secondsText(o.needsSeconds) + ")");
-        std::vector<double> earlier;  // this method's projections in its earlier pilots
-        for (const auto& [m, n] : measured_)
-            if (m == method) earlier.push_back(n);
+        const auto first = std::ranges::find(measured_, method, &Measure::first);  // its first measure, if any
+        const bool second = first != measured_.end() && std::ranges::count(measured_, method, &Measure::first) == 1;
         measured_.emplace_back(method, needs);
         if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_))) {
             const bool close = o.shortPilot && needs - pilot.seconds < kCloseRatio * (o.needsSeconds - o.ranSeconds);
-            const bool disagrees = earlier.size() == 1 && std::max(needs, earlier[0]) > kDisagreementRatio * std::min(needs, earlier[0]);
+            const bool disagrees = second && std::max(needs, first->second) > kDisagreementRatio * std::min(needs, first->second);
             if (close || disagrees) {
                 pilots_.back() += ", again later";
-                pending_.insert(pending_.begin(), {method, 0.0, false});
+                pilotAgainNext(method);
             } else {
                 beaten_.push_back({method, {needs, pilot.seconds}});
             }
@@ -232,10 +231,13 @@ private:
                 ++b;
                 continue;
             }
-            pending_.insert(pending_.begin(), {b->method, 0.0, false});
+            pilotAgainNext(b->method);
             b = beaten_.erase(b);
         }
     }
+
+    // A measured method to the front of the pending list, for a pilot at the full share.
+    void pilotAgainNext(GridMethod method) { pending_.insert(pending_.begin(), {method, 0.0, false}); }
 
     void noMeasure(GridMethod method, double budgetSeconds, double spent) {
         pilots_.push_back(std::string(gridMethodName(method)) + " none within " + formatDuration(spent));
@@ -251,7 +253,7 @@ private:
         }
         std::string unmeasured;
         for (const Pending& p : pending_)
-            if (std::ranges::find(measured_, p.method, &std::pair<GridMethod, double>::first) == measured_.end())
+            if (std::ranges::find(measured_, p.method, &Measure::first) == measured_.end())
                 unmeasured += (unmeasured.empty() ? " " : ", ") + std::string(gridMethodName(p.method));
         if (!unmeasured.empty()) s += "; not measured:" + unmeasured;
         return s + "; ran " + gridMethodName(running) + "; pilots took " + formatDuration(pilotSeconds_);
@@ -275,7 +277,8 @@ private:
         MethodStand stand;
     };
     std::vector<Beaten> beaten_;
-    std::vector<std::pair<GridMethod, double>> measured_;  // each pilot's method and projection (seconds), in order
+    using Measure = std::pair<GridMethod, double>;  // a pilot's method and projection (seconds)
+    std::vector<Measure> measured_;                 // every pilot's that measured, in order
     std::vector<std::string> pilots_;  // what each pilot measured, in order
     double pilotSeconds_ = 0;          // the pilots' own time, up to their decisions
     int pilotCount_ = 0;
