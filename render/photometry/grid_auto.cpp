@@ -2,6 +2,7 @@
 
 #include "core/number_format.h"
 #include "core/sub_task.h"
+#include "render/photometry/grid_combination.h"
 
 #include <algorithm>
 #include <chrono>
@@ -29,10 +30,20 @@ constexpr double kPilotShare = 0.05;
 // rest (at least kShortestPointPilotSeconds): one clearly ahead shows it that soon (the caustic
 // floor: path's projection from 0.3 s is 0.55 times ir's, ir waiting 0.3 s for path's first
 // pilot instead of 1.4 s). One that does not take over but is close (its rest under kCloseRatio
-// times the running one's) is piloted again at the full share, before the others; one further
-// behind is beaten (revisitBeaten). The short pilot's passes are lost.
+// times the running one's) goes on to the full share; one further behind is beaten
+// (revisitBeaten).
 constexpr double kFirstPointPilotShare = 0.01;
 constexpr double kCloseRatio = 3;
+// A pilot at its full share that does not take over, whose rest is under kCloserRatio times the
+// running method's and whose projection is still falling fast (under kFallingRatio times its
+// projection at half the pilot's length: a heavy tail met early, being diluted) goes on, twice as
+// long each time, while all pilots together take at most kLongerPilotsShare of the running
+// method's projected total. Such a method shows its pace only after a while: bdpt in a room lit
+// from the next one projected 3.4 to 6.6 s in its first 0.1 s (one sample's spike), against
+// path's 2.5 to 3, and reaches the target in 1.7 s alone, path in 3.1 s.
+constexpr double kCloserRatio = 2;
+constexpr double kFallingRatio = 0.75;
+constexpr double kLongerPilotsShare = 0.2;
 // A method whose second pilot's projection differs from its first by more than this factor met a
 // heavy tail in one of them (the satin ball, seed 4: path 21 s, then 77 s; path alone takes 7 s),
 // so it is piloted a third time, again at the full share, before it can be beaten.
@@ -43,8 +54,12 @@ constexpr double kShortestPointPilotSeconds = 0.01;  // path, ir
 constexpr double kRetryFactor = 4;
 constexpr double kPilotOverrun = 1.5;
 constexpr double kPilotGraceSeconds = 0.02;
-// The margin by which a challenger must beat the running method (challengerTakesOver).
+// The margin by which a challenger must beat the running method (challengerTakesOver): where
+// the running method's passes are dropped, and where both are path or ir, whose runs are
+// combined (the corridor of the many-luminaire family: path projected 17 to 22 s against ir's
+// 15 to 26 s and never took over; ir ran to the 30 s limit, path alone takes 16 to 19 s).
 constexpr double kTakeOverRatio = 0.7;
+constexpr double kCombinedTakeOverRatio = 0.85;
 
 double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 std::string secondsText(double s) { return std::isfinite(s) ? formatNumber(s, 2) : "-"; }
@@ -58,6 +73,10 @@ std::vector<GridMethod> candidates(bool litThroughGlass) {
 // Path and ir estimate each point pass by pass; the other methods render replicas.
 bool estimatesPoints(GridMethod m) { return m == GridMethod::Path || m == GridMethod::Vpl; }
 
+double takeOverMargin(GridMethod challenger, GridMethod running) {
+    return estimatesPoints(challenger) && estimatesPoints(running) ? kCombinedTakeOverRatio : kTakeOverRatio;
+}
+
 double shortestPilot(GridMethod m) { return estimatesPoints(m) ? kShortestPointPilotSeconds : kShortestPilotSeconds; }
 
 
@@ -66,6 +85,7 @@ using History = std::vector<std::pair<double, double>>;
 
 // What a pilot is weighed against: the running method's history and where it stands now.
 struct Opponent {
+    GridMethod method;
     double budgetSeconds;
     bool shortPilot;  // path's or ir's first pilot (kFirstPointPilotShare)
     const History* history;
@@ -114,15 +134,30 @@ private:
         own.method = method;
         own.timeLimitSeconds = std::isfinite(limit_) ? std::max(0.01, limit_ - secondsSince(begin_)) : 0;
         if (piloting) own.seed = settings_.seed + 0x70696c6f + uint64_t(pilotCount_++);
+        GridResult latest;  // path's and ir's: in the combination of the runs nested in this one
+        const LiveRun live(*this, estimatesPoints(method) ? &latest : nullptr);
         GridResult last = computeGridIlluminance(scene_, points_, normal_, own, task.context(), [&](const GridResult& r) {
             if (ctx_.isCancelled() || overtaken || lost) return;
             const double ran = r.seconds - pilotsWithin;
             const double needs = projectedGridSeconds(r, ran, method, settings_);
+            GridResult shown = combined(r, method);
+            // Reached by the combination, not by r alone: r's method stops here.
+            const bool done = shown.converged && !r.converged;
+            if (done) task.cancel();
             if (piloting) {
-                if (ran < opponent->budgetSeconds && !r.converged) return;
+                if (std::isfinite(needs)) history.emplace_back(ran, needs);
+                if (ran < opponent->budgetSeconds && !shown.converged) return;
+                const Verdict v = weigh(method, r, shown.converged, needs, history, *opponent);
+                if (v == Verdict::Longer) {
+                    opponent->budgetSeconds = longerPilot(ran, *opponent);
+                    opponent->shortPilot = false;
+                    task.setDeadline(kPilotOverrun * (opponent->budgetSeconds - ran) + kPilotGraceSeconds);
+                    return;
+                }
                 piloting = false;
                 pilotSeconds_ += ran;
-                if (!takesOver(method, r, needs, *opponent)) {
+                if (v == Verdict::Lost) {
+                    if (estimatesPoints(method)) banked_.push_back(r);
                     lost = true;
                     task.cancel();
                     return;
@@ -131,17 +166,17 @@ private:
             }
             ctx_.setProgress(task.context().progress());
             if (onPass_) {
-                GridResult shown = r;
                 shown.autoMeasured = line(method);
                 onPass_(shown);
             }
-            if (!std::isfinite(needs) || r.converged) return;
-            history.emplace_back(ran, needs);
-            revisitBeaten(ran, needs);
+            latest = r;
+            if (!std::isfinite(needs) || shown.converged) return;
+            if (history.empty() || history.back().first < ran) history.emplace_back(ran, needs);
+            revisitBeaten(method, ran, needs);
             const auto pilotStart = Clock::now();
             const std::optional<Pending> challenger = nextPilot(ran, needs);
             if (!challenger) return;
-            std::optional<GridResult> won = run(challenger->method, Opponent{budget(ran, needs, *challenger),
+            std::optional<GridResult> won = run(challenger->method, Opponent{method, budget(ran, needs, *challenger),
                                                                              challenger->shortPilot, &history, needs, ran});
             if (won) {
                 overtaken = std::move(won);
@@ -157,8 +192,41 @@ private:
             noMeasure(method, opponent->budgetSeconds, spent);
         }
         if (piloting || lost) return std::nullopt;
-        last.method = method;
-        return last;
+        GridResult result = combined(last, method);
+        result.method = method;
+        return result;
+    }
+
+    // A run of path or ir in progress: its latest result is in the combination of the runs
+    // nested in it (pilots between its passes, and the one that takes over from it).
+    class LiveRun {
+    public:
+        LiveRun(AutoGrid& grid, const GridResult* latest) : grid_(grid), latest_(latest) {
+            if (latest_) grid_.live_.push_back(latest_);
+        }
+        ~LiveRun() {
+            if (latest_) grid_.live_.pop_back();
+        }
+        LiveRun(const LiveRun&) = delete;
+        LiveRun& operator=(const LiveRun&) = delete;
+
+    private:
+        AutoGrid& grid_;
+        const GridResult* latest_;
+    };
+
+    // r, of `method`, combined with every other run of path and ir so far (grid_combination.h):
+    // the pilots that lost, and the runs this one is nested in. r alone for the other methods,
+    // whose error bars come from a few replicas.
+    GridResult combined(const GridResult& r, GridMethod method) {
+        if (!estimatesPoints(method) || r.passes < kCombinedMinPasses) return r;
+        std::vector<const GridResult*> parts{&r};
+        for (const GridResult& b : banked_) parts.push_back(&b);
+        for (size_t k = 0; k + 1 < live_.size(); ++k) parts.push_back(live_[k]);  // the last is r's run's
+        GridResult c = combineGridResults(parts, settings_);
+        combinedParts_ = 0;
+        for (const GridResult* p : parts) combinedParts_ += p->passes >= kCombinedMinPasses;
+        return c;
     }
 
     // The length of p's pilot now: a share of the running method's rest, within the pilots'
@@ -184,50 +252,73 @@ private:
         return p;
     }
 
+    // A pilot's verdict: it takes over, it runs on (longerPilot), or it lost.
+    enum class Verdict { TakesOver, Longer, Lost };
+
     // A short run's projection is biased (an error bar from few batches, heavy tails not yet
     // sampled or just met; on the caustic grid path's projection from 0.1 s is 3.3 times its
     // projection from 3 s, ir's 1.1 times), so a pilot is weighed against the running method's
     // projection when that one had run as long, and the ratio scales the running method's
     // projection now.
-    bool takesOver(GridMethod method, const GridResult& pilot, double pilotNeeds, const Opponent& o) {
+    Verdict weigh(GridMethod method, const GridResult& pilot, bool converged, double pilotNeeds, const History& own,
+                  const Opponent& o) {
         const std::string name = gridMethodName(method);
-        if (pilot.converged) {
+        if (converged) {
             pilots_.push_back(name + " reached the target in its pilot");
-            return true;
+            return Verdict::TakesOver;
         }
         if (!std::isfinite(pilotNeeds)) {
             noMeasure(method, o.budgetSeconds, pilot.seconds);
-            return false;
+            return Verdict::Lost;
         }
         const History& h = *o.history;
         const auto then = std::ranges::find_if(h, [&](const auto& e) { return e.first >= pilot.seconds; });
         const double needs = pilotNeeds * o.needsSeconds / (then != h.end() ? then->second : h.back().second);
         pilots_.push_back(name + " " + secondsText(needs) + " (" + secondsText(o.needsSeconds) + ")");
+        if (challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_),
+                                takeOverMargin(method, o.method))) {
+            pilots_.back() += ", took over";
+            return Verdict::TakesOver;
+        }
+        const double rest = needs - pilot.seconds, runningRest = o.needsSeconds - o.ranSeconds;
+        // Its projection at half its time so far: one falling fast (a heavy tail met early being
+        // diluted) is not to be trusted yet.
+        const auto half = std::ranges::find_if(own, [&](const auto& e) { return e.first >= 0.5 * pilot.seconds; });
+        const bool falling = half != own.end() && pilotNeeds < kFallingRatio * half->second;
+        const bool close = o.shortPilot ? rest < kCloseRatio * runningRest : falling && rest < kCloserRatio * runningRest;
+        if (close && longerPilot(pilot.seconds, o) > pilot.seconds) {
+            pilots_.back() += ", longer";
+            return Verdict::Longer;
+        }
         const auto first = std::ranges::find(measured_, method, &Measure::first);  // its first measure, if any
         const bool second = first != measured_.end() && std::ranges::count(measured_, method, &Measure::first) == 1;
         measured_.emplace_back(method, needs);
-        if (!challengerTakesOver({needs, pilot.seconds}, {o.needsSeconds, o.ranSeconds}, limit_ - secondsSince(begin_))) {
-            const bool close = o.shortPilot && needs - pilot.seconds < kCloseRatio * (o.needsSeconds - o.ranSeconds);
-            const bool disagrees = second && std::max(needs, first->second) > kDisagreementRatio * std::min(needs, first->second);
-            if (close || disagrees) {
-                pilots_.back() += ", again later";
-                pilotAgainNext(method);
-            } else {
-                beaten_.push_back({method, {needs, pilot.seconds}});
-            }
-            return false;
+        if (second && std::max(needs, first->second) > kDisagreementRatio * std::min(needs, first->second)) {
+            pilots_.back() += ", again later";
+            pilotAgainNext(method);
+        } else {
+            beaten_.push_back({method, {needs, pilot.seconds}});
         }
-        pilots_.back() += ", took over";
-        return true;
+        return Verdict::Lost;
+    }
+
+    // The length a close pilot that has run `ran` seconds goes on to: twice as long, at least the
+    // full share of the running method's rest (path's and ir's first pilot), while all pilots
+    // stay within kLongerPilotsShare of its projected total and the time limit; `ran` where
+    // that allows no more.
+    double longerPilot(double ran, const Opponent& o) const {
+        const double longer = std::max(2 * ran, kPilotShare * (o.needsSeconds - o.ranSeconds));
+        const double allowed = std::min(kLongerPilotsShare * o.needsSeconds - pilotSeconds_, limit_ - secondsSince(begin_) + ran);
+        return longer <= allowed ? longer : ran;
     }
 
     // A beaten method goes back to the front of the pending list, to be piloted again, once what
     // its pilot showed would take over from where the running method, `ran` seconds in, stands
     // now: the projection that beat it was too low (heavy tails met late: on the glass cube ir's
     // went from 0.4 s to 14 s after beating path's short pilot, which projected 4.8 s).
-    void revisitBeaten(double ran, double needs) {
+    void revisitBeaten(GridMethod running, double ran, double needs) {
         for (auto b = beaten_.begin(); b != beaten_.end();) {
-            if (!challengerTakesOver(b->stand, {needs, ran}, limit_ - secondsSince(begin_))) {
+            if (!challengerTakesOver(b->stand, {needs, ran}, limit_ - secondsSince(begin_), takeOverMargin(b->method, running))) {
                 ++b;
                 continue;
             }
@@ -256,7 +347,9 @@ private:
             if (std::ranges::find(measured_, p.method, &Measure::first) == measured_.end())
                 unmeasured += (unmeasured.empty() ? " " : ", ") + std::string(gridMethodName(p.method));
         if (!unmeasured.empty()) s += "; not measured:" + unmeasured;
-        return s + "; ran " + gridMethodName(running) + "; pilots took " + formatDuration(pilotSeconds_);
+        s += "; ran " + std::string(gridMethodName(running));
+        if (combinedParts_ > 1) s += ", its values combined with " + std::to_string(combinedParts_ - 1) + " other runs of path and ir";
+        return s + "; pilots took " + formatDuration(pilotSeconds_);
     }
 
     const RenderScene& scene_;
@@ -280,20 +373,24 @@ private:
     using Measure = std::pair<GridMethod, double>;  // a pilot's method and projection (seconds)
     std::vector<Measure> measured_;                 // every pilot's that measured, in order
     std::vector<std::string> pilots_;  // what each pilot measured, in order
+    // Path's and ir's results: of the pilots that lost, and of the runs in progress (LiveRun).
+    std::vector<GridResult> banked_;
+    std::vector<const GridResult*> live_;
+    int combinedParts_ = 0;  // the runs in the last combination
     double pilotSeconds_ = 0;          // the pilots' own time, up to their decisions
     int pilotCount_ = 0;
 };
 
 }  // namespace
 
-bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft) {
+bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft, double margin) {
     if (!std::isfinite(challenger.needsSeconds)) return false;
     const double challengerRest = std::max(0.0, challenger.needsSeconds - challenger.ranSeconds);
     const double runningRest = std::max(0.0, running.needsSeconds - running.ranSeconds);
-    if (std::min(challengerRest, runningRest) <= secondsLeft) return challengerRest < kTakeOverRatio * runningRest;
+    if (std::min(challengerRest, runningRest) <= secondsLeft) return challengerRest < margin * runningRest;
     // Neither reaches the target within the limit: the variance at the limit, as 1 / time.
     return challenger.needsSeconds / (challenger.ranSeconds + secondsLeft) <
-           kTakeOverRatio * running.needsSeconds / (running.ranSeconds + secondsLeft);
+           margin * running.needsSeconds / (running.ranSeconds + secondsLeft);
 }
 
 double projectedGridSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {

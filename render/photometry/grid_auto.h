@@ -4,7 +4,8 @@
 // passes, short pilots of the other methods that can carry the scene's light to the points (path,
 // ir, bdpt, mir, mlt, cmlt; bdpt, mlt and cmlt through glass) measure each one's seconds to the
 // grid's error target. A method whose pilot shows it would reach the target clearly sooner than
-// the running one takes over: its pilot goes on to the end, the running one's passes dropped.
+// the running one takes over: its pilot goes on to the end, the running one's passes dropped
+// (kept where both are path or ir, below).
 // One that lost is piloted again once the running method's projection has grown past what would
 // have let it take over (heavy tails met late).
 //
@@ -12,8 +13,9 @@
 // a smaller share, grid_auto.cpp): a grid that the first method finishes in a second is not held
 // up by measuring five others, and a slow grid gives long enough pilots for the methods that
 // prepare (mlt's and cmlt's bootstrap counts in the pilot) to show their pace. The methods keep
-// their samples in different forms (points, replicas), so their results are not combined: a
-// pilot that does not take over is lost.
+// their samples in different forms (points, replicas); path's and ir's runs, pilots included,
+// are combined point by point (grid_combination.h), the others' pilots that do not take over are
+// lost.
 
 #include "render/photometry/grid_calculation.h"
 
@@ -44,10 +46,11 @@ struct MethodStand {
 };
 
 // Whether a piloted method, which goes on from its pilot, replaces the running one, with
-// `secondsLeft` of the time limit (infinite: none): when the rest it needs is under 0.7 times the
-// running one's rest, or, where neither finishes within the limit, when it would end with under
-// 0.7 times the running one's variance. The margin: pilots are short and their error bars noisy,
-// and the running one's passes are lost by the change.
-bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft);
+// `secondsLeft` of the time limit (infinite: none): when the rest it needs is under `margin`
+// times the running one's rest, or, where neither finishes within the limit, when it would end
+// with under `margin` times the running one's variance. The margin: pilots are short and their
+// error bars noisy, and where the running method's passes are lost by the change (0.7) more so
+// than where they stay in the result (path and ir, combined: 0.85).
+bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft, double margin = 0.7);
 
 }  // namespace lucerna

@@ -90,26 +90,32 @@ std::vector<double> cylindricalDeltaLux(const RenderScene& scene, const std::vec
     return lux;
 }
 
+double gridMaxRelativeError(const GridResult& r) {
+    double sum = 0;
+    int counted = 0;
+    for (size_t i = 0; i < r.lux.size(); ++i) {
+        if (i < r.insideGeometry.size() && r.insideGeometry[i]) continue;
+        sum += std::max(0.0, r.lux[i]);
+        ++counted;
+    }
+    const double average = counted > 0 ? sum / counted : 0.0;
+    double worst = 0;
+    for (size_t i = 0; i < r.lux.size(); ++i)
+        if (i >= r.insideGeometry.size() || !r.insideGeometry[i])
+            worst = std::max(worst, relativeError(r.lux[i], r.errorLux[i], 1e-3 * average));
+    return worst;
+}
+
 bool finishRound(const std::vector<BatchMeans>& points, bool trusted, const GridSettings& settings, TaskContext& ctx,
                  GridResult& result, const std::function<void(const GridResult&)>& onPass) {
     result.lux.resize(points.size());
     result.errorLux.resize(points.size());
-    result.maxRelativeError = 0;
     result.insideGeometry.resize(points.size(), 0);
-    double sum = 0;
-    int counted = 0;
     for (size_t i = 0; i < points.size(); ++i) {
         result.lux[i] = points[i].mean();
         result.errorLux[i] = points[i].halfWidth95();
-        if (result.insideGeometry[i]) continue;
-        sum += std::max(0.0, result.lux[i]);
-        ++counted;
     }
-    const double average = counted > 0 ? sum / counted : 0.0;
-    for (size_t i = 0; i < points.size(); ++i)
-        if (!result.insideGeometry[i])
-            result.maxRelativeError =
-            std::max(result.maxRelativeError, relativeError(result.lux[i], result.errorLux[i], 1e-3 * average));
+    result.maxRelativeError = gridMaxRelativeError(result);
     result.converged = trusted && result.maxRelativeError <= settings.targetRelativeError;
     double progress = trusted && std::isfinite(result.maxRelativeError)
                           ? std::min(1.0, std::pow(settings.targetRelativeError / result.maxRelativeError, 2.0))

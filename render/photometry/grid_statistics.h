@@ -51,6 +51,11 @@ inline V3f azimuthDirection(const Frame& frame, float azimuth) {
     return frame.s * std::cos(azimuth) + frame.t * std::sin(azimuth);
 }
 
+// The largest error bar relative to its point's value, or to a thousandth of the grid's average
+// for a point darker than that, over the points not inside geometry (GridResult's
+// maxRelativeError).
+double gridMaxRelativeError(const GridResult& r);
+
 // Copies the means and error bars into `result` (its passes, samplesPerPoint and seconds set by
 // the caller), decides convergence (only once `trusted`: every point's error bar within the
 // target of its value, or of a thousandth of the grid's average for a point darker than that),
