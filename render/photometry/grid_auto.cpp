@@ -219,7 +219,10 @@ private:
     // the pilots that lost, and the runs this one is nested in. r alone for the other methods,
     // whose error bars come from a few replicas.
     GridResult combined(const GridResult& r, GridMethod method) {
-        if (!estimatesPoints(method) || r.passes < kCombinedMinPasses) return r;
+        if (!estimatesPoints(method) || r.passes < kCombinedMinPasses) {
+            combinedParts_ = 0;
+            return r;
+        }
         std::vector<const GridResult*> parts{&r};
         for (const GridResult& b : banked_) parts.push_back(&b);
         for (size_t k = 0; k + 1 < live_.size(); ++k) parts.push_back(live_[k]);  // the last is r's run's
