@@ -22,8 +22,8 @@ Pooled poolRuns(const std::vector<const GridResult*>& runs, size_t i) {
     double sum = 0, squares = 0;
     int passes = 0, dof = 0;
     for (const GridResult* r : runs) {
-        const double sigma = r->errorLux[i] / studentT975(r->passes - 1);  // of r's mean
         if (r->errorLux[i] == 0) return {r->lux[i], 0, 0, true};
+        const double sigma = r->errorLux[i] / studentT975(r->passes - 1);  // of r's mean
         sum += r->passes * r->lux[i];
         squares += (r->passes - 1) * sigma * sigma * r->passes;  // (n - 1) x the per-pass variance
         passes += r->passes;
