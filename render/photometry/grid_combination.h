@@ -23,7 +23,9 @@ constexpr int kCombinedMinPasses = 32;
 //   pass means or more. A method that has met a rare contribution less often than its share
 //   (a caustic reached by few paths) shows too low a value with too small a spread, and would
 //   take the weight: a method whose value is more than 3 combined standard deviations from the
-//   reference method's is left out at that point (a consistent method, 1 time in 370);
+//   reference method's is left out at that point (a consistent method, 1 time in 370), and a
+//   method's variance is taken as at least a quarter of its median ratio to the reference
+//   method's times the reference's there (one within those 3 deviations, its spread still small);
 // - the error bar is sqrt(sum(w_m^2 e_m^2)) / sum(w_m) from the methods' 95% bars e_m (Student's
 //   quantile of their passes); a point a method has exact (bar 0: delta lights alone) takes it.
 // Runs of under kCombinedMinPasses passes are left out. The result is parts[0] with those values,

@@ -101,8 +101,9 @@ private slots:
     }
 
     // Per point: a method's runs pooled by their passes, the methods weighed by the inverse of
-    // their variance (the error bar over its Student quantile); a method far from the reference
-    // method's value left out there; a run of too few passes left out; an exact point kept exact.
+    // their variance (the error bar over its Student quantile), floored against the reference
+    // method's; a method far from the reference method's value left out there; a run of too few
+    // passes left out; an exact point kept exact.
     void combinesRunsPointByPoint() {
         GridSettings settings;
         settings.targetRelativeError = 0.03;
@@ -129,6 +130,16 @@ private slots:
         QCOMPARE(combineGridResults(same, settings).lux[0], 103.0);
         const GridResult* alone[] = {&a, &few};
         QCOMPARE(combineGridResults(alone, settings).lux, a.lux);
+        // ir's bars are twice path's but at the last point a tenth of them (a rare contribution
+        // not met yet): its variance there is floored at a quarter of its median ratio, 4, to
+        // path's, so the two weigh alike.
+        const GridResult path = partOf(GridMethod::Path, {100, 100, 100, 100}, {1, 1, 1, 2}, 1000);
+        const GridResult ir = partOf(GridMethod::Vpl, {100, 100, 100, 98}, {2, 2, 2, 0.2}, 1000);
+        const GridResult* rare[] = {&path, &ir};
+        const GridResult r = combineGridResults(rare, settings);
+        QVERIFY(std::abs(r.lux[3] - 99) < 1e-9);
+        QVERIFY(std::abs(r.errorLux[3] - 2 / std::sqrt(2.0)) < 1e-9);  // ir's bar floored at path's
+        QVERIFY(std::abs(r.lux[0] - 100) < 1e-9 && std::abs(r.errorLux[0] - 2 / std::sqrt(5.0)) < 1e-9);
     }
 
     // Independent runs of path and ir, combined, against closed forms: under a square emitter
