@@ -351,7 +351,9 @@ private:
                 unmeasured += (unmeasured.empty() ? " " : ", ") + std::string(gridMethodName(p.method));
         if (!unmeasured.empty()) s += "; not measured:" + unmeasured;
         s += "; ran " + std::string(gridMethodName(running));
-        if (combinedParts_ > 1) s += ", its values combined with " + std::to_string(combinedParts_ - 1) + " other runs of path and ir";
+        if (combinedParts_ > 1)
+            s += ", its values combined with " + std::to_string(combinedParts_ - 1) + (combinedParts_ == 2 ? " other run" : " other runs") +
+                 " of path and ir";
         return s + "; pilots took " + formatDuration(pilotSeconds_);
     }
 
