@@ -224,12 +224,12 @@ private:
             return r;
         }
         std::vector<const GridResult*> parts{&r};
-        for (const GridResult& b : banked_) parts.push_back(&b);
-        for (size_t k = 0; k + 1 < live_.size(); ++k) parts.push_back(live_[k]);  // the last is r's run's
-        GridResult c = combineGridResults(parts, settings_);
-        combinedParts_ = 0;
-        for (const GridResult* p : parts) combinedParts_ += p->passes >= kCombinedMinPasses;
-        return c;
+        for (const GridResult& b : banked_)
+            if (b.passes >= kCombinedMinPasses) parts.push_back(&b);
+        for (size_t k = 0; k + 1 < live_.size(); ++k)  // the last is r's run's
+            if (live_[k]->passes >= kCombinedMinPasses) parts.push_back(live_[k]);
+        combinedParts_ = int(parts.size());
+        return parts.size() == 1 ? r : combineGridResults(parts, settings_);
     }
 
     // The length of p's pilot now: a share of the running method's rest, within the pilots'

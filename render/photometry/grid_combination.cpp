@@ -68,23 +68,26 @@ GridResult combineGridResults(std::span<const GridResult* const> parts, const Gr
     if (parts.empty()) return {};
     GridResult out = *parts[0];
     // The methods' runs, the reference's first.
-    std::vector<std::vector<const GridResult*>> methods;
-    std::vector<GridMethod> names;
+    struct MethodRuns {
+        GridMethod method;
+        std::vector<const GridResult*> runs;
+    };
+    std::vector<MethodRuns> methods;
     for (const GridResult* p : parts) {
         if (!p || p->passes < kCombinedMinPasses) continue;
-        size_t m = 0;
-        while (m < names.size() && names[m] != p->method) ++m;
-        if (m == names.size()) names.push_back(p->method), methods.emplace_back();
-        methods[m].push_back(p);
+        auto m = std::ranges::find(methods, p->method, &MethodRuns::method);
+        if (m == methods.end()) m = methods.insert(methods.end(), {p->method, {}});
+        m->runs.push_back(p);
     }
-    if (methods.empty() || names[0] != parts[0]->method || (methods.size() == 1 && methods[0].size() == 1)) return out;
+    if (methods.empty() || methods[0].method != parts[0]->method || (methods.size() == 1 && methods[0].runs.size() == 1))
+        return out;
     out.passes = 0;
     out.samplesPerPoint = 0;
-    for (const auto& runs : methods)
-        for (const GridResult* r : runs) out.passes += r->passes, out.samplesPerPoint += r->samplesPerPoint;
+    for (const MethodRuns& m : methods)
+        for (const GridResult* r : m.runs) out.passes += r->passes, out.samplesPerPoint += r->samplesPerPoint;
     std::vector<std::vector<Pooled>> pooled(out.lux.size());  // per point, per method
     for (size_t i = 0; i < out.lux.size(); ++i)
-        for (const auto& runs : methods) pooled[i].push_back(poolRuns(runs, i));
+        for (const MethodRuns& m : methods) pooled[i].push_back(poolRuns(m.runs, i));
     const std::vector<double> floors = varianceFloors(pooled);
     for (size_t i = 0; i < out.lux.size(); ++i) {
         const Pooled& reference = pooled[i][0];

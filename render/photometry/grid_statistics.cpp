@@ -91,18 +91,15 @@ std::vector<double> cylindricalDeltaLux(const RenderScene& scene, const std::vec
 }
 
 double gridMaxRelativeError(const GridResult& r) {
+    const auto counted = [&](size_t i) { return i >= r.insideGeometry.size() || !r.insideGeometry[i]; };
     double sum = 0;
-    int counted = 0;
-    for (size_t i = 0; i < r.lux.size(); ++i) {
-        if (i < r.insideGeometry.size() && r.insideGeometry[i]) continue;
-        sum += std::max(0.0, r.lux[i]);
-        ++counted;
-    }
-    const double average = counted > 0 ? sum / counted : 0.0;
+    int count = 0;
+    for (size_t i = 0; i < r.lux.size(); ++i)
+        if (counted(i)) sum += std::max(0.0, r.lux[i]), ++count;
+    const double average = count > 0 ? sum / count : 0.0;
     double worst = 0;
     for (size_t i = 0; i < r.lux.size(); ++i)
-        if (i >= r.insideGeometry.size() || !r.insideGeometry[i])
-            worst = std::max(worst, relativeError(r.lux[i], r.errorLux[i], 1e-3 * average));
+        if (counted(i)) worst = std::max(worst, relativeError(r.lux[i], r.errorLux[i], 1e-3 * average));
     return worst;
 }
 
