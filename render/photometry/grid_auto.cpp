@@ -35,10 +35,10 @@ constexpr double kPilotShare = 0.05;
 constexpr double kFirstPointPilotShare = 0.01;
 constexpr double kCloseRatio = 3;
 // Between path and ir that short first pilot may take up to this share of the running method's
-// rest, not kPilotShare: their runs are combined (grid_combination.h), so a pilot that loses
-// costs little, and on a grid done in a tenth of a second a twentieth of the rest is shorter
-// than the shortest pilot (the closed room of albedo 0.5: ir runs 0.1 s, path was piloted on 1
-// of 4 seeds and then took over, 0.05 s).
+// rest, not kPilotShare: one that loses costs a hundredth of a second (and is combined where it
+// ran kCombinedMinPasses), while on a grid done in a tenth of a second a twentieth of the rest is
+// shorter than the shortest pilot (the closed room of albedo 0.5: ir runs 0.1 s, path was piloted
+// on 1 of 4 seeds, then took over and finished in 0.05 s).
 constexpr double kCombinedPilotRestShare = 0.5;
 // A pilot at its full share that does not take over, whose rest is under kCloserRatio times the
 // running method's and whose projection is still falling fast (under kFallingRatio times its
