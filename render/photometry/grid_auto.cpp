@@ -243,9 +243,7 @@ private:
     // weighed at equal times, takesOver).
     double budget(GridMethod running, double ran, double needs, const Pending& p) const {
         const double rest = std::min(needs - ran, limit_ - secondsSince(begin_));
-        const double share = p.shortPilot ? std::max(kFirstPointPilotShare * rest, kShortestPointPilotSeconds) : kPilotShare * rest;
-        const double ofRest = p.shortPilot && estimatesPoints(running) ? kCombinedPilotRestShare : kPilotShare;
-        return std::min({share, ofRest * rest, kPilotsShare * needs - pilotSeconds_});
+        return pilotLengthSeconds(p.shortPilot, estimatesPoints(running), rest, needs, pilotSeconds_);
     }
 
     // The next method to pilot between the running method's passes, taken off the pending list;
@@ -403,6 +401,14 @@ bool challengerTakesOver(const MethodStand& challenger, const MethodStand& runni
     // Neither reaches the target within the limit: the variance at the limit, as 1 / time.
     return challenger.needsSeconds / (challenger.ranSeconds + secondsLeft) <
            margin * running.needsSeconds / (running.ranSeconds + secondsLeft);
+}
+
+double pilotLengthSeconds(bool shortPilot, bool againstPathOrIr, double restSeconds, double needsSeconds,
+                          double pilotsSeconds) {
+    const double share = shortPilot ? std::max(kFirstPointPilotShare * restSeconds, kShortestPointPilotSeconds)
+                                    : kPilotShare * restSeconds;
+    const double ofRest = shortPilot && againstPathOrIr ? kCombinedPilotRestShare : kPilotShare;
+    return std::min({share, ofRest * restSeconds, kPilotsShare * needsSeconds - pilotsSeconds});
 }
 
 double projectedGridSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {

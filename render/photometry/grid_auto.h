@@ -38,6 +38,17 @@ GridResult computeGridByAuto(const RenderScene& scene, const std::vector<V3d>& p
 // methods before their first).
 double projectedGridSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings);
 
+// The length of a pilot now, in seconds: a share of the running method's projected rest
+// (`restSeconds`), within what all pilots together may still take (a tenth of its projected
+// total `needsSeconds`, less the `pilotsSeconds` they took). Path's or ir's first pilot
+// (`shortPilot`) is a hundredth of the rest, at least 0.01 s, and may take up to half the rest
+// where the running method is path or ir too (`againstPathOrIr`): one that loses costs that
+// hundredth, and on a grid done in a tenth of a second a twentieth of the rest would be shorter
+// than the shortest pilot. Any other pilot is a twentieth of the rest. A pilot shorter than its
+// method's shortest (0.01 s for path and ir, 0.05 s for the others) is not run.
+double pilotLengthSeconds(bool shortPilot, bool againstPathOrIr, double restSeconds, double needsSeconds,
+                          double pilotsSeconds);
+
 // Where a method stands: the seconds it needs from its start to reach the grid's target
 // (projected: seconds x (error / target)^2, error bars shrinking as 1 / sqrt(time)), and the
 // seconds it has run.

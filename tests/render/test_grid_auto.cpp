@@ -78,6 +78,21 @@ private slots:
         QVERIFY(challengerTakesOver({12, 2}, {40, 10}, 8));         // 12/10 = 1.2 against 1.56
     }
 
+    // A share of the running method's rest, within the pilots' tenth of its total; path's or
+    // ir's first pilot a hundredth (at least 0.01 s), up to half the rest against path or ir.
+    void pilotsAreAShareOfTheRest() {
+        QCOMPARE(pilotLengthSeconds(false, true, 10, 20, 0), 0.5);  // a twentieth
+        QCOMPARE(pilotLengthSeconds(true, true, 10, 20, 0), 0.1);   // a hundredth
+        QCOMPARE(pilotLengthSeconds(true, false, 10, 20, 0), 0.1);
+        QCOMPARE(pilotLengthSeconds(false, true, 10, 20, 1.8), 0.2);  // 2 s for all pilots, 1.8 taken
+        // A grid ir finishes in a tenth of a second (the closed room of albedo 0.5): path's first
+        // pilot still gets the shortest length, 0.01 s, against ir; against bdpt, no pilot of
+        // 0.01 s fits in a twentieth of the rest.
+        QCOMPARE(pilotLengthSeconds(true, true, 0.12, 0.137, 0), 0.01);
+        QVERIFY(pilotLengthSeconds(true, false, 0.12, 0.137, 0) < 0.01);
+        QCOMPARE(pilotLengthSeconds(true, true, 0.015, 0.2, 0), 0.0075);  // never past half the rest
+    }
+
     // Seconds x (error / target)^2 for the passes, the preparation added unscaled; infinite
     // before the error bars are trusted.
     void projectsThePassesNotThePreparation() {
