@@ -35,10 +35,9 @@ constexpr double kPilotShare = 0.05;
 constexpr double kFirstPointPilotShare = 0.01;
 constexpr double kCloseRatio = 3;
 // Between path and ir that short first pilot may take up to this share of the running method's
-// rest, not kPilotShare: one that loses costs a hundredth of a second (and is combined where it
-// ran kCombinedMinPasses), while on a grid done in a tenth of a second a twentieth of the rest is
-// shorter than the shortest pilot (the closed room of albedo 0.5: ir runs 0.1 s, path was piloted
-// on 1 of 4 seeds, then took over and finished in 0.05 s).
+// rest, not kPilotShare (pilotLengthSeconds, grid_auto.h): on the closed room of albedo 0.5 ir
+// runs 0.1 s, and path, held to a twentieth, was piloted on 1 of 4 seeds, then took over and
+// finished in 0.05 s.
 constexpr double kCombinedPilotRestShare = 0.5;
 // A pilot at its full share that does not take over, whose rest is under kCloserRatio times the
 // running method's and whose projection is still falling fast (under kFallingRatio times its
@@ -238,9 +237,8 @@ private:
         return parts.size() == 1 ? r : combineGridResults(parts, settings_);
     }
 
-    // The length of p's pilot now: a share of the running method's rest, within the pilots'
-    // share of its total; it waits until that method has run as long (so that the two are
-    // weighed at equal times, takesOver).
+    // The length of p's pilot now (pilotLengthSeconds); it waits until the running method has
+    // run as long, so that the two are weighed at equal times (weigh).
     double budget(GridMethod running, double ran, double needs, const Pending& p) const {
         const double rest = std::min(needs - ran, limit_ - secondsSince(begin_));
         return pilotLengthSeconds(p.shortPilot, estimatesPoints(running), rest, needs, pilotSeconds_);
