@@ -408,10 +408,11 @@ bool challengerTakesOver(const MethodStand& challenger, const MethodStand& runni
 
 double pilotLengthSeconds(bool shortPilot, bool againstPathOrIr, double restSeconds, double needsSeconds,
                           double pilotsSeconds) {
-    const double share = shortPilot ? std::max(kFirstPointPilotShare * restSeconds, kShortestPointPilotSeconds)
-                                    : kPilotShare * restSeconds;
-    const double ofRest = shortPilot && againstPathOrIr ? kCombinedPilotRestShare : kPilotShare;
-    return std::min({share, ofRest * restSeconds, kPilotsShare * needsSeconds - pilotsSeconds});
+    const double share =
+        shortPilot ? std::min(std::max(kFirstPointPilotShare * restSeconds, kShortestPointPilotSeconds),
+                              (againstPathOrIr ? kCombinedPilotRestShare : kPilotShare) * restSeconds)
+                   : kPilotShare * restSeconds;
+    return std::min(share, kPilotsShare * needsSeconds - pilotsSeconds);
 }
 
 double projectedGridSeconds(const GridResult& r, double ran, GridMethod method, const GridSettings& settings) {

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 namespace lucerna {
@@ -90,15 +89,14 @@ GridResult combineGridResults(std::span<const GridResult* const> parts, const Gr
         for (const MethodRuns& m : methods) pooled[i].push_back(poolRuns(m.runs, i));
     const std::vector<double> floors = varianceFloors(pooled);
     for (size_t i = 0; i < out.lux.size(); ++i) {
+        if (const auto exact = std::ranges::find_if(pooled[i], &Pooled::exact); exact != pooled[i].end()) {
+            out.lux[i] = exact->mean, out.errorLux[i] = 0;
+            continue;
+        }
         const Pooled& reference = pooled[i][0];
         double weights = 0, value = 0, bar = 0;
-        bool exact = false;
         for (size_t m = 0; m < methods.size(); ++m) {
             const Pooled& p = pooled[i][m];
-            if (p.exact) {
-                out.lux[i] = p.mean, out.errorLux[i] = 0, exact = true;
-                break;
-            }
             if (std::abs(p.mean - reference.mean) > 3 * std::sqrt(p.variance + reference.variance)) continue;
             const double variance = std::max(p.variance, floors[m] * reference.variance);
             const double w = variance > 0 ? 1 / variance : 0.0;
@@ -106,7 +104,6 @@ GridResult combineGridResults(std::span<const GridResult* const> parts, const Gr
             value += w * p.mean;
             bar += w * w * p.quantile * p.quantile * variance;
         }
-        if (exact) continue;
         out.lux[i] = weights > 0 ? value / weights : reference.mean;
         out.errorLux[i] = weights > 0 ? std::sqrt(bar) / weights : reference.bar();
     }
