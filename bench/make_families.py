@@ -7,7 +7,9 @@ DIR/door-*.json      two rooms joined by a door ajar at 2, 8 or 30 degrees, lit 
                      ceiling panel, a point light or a luminaire, walls of different albedo
                      (variants of resources/scenes/door.json), 160x108;
 DIR/caustic-*.json   glass of different shapes, mirrors and glossy floors under a small light
-                     (variants of resources/scenes/caustics.json), 160x120.
+                     (variants of resources/scenes/caustics.json), 160x120;
+DIR/cornell-*.json   the Cornell box with one block a mirror (chrome) or glass, under its area light
+                     (issue 38: auto's candidates with specular surfaces and no point light), 128x128.
 The closed spheres (albedo 0.5 to 0.9, closed form) come from `bench_make_scenes DIR`: albedo 0.5
 and 0.8 decide, 0.6, 0.7 and 0.9 are held out.
 
@@ -36,6 +38,8 @@ FAMILIES = {
     "caustic-two-mirrors":     ("tune",     dict(glass=None,   floor_roughness=0.12, mirrors=2, lamp=0.30)),
     "caustic-small-light":     ("held-out", dict(glass="ball", floor_roughness=0.12, mirrors=1, lamp=0.12)),
     "caustic-slab-mirror":     ("held-out", dict(glass="slab", floor_roughness=0.05, mirrors=2, lamp=0.30)),
+    "cornell-mirror-block":    ("held-out", dict(block="tall_block",  material="chrome")),
+    "cornell-glass-block":     ("held-out", dict(block="short_block", material="glass")),
 }
 
 BOX_TRIANGLES = [[0, 2, 1], [0, 3, 2], [4, 5, 6], [4, 6, 7], [0, 1, 5], [0, 5, 4], [3, 7, 6], [3, 6, 2],
@@ -97,6 +101,15 @@ def caustic_scene(base, glass, floor_roughness, mirrors, lamp):
     s["objects"] = objects
     return s
 
+def cornell_scene(base, materials, block, material):
+    s = copy.deepcopy(base)
+    s["camera"]["resolution"] = [128, 128]
+    s["materials"][material] = materials[material]
+    for o in s["objects"]:
+        if o["name"] == block:
+            o["material"] = material
+    return s
+
 
 def main():
     if len(sys.argv) != 2:
@@ -109,8 +122,14 @@ def main():
             shutil.copytree(os.path.join(SCENES, folder), target)
     door = json.load(open(os.path.join(SCENES, "door.json")))
     caustic = json.load(open(os.path.join(SCENES, "caustics.json")))
+    cornell = json.load(open(os.path.join(SCENES, "cornell-box.json")))
     for name, (role, p) in FAMILIES.items():
-        scene = door_scene(door, **p) if name.startswith("door") else caustic_scene(caustic, **p)
+        if name.startswith("door"):
+            scene = door_scene(door, **p)
+        elif name.startswith("cornell"):
+            scene = cornell_scene(cornell, caustic["materials"], **p)
+        else:
+            scene = caustic_scene(caustic, **p)
         path = os.path.join(out, name + ".json")
         with open(path, "w") as f:
             json.dump(scene, f, indent=1)

@@ -159,6 +159,13 @@ void TestMeasuredAuto::candidatesAreConsistent() {
       "objects": [{"name": "pane", "material": "g", "mesh": {"quad": [[-1,0,-1],[-1,0,1],[1,0,1],[1,0,-1]]}}],
       "lights": [{"name": "bulb", "type": "point", "position": [0, 2, 0], "intensity": [1, 1, 1]}]})";
     QCOMPARE(autoCandidates(parseScene(glass, "glass.json")), (std::vector<std::string>{"bdpt", "mlt", "cmlt"}));
+    // The same pane under an emitter: a path tracer reaches the lamp through it.
+    const std::string panel = R"({"lucerna": 1, "camera": {"position": [0, 1, -3], "target": [0, 0, 0], "fov_y": 50,
+      "resolution": [16, 16]}, "materials": {"g": {"type": "dielectric", "ior": 1.5},
+      "lamp": {"type": "emitter", "radiance": [5, 5, 5]}},
+      "objects": [{"name": "pane", "material": "g", "mesh": {"quad": [[-1,0,-1],[-1,0,1],[1,0,1],[1,0,-1]]}},
+                  {"name": "lamp", "material": "lamp", "mesh": {"quad": [[-1,2,-1],[1,2,-1],[1,2,1],[-1,2,1]]}}]})";
+    QCOMPARE(autoCandidates(parseScene(panel, "panel.json")), (std::vector<std::string>{"bdpt", "mlt", "cmlt", "path"}));
     RectangleOverPlane s;
     QCOMPARE(autoCandidates(parseScene(s.json(), "plane.json")).size(), size_t(6));
 }

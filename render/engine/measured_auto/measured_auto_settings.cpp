@@ -5,8 +5,14 @@
 namespace lucerna {
 
 std::vector<std::string> autoCandidates(const Scene& scene) {
-    if (analyseFeatures(scene).hasSpecular()) return {"bdpt", "mlt", "cmlt"};
-    return {"path", "bdpt", "ir", "mir", "mlt", "cmlt"};
+    const SceneFeatures f = analyseFeatures(scene);
+    if (!f.hasSpecular()) return {"path", "bdpt", "ir", "mir", "mlt", "cmlt"};
+    // A path tracer finds a caustic only by hitting its emitter after the specular bounces, so it
+    // is consistent where every light has an area (emitters, the sky), not a point or a single
+    // direction (point, spot, luminaire, directional, the sun). Last, so that the others keep
+    // their replicas' seeds (their index) with or without it.
+    if (!f.hasDeltaLights() && !f.hasSun) return {"bdpt", "mlt", "cmlt", "path"};
+    return {"bdpt", "mlt", "cmlt"};
 }
 
 MeasuredAutoSettings MeasuredAutoSettings::forScene(const Scene& scene, const RenderSettings& render) {

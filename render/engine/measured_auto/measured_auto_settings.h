@@ -32,9 +32,9 @@ struct MeasuredAutoSettings {
 };
 
 // The methods auto may combine for `scene`. Every one must be consistent, so that the combination
-// is: with mirrors or glass, the ones with light-side strategies (bdpt, mlt, cmlt; a path tracer
-// cannot find a point light's caustic, nor VPLs a path through a mirror); otherwise all six
-// tracing methods.
+// is: with mirrors or glass, the ones with light-side strategies (bdpt, mlt, cmlt; VPLs cannot
+// carry a caustic), and path where no light is a point or a single direction (a path tracer cannot
+// find a point light's caustic); otherwise all six tracing methods.
 std::vector<std::string> autoCandidates(const Scene& scene);
 
 }  // namespace lucerna
