@@ -101,6 +101,7 @@ def caustic_scene(base, glass, floor_roughness, mirrors, lamp):
     s["objects"] = objects
     return s
 
+
 def cornell_scene(base, materials, block, material):
     s = copy.deepcopy(base)
     s["camera"]["resolution"] = [128, 128]
