@@ -12,6 +12,7 @@
 
 #include <QtTest>
 
+#include <numeric>
 #include <random>
 
 using namespace lucerna;
@@ -59,6 +60,7 @@ private slots:
     void chainHalvesAreInflated();
     void rareEventTakesNoWeight();
     void allocationKeepsEachRelmse();
+    void relmseIsPerPixel();
     void candidatesAreConsistent();
     void bestByFarTakesTheTime();
     void saysWhatItDecided();
@@ -131,26 +133,59 @@ void TestMeasuredAuto::allocationKeepsEachRelmse() {
     const size_t n = 8;
     std::vector<double> means(n);
     for (size_t t = 0; t < n; ++t) means[t] = t < n / 2 ? 1.0 : 0.01;
-    const auto relative = [&](size_t t) { return relmseDenominator(means[t]); };
-    TileStats dark{means, std::vector(n, 0.0), std::vector(n, 0.0)}, bright = dark;
-    for (size_t t = 0; t < n; ++t) (t < n / 2 ? bright : dark).variance[t] = 0.02 * relative(t);
+    TileStats dark{means, std::vector(n, 0.0), std::vector(n, 0.0), {}}, bright = dark;
+    for (size_t t = 0; t < n; ++t) (t < n / 2 ? bright : dark).variance[t] = 0.02 * relmseDenominator(means[t]);
     const std::vector<const TileStats*> stats{&dark, &bright};
-    const auto measured = measuredSquaredErrors(stats);
-    const auto relmse = [&](const std::vector<double>& e) {
-        double sum = 0;
-        for (size_t t = 0; t < n; ++t) sum += e[t] / relative(t) / double(n);
-        return sum;
-    };
+    const auto relative = relativeSquaredErrors(stats);
+    const auto relmse = [&](const std::vector<double>& e) { return std::accumulate(e.begin(), e.end(), 0.0) / double(n); };
     for (size_t k = 0; k < 2; ++k)
-        for (size_t t = 0; t < n; ++t) QCOMPARE(measured[k][t], stats[k]->variance[t]);  // the means agree: no distance
-    const auto pooled = pooledTowardMean(measured, means);
+        for (size_t t = 0; t < n; ++t)  // the means agree: no distance
+            QCOMPARE_LE(std::abs(relative[k][t] - stats[k]->variance[t] / relmseDenominator(means[t])), 1e-12);
+    const auto pooled = pooledTowardMean(relative);
     for (size_t k = 0; k < 2; ++k) {
         QCOMPARE_LE(std::abs(relmse(pooled[k]) - 0.01), 1e-12);
         for (size_t t = 0; t < n; ++t)  // halfway between 0 or 0.02 and the mean 0.01
-            QCOMPARE_LE(std::abs(pooled[k][t] / relative(t) - (stats[k]->variance[t] > 0 ? 0.015 : 0.005)), 1e-12);
+            QCOMPARE_LE(std::abs(pooled[k][t] - (stats[k]->variance[t] > 0 ? 0.015 : 0.005)), 1e-12);
     }
-    const auto gains = marginalGains(pooled, std::vector{1.0, 1.0}, means);
+    const auto gains = marginalGains(pooled, std::vector{1.0, 1.0});
     QCOMPARE_LE(std::abs(gains[0] / gains[1] - 1.0), 1e-9);
+}
+
+void TestMeasuredAuto::relmseIsPerPixel() {
+    // Inside every tile, bright (1) and dark (0.01) columns alternate. Method a is noisy on the
+    // bright pixels, b on the dark, with the same relmse by SPEC (b's standard deviation 10 times
+    // smaller, as the denominators are 1.01 and 0.0101). Against the tile mean's denominator b's
+    // error would read 100 times smaller; against the median of the methods' images, per pixel,
+    // the two read alike, and their mean over the tiles is the relmse.
+    std::mt19937 rng(17);
+    const TileGrid tiles(kSize, kSize, kTile);
+    const auto truth = [](int x) { return x % 2 ? 1.0 : 0.01; };
+    const double sdBright = 0.2, sdDark = 0.2 * std::sqrt(relmseDenominator(0.01) / relmseDenominator(1.0));
+    const auto scene = [&](double sdOnBright, double sdOnDark) {
+        std::array<ReplicaImages, 2> p = pair(rng, [&](int x) { return x % 2 ? sdOnBright : sdOnDark; });
+        for (ReplicaImages& r : p)
+            for (Image* i : {&r.image, &r.half[0], &r.half[1]})
+                for (int y = 0; y < kSize; ++y)
+                    for (int x = 0; x < kSize; ++x) i->at(x, y) = i->at(x, y) + Rgb(1, 1, 1) * float(truth(x) - 1);
+        return p;
+    };
+    const std::array<ReplicaImages, 2> a = scene(sdBright, 0), b = scene(0, sdDark);
+    const Image meanA = a[0].image, meanB = b[0].image;
+    const std::vector<const Image*> both{&meanA, &meanB};
+    const Image reference = medianImage(both);
+    const MethodMeasure ma = measureMethod(a, tiles, true, 1, 1, &reference);
+    const MethodMeasure mb = measureMethod(b, tiles, true, 1, 1, &reference);
+    const std::vector<const TileStats*> stats{&ma.pair, &mb.pair};
+    const auto e = relativeSquaredErrors(stats);
+    double relmse[2] = {0, 0};
+    for (size_t k = 0; k < 2; ++k)
+        for (double x : e[k]) relmse[k] += x / tiles.count();
+    // A half's variance sd^2, a replica's sd^2 / 2, the pair's mean's sd^2 / 4, on half of the
+    // pixels.
+    const double expected = sdBright * sdBright / 8 / relmseDenominator(1.0);
+    qInfo("relmse a %.3g, b %.3g, expected %.3g", relmse[0], relmse[1], expected);
+    QCOMPARE_LE(std::abs(relmse[1] / relmse[0] - 1.0), 0.25);
+    QCOMPARE_LE(std::abs(relmse[0] / expected - 1.0), 0.25);
 }
 
 void TestMeasuredAuto::candidatesAreConsistent() {

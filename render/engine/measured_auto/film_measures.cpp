@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace lucerna {
 
@@ -12,26 +13,33 @@ double channel(const Rgb& c, int i) { return i == 0 ? c.x : (i == 1 ? c.y : c.z)
 // Per tile: the mean of `a` and of the squared differences (a - b)^2 / 4 over pixels and
 // channels, and the squared difference of the tile means of a and b over 4. With a and b two
 // independent estimates of equal variance, the last two are the variances of one value and of
-// the tile mean of (a + b) / 2.
+// the tile mean of (a + b) / 2. With a reference, also the squared differences over 4 each by
+// SPEC's denominator of its reference value.
 struct DifferenceSums {
-    std::vector<double> meanA, meanB, halfDifference2, values;
+    std::vector<double> meanA, meanB, halfDifference2, relativeHalfDifference2, values;
 };
-DifferenceSums differences(const Image& a, const Image& b, const TileGrid& tiles) {
+DifferenceSums differences(const Image& a, const Image& b, const TileGrid& tiles, const Image* reference) {
     DifferenceSums s;
     const size_t n = size_t(tiles.count());
     s.meanA.assign(n, 0.0), s.meanB.assign(n, 0.0), s.halfDifference2.assign(n, 0.0), s.values.assign(n, 0.0);
+    if (reference) s.relativeHalfDifference2.assign(n, 0.0);
     for (int y = 0; y < tiles.height; ++y)
         for (int x = 0; x < tiles.width; ++x) {
             const size_t t = size_t(tiles.of(x, y));
             for (int c = 0; c < 3; ++c) {
                 const double va = channel(a.at(x, y), c), vb = channel(b.at(x, y), c);
                 if (!std::isfinite(va) || !std::isfinite(vb)) continue;
-                s.meanA[t] += va, s.meanB[t] += vb, s.halfDifference2[t] += 0.25 * (va - vb) * (va - vb);
+                const double d2 = 0.25 * (va - vb) * (va - vb);
+                s.meanA[t] += va, s.meanB[t] += vb, s.halfDifference2[t] += d2;
+                if (reference) s.relativeHalfDifference2[t] += d2 / relmseDenominator(channel(reference->at(x, y), c));
                 s.values[t] += 1;
             }
         }
-    for (size_t t = 0; t < n; ++t)
-        if (s.values[t] > 0) s.meanA[t] /= s.values[t], s.meanB[t] /= s.values[t], s.halfDifference2[t] /= s.values[t];
+    for (size_t t = 0; t < n; ++t) {
+        if (!(s.values[t] > 0)) continue;
+        s.meanA[t] /= s.values[t], s.meanB[t] /= s.values[t], s.halfDifference2[t] /= s.values[t];
+        if (reference) s.relativeHalfDifference2[t] /= s.values[t];
+    }
     return s;
 }
 
@@ -43,6 +51,7 @@ TileStats statsOf(const DifferenceSums& d, double scale, std::span<const double>
     s.mean.assign(mean.begin(), mean.end());
     s.variance.resize(d.values.size());
     s.meanVariance.resize(d.values.size());
+    for (double r : d.relativeHalfDifference2) s.relativeVariance.push_back(scale * r);
     for (size_t t = 0; t < d.values.size(); ++t) {
         s.variance[t] = scale * d.halfDifference2[t];
         const double m = 0.5 * (d.meanA[t] - d.meanB[t]);
@@ -58,16 +67,61 @@ double lowerMedian(std::vector<double> v) {
     return v[k];
 }
 
+// The median; of an even count, the mean of the middle two.
+double median(std::vector<double> v) {
+    if (v.empty()) return 0;
+    const size_t k = v.size() / 2;
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    if (v.size() % 2) return v[k];
+    return 0.5 * (v[k] + *std::max_element(v.begin(), v.begin() + std::ptrdiff_t(k)));
+}
+
+// Per method and tile, the squared distance of its tile mean from the other methods' that their
+// variances do not explain: the lower median of the distances to each other method.
+std::vector<std::vector<double>> unexplainedDistances(std::span<const TileStats* const> methods) {
+    const size_t k = methods.size(), n = methods[0]->mean.size();
+    std::vector<std::vector<double>> e(k, std::vector<double>(n, 0.0));
+    std::vector<double> distances;
+    for (size_t i = 0; i < k; ++i)
+        for (size_t t = 0; t < n; ++t) {
+            distances.clear();
+            for (size_t j = 0; j < k; ++j) {
+                if (j == i) continue;
+                const double d = methods[i]->mean[t] - methods[j]->mean[t];
+                distances.push_back(std::max(0.0, d * d - 3.0 * (methods[i]->meanVariance[t] + methods[j]->meanVariance[t])));
+            }
+            e[i][t] = lowerMedian(distances);
+        }
+    return e;
+}
+
 }  // namespace
 
 TileGrid::TileGrid(int width, int height, int size)
     : width(width), height(height), size(std::max(1, size)), nx((width + this->size - 1) / this->size),
       ny((height + this->size - 1) / this->size) {}
 
+Image medianImage(std::span<const Image* const> images) {
+    Image out(images[0]->width, images[0]->height);
+    std::vector<double> v;
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            double c[3];
+            for (int i = 0; i < 3; ++i) {
+                v.clear();
+                for (const Image* image : images)
+                    if (const double value = channel(image->at(x, y), i); std::isfinite(value)) v.push_back(value);
+                c[i] = median(v);
+            }
+            out.at(x, y) = Rgb(float(c[0]), float(c[1]), float(c[2]));
+        }
+    return out;
+}
+
 MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const TileGrid& tiles, bool withHalves,
-                            double samples0, double samples1) {
+                            double samples0, double samples1, const Image* reference) {
     MethodMeasure m;
-    const DifferenceSums across = differences(replicas[0].image, replicas[1].image, tiles);
+    const DifferenceSums across = differences(replicas[0].image, replicas[1].image, tiles, reference);
     // With per-sample variance s^2, (a - b)^2 estimates s^2 (1/n0 + 1/n1) and the mean by samples
     // has variance s^2 / (n0 + n1): a ratio of n0 n1 / (n0 + n1)^2, a quarter for equal replicas
     // (what `differences` took).
@@ -79,7 +133,7 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
 
     std::array<DifferenceSums, 2> within;
     double acrossSum = 0, withinSum = 0;
-    for (int r = 0; r < 2; ++r) within[r] = differences(replicas[r].half[0], replicas[r].half[1], tiles);
+    for (int r = 0; r < 2; ++r) within[r] = differences(replicas[r].half[0], replicas[r].half[1], tiles, nullptr);
     for (size_t t = 0; t < across.values.size(); ++t) {
         // (a - b)^2 estimates the sum of the replicas' variances, the halves each replica's.
         acrossSum += 4.0 * across.halfDifference2[t] * across.values[t];
@@ -121,21 +175,25 @@ std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
 }
 
 std::vector<std::vector<double>> measuredSquaredErrors(std::span<const TileStats* const> methods) {
-    const size_t k = methods.size();
-    if (k == 0) return {};
-    const size_t n = methods[0]->mean.size();
-    std::vector<std::vector<double>> e(k, std::vector<double>(n, 0.0));
-    std::vector<double> distances;
-    for (size_t i = 0; i < k; ++i)
-        for (size_t t = 0; t < n; ++t) {
-            distances.clear();
-            for (size_t j = 0; j < k; ++j) {
-                if (j == i) continue;
-                const double d = methods[i]->mean[t] - methods[j]->mean[t];
-                distances.push_back(std::max(0.0, d * d - 3.0 * (methods[i]->meanVariance[t] + methods[j]->meanVariance[t])));
-            }
-            e[i][t] = methods[i]->variance[t] + lowerMedian(distances);
+    if (methods.empty()) return {};
+    std::vector<std::vector<double>> e = unexplainedDistances(methods);
+    for (size_t i = 0; i < e.size(); ++i)
+        for (size_t t = 0; t < e[i].size(); ++t) e[i][t] += methods[i]->variance[t];
+    return e;
+}
+
+std::vector<std::vector<double>> relativeSquaredErrors(std::span<const TileStats* const> methods) {
+    if (methods.empty()) return {};
+    std::vector<std::vector<double>> e = unexplainedDistances(methods);
+    std::vector<double> means(methods.size());
+    for (size_t t = 0; t < e[0].size(); ++t) {
+        for (size_t i = 0; i < methods.size(); ++i) means[i] = methods[i]->mean[t];
+        const double denominator = relmseDenominator(median(means));
+        for (size_t i = 0; i < e.size(); ++i) {
+            const TileStats& m = *methods[i];
+            e[i][t] = e[i][t] / denominator + (m.relativeVariance.empty() ? m.variance[t] / denominator : m.relativeVariance[t]);
         }
+    }
     return e;
 }
 
@@ -208,28 +266,25 @@ Image combineImages(std::span<const Image* const> images, const std::vector<std:
     return out;
 }
 
-std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<double>>& errors,
-                                                  std::span<const double> tileMeans) {
+std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<double>>& errors) {
     std::vector<std::vector<double>> pooled = errors;
     for (auto& e : pooled) {
-        double mean = 0;
-        for (size_t t = 0; t < e.size(); ++t) mean += e[t] / relmseDenominator(tileMeans[t]) / double(e.size());
-        for (size_t t = 0; t < e.size(); ++t) e[t] = 0.5 * (e[t] + mean * relmseDenominator(tileMeans[t]));
+        const double mean = std::accumulate(e.begin(), e.end(), 0.0) / double(e.size());
+        for (double& x : e) x = 0.5 * (x + mean);
     }
     return pooled;
 }
 
-std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs,
-                                  std::span<const double> tileMeans) {
+std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs) {
     std::vector<double> g(errors.size(), 0.0);
     if (errors.empty()) return g;
     for (size_t t = 0; t < errors[0].size(); ++t) {
         double precision = 0;
         for (const auto& e : errors) precision += e[t] > 0 ? 1.0 / e[t] : 0.0;
         if (!(precision > 0)) continue;
-        const double v = 1.0 / precision, relative = 1.0 / relmseDenominator(tileMeans[t]);
+        const double v = 1.0 / precision;
         for (size_t k = 0; k < errors.size(); ++k)
-            if (errors[k][t] > 0 && costs[k] > 0) g[k] += v * v / (errors[k][t] * costs[k]) * relative;
+            if (errors[k][t] > 0 && costs[k] > 0) g[k] += v * v / (errors[k][t] * costs[k]);
     }
     return g;
 }

@@ -37,9 +37,12 @@ struct ReplicaImages {
 };
 
 // Per tile, from one set of data (one replica, or the pair): the mean over the tile's pixels and
-// channels, the variance of one value, and the variance of the tile's mean.
+// channels, the variance of one value, and the variance of the tile's mean. Measured against a
+// reference image, also the mean of each value's variance over SPEC's denominator of its
+// reference value (relmseDenominator): the tile's share of the relmse, per pixel as SPEC weighs
+// it (empty without a reference).
 struct TileStats {
-    std::vector<double> mean, variance, meanVariance;
+    std::vector<double> mean, variance, meanVariance, relativeVariance;
 };
 
 // Per tile of a method's pair of replicas.
@@ -53,8 +56,15 @@ struct MethodMeasure {
 };
 // `withHalves`: both replicas have passes in both halves. samples0 and samples1: the replicas'
 // samples per pixel, which weigh them in the pair's mean (a chain's replicas may differ).
+// `reference`, where given: the image whose values stand for the truth in the pair's
+// relativeVariance.
 MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const TileGrid& tiles, bool withHalves,
-                            double samples0 = 1, double samples1 = 1);
+                            double samples0 = 1, double samples1 = 1, const Image* reference = nullptr);
+
+// Per pixel and channel, the median of the images' finite values (of an even count, the mean of
+// the middle two; 0 where none is finite): a reference for SPEC's denominators that no one
+// method's noise moves far.
+Image medianImage(std::span<const Image* const> images);
 
 // What SPEC.md's relmse divides a squared error by where the true value is `mean`.
 inline double relmseDenominator(double mean) { return mean * mean + 0.01; }
@@ -63,11 +73,17 @@ inline double relmseDenominator(double mean) { return mean * mean + 0.01; }
 // distance of its tile mean from the other methods' that their variances do not explain (a bias
 // such as the residual of ir's clamp, or a rare event a short run has not seen: path on a
 // caustic shows no variance there). The distance is the lower median of the distances to each
-// other method, so that one wrong method does not move the others. Summed over the tiles by
-// SPEC's weights (1 / (m^2 + 0.01)), an estimate of the method's relmse: what the allocation
-// weighs.
+// other method, so that one wrong method does not move the others.
 std::vector<std::vector<double>> measuredSquaredErrors(std::span<const TileStats* const> methods);
-// The same, spread for the combination's weights: relative to the tiles' brightness, each
+// The same relative to SPEC's relmse, what the allocation weighs: per method and tile, its
+// relativeVariance (a tile's variance over the denominator of its mean where there is none) plus
+// the distance over the denominator of the methods' median tile mean. Summed over the tiles,
+// divided by their count, an estimate of the method's relmse. Per pixel, because a tile's
+// pixels differ: with the tile mean's denominator, bdpt's relmse on the Cornell box with a
+// chrome block read 2.9 times its per-pixel value and cmlt's 2.06 times, and auto gave the time
+// to cmlt, at 2.5 times bdpt's error alone.
+std::vector<std::vector<double>> relativeSquaredErrors(std::span<const TileStats* const> methods);
+// measuredSquaredErrors spread for the combination's weights: relative to the tiles' brightness, each
 // tile's error is drawn halfway (geometrically) to the method's mean over the image, and floored
 // at a quarter of its median: a tile's variance is pooled over its pixels, but a method whose
 // errors correlate across pixels (a VPL set, a chain) has few degrees of freedom there, so that a
@@ -97,21 +113,20 @@ std::vector<std::vector<double>> inverseErrorWeights(const std::vector<std::vect
 Image combineImages(std::span<const Image* const> images, const std::vector<std::vector<double>>& weights,
                     const TileGrid& tiles);
 
-// Per method and tile, its squared errors drawn halfway (arithmetically) to its mean over the
-// tiles, relative to SPEC's relmse (1 / (m(T)^2 + 0.01), m(T) the tile's mean): the method's
-// relmse stays as measured, and a tile whose estimate is low by chance draws time half as much
-// (raw, on the Cornell box cmlt took two fifths of the time for tiles where its pilot looked
-// better than path's, and auto's relmse was 1.7 times path's alone over 4 seeds).
-std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<double>>& errors,
-                                                  std::span<const double> tileMeans);
+// Per method and tile, its relative squared errors (relativeSquaredErrors) drawn halfway to its
+// mean over the tiles: the method's relmse stays as measured, and a tile whose estimate is low
+// by chance draws time half as much (raw, on the Cornell box cmlt took two fifths of the time for
+// tiles where its pilot looked better than path's, and auto's relmse was 1.7 times path's alone
+// over 4 seeds).
+std::vector<std::vector<double>> pooledTowardMean(const std::vector<std::vector<double>>& errors);
 
-// Per method, the error that one more unit of cost given to it takes off the relmse of the
-// combination: with e_k(T) after cost c_k, a unit-cost variance s_k(T) = e_k(T) c_k, and the
-// combination's variance V(T) = 1 / sum_k 1/e_k(T),
-//   g_k = -dJ/dc_k = sum_T V(T)^2 / s_k(T) / (m(T)^2 + 0.01),   J = sum_T V(T) / (m(T)^2 + 0.01),
-// m(T) the tile's mean (SPEC.md's relmse, per tile). Efficiency-aware allocation in the spirit of
-// Grittmann et al. 2022, here across independent films.
-std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs,
-                                  std::span<const double> tileMeans);
+// Per method, the relmse that one more unit of cost given to it takes off the combination's:
+// with relative errors e_k(T) after cost c_k, a unit-cost error s_k(T) = e_k(T) c_k, and the
+// combination's V(T) = 1 / sum_k 1/e_k(T) (in a tile every method's errors share the
+// denominators, so inverse-variance weighting holds relative),
+//   g_k = -dJ/dc_k = sum_T V(T)^2 / s_k(T),   J = sum_T V(T).
+// Efficiency-aware allocation in the spirit of Grittmann et al. 2022, here across independent
+// films.
+std::vector<double> marginalGains(const std::vector<std::vector<double>>& errors, std::span<const double> costs);
 
 }  // namespace lucerna

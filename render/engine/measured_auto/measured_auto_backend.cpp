@@ -199,7 +199,6 @@ private:
         const TileGrid tiles(film_->width(), film_->height(), auto_.tileSize);
         std::vector<size_t> measured;
         std::vector<std::array<ReplicaImages, 2>> images;
-        std::vector<MethodMeasure> m;
         for (size_t k = 0; k < methods_.size(); ++k) {
             if (methods_[k].piloted() < 1) continue;
             std::array<ReplicaImages, 2> im;
@@ -207,34 +206,51 @@ private:
                 const Film& f = methods_[k].replicas[size_t(r)]->film();
                 im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}};
             }
-            m.push_back(measureMethod(im, tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1)));
             images.push_back(std::move(im));
             measured.push_back(k);
         }
         if (measured.empty()) return;
-        // Each method's image-wide error from the spread of its replicas (pair), relative.
+        const Image reference = consensus(measured, images);
+        std::vector<MethodMeasure> m;
+        for (size_t i = 0; i < measured.size(); ++i) {
+            const size_t k = measured[i];
+            m.push_back(measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1), &reference));
+        }
         std::vector<const TileStats*> pair;
         for (const MethodMeasure& x : m) pair.push_back(&x.pair);
-        // The allocation weighs each method's relmse as measured (not spread over the tiles as the
-        // weights' errors are: film_measures.h).
-        const auto pairErrors = measuredSquaredErrors(pair);
-        allocate(measured, m, pairErrors, tiles);
-        weigh(measured, m, relativeErrors(pair, pairErrors), tiles);
+        // The allocation weighs each method's relmse as measured, per pixel (not spread over the
+        // tiles as the weights' errors are: film_measures.h).
+        allocate(measured, relativeSquaredErrors(pair));
+        // Each method's image-wide error from the spread of its replicas, relative.
+        weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles);
         compose();
     }
 
-    // The gains, from the pairs of replicas; once every method has its pilot passes, they decide.
-    void allocate(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
-                  const std::vector<std::vector<double>>& errors, const TileGrid& tiles) const {
-        if (!allPiloted()) return;
-        const auto weights = inverseErrorWeights(errors);
-        std::vector<double> tileMean(size_t(tiles.count()), 0.0), costs;
-        for (size_t i = 0; i < m.size(); ++i) {
-            costs.push_back(methods_[measured[i]].cost);
-            for (size_t t = 0; t < tileMean.size(); ++t) tileMean[t] += weights[i][t] * m[i].pair.mean[t];
+    // What stands for the truth in SPEC's denominators: per pixel, the median of the methods'
+    // images (each the mean of its replicas by their samples).
+    Image consensus(const std::vector<size_t>& measured, const std::vector<std::array<ReplicaImages, 2>>& images) const {
+        std::vector<Image> means;
+        for (size_t i = 0; i < measured.size(); ++i) {
+            const double n0 = samples(measured[i], 0), n1 = samples(measured[i], 1);
+            Image mean = images[i][0].image;
+            for (size_t p = 0; p < mean.pixels.size(); ++p)
+                mean.pixels[p] = (images[i][0].image.pixels[p] * float(n0) + images[i][1].image.pixels[p] * float(n1)) *
+                                 float(1.0 / (n0 + n1));
+            means.push_back(std::move(mean));
         }
-        const auto pooled = pooledTowardMean(errors, tileMean);
-        const std::vector<double> gains = marginalGains(pooled, costs, tileMean);
+        std::vector<const Image*> all;
+        for (const Image& i : means) all.push_back(&i);
+        return medianImage(all);
+    }
+
+    // The gains, from the pairs of replicas' relative errors; once every method has its pilot
+    // passes, they decide.
+    void allocate(const std::vector<size_t>& measured, const std::vector<std::vector<double>>& errors) const {
+        if (!allPiloted()) return;
+        std::vector<double> costs;
+        for (size_t k : measured) costs.push_back(methods_[k].cost);
+        const auto pooled = pooledTowardMean(errors);
+        const std::vector<double> gains = marginalGains(pooled, costs);
         measures_ = Measures{};
         measures_.gain.assign(methods_.size(), 0.0);
         measures_.efficiency.assign(methods_.size(), 0.0);
@@ -242,9 +258,8 @@ private:
         measures_.farBehind.assign(methods_.size(), false);
         measures_.cost = totalCost();
         measures_.taken = true;
-        for (size_t i = 0; i < m.size(); ++i) {
-            double relmse = 0;
-            for (size_t t = 0; t < tileMean.size(); ++t) relmse += pooled[i][t] / relmseDenominator(tileMean[t]);
+        for (size_t i = 0; i < measured.size(); ++i) {
+            const double relmse = std::accumulate(pooled[i].begin(), pooled[i].end(), 0.0);
             measures_.gain[measured[i]] = gains[i];
             measures_.efficiency[measured[i]] = relmse > 0 && costs[i] > 0 ? 1.0 / (relmse * costs[i]) : 0.0;
         }
