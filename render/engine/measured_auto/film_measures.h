@@ -63,7 +63,7 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
 
 // Per pixel and channel, the median of the images' finite values (of an even count, the mean of
 // the middle two; 0 where none is finite): a reference for SPEC's denominators that no one
-// method's noise moves far.
+// method's noise moves far. One image or more, all of one size.
 Image medianImage(std::span<const Image* const> images);
 
 // What SPEC.md's relmse divides a squared error by where the true value is `mean`.
