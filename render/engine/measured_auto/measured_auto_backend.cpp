@@ -210,17 +210,21 @@ private:
             measured.push_back(k);
         }
         if (measured.empty()) return;
-        const Image reference = consensus(measured, images);
+        // Only the allocation reads the per-pixel errors, and it waits for every pilot: the frames
+        // shown before then do without the median image.
+        const bool allocating = allPiloted();
+        const Image reference = allocating ? consensus(measured, images) : Image();
         std::vector<MethodMeasure> m;
         for (size_t i = 0; i < measured.size(); ++i) {
             const size_t k = measured[i];
-            m.push_back(measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1), &reference));
+            m.push_back(measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1),
+                                      allocating ? &reference : nullptr));
         }
         std::vector<const TileStats*> pair;
         for (const MethodMeasure& x : m) pair.push_back(&x.pair);
         // The allocation weighs each method's relmse as measured, per pixel (not spread over the
         // tiles as the weights' errors are: film_measures.h).
-        allocate(measured, relativeSquaredErrors(pair));
+        if (allocating) allocate(measured, relativeSquaredErrors(pair));
         // Each method's image-wide error from the spread of its replicas, relative.
         weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles);
         compose();
@@ -243,10 +247,9 @@ private:
         return medianImage(all);
     }
 
-    // The gains, from the pairs of replicas' relative errors; once every method has its pilot
-    // passes, they decide.
+    // The gains, from the pairs of replicas' relative errors, once every method has its pilot
+    // passes; they decide.
     void allocate(const std::vector<size_t>& measured, const std::vector<std::vector<double>>& errors) const {
-        if (!allPiloted()) return;
         std::vector<double> costs;
         for (size_t k : measured) costs.push_back(methods_[k].cost);
         const auto pooled = pooledTowardMean(errors);
