@@ -1,7 +1,7 @@
 // `--backend auto` as a measurement (render/engine/measured_auto/): the measures of constructed
 // films (weights that follow each method's noise tile by tile, a chain's understated halves, a
 // method that has not seen a rare event, the allocation's relmse of each method as SPEC weighs
-// it), where the time goes on a scene one method wins by far,
+// it, read from the replica that runs on), where the time goes on a scene one method wins by far,
 // what it says it decided, and that a render with a seed is reproducible. Its consistency on the
 // closed forms is in test_closed_form (its "auto" rows).
 
@@ -61,6 +61,7 @@ private slots:
     void rareEventTakesNoWeight();
     void allocationKeepsEachRelmse();
     void relmseIsPerPixel();
+    void allocationReadsTheLongReplica();
     void candidatesAreConsistent();
     void bestByFarTakesTheTime();
     void saysWhatItDecided();
@@ -186,6 +187,35 @@ void TestMeasuredAuto::relmseIsPerPixel() {
     qInfo("relmse a %.3g, b %.3g, expected %.3g", relmse[0], relmse[1], expected);
     QCOMPARE_LE(std::abs(relmse[1] / relmse[0] - 1.0), 0.25);
     QCOMPARE_LE(std::abs(relmse[0] / expected - 1.0), 0.25);
+}
+
+void TestMeasuredAuto::allocationReadsTheLongReplica() {
+    // Replica 0 has run 100 passes and replica 1 stopped at 2, whose halves were 10 times less
+    // noisy per pass (a chain before it met its rare paths). The allocation reads the error that
+    // replica 0's own halves show, as the pair's mean by samples; the pair's spread, dominated by
+    // replica 1, would read it about 50 times smaller.
+    std::mt19937 rng(23);
+    const TileGrid tiles(kSize, kSize, kTile);
+    const double sdLong = 0.2, sdShort = 0.02, n0 = 100, n1 = 2;
+    const std::array<ReplicaImages, 2> p{replica(rng, [&](int) { return sdLong; }),
+                                         replica(rng, [&](int) { return sdShort; })};
+    Image reference(kSize, kSize);
+    for (Rgb& c : reference.pixels) c = Rgb(1, 1, 1);
+    const MethodMeasure m = measureMethod(p, tiles, true, n0, n1, &reference);
+    const auto relmse = [&](const TileStats& s) {
+        const std::vector<const TileStats*> one{&s};
+        const auto e = relativeSquaredErrors(one);
+        return std::accumulate(e[0].begin(), e[0].end(), 0.0) / tiles.count();
+    };
+    // Replica 0's image: sd^2 / 2; as the pair's mean: n0 / (n0 + n1) of that.
+    const double expected = n0 / (n0 + n1) * sdLong * sdLong / 2 / relmseDenominator(1.0);
+    qInfo("allocation %.3g, pair %.3g, expected %.3g", relmse(m.allocation), relmse(m.pair), expected);
+    QCOMPARE_LE(std::abs(relmse(m.allocation) / expected - 1.0), 0.1);
+    QCOMPARE_LE(relmse(m.pair), 0.1 * expected);
+    // Without a second half in replica 0 (its first pass), the pair's.
+    std::array<ReplicaImages, 2> early = p;
+    early[0].bothHalves = false;
+    QCOMPARE(relmse(measureMethod(early, tiles, false, n0, n1, &reference).allocation), relmse(m.pair));
 }
 
 void TestMeasuredAuto::candidatesAreConsistent() {

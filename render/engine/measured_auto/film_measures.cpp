@@ -129,6 +129,15 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
     std::vector<double> pairMean(across.meanA.size());
     for (size_t t = 0; t < pairMean.size(); ++t) pairMean[t] = f0 * across.meanA[t] + f1 * across.meanB[t];
     m.pair = statsOf(across, 4 * f0 * f1, pairMean);
+    m.allocation = m.pair;
+    if (reference && replicas[0].bothHalves) {
+        // Replica 0's image has the variance (h0 - h1)^2 / 4 of its halves' difference; as the
+        // pair's mean by samples, with error as 1 / samples, f0 times that.
+        const DifferenceSums own = differences(replicas[0].half[0], replicas[0].half[1], tiles, reference);
+        const TileStats ownStats = statsOf(own, f0, pairMean);
+        m.allocation.variance = ownStats.variance;
+        m.allocation.relativeVariance = ownStats.relativeVariance;
+    }
     if (!withHalves) return m;
 
     std::array<DifferenceSums, 2> within;

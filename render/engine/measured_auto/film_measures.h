@@ -5,11 +5,15 @@
 //
 // Every method runs as two independent replicas (own seeds, own VPL sets, chains and
 // normalisation). Two kinds of variance come of that:
-//   - within: a replica's image against its own halves (even and odd passes). Honest for the
-//     methods whose passes are independent (path, bdpt, ir); a Markov chain's halves share the
-//     chain, so for mir, mlt and cmlt it understates the truth. Scaled by the method's
-//     inflation, the image-wide ratio of `across` to `within`.
-//   - across: the difference of the two replicas, honest for every method.
+//   - within: a replica's image against its own halves (even and odd passes). The backends
+//     give each half its own chains, VPL sets and normalisation (mir's and the Metropolis
+//     backends' chain sets are per half), so the halves are independent; for the weights it is
+//     scaled by the method's inflation, the image-wide ratio of `across` to `within`, which is
+//     over 1 where a chain's short replica has not settled (a shared error, which no half
+//     would show, would also raise it).
+//   - across: the difference of the two replicas, honest for every method, but after the
+//     pilots replica 1 stays at two passes, so across tells a method's first passes' pace.
+//     The allocation reads replica 0's within instead (MethodMeasure::allocation).
 // The weights that combine replica r's images are computed from replica 1 - r alone (cross-
 // fitting), so that they do not correlate with the values they weigh and the combination of
 // consistent methods stays consistent (unbiased where the methods are). Only the inflation, one
@@ -34,6 +38,7 @@ struct TileGrid {
 // What one replica's film shows: its image and the images of its two halves.
 struct ReplicaImages {
     Image image, half[2];
+    bool bothHalves = true;  // each half has samples
 };
 
 // Per tile, from one set of data (one replica, or the pair): the mean over the tile's pixels and
@@ -52,6 +57,15 @@ struct MethodMeasure {
     // one half (one pass).
     std::array<TileStats, 2> replica;
     double inflation = 1;              // across over within, image-wide, in [1, 1000]
+    // What the allocation weighs: the pair's means, and the error that replica 0 (the one that
+    // runs on) shows at its length, from its own halves, as the pair's by samples. Replica 1
+    // stays at a pilot's few passes, so the pair's spread tells a method's error per sample over
+    // its first passes only, which is not its pace later: on the Cornell box with a glass block
+    // mlt's relmse x seconds grew from 0.025 at 0.3 s to 0.056 at 30 s (paths through the glass
+    // met late), path's fell from 0.044 to 0.028 by 4 s. Each half runs its own chains, VPL sets
+    // and normalisation, so the halves are independent for every method. The pair's where
+    // replica 0 has no second half yet, or without a reference.
+    TileStats allocation;
     bool hasReplicaStats() const { return !replica[0].mean.empty(); }
 };
 // `withHalves`: both replicas have passes in both halves. samples0 and samples1: the replicas'

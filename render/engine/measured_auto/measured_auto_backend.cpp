@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <thread>
 
 namespace lucerna {
@@ -24,6 +25,18 @@ namespace {
 constexpr double kMinimumWeight = 0.1;
 // A method whose cost is under this share of the costliest method's is left out of the image.
 constexpr double kMinimumShare = 0.35;
+// How far a method out of the image must lead in gain to be given time (takesTrial): its
+// estimate is from few passes.
+constexpr double kTrialMargin = 1.3;
+
+// The methods whose error per unit of cost a short run does not flatter: path, whose passes are
+// independent and whose Sobol sequence's error falls faster than 1 / time at first (on the
+// Cornell box with a glass block its relmse x seconds fell from 0.044 at 0.3 s to 0.028 at 4 s).
+// Not the chains (mlt's rose from 0.025 to 0.056 by 30 s there), nor bdpt, whose light paths
+// meet their heavy tails late on caustics (on the two-mirror caustic scene a trial took it to 26%
+// of the time, and it ended at 0.65 of cmlt's efficiency), nor ir, whose clamp's residual shows
+// as no variance.
+bool shortRunIsFair(const std::string& method) { return method == "path"; }
 
 struct Method {
     std::string name;
@@ -91,6 +104,7 @@ public:
         Method& m = methods_[k];
         if (!prepareMethod(m, ctx)) return;
         const double before = costNow();
+        const bool eligibleBefore = m.piloted() >= 2;
         for (int r = 0; r < 2; ++r) {
             if (r == 1 && pilotDone(k) && m.passes[1] >= 2) continue;
             m.replicas[size_t(r)]->renderPass(ctx, m.passes[size_t(r)]);
@@ -99,7 +113,16 @@ public:
         }
         m.cost += costNow() - before;
         dirty_ = true;
-        if (allPiloted() && (!measures_.taken || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost)) measure();
+        // A trial is measured again once the method's cost has doubled: a pilot's estimate that
+        // was too good costs about what the method had, not a quarter of the render.
+        // So is a method that has just its second pass in each replica, which may now be in
+        // the image: with `--spp 16` on a small room the image stayed the pilots' equal mix while
+        // path took every pass after them.
+        const bool trialDue = trial_ && methods_[trial_->method].cost >= 2 * trial_->startCost;
+        const bool eligible = !eligibleBefore && m.piloted() >= 2;
+        if (allPiloted() &&
+            (!measures_.taken || trialDue || eligible || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost))
+            measure();
     }
 
     // Frames may come after every pass (lucerna bench): between measures the film is composed
@@ -154,6 +177,16 @@ private:
     double totalCost() const {
         return std::accumulate(methods_.begin(), methods_.end(), 0.0, [](double s, const Method& m) { return s + m.cost; });
     }
+    // The cost of the costliest method that may be in the image (two passes in each replica): a
+    // method under kMinimumShare of it is out. A pilot's single passes do not set the bar: with
+    // `--spp 16` on a small room mir's one pass cost 39%, and path, with every other pass, stayed
+    // out, leaving no method in the image.
+    double costliestInImage() const {
+        double c = 0;
+        for (const Method& m : methods_)
+            if (m.piloted() >= 2) c = std::max(c, m.cost);
+        return c;
+    }
     bool allPiloted() const {
         return std::ranges::all_of(methods_, [&](const Method& m) { return m.piloted() >= auto_.pilotPasses; });
     }
@@ -181,14 +214,37 @@ private:
         // estimate does not draw time that the image then leaves out (the office floor: cmlt took
         // 14% of the time, path kept the image).
         if (!measures_.taken || measures_.gain.size() != methods_.size()) return 0;  // not measured (not prepared)
-        const double costliest = std::ranges::max_element(methods_, {}, &Method::cost)->cost;
-        double bestGain = -1;
+        const double costliest = costliestInImage();
+        std::vector<double> gains(methods_.size());
         for (size_t k = 0; k < methods_.size(); ++k) {
             const double share = costliest > 0 ? std::min(1.0, methods_[k].cost / (kMinimumShare * costliest)) : 1.0;
-            const double g = measures_.gain[k] * share;
-            if (std::isfinite(g) && g > bestGain) bestGain = g, best = k;
+            gains[k] = std::isfinite(measures_.gain[k]) ? measures_.gain[k] * share : -1.0;
         }
-        return best < methods_.size() ? best : 0;
+        const double leading = *std::ranges::max_element(gains);
+        std::vector<bool> trial(methods_.size());
+        for (size_t k = 0; k < methods_.size(); ++k)
+            if ((trial[k] = takesTrial(k, leading, costliest))) gains[k] = measures_.gain[k];
+        best = size_t(std::ranges::max_element(gains) - gains.begin());
+        if (!trial[best]) trial_.reset();
+        else if (!trial_ || trial_->method != best) trial_ = Trial{best, methods_[best].cost};
+        return gains[best] >= 0 ? best : 0;
+    }
+
+    // Whether method k, out of the image, has its gain counted in full (a trial). The discount
+    // above keeps out a method whose pilot looked better than it is, but also one that a later
+    // measure puts first as the leader's error grows with its length (mlt on the Cornell box
+    // with a glass block, film_measures.h): there path lost its pilot on half the seeds and
+    // auto's relmse was 1.4 times path's alone. One whose short run does not flatter it and whose
+    // gain beats the leading one's by kTrialMargin takes the passes, while the budget left can
+    // still bring it into the image; it is measured again once its cost has doubled.
+    bool takesTrial(size_t k, double leadingGain, double costliest) const {
+        const Method& m = methods_[k];
+        if (!shortRunIsFair(m.name) || m.cost >= kMinimumShare * costliest) return false;
+        if (!(measures_.gain[k] > kTrialMargin * leadingGain)) return false;
+        // Open-ended (the window, or counted in passes): as long again as so far.
+        const double total = totalCost();
+        const double remaining = auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total;
+        return m.cost + remaining >= kMinimumShare * costliest;
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the
@@ -204,7 +260,8 @@ private:
             std::array<ReplicaImages, 2> im;
             for (int r = 0; r < 2; ++r) {
                 const Film& f = methods_[k].replicas[size_t(r)]->film();
-                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}};
+                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)},
+                                 f.halfSamplesPerPixel(0) > 0 && f.halfSamplesPerPixel(1) > 0};
             }
             images.push_back(std::move(im));
             measured.push_back(k);
@@ -220,11 +277,11 @@ private:
             m.push_back(measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1),
                                       allocating ? &reference : nullptr));
         }
-        std::vector<const TileStats*> pair;
-        for (const MethodMeasure& x : m) pair.push_back(&x.pair);
-        // The allocation weighs each method's relmse as measured, per pixel (not spread over the
-        // tiles as the weights' errors are: film_measures.h).
-        if (allocating) allocate(measured, relativeSquaredErrors(pair));
+        std::vector<const TileStats*> pair, allocation;
+        for (const MethodMeasure& x : m) pair.push_back(&x.pair), allocation.push_back(&x.allocation);
+        // The allocation weighs each method's relmse as measured at its length, per pixel (not
+        // spread over the tiles as the weights' errors are: film_measures.h).
+        if (allocating) allocate(measured, relativeSquaredErrors(allocation));
         // Each method's image-wide error from the spread of its replicas, relative.
         weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles);
         compose();
@@ -255,6 +312,7 @@ private:
         const auto pooled = pooledTowardMean(errors);
         const std::vector<double> gains = marginalGains(pooled, costs);
         measures_ = Measures{};
+        trial_.reset();  // a method still on trial after this measure starts a new one
         measures_.gain.assign(methods_.size(), 0.0);
         measures_.efficiency.assign(methods_.size(), 0.0);
         measures_.imageWeight.assign(methods_.size(), 0.0);
@@ -289,8 +347,7 @@ private:
         // samples), so a partner with a pilot's few passes of one VPL set would take a weight
         // its noise does not earn (the door: mir with 5% of the time took 17% of the image next
         // to cmlt, 1.8 times cmlt's error alone).
-        double costliest = 0;
-        for (size_t k : measured) costliest = std::max(costliest, methods_[k].cost);
+        const double costliest = costliestInImage();
         std::vector<size_t> in;
         for (size_t i = 0; i < m.size(); ++i)
             if (m[i].hasReplicaStats() && methods_[measured[i]].cost >= kMinimumShare * costliest) in.push_back(i);
@@ -415,6 +472,12 @@ private:
     RayRecorder* recorder_ = nullptr;
     std::vector<Method> methods_;
     mutable Measures measures_;
+    // The method on trial since the last measure (takesTrial), and its cost when it began.
+    struct Trial {
+        size_t method;
+        double startCost;
+    };
+    mutable std::optional<Trial> trial_;
     // The last measure's combination: the methods in the image and their weights per tile for
     // each half (replica).
     struct Combination {

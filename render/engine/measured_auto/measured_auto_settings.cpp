@@ -23,6 +23,7 @@ MeasuredAutoSettings MeasuredAutoSettings::forScene(const Scene& scene, const Re
     // at most (and a method far behind stops after its first pass); half a second where the
     // render is open-ended (the window).
     if (render.seconds > 0) s.pilotSeconds = std::clamp(0.01 * render.seconds, 0.1, 2.0);
+    if (s.cost == AutoCost::Seconds) s.budgetSeconds = std::max(0.0, render.seconds);
     return s;
 }
 

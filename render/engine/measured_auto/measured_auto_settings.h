@@ -24,6 +24,9 @@ struct MeasuredAutoSettings {
     // dropBelow of the best's first (a method far behind costs no more than its first passes).
     double pilotSeconds = 0.5;
     double dropBelow = 0.1;
+    // The render's budget in seconds (AutoCost::Seconds with a time limit); 0 where it is
+    // open-ended (the window) or counted in passes.
+    double budgetSeconds = 0;
     // The measures are taken again when the render's cost has grown by this share (each costs
     // the images of every replica).
     double remeasureGrowth = 0.25;
