@@ -53,7 +53,6 @@ public:
     void finishPass(int half, double samplesPerPixel = 1.0) { samples_[half] += samplesPerPixel; }
 
     double samplesPerPixel() const { return samples_[0] + samples_[1]; }
-    double halfSamplesPerPixel(int half) const { return samples_[half]; }
 
     // Multiplies everything `half` holds, past and future, by `scale` when the film is read: for
     // Metropolis backends whose normalisation is refined as the render runs, so that old passes

@@ -130,19 +130,21 @@ MethodMeasure measureMethod(const std::array<ReplicaImages, 2>& replicas, const 
     for (size_t t = 0; t < pairMean.size(); ++t) pairMean[t] = f0 * across.meanA[t] + f1 * across.meanB[t];
     m.pair = statsOf(across, 4 * f0 * f1, pairMean);
     m.allocation = m.pair;
+    // Replica 0's halves, once for the allocation and the weights.
+    std::array<DifferenceSums, 2> within;
+    if (replicas[0].bothHalves || withHalves)
+        within[0] = differences(replicas[0].half[0], replicas[0].half[1], tiles, reference);
     if (reference && replicas[0].bothHalves) {
         // Replica 0's image has the variance (h0 - h1)^2 / 4 of its halves' difference; as the
         // pair's mean by samples, with error as 1 / samples, f0 times that.
-        const DifferenceSums own = differences(replicas[0].half[0], replicas[0].half[1], tiles, reference);
-        const TileStats ownStats = statsOf(own, f0, pairMean);
-        m.allocation.variance = ownStats.variance;
-        m.allocation.relativeVariance = ownStats.relativeVariance;
+        const TileStats own = statsOf(within[0], f0, pairMean);
+        m.allocation.variance = own.variance;
+        m.allocation.relativeVariance = own.relativeVariance;
     }
     if (!withHalves) return m;
 
-    std::array<DifferenceSums, 2> within;
     double acrossSum = 0, withinSum = 0;
-    for (int r = 0; r < 2; ++r) within[r] = differences(replicas[r].half[0], replicas[r].half[1], tiles, nullptr);
+    within[1] = differences(replicas[1].half[0], replicas[1].half[1], tiles, nullptr);
     for (size_t t = 0; t < across.values.size(); ++t) {
         // (a - b)^2 estimates the sum of the replicas' variances, the halves each replica's.
         acrossSum += 4.0 * across.halfDifference2[t] * across.values[t];

@@ -23,7 +23,8 @@ namespace {
 
 // A method whose weight in a tile would be under this takes none there (film_measures.h).
 constexpr double kMinimumWeight = 0.1;
-// A method whose cost is under this share of the costliest method's is left out of the image.
+// A method whose cost is under this share of the costliest's that may be in the image
+// (costliestInImage) is left out of it.
 constexpr double kMinimumShare = 0.35;
 // How far a method out of the image must lead in gain to be given time (takesTrial): its
 // estimate is from few passes.
@@ -209,7 +210,7 @@ private:
         for (size_t k = 0; k < methods_.size(); ++k)
             if (!pilotDone(k) && (best == methods_.size() || methods_[k].cost < methods_[best].cost)) best = k;
         if (best < methods_.size()) return best;
-        // A method out of the image (under kMinimumShare of the costliest's cost) adds nothing
+        // A method out of the image (under kMinimumShare of costliestInImage) adds nothing
         // until it is in: its gain counts by how far along it is, so that a pilot's optimistic
         // estimate does not draw time that the image then leaves out (the office floor: cmlt took
         // 14% of the time, path kept the image).
@@ -260,8 +261,8 @@ private:
             std::array<ReplicaImages, 2> im;
             for (int r = 0; r < 2; ++r) {
                 const Film& f = methods_[k].replicas[size_t(r)]->film();
-                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)},
-                                 f.halfSamplesPerPixel(0) > 0 && f.halfSamplesPerPixel(1) > 0};
+                // Pass p goes to half p % 2: two passes fill both halves.
+                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}, methods_[k].passes[size_t(r)] >= 2};
             }
             images.push_back(std::move(im));
             measured.push_back(k);
@@ -304,8 +305,8 @@ private:
         return medianImage(all);
     }
 
-    // The gains, from the pairs of replicas' relative errors, once every method has its pilot
-    // passes; they decide.
+    // The gains, from each method's relative errors at its length (MethodMeasure::allocation),
+    // once every method has its pilot passes; they decide.
     void allocate(const std::vector<size_t>& measured, const std::vector<std::vector<double>>& errors) const {
         std::vector<double> costs;
         for (size_t k : measured) costs.push_back(methods_[k].cost);
