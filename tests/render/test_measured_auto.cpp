@@ -1,13 +1,15 @@
 // `--backend auto` as a measurement (render/engine/measured_auto/): the measures of constructed
 // films (weights that follow each method's noise tile by tile, a chain's understated halves, a
 // method that has not seen a rare event, the allocation's relmse of each method as SPEC weighs
-// it, read from the replica that runs on), where the time goes on a scene one method wins by far,
+// it, read from the replica that runs on), when a method out of the image takes a trial, where
+// the time goes on a scene one method wins by far,
 // what it says it decided, and that a render with a seed is reproducible. Its consistency on the
 // closed forms is in test_closed_form (its "auto" rows).
 
 #include "closed_form_scenes.h"
 #include "render/engine/measured_auto/film_measures.h"
 #include "render/engine/measured_auto/measured_auto_settings.h"
+#include "render/engine/measured_auto/trial.h"
 #include "render_helpers.h"
 
 #include <QtTest>
@@ -62,6 +64,7 @@ private slots:
     void allocationKeepsEachRelmse();
     void relmseIsPerPixel();
     void allocationReadsTheLongReplica();
+    void trialsForWhatAShortRunUnderstates();
     void candidatesAreConsistent();
     void bestByFarTakesTheTime();
     void saysWhatItDecided();
@@ -216,6 +219,31 @@ void TestMeasuredAuto::allocationReadsTheLongReplica() {
     std::array<ReplicaImages, 2> early = p;
     early[0].bothHalves = false;
     QCOMPARE(relmse(measureMethod(early, tiles, false, n0, n1, &reference).allocation), relmse(m.pair));
+}
+
+void TestMeasuredAuto::trialsForWhatAShortRunUnderstates() {
+    // Path out of the image (cost 1 of the 3.5 that would bring it in), 20 left in the budget.
+    TrialQuestion q{"path", 0.85, 1.0, 1.0, 3.5, 20.0, false};
+    // Close to the leader (the office floor's pilot: 0.83 to 1 of cmlt's), path takes a trial;
+    // a chain, whose short run flatters it, does not.
+    QVERIFY(takesTrial(q));
+    QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 20.0, false}));
+    QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 20.0, false}));
+    // Further behind than the margin: none.
+    q.gain = 0.7;
+    QVERIFY(!takesTrial(q));
+    // Once a trial has brought it into the image, it must lead by the margin.
+    q.trialledIn = true;
+    q.gain = 1.1;
+    QVERIFY(!takesTrial(q));
+    q.gain = 1.4;
+    QVERIFY(takesTrial(q));
+    // In the image already, or with too little budget left to bring it in: none.
+    q.cost = 3.5;
+    QVERIFY(!takesTrial(q));
+    q.cost = 1.0;
+    q.costLeft = 2.0;
+    QVERIFY(!takesTrial(q));
 }
 
 void TestMeasuredAuto::candidatesAreConsistent() {

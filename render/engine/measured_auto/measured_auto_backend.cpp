@@ -4,6 +4,7 @@
 #include "render/engine/backend_table.h"
 #include "render/engine/measured_auto/film_measures.h"
 #include "render/engine/measured_auto/measured_auto_settings.h"
+#include "render/engine/measured_auto/trial.h"
 #include "render/trace/embree_scene.h"
 #include "render/trace/render_scene_cache.h"
 #include "render/trace/rng.h"
@@ -26,18 +27,6 @@ constexpr double kMinimumWeight = 0.1;
 // A method whose cost is under this share of the costliest's that may be in the image
 // (costliestInImage) is left out of it.
 constexpr double kMinimumShare = 0.35;
-// How far a method out of the image must lead in gain to be given time (takesTrial): its
-// estimate is from few passes.
-constexpr double kTrialMargin = 1.3;
-
-// The methods whose error per unit of cost a short run does not flatter: path, whose passes are
-// independent and whose Sobol sequence's error falls faster than 1 / time at first (on the
-// Cornell box with a glass block its relmse x seconds fell from 0.044 at 0.3 s to 0.028 at 4 s).
-// Not the chains (mlt's rose from 0.025 to 0.056 by 30 s there), nor bdpt, whose light paths
-// meet their heavy tails late on caustics (on the two-mirror caustic scene a trial took it to 26%
-// of the time, and it ended at 0.65 of cmlt's efficiency), nor ir, whose clamp's residual shows
-// as no variance.
-bool shortRunIsFair(const std::string& method) { return method == "path"; }
 
 struct Method {
     std::string name;
@@ -85,6 +74,7 @@ public:
             }
             methods_.push_back(std::move(m));
         }
+        trialledIn_.assign(methods_.size(), false);
     }
 
     // In the window (firstFrameSoon) only the first method is prepared here, each other one before
@@ -222,30 +212,26 @@ private:
             gains[k] = std::isfinite(measures_.gain[k]) ? measures_.gain[k] * share : -1.0;
         }
         const double leading = *std::ranges::max_element(gains);
-        std::vector<bool> trial(methods_.size());
+        // A method on trial takes the pass, the one with the largest gain if several are.
+        std::optional<size_t> onTrial;
         for (size_t k = 0; k < methods_.size(); ++k)
-            if ((trial[k] = takesTrial(k, leading, costliest))) gains[k] = measures_.gain[k];
-        best = size_t(std::ranges::max_element(gains) - gains.begin());
-        if (!trial[best]) trial_.reset();
-        else if (!trial_ || trial_->method != best) trial_ = Trial{best, methods_[best].cost};
-        return gains[best] >= 0 ? best : 0;
+            if (takesTrial(k, leading, costliest) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
+        if (!onTrial) {
+            trial_.reset();
+            best = size_t(std::ranges::max_element(gains) - gains.begin());
+            return gains[best] >= 0 ? best : 0;
+        }
+        if (!trial_ || trial_->method != *onTrial) trial_ = Trial{*onTrial, methods_[*onTrial].cost};
+        return *onTrial;
     }
 
-    // Whether method k, out of the image, has its gain counted in full (a trial). The discount
-    // above keeps out a method whose pilot looked better than it is, but also one that a later
-    // measure puts first as the leader's error grows with its length (mlt on the Cornell box
-    // with a glass block, film_measures.h): there path lost its pilot on half the seeds and
-    // auto's relmse was 1.4 times path's alone. One whose short run does not flatter it and whose
-    // gain beats the leading one's by kTrialMargin takes the passes, while the budget left can
-    // still bring it into the image; it is measured again once its cost has doubled.
+    // Whether method k takes a trial (trial.h).
     bool takesTrial(size_t k, double leadingGain, double costliest) const {
-        const Method& m = methods_[k];
-        if (!shortRunIsFair(m.name) || m.cost >= kMinimumShare * costliest) return false;
-        if (!(measures_.gain[k] > kTrialMargin * leadingGain)) return false;
         // Open-ended (the window, or counted in passes): as long again as so far.
         const double total = totalCost();
-        const double remaining = auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total;
-        return m.cost + remaining >= kMinimumShare * costliest;
+        return lucerna::takesTrial({methods_[k].name, measures_.gain[k], leadingGain, methods_[k].cost,
+                                    kMinimumShare * costliest,
+                                    auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total, trialledIn_[k]});
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the
@@ -282,9 +268,10 @@ private:
         for (const MethodMeasure& x : m) pair.push_back(&x.pair), allocation.push_back(&x.allocation);
         // The allocation weighs each method's relmse as measured at its length, per pixel (not
         // spread over the tiles as the weights' errors are: film_measures.h).
+        const size_t tried = trial_ ? trial_->method : methods_.size();
         if (allocating) allocate(measured, relativeSquaredErrors(allocation));
         // Each method's image-wide error from the spread of its replicas, relative.
-        weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles);
+        weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles, tried);
         compose();
     }
 
@@ -338,8 +325,9 @@ private:
     // floors what a replica's halves show (halves of a chain, or of one VPL set a pass, share
     // errors across the whole image that no tile sees); one number from the whole image, so it
     // hardly depends on any value it weighs.
+    // tried: the method on trial until this measure (methods_.size(): none).
     void weigh(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
-               const std::vector<double>& pairRelative, const TileGrid& tiles) const {
+               const std::vector<double>& pairRelative, const TileGrid& tiles, size_t tried) const {
         Combination c;
         // The methods with two passes in each replica whose cost is at least kMinimumShare of the
         // costliest's. Under the allocation a method that stays near its pilot's cost adds
@@ -357,6 +345,7 @@ private:
         if (equal)
             for (size_t i = 0; i < m.size(); ++i) in.push_back(i);
         for (size_t i : in) c.methods.push_back(measured[i]);
+        if (std::ranges::find(c.methods, tried) != c.methods.end()) trialledIn_[tried] = true;
         for (int r = 0; r < 2; ++r) {
             auto& w = c.weights[size_t(r)];
             if (equal) {
@@ -479,6 +468,8 @@ private:
         double startCost;
     };
     mutable std::optional<Trial> trial_;
+    // Per method: whether a trial has brought it into the image (takesTrial).
+    mutable std::vector<bool> trialledIn_;
     // The last measure's combination: the methods in the image and their weights per tile for
     // each half (replica).
     struct Combination {

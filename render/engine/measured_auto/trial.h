@@ -1,0 +1,40 @@
+#pragma once
+// When `auto` gives passes to a method out of its image (measured_auto_backend.cpp): a trial.
+// A method whose cost is under a share of the costliest's in the image is left out of it, and
+// its gain is discounted by how far along it is, so that a pilot's optimistic estimate draws no
+// time that the image then leaves out. That keeps out a method whose short run understates it
+// too; a trial gives such a method passes until a measure has seen it at a greater length.
+
+#include <string_view>
+
+namespace lucerna {
+
+// How close to the leading method's gain a method must come to take a trial (or, once a trial
+// has brought it into the image, by how much it must lead).
+inline constexpr double kTrialMargin = 1.3;
+
+// The methods whose error per unit of cost a short run does not flatter: path, whose passes are
+// independent and whose Sobol sequence's error falls faster than 1 / time at first. Not the
+// chains (mlt, cmlt), whose error per unit of cost grows as they meet their rare paths, nor
+// bdpt, whose light paths meet their heavy tails late on caustics, nor ir and mir, whose
+// clamp's residual shows as no variance.
+bool shortRunIsFair(std::string_view method);
+
+// What the trial rule reads of one method out of the image and of the render.
+struct TrialQuestion {
+    std::string_view method;
+    double gain = 0;          // its relmse taken off per unit of cost, undiscounted
+    double leadingGain = 0;   // the largest gain after the discount (the leading method's)
+    double cost = 0;          // its cost so far (seconds or rays)
+    double inImageCost = 0;   // the cost at which it would be in the image
+    double costLeft = 0;      // the budget left (open-ended: as long again as so far)
+    bool trialledIn = false;  // a trial has brought it into the image before
+};
+
+// True when the method takes the passes: its short run does not flatter it, it is out of the
+// image, its gain is within kTrialMargin of the leading gain (leads by it where a trial has
+// brought it into the image before, so that a method close to the leader does not go in and
+// out, its passes left out when the render ends), and the budget left can bring it in.
+bool takesTrial(const TrialQuestion& q);
+
+}  // namespace lucerna
