@@ -223,17 +223,21 @@ void TestMeasuredAuto::allocationReadsTheLongReplica() {
 
 void TestMeasuredAuto::trialsForWhatAShortRunUnderstates() {
     // Path out of the image (cost 1 of the 3.5 that would bring it in), 20 left in the budget.
-    TrialQuestion q{"path", 0.85, 1.0, 1.0, 3.5, 20.0, false};
+    TrialQuestion q{"path", 0.85, 1.0, 1.0, 3.5, 20.0, 0};
     // Close to the leader (the office floor's pilot: 0.83 to 1 of cmlt's), path takes a trial;
     // a chain, whose short run flatters it, does not.
     QVERIFY(takesTrial(q));
-    QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 20.0, false}));
-    QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 20.0, false}));
+    QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 20.0, 0}));
+    QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 20.0, 0}));
     // Further behind than the margin: none.
     q.gain = 0.7;
     QVERIFY(!takesTrial(q));
-    // Once a trial has brought it into the image, it must lead by the margin.
-    q.trialledIn = true;
+    // After kCloseTrials such trials it must lead by the margin.
+    q.closeTrials = kCloseTrials - 1;
+    q.gain = 0.85;
+    QVERIFY(takesTrial(q));
+    q.closeTrials = kCloseTrials;
+    QVERIFY(!takesTrial(q));
     q.gain = 1.1;
     QVERIFY(!takesTrial(q));
     q.gain = 1.4;

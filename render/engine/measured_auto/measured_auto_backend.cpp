@@ -74,7 +74,7 @@ public:
             }
             methods_.push_back(std::move(m));
         }
-        trialledIn_.assign(methods_.size(), false);
+        closeTrials_.assign(methods_.size(), 0);
     }
 
     // In the window (firstFrameSoon) only the first method is prepared here, each other one before
@@ -221,7 +221,10 @@ private:
             best = size_t(std::ranges::max_element(gains) - gains.begin());
             return gains[best] >= 0 ? best : 0;
         }
-        if (!trial_ || trial_->method != *onTrial) trial_ = Trial{*onTrial, methods_[*onTrial].cost};
+        if (!trial_ || trial_->method != *onTrial) {
+            trial_ = Trial{*onTrial, methods_[*onTrial].cost};
+            if (!(measures_.gain[*onTrial] > kTrialMargin * leading)) ++closeTrials_[*onTrial];
+        }
         return *onTrial;
     }
 
@@ -231,7 +234,7 @@ private:
         const double total = totalCost();
         return lucerna::takesTrial({methods_[k].name, measures_.gain[k], leadingGain, methods_[k].cost,
                                     kMinimumShare * costliest,
-                                    auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total, trialledIn_[k]});
+                                    auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total, closeTrials_[k]});
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the
@@ -268,10 +271,9 @@ private:
         for (const MethodMeasure& x : m) pair.push_back(&x.pair), allocation.push_back(&x.allocation);
         // The allocation weighs each method's relmse as measured at its length, per pixel (not
         // spread over the tiles as the weights' errors are: film_measures.h).
-        const size_t tried = trial_ ? trial_->method : methods_.size();
         if (allocating) allocate(measured, relativeSquaredErrors(allocation));
         // Each method's image-wide error from the spread of its replicas, relative.
-        weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles, tried);
+        weigh(measured, m, relativeErrors(pair, measuredSquaredErrors(pair)), tiles);
         compose();
     }
 
@@ -325,9 +327,8 @@ private:
     // floors what a replica's halves show (halves of a chain, or of one VPL set a pass, share
     // errors across the whole image that no tile sees); one number from the whole image, so it
     // hardly depends on any value it weighs.
-    // tried: the method on trial until this measure (methods_.size(): none).
     void weigh(const std::vector<size_t>& measured, const std::vector<MethodMeasure>& m,
-               const std::vector<double>& pairRelative, const TileGrid& tiles, size_t tried) const {
+               const std::vector<double>& pairRelative, const TileGrid& tiles) const {
         Combination c;
         // The methods with two passes in each replica whose cost is at least kMinimumShare of the
         // costliest's. Under the allocation a method that stays near its pilot's cost adds
@@ -345,7 +346,6 @@ private:
         if (equal)
             for (size_t i = 0; i < m.size(); ++i) in.push_back(i);
         for (size_t i : in) c.methods.push_back(measured[i]);
-        if (std::ranges::find(c.methods, tried) != c.methods.end()) trialledIn_[tried] = true;
         for (int r = 0; r < 2; ++r) {
             auto& w = c.weights[size_t(r)];
             if (equal) {
@@ -468,8 +468,8 @@ private:
         double startCost;
     };
     mutable std::optional<Trial> trial_;
-    // Per method: whether a trial has brought it into the image (takesTrial).
-    mutable std::vector<bool> trialledIn_;
+    // Per method: the trials it has taken without leading by kTrialMargin (trial.h).
+    mutable std::vector<int> closeTrials_;
     // The last measure's combination: the methods in the image and their weights per tile for
     // each half (replica).
     struct Combination {

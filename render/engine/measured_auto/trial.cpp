@@ -14,7 +14,7 @@ bool shortRunIsFair(std::string_view method) { return method == "path"; }
 // glass block), a later measure puts path first, and a trial brings it back.
 bool takesTrial(const TrialQuestion& q) {
     if (!shortRunIsFair(q.method) || q.cost >= q.inImageCost) return false;
-    const double margin = q.trialledIn ? kTrialMargin : 1 / kTrialMargin;
+    const double margin = q.closeTrials >= kCloseTrials ? kTrialMargin : 1 / kTrialMargin;
     if (!(q.gain > margin * q.leadingGain)) return false;
     return q.cost + q.costLeft >= q.inImageCost;
 }

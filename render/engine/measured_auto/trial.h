@@ -9,9 +9,11 @@
 
 namespace lucerna {
 
-// How close to the leading method's gain a method must come to take a trial (or, once a trial
-// has brought it into the image, by how much it must lead).
+// How close to the leading method's gain a method must come to take a trial, kCloseTrials
+// times; after those, by how much it must lead. Each trial at least doubles the method's cost,
+// so the close ones cost at most 2^kCloseTrials times its pilot where it is truly behind.
 inline constexpr double kTrialMargin = 1.3;
+inline constexpr int kCloseTrials = 3;
 
 // The methods whose error per unit of cost a short run does not flatter: path, whose passes are
 // independent and whose Sobol sequence's error falls faster than 1 / time at first. Not the
@@ -28,13 +30,13 @@ struct TrialQuestion {
     double cost = 0;          // its cost so far (seconds or rays)
     double inImageCost = 0;   // the cost at which it would be in the image
     double costLeft = 0;      // the budget left (open-ended: as long again as so far)
-    bool trialledIn = false;  // a trial has brought it into the image before
+    int closeTrials = 0;      // the trials it has taken without leading by kTrialMargin
 };
 
 // True when the method takes the passes: its short run does not flatter it, it is out of the
-// image, its gain is within kTrialMargin of the leading gain (leads by it where a trial has
-// brought it into the image before, so that a method close to the leader does not go in and
-// out, its passes left out when the render ends), and the budget left can bring it in.
+// image, its gain is within kTrialMargin of the leading gain (leads by it once it has taken
+// kCloseTrials such trials, so that a method close to the leader but behind does not go in and
+// out for ever, its passes left out when the render ends), and the budget left can bring it in.
 bool takesTrial(const TrialQuestion& q);
 
 }  // namespace lucerna
