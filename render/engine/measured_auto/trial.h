@@ -10,8 +10,9 @@
 namespace lucerna {
 
 // How close to the leading method's gain a method must come to take a trial, kCloseTrials
-// times; after those, by how much it must lead. Each trial at least doubles the method's cost,
-// so the close ones cost at most 2^kCloseTrials times its pilot where it is truly behind.
+// times; after those, by how much it must lead. Each trial doubles the method's cost, so where
+// it is truly behind the close ones take it to about 2^kCloseTrials times its cost when the
+// first began.
 inline constexpr double kTrialMargin = 1.3;
 inline constexpr int kCloseTrials = 3;
 
