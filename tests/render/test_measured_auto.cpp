@@ -222,13 +222,14 @@ void TestMeasuredAuto::allocationReadsTheLongReplica() {
 }
 
 void TestMeasuredAuto::trialsForWhatAShortRunUnderstates() {
-    // Path out of the image (cost 1 of the 3.5 that would bring it in), 20 left in the budget.
-    TrialQuestion q{"path", 0.85, 1.0, 1.0, 3.5, 20.0, 0};
+    // Path out of the image (cost 1 of the 3.5 that would bring it in; the leader's 10), 20 left
+    // in the budget.
+    TrialQuestion q{"path", 0.85, 1.0, 1.0, 3.5, 10.0, 20.0, 0};
     // Close to the leader (the office floor's pilot: 0.83 to 1 of cmlt's), path takes a trial;
     // a chain, whose short run flatters it, does not.
     QVERIFY(takesTrial(q));
-    QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 20.0, 0}));
-    QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 20.0, 0}));
+    QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
+    QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
     // Further behind than the margin: none.
     q.gain = 0.7;
     QVERIFY(!takesTrial(q));
@@ -242,9 +243,13 @@ void TestMeasuredAuto::trialsForWhatAShortRunUnderstates() {
     QVERIFY(!takesTrial(q));
     q.gain = 1.4;
     QVERIFY(takesTrial(q));
-    // In the image already, or with too little budget left to bring it in: none.
+    // In the image with less cost than the leader: a trial (the leader would take every pass);
+    // with as much: none.
     q.cost = 3.5;
+    QVERIFY(takesTrial(q));
+    q.cost = 10.0;
     QVERIFY(!takesTrial(q));
+    // Out of the image with too little budget left to bring it in: none.
     q.cost = 1.0;
     q.costLeft = 2.0;
     QVERIFY(!takesTrial(q));

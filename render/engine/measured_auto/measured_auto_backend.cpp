@@ -211,15 +211,15 @@ private:
             const double share = costliest > 0 ? std::min(1.0, methods_[k].cost / (kMinimumShare * costliest)) : 1.0;
             gains[k] = std::isfinite(measures_.gain[k]) ? measures_.gain[k] * share : -1.0;
         }
-        const double leading = *std::ranges::max_element(gains);
+        const size_t leader = size_t(std::ranges::max_element(gains) - gains.begin());
+        const double leading = gains[leader];
         // A method on trial takes the pass, the one with the largest gain if several are.
         std::optional<size_t> onTrial;
         for (size_t k = 0; k < methods_.size(); ++k)
-            if (takesTrial(k, leading, costliest) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
+            if (k != leader && takesTrial(k, leading, methods_[leader].cost, costliest) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
         if (!onTrial) {
             trial_.reset();
-            best = size_t(std::ranges::max_element(gains) - gains.begin());
-            return gains[best] >= 0 ? best : 0;
+            return leading >= 0 ? leader : 0;
         }
         if (!trial_ || trial_->method != *onTrial) {
             trial_ = Trial{*onTrial, methods_[*onTrial].cost};
@@ -229,11 +229,11 @@ private:
     }
 
     // Whether method k takes a trial (trial.h).
-    bool takesTrial(size_t k, double leadingGain, double costliest) const {
+    bool takesTrial(size_t k, double leadingGain, double leadingCost, double costliest) const {
         // Open-ended (the window, or counted in passes): as long again as so far.
         const double total = totalCost();
         return lucerna::takesTrial({methods_[k].name, measures_.gain[k], leadingGain, methods_[k].cost,
-                                    kMinimumShare * costliest,
+                                    kMinimumShare * costliest, leadingCost,
                                     auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total, closeTrials_[k]});
     }
 

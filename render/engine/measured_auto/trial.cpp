@@ -1,5 +1,7 @@
 #include "render/engine/measured_auto/trial.h"
 
+#include <algorithm>
+
 namespace lucerna {
 
 // Measured on the Cornell box with a glass block: path's relmse x seconds fell from 0.044 at
@@ -13,7 +15,7 @@ bool shortRunIsFair(std::string_view method) { return method == "path"; }
 // relmse alone. Where the leader's error grows with its length (mlt on the Cornell box with a
 // glass block), a later measure puts path first, and a trial brings it back.
 bool takesTrial(const TrialQuestion& q) {
-    if (!shortRunIsFair(q.method) || q.cost >= q.inImageCost) return false;
+    if (!shortRunIsFair(q.method) || q.cost >= std::max(q.inImageCost, q.leadingCost)) return false;
     const double margin = q.closeTrials >= kCloseTrials ? kTrialMargin : 1 / kTrialMargin;
     if (!(q.gain > margin * q.leadingGain)) return false;
     return q.cost + q.costLeft >= q.inImageCost;

@@ -23,19 +23,21 @@ inline constexpr int kCloseTrials = 3;
 // clamp's residual shows as no variance.
 bool shortRunIsFair(std::string_view method);
 
-// What the trial rule reads of one method out of the image and of the render.
+// What the trial rule reads of one method and of the render.
 struct TrialQuestion {
     std::string_view method;
     double gain = 0;          // its relmse taken off per unit of cost, undiscounted
     double leadingGain = 0;   // the largest gain after the discount (the leading method's)
     double cost = 0;          // its cost so far (seconds or rays)
     double inImageCost = 0;   // the cost at which it would be in the image
+    double leadingCost = 0;   // the leading method's cost
     double costLeft = 0;      // the budget left (open-ended: as long again as so far)
     int closeTrials = 0;      // the trials it has taken without leading by kTrialMargin
 };
 
 // True when the method takes the passes: its short run does not flatter it, it is out of the
-// image, its gain is within kTrialMargin of the leading gain (leads by it once it has taken
+// image or in it with less cost than the leading method (whose gain is higher, so that it would
+// draw no passes there either), its gain is within kTrialMargin of the leading gain (leads by it once it has taken
 // kCloseTrials such trials, so that a method close to the leader but behind does not go in and
 // out for ever, its passes left out when the render ends), and the budget left can bring it in.
 bool takesTrial(const TrialQuestion& q);
