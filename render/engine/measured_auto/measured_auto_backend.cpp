@@ -214,9 +214,15 @@ private:
         const size_t leader = size_t(std::ranges::max_element(gains) - gains.begin());
         const double leading = gains[leader];
         // A method on trial takes the pass, the one with the largest gain if several are.
+        // Open-ended (the window, or counted in passes), the budget left is as long again as so far.
+        const double total = totalCost();
+        const double costLeft = auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total;
         std::optional<size_t> onTrial;
-        for (size_t k = 0; k < methods_.size(); ++k)
-            if (k != leader && takesTrial(k, leading, methods_[leader].cost, costliest) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
+        for (size_t k = 0; k < methods_.size(); ++k) {
+            const TrialQuestion q{methods_[k].name, measures_.gain[k], leading, methods_[k].cost,
+                                  kMinimumShare * costliest, methods_[leader].cost, costLeft, closeTrials_[k]};
+            if (k != leader && takesTrial(q) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
+        }
         if (!onTrial) {
             trial_.reset();
             return leading >= 0 ? leader : 0;
@@ -226,15 +232,6 @@ private:
             if (!(measures_.gain[*onTrial] > kTrialMargin * leading)) ++closeTrials_[*onTrial];
         }
         return *onTrial;
-    }
-
-    // Whether method k takes a trial (trial.h).
-    bool takesTrial(size_t k, double leadingGain, double leadingCost, double costliest) const {
-        // Open-ended (the window, or counted in passes): as long again as so far.
-        const double total = totalCost();
-        return lucerna::takesTrial({methods_[k].name, measures_.gain[k], leadingGain, methods_[k].cost,
-                                    kMinimumShare * costliest, leadingCost,
-                                    auto_.budgetSeconds > 0 ? auto_.budgetSeconds - total : total, closeTrials_[k]});
     }
 
     // Measures every method with a pass in each replica (the allocation), and makes the film the

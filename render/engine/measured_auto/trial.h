@@ -1,9 +1,10 @@
 #pragma once
-// When `auto` gives passes to a method out of its image (measured_auto_backend.cpp): a trial.
-// A method whose cost is under a share of the costliest's in the image is left out of it, and
-// its gain is discounted by how far along it is, so that a pilot's optimistic estimate draws no
-// time that the image then leaves out. That keeps out a method whose short run understates it
-// too; a trial gives such a method passes until a measure has seen it at a greater length.
+// When `auto` gives passes to a method that its gains would not give them to
+// (measured_auto_backend.cpp): a trial. A method whose cost is under a share of the
+// costliest's in the image is left out of it, and its gain is discounted by how far along it
+// is, so that a pilot's optimistic estimate draws no time that the image then leaves out; in
+// the image, the leading gain takes every pass. Both starve a method whose short run
+// understates it; a trial gives it passes until a measure has seen it at a greater length.
 
 #include <string_view>
 
@@ -35,11 +36,11 @@ struct TrialQuestion {
     int closeTrials = 0;      // the trials it has taken without leading by kTrialMargin
 };
 
-// True when the method takes the passes: its short run does not flatter it, it is out of the
-// image or in it with less cost than the leading method (whose gain is higher, so that it would
-// draw no passes there either), its gain is within kTrialMargin of the leading gain (leads by it once it has taken
-// kCloseTrials such trials, so that a method close to the leader but behind does not go in and
-// out for ever, its passes left out when the render ends), and the budget left can bring it in.
+// True when the method takes the passes: its short run does not flatter it; it is out of the
+// image, or in it with less cost than the leading method; its gain is within kTrialMargin of the
+// leading gain (leads by it once it has taken kCloseTrials such trials, so that a method close
+// to the leader but behind does not go in and out for ever, its passes left out when the render
+// ends); and the budget left can bring it into the image.
 bool takesTrial(const TrialQuestion& q);
 
 }  // namespace lucerna
