@@ -43,8 +43,9 @@ void TestCornell::againstReference_data() {
     QTest::addColumn<QString>("backend");
     QTest::addColumn<int>("spp");
     QTest::addColumn<double>("maxRelmse");
-    // Cycles itself reaches 1.1e-4 at 1024 spp against this reference.
-    QTest::newRow("path") << "path" << 1024 << 5e-4;
+    // Cycles itself reaches 1.1e-4 at 1024 spp against this reference; path 1.49e-4 at 1024 spp,
+    // 2.8e-4 at 512 (seed 7: the variance halves, so little of it is bias).
+    QTest::newRow("path") << "path" << 512 << 4e-4;
     // bdpt costs about 3x path's time per sample; 64 spp measured relmse 8.9e-4 (seed 7), mean
     // +0.18%. The bound leaves room for seed-to-seed noise.
     QTest::newRow("bdpt") << "bdpt" << 64 << 1.5e-3;
