@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include <tbb/parallel_for.h>
+
 namespace lucerna {
 
 namespace {
@@ -103,8 +105,8 @@ TileGrid::TileGrid(int width, int height, int size)
 
 Image medianImage(std::span<const Image* const> images) {
     Image out(images[0]->width, images[0]->height);
-    std::vector<double> v;
-    for (int y = 0; y < out.height; ++y)
+    tbb::parallel_for(0, out.height, [&](int y) {
+        std::vector<double> v;
         for (int x = 0; x < out.width; ++x) {
             double c[3];
             for (int i = 0; i < 3; ++i) {
@@ -115,6 +117,7 @@ Image medianImage(std::span<const Image* const> images) {
             }
             out.at(x, y) = Rgb(float(c[0]), float(c[1]), float(c[2]));
         }
+    });
     return out;
 }
 

@@ -18,6 +18,8 @@
 #include <optional>
 #include <thread>
 
+#include <tbb/parallel_for.h>
+
 namespace lucerna {
 
 namespace {
@@ -241,29 +243,29 @@ private:
         if (film_->width() == 0) return;  // not prepared
         const TileGrid tiles(film_->width(), film_->height(), auto_.tileSize);
         std::vector<size_t> measured;
-        std::vector<std::array<ReplicaImages, 2>> images;
-        for (size_t k = 0; k < methods_.size(); ++k) {
-            if (methods_[k].piloted() < 1) continue;
-            std::array<ReplicaImages, 2> im;
-            for (int r = 0; r < 2; ++r) {
-                const Film& f = methods_[k].replicas[size_t(r)]->film();
-                // Pass p goes to half p % 2: two passes fill both halves.
-                im[size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}, methods_[k].passes[size_t(r)] >= 2};
-            }
-            images.push_back(std::move(im));
-            measured.push_back(k);
-        }
+        for (size_t k = 0; k < methods_.size(); ++k)
+            if (methods_[k].piloted() >= 1) measured.push_back(k);
         if (measured.empty()) return;
+        // A task per replica's film, then one per method: one core's measures took 2.5% of a 30 s
+        // render of the Cornell box (0.75 s for 14) while the others waited; 0.4 s on two cores.
+        std::vector<std::array<ReplicaImages, 2>> images(measured.size());
+        tbb::parallel_for(size_t(0), 2 * measured.size(), [&](size_t j) {
+            const Method& method = methods_[measured[j / 2]];
+            const int r = int(j % 2);
+            const Film& f = method.replicas[size_t(r)]->film();
+            // Pass p goes to half p % 2: two passes fill both halves.
+            images[j / 2][size_t(r)] = {f.image(), {f.halfImage(0), f.halfImage(1)}, method.passes[size_t(r)] >= 2};
+        });
         // Only the allocation reads the per-pixel errors, and it waits for every pilot: the frames
         // shown before then do without the median image.
         const bool allocating = allPiloted();
         const Image reference = allocating ? consensus(measured, images) : Image();
-        std::vector<MethodMeasure> m;
-        for (size_t i = 0; i < measured.size(); ++i) {
+        std::vector<MethodMeasure> m(measured.size());
+        tbb::parallel_for(size_t(0), measured.size(), [&](size_t i) {
             const size_t k = measured[i];
-            m.push_back(measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1),
-                                      allocating ? &reference : nullptr));
-        }
+            m[i] = measureMethod(images[i], tiles, methods_[k].piloted() >= 2, samples(k, 0), samples(k, 1),
+                                 allocating ? &reference : nullptr);
+        });
         std::vector<const TileStats*> pair, allocation;
         for (const MethodMeasure& x : m) pair.push_back(&x.pair), allocation.push_back(&x.allocation);
         // The allocation weighs each method's relmse as measured at its length, per pixel (not
