@@ -231,7 +231,7 @@ private:
         }
         if (!trial_ || trial_->method != *onTrial) {
             trial_ = Trial{*onTrial, methods_[*onTrial].cost};
-            if (!(measures_.gain[*onTrial] > kTrialMargin * leading)) ++closeTrials_[*onTrial];
+            if (!leadsByMargin(measures_.gain[*onTrial], leading)) ++closeTrials_[*onTrial];
         }
         return *onTrial;
     }

@@ -16,8 +16,8 @@ bool shortRunIsFair(std::string_view method) { return method == "path"; }
 // glass block), a later measure puts path first, and a trial brings it back.
 bool takesTrial(const TrialQuestion& q) {
     if (!shortRunIsFair(q.method) || q.cost >= std::max(q.inImageCost, q.leadingCost)) return false;
-    const double margin = q.closeTrials >= kCloseTrials ? kTrialMargin : 1 / kTrialMargin;
-    if (!(q.gain > margin * q.leadingGain)) return false;
+    const bool close = q.gain > (1 / kTrialMargin) * q.leadingGain;
+    if (!(q.closeTrials >= kCloseTrials ? leadsByMargin(q.gain, q.leadingGain) : close)) return false;
     return q.cost + q.costLeft >= q.inImageCost;
 }
 

@@ -17,6 +17,9 @@ namespace lucerna {
 inline constexpr double kTrialMargin = 1.3;
 inline constexpr int kCloseTrials = 3;
 
+// Whether a gain leads the leading one by kTrialMargin; a trial taken without that is a close one.
+inline bool leadsByMargin(double gain, double leadingGain) { return gain > kTrialMargin * leadingGain; }
+
 // The methods whose error per unit of cost a short run does not flatter: path, whose passes are
 // independent and whose Sobol sequence's error falls faster than 1 / time at first. Not the
 // chains (mlt, cmlt), whose error per unit of cost grows as they meet their rare paths, nor
