@@ -1,7 +1,8 @@
 // Combines independent renders of one scene into a reference: each pixel the mean of the inputs
 // weighted by the inverse of each input's estimated relmse (its `lucerna:estimated_relmse`
 // header attribute, the noise its two film halves show), and prints the relmse between each pair
-// of inputs, the cross-check that they converge to the same image. Used for issue 21's door
+// of inputs, the cross-check that they converge to the same image. The output's own estimate,
+// from the inputs', goes in its `lucerna:estimated_relmse`. Used for issue 21's door
 // references (bdpt and cmlt, bench/families.sh).
 //   bench_combine_references OUT.exr IN.exr IN.exr...
 
@@ -48,6 +49,8 @@ int main(int argc, char** argv) {
             out.pixels[p] = Rgb(float(sum.x), float(sum.y), float(sum.z));
         }
         out.attributes["lucerna:reference"] = "inverse-error weighted mean of " + std::to_string(in.size()) + " renders";
+        // Of independent inputs weighted w_i = (1 / e_i) / sum_j (1 / e_j): sum_i w_i^2 e_i = 1 / sum_j (1 / e_j).
+        out.attributes["lucerna:estimated_relmse"] = std::to_string(1.0 / total);
         writeExr(argv[1], out);
         std::printf("wrote %s\n", argv[1]);
     } catch (const std::exception& e) {

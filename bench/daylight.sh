@@ -1,7 +1,7 @@
 #!/bin/sh
 # Issue 22's figures on the bundled daylit office (BENCHMARKS.md, "Daylight (issue 22)"):
-#   bench/daylight.sh BUILD_DIR OUT_DIR ref [SECONDS]   the reference at 240 x 160: path and bdpt for
-#                                                        SECONDS each (default 600), their relmse
+#   bench/daylight.sh BUILD_DIR OUT_DIR ref [SECONDS]   the reference at 240 x 160: mir and path for
+#                                                        SECONDS each (default 480), their relmse
 #                                                        against each other, and their combination
 #   bench/daylight.sh BUILD_DIR OUT_DIR bench SECONDS SEED   every backend for SECONDS against it,
 #                                                        then each one's time to relmse 1e-2
@@ -12,11 +12,10 @@ scene=$(dirname "$0")/../resources/scenes/daylit_office.json
 mkdir -p "$out"
 case $mode in
 ref)
-    t=${1:-600}
-    "$build/app/lucerna" render "$scene" -o "$out/path.exr" --backend path --time "$t" --width 240 --height 160 --seed 11
-    "$build/app/lucerna" render "$scene" -o "$out/bdpt.exr" --backend bdpt --time "$t" --width 240 --height 160 --seed 12
-    "$build/app/lucerna" compare "$out/path.exr" "$out/bdpt.exr"
-    "$build/bench/bench_combine_references" "$out/daylit_office.ref.exr" "$out/path.exr" "$out/bdpt.exr" ;;
+    t=${1:-480}
+    "$build/app/lucerna" render "$scene" -o "$out/mir.exr" --backend mir --time "$t" --width 240 --height 160 --seed 1000
+    "$build/app/lucerna" render "$scene" -o "$out/path.exr" --backend path --time "$t" --width 240 --height 160 --seed 1001
+    "$build/bench/bench_combine_references" "$out/daylit_office.ref.exr" "$out/mir.exr" "$out/path.exr" ;;
 bench)
     t=$1 seed=${2:-1}
     "$build/app/lucerna" bench "$scene" --reference "$out/daylit_office.ref.exr" --time "$t" --seed "$seed" \
