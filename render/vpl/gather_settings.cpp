@@ -4,12 +4,13 @@
 
 namespace lucerna {
 
-GatherSettings gatherSettingsFromOptions(const RenderSettings& settings) {
-    GatherSettings g;
+GatherSettings gatherSettingsFromOptions(const RenderSettings& settings, GatherSettings defaults) {
+    GatherSettings g = defaults;
     readOption(settings, "clamp", g.clampFraction, 0.0, 1e3);
     int compensate = g.compensate ? 1 : 0;
     readOption(settings, "compensate", compensate, 0, 1);
     g.compensate = compensate == 1;
+    readOption(settings, "direct_samples", g.directSamples, 1, 1024);
     return g;
 }
 

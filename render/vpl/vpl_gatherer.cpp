@@ -45,12 +45,22 @@ VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& setting
     : scene_(scene), settings_(settings), pathTracer_(scene, residualPathSettings()),
       maxG_(geometricClampBound(scene, settings.clampFraction)) {}
 
-// Direct light at x1 by next-event estimation and one BSDF sample (power heuristic); the same
-// BSDF sample estimates the residual of the clamp and the light arriving through specular surfaces.
+// Direct light at x1 by next-event estimation and one BSDF sample (power heuristic), directSamples
+// times; the first BSDF sample also estimates the residual of the clamp and the light arriving
+// through specular surfaces.
 Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const {
     const ShadingMaterial& mat = *r.material;
     const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
     const V3f woLocal = frame.toLocal(r.wo);
+    const int n = std::max(1, settings_.directSamples);
+    Rgb direct(0, 0, 0), residual(0, 0, 0);
+    for (int i = 0; i < n; ++i) direct += directSample(r, frame, woLocal, rng, withoutDeltaLights, i == 0 ? &residual : nullptr);
+    return direct * (1.0f / float(n)) + residual;
+}
+
+Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, Rng& rng, bool withoutDeltaLights,
+                              Rgb* residual) const {
+    const ShadingMaterial& mat = *r.material;
     Rgb L(0, 0, 0);
 
     // Next-event estimation.
@@ -92,7 +102,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
         }
         return L;
     }
-    if (!settings_.compensate) return L;
+    if (!residual || !settings_.compensate) return L;
     float weight = 1.0f;  // through a mirror or glass: not in the VPL term at all
     if (!m2.isDelta()) {
         if (!std::isfinite(maxG_)) return L;
@@ -104,8 +114,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     }
     // Light leaving x2 toward x1: x2 does not emit, so the path tracer returns reflected light only.
     // (It traces this ray again, panes included.)
-    const Rgb Lx2 = pathTracer_.radiance(ray, rng);
-    L += bs.weight * Lx2 * weight;
+    *residual += bs.weight * pathTracer_.radiance(ray, rng) * weight;
     return L;
 }
 

@@ -54,6 +54,10 @@ public:
 
 private:
     Rgb directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const;
+    // One sample of the direct light at r (next-event estimation and a BSDF sample); with
+    // `residual`, that BSDF sample's estimate of the clamp's residual is added to it.
+    Rgb directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, Rng& rng, bool withoutDeltaLights,
+                     Rgb* residual) const;
 
     const RenderScene& scene_;
     GatherSettings settings_;

@@ -19,7 +19,7 @@ struct IrSettings {
     int interleave = 8;
     VplOptions vpl;
 
-    // Reads "vpl_paths", "interleave", "clamp", "compensate", "max_bounces"; throws
+    // Reads "vpl_paths", "interleave", "clamp", "compensate", "direct_samples" (1), "max_bounces"; throws
     // std::invalid_argument on bad values.
     static IrSettings fromOptions(const RenderSettings& settings);
 };
