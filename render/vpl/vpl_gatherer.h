@@ -3,7 +3,8 @@
 // as
 //   L = (emitters seen directly or through mirrors and glass)
 //     + direct light at the first diffuse/glossy vertex x1 (next-event estimation and a BSDF
-//       sample, combined by the power heuristic, as the path backend does)
+//       sample, combined by the power heuristic, as the path backend does; the mean of
+//       GatherSettings::directSamples such pairs)
 //     + indirect light at x1 from the VPLs, geometric term clamped to maxG
 //     + the clamped-away residual (Kollig & Keller 2004): the same BSDF sample, when it hits a
 //       diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
