@@ -6,8 +6,8 @@
 //       sample, combined by the power heuristic, as the path backend does; the mean of
 //       GatherSettings::directSamples such pairs)
 //     + indirect light at x1 from the VPLs, geometric term clamped to maxG
-//     + the clamped-away residual (Kollig & Keller 2004): the same BSDF sample, when it hits a
-//       diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
+//     + the clamped-away residual (Kollig & Keller 2004): the first pair's BSDF sample, when it
+//       hits a diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
 //       tracing; when it hits a mirror or glass, continued by path tracing unweighted (VPL
 //       connections are straight segments, so light reaching x1 through a specular surface is
 //       not in the VPL term).

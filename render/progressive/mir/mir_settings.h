@@ -29,9 +29,9 @@ inline MirSettings MirSettings::fromOptions(const RenderSettings& settings) {
     // three more next-event and BSDF samples cost little, and where surfaces are lit directly
     // their noise was much of what is left (relmse at equal time with 4 against 1: 0.84 on the
     // daylit office over 4 seeds; the film's estimate on 7 scenes kept out of the choice, 2 seeds
-    // each, 0.87 geometric mean, but 1.28 and 1.38 on two doors lit through a gap; a closed
-    // sphere, whose error is mostly the chain's normalisation, 0.98; BENCHMARKS.md, R93, R94).
-    // ir's passes are cheap, and there 4 samples lost on most scenes: 1.
+    // each, 0.87 geometric mean, but 1.28 and 1.38 on two doors lit through a gap; against the
+    // reference a closed sphere, whose error is likely the chain's normalisation, 0.98;
+    // BENCHMARKS.md, R93, R94). ir's passes are cheap, and there 4 samples lost on most scenes: 1.
     GatherSettings defaults;
     defaults.directSamples = 4;
     s.gather = gatherSettingsFromOptions(settings, defaults);
