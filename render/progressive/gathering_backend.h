@@ -26,18 +26,25 @@ protected:
     // camera ray through a uniformly jittered point of the pixel (box filter), gathering the VPLs
     // vplsAt(passSeed, pixel) chooses for the pixel (its index y * width + x); each pixel's
     // random numbers depend only on the seed, the pass and the pixel.
+    // With vplFilm, the VPL term goes there and the rest to film_ (VplGatherer::radianceParts).
     template <class VplsAt>
-    void gatherPass(TaskContext& ctx, int pass, int tileSize, const VplsAt& vplsAt) {
+    void gatherPass(TaskContext& ctx, int pass, int tileSize, const VplsAt& vplsAt, Film* vplFilm = nullptr) {
         const Sensor& camera = scene_->camera();
         const int half = pass % 2;
         const uint64_t passSeed = hashSeed(settings_.seed, uint64_t(pass));
+        const auto finite = [](const Rgb& L) { return isFinite(L) ? L : Rgb(0, 0, 0); };  // never poison a film
         forEachPixel(camera.width(), camera.height(), tileSize, ctx, [&](int x, int y) {
             const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
             Rng rng(passSeed, pixel);
             const V2f jitter = rng.next2D();
-            Rgb L = gatherer_->radiance(camera.ray(float(x) + jitter.x, float(y) + jitter.y), rng, vplsAt(passSeed, pixel));
-            if (!isFinite(L)) L = Rgb(0, 0, 0);  // never poison the film
-            film_->addSample(half, x, y, L);
+            const Ray ray = camera.ray(float(x) + jitter.x, float(y) + jitter.y);
+            if (!vplFilm) {
+                film_->addSample(half, x, y, finite(gatherer_->radiance(ray, rng, vplsAt(passSeed, pixel))));
+                return;
+            }
+            const VplGatherer::Parts L = gatherer_->radianceParts(ray, rng, vplsAt(passSeed, pixel));
+            film_->addSample(half, x, y, finite(L.rest));
+            vplFilm->addSample(half, x, y, finite(L.vpl));
         });
     }
 

@@ -44,6 +44,17 @@ double MirChain::pc() const {
 }
 
 VplSet MirChain::sampleVpls(int n) {
+    VplSet vpls = sampleUnitVpls(n);
+    const float pc = float(this->pc());
+    VplSet weighted;
+    for (Vpl v : vpls) {
+        v.power *= pc;
+        if (isFinite(v.power) && !isBlack(v.power)) weighted.push_back(v);
+    }
+    return weighted;
+}
+
+VplSet MirChain::sampleUnitVpls(int n) {
     VplSet vpls;
     if (n <= 0 || (!mtm_->started() && !mtm_->start(rng_, settings_.startCandidates))) return vpls;
     for (int i = 0; i < settings_.pcSamples; ++i)
@@ -64,10 +75,9 @@ VplSet MirChain::sampleVpls(int n) {
             ++counts.back();  // a rejected step: the same path VPL again
         }
     }
-    const double pc = this->pc();
     VplSet weighted;
     for (size_t i = 0; i < vpls.size(); ++i) {
-        const double w = double(counts[i]) * pc / (double(n) * importance[i]);
+        const double w = double(counts[i]) / (double(n) * importance[i]);
         if (!(w > 0) || !std::isfinite(w)) continue;
         Vpl v = vpls[i];
         v.power *= float(w);

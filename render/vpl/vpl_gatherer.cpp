@@ -125,6 +125,15 @@ Rgb VplGatherer::radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, s
     return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
 }
 
+VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, Rng& rng, std::span<const Vpl> vpls) const {
+    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
+    Parts parts{Rgb(0, 0, 0), cv.emitted};
+    if (!cv.found) return parts;
+    parts.rest += cv.throughput * directAndResidual(cv.receiver, rng, false);
+    if (!vpls.empty()) parts.vpl = cv.throughput * gatherVpls(scene_, vpls, {}, cv.receiver, maxG_);
+    return parts;
+}
+
 Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale,
                            bool withoutDeltaLights) const {
     Rgb L = directAndResidual(r, rng, withoutDeltaLights);

@@ -46,6 +46,14 @@ public:
     // all 1).
     Rgb radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
 
+    // radiance() in two parts that sum to it, drawing the same random numbers: the VPL term
+    // (linear in the VPLs' powers) and the rest.
+    struct Parts {
+        Rgb vpl{0, 0, 0};
+        Rgb rest{0, 0, 0};
+    };
+    Parts radianceParts(const Ray& ray, Rng& rng, std::span<const Vpl> vpls) const;
+
     // Radiance leaving the receiver toward r.wo by reflection (its emission not included): direct
     // light, the clamp residual and the VPL term, as radiance() computes at x1. With
     // withoutDeltaLights, the direct light of point, spot, directional lights and luminaires is

@@ -4,6 +4,8 @@
 #include "render/progressive/gathering_backend.h"
 #include "render/progressive/mir/mir_settings.h"
 
+#include <array>
+
 namespace lucerna {
 
 namespace {
@@ -24,6 +26,7 @@ public:
         const Sensor& camera = scene_->camera();
         mir_.chain.pcSamples = mir_.pcSamplesPerPass >= 0 ? mir_.pcSamplesPerPass
                                                           : std::max(256, camera.width() * camera.height() / 8);
+        vplFilm_ = std::make_unique<Film>(film_->width(), film_->height());
         for (int h = 0; h < 2; ++h)
             chains_.push_back(std::make_unique<MirChain>(*scene_, scene_->lights(), scene_->camera(), mir_.chain,
                                                          gatherer_->maxG(), hashSeed(settings_.seed, h, 0x4d4952)));
@@ -31,14 +34,37 @@ public:
 
     void renderPass(TaskContext& ctx, int pass) override {
         const int half = pass % 2;
-        const VplSet vpls = chains_[size_t(half)]->sampleVpls(mir_.pathVplsPerPass);
+        MirChain& chain = *chains_[size_t(half)];
+        const VplSet vpls = chain.sampleUnitVpls(mir_.pathVplsPerPass);
         if (ctx.isCancelled()) return;
-        // One camera sample per pixel, as `ir`; the VPLs' powers carry their weights.
-        gatherPass(ctx, pass, mir_.gather.tileSize, [&](uint64_t, uint64_t) -> const VplSet& { return vpls; });
+        // One camera sample per pixel, as `ir`; the VPLs' powers carry their weights but Pc,
+        // which their film takes when read, so that every pass has the newest.
+        gatherPass(ctx, pass, mir_.gather.tileSize, [&](uint64_t, uint64_t) -> const VplSet& { return vpls; },
+                   vplFilm_.get());
         if (ctx.isCancelled()) return;
         film_->finishPass(half);
+        vplFilm_->finishPass(half);
+        vplFilm_->setHalfScale(half, chain.pc());
+        sum_.reset();
         geometricVplCount_ += vpls.size();
         ++passes_;
+    }
+
+    // The direct light and the rest (film_) and the VPLs' light times Pc (vplFilm_'s half
+    // scales), summed when read.
+    const Film& film() const override {
+        if (!vplFilm_) return *film_;
+        if (!sum_) {
+            const std::array<const Film*, 2> films{film_.get(), vplFilm_.get()};
+            sum_ = std::make_unique<Film>(Film::sum(films));
+        }
+        return *sum_;
+    }
+
+    void rewriteFilms(const std::function<void(Film&)>& rewrite) override {
+        rewrite(*film_);
+        if (vplFilm_) rewrite(*vplFilm_);
+        sum_.reset();
     }
 
     std::map<std::string, std::string> diagnostics() const override {
@@ -60,6 +86,8 @@ public:
 private:
     MirSettings mir_;
     std::vector<std::unique_ptr<MirChain>> chains_;  // one per film half
+    std::unique_ptr<Film> vplFilm_;
+    mutable std::unique_ptr<Film> sum_;  // film(), until the next pass
     size_t geometricVplCount_ = 0;
     int passes_ = 0;
 };
