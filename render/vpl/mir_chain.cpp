@@ -1,5 +1,6 @@
 #include "render/vpl/mir_chain.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace lucerna {
@@ -43,6 +44,22 @@ double MirChain::pc() const {
     return count > 0 ? (mtm_->uniformMean() * exactCount + cheapSum_) / count : 0.0;
 }
 
+double MirChain::pcSampleRelativeVariance() const {
+    if (cheapCount_ < 2) return 0;
+    const double n = double(cheapCount_), mean = cheapSum_ / n, pc = this->pc();
+    const double variance = std::max(0.0, cheapSumSquares_ / n - mean * mean) * n / (n - 1);
+    return pc > 0 ? variance / (pc * pc) : 0.0;
+}
+
+double MirChain::pcRelativeVariance() const {
+    const double count = double(mtm_->uniformCount() + cheapCount_);
+    return count > 0 ? pcSampleRelativeVariance() / count : 0.0;
+}
+
+double MirChain::pcSampleRays() const {
+    return cheapCount_ > 0 ? double(cheapVertices_) / double(cheapCount_) * (1 + settings_.pcPointsPerVertex) : 0.0;
+}
+
 VplSet MirChain::sampleVpls(int n) {
     VplSet vpls = sampleUnitVpls(n);
     const float pc = float(this->pc());
@@ -57,9 +74,14 @@ VplSet MirChain::sampleVpls(int n) {
 VplSet MirChain::sampleUnitVpls(int n) {
     VplSet vpls;
     if (n <= 0 || (!mtm_->started() && !mtm_->start(rng_, settings_.startCandidates))) return vpls;
-    for (int i = 0; i < settings_.pcSamples; ++i)
-        cheapSum_ += estimateMirImportance(scene_, lights_, points_, settings_.vpl, maxG_, floor_,
-                                           settings_.pcPointsPerVertex, rng_);
+    for (int i = 0; i < settings_.pcSamples; ++i) {
+        int vertices = 0;
+        const double f = estimateMirImportance(scene_, lights_, points_, settings_.vpl, maxG_, floor_,
+                                               settings_.pcPointsPerVertex, rng_, &vertices);
+        cheapSum_ += f;
+        cheapSumSquares_ += f * f;
+        cheapVertices_ += vertices;
+    }
     cheapCount_ += settings_.pcSamples;
     std::vector<int> counts;
     std::vector<double> importance;

@@ -61,6 +61,15 @@ public:
     VplSet sampleUnitVpls(int n);
 
     double pc() const;
+    // Pc's relative variance, Var(Pc) / Pc^2, from the spread of the cheap samples (0 before two).
+    double pcRelativeVariance() const;
+    // The cheap samples' relative variance each, Var(f) / Pc^2: Pc's after N more is this / N.
+    double pcSampleRelativeVariance() const;
+    // Rays a cheap sample traces, on average (its light path's, and perVertex to S from each
+    // vertex).
+    double pcSampleRays() const;
+    // The cheap samples each later call draws (settings' pcSamples until set).
+    void setPcSamples(int samples) { settings_.pcSamples = std::max(0, samples); }
     double acceptanceRate() const { return mtm_->acceptanceRate(); }
     long long pcSamples() const { return mtm_->uniformCount() + cheapCount_; }
     size_t importancePoints() const { return points_.size(); }
@@ -81,7 +90,9 @@ private:
     std::unique_ptr<MultipleTryMetropolis<MirPath>> mtm_;
     int chosen_ = -1;  // which vertex of the current path is its path VPL
     double cheapSum_ = 0;  // estimateMirImportance's samples of f
+    double cheapSumSquares_ = 0;
     long long cheapCount_ = 0;
+    long long cheapVertices_ = 0;
 };
 
 }  // namespace lucerna

@@ -86,9 +86,11 @@ double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights
 }
 
 double estimateMirImportance(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
-                             const VplOptions& vpl, float maxG, double floor, int perVertex, Rng& rng) {
+                             const VplOptions& vpl, float maxG, double floor, int perVertex, Rng& rng,
+                             int* vertexCount) {
     std::vector<Vpl> vertices;
     traceLightPath(scene, lights, rng, 1.0f, vpl, [&](const Vpl& v) { vertices.push_back(v); });
+    if (vertexCount) *vertexCount = int(vertices.size());
     if (points.empty()) return floor * double(vertices.size());
     double sum = 0;
     for (const Vpl& v : vertices) {

@@ -46,8 +46,11 @@ double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights
 // An unbiased estimate of f at a uniformly drawn u (the light sub-path traced with `rng`), each
 // vertex measured on `perVertex` members of S drawn at random (with replacement) instead of all:
 // |S| / perVertex times fewer shadow rays, for the many samples the normalisation Pc needs.
+// vertices, if given, receives the path's vertex count (its cost: a ray to each vertex and
+// perVertex to S from it).
 double estimateMirImportance(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
-                             const VplOptions& vpl, float maxG, double floor, int perVertex, Rng& rng);
+                             const VplOptions& vpl, float maxG, double floor, int perVertex, Rng& rng,
+                             int* vertices = nullptr);
 
 // Vertex k of the path with probability c_k / f, for u in [0, 1); -1 when f is 0.
 int choosePathVertex(const MirPath& path, double u);

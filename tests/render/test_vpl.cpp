@@ -1,12 +1,15 @@
 // VPL generation (render/vpl/) and the `ir` and `mir` backends: the power the particles bring,
 // per-light generation, the contribution formula and its clamp, hard cases without a NaN, and
-// consistency (4x the work at most halves relmse).
+// consistency (4x the work at most halves relmse); mir's split of the VPL term from the rest, and
+// its balance of Pc samples against the gather.
 
 #include "closed_form_scenes.h"
 #include "core/image/image_metrics.h"
 #include "hard_case_scenes.h"
+#include "render/progressive/mir/pc_balance.h"
 #include "render/vpl/instant_radiosity.h"
 #include "render/vpl/vpl_contribution.h"
+#include "render/vpl/vpl_gatherer.h"
 #include "render_helpers.h"
 
 #include <QtTest>
@@ -41,6 +44,8 @@ private slots:
     void firstBounceCarriesIncidentFlux();
     void perLightSetsConcatenate();
     void contributionFormulaAndClamp();
+    void radiancePartsSumToRadiance();
+    void pcBalanceIsTheLeastError();
     void hardCases_data();
     void hardCases();
     void consistency_data();
@@ -130,6 +135,64 @@ void TestVpl::contributionFormulaAndClamp() {
     // The clamp bound scales with the scene: the same fraction of the radius everywhere.
     QVERIFY(std::abs(geometricClampBound(scene, 0.1f) * std::pow(0.1f * scene.boundsRadius(), 2.0f) - 1.0f) < 1e-5f);
     QVERIFY(std::isinf(geometricClampBound(scene, 0.0f)));
+}
+
+void TestVpl::radiancePartsSumToRadiance() {
+    // mir keeps the VPL term in a film of its own, scaled by the newest Pc when read: the parts
+    // must be radiance() split, drawing the same numbers, and the VPL part linear in the powers.
+    SphereWithEmittingCap s;
+    s.rings = 12;
+    s.segments = 24;
+    s.resolution = 8;
+    const RenderScene scene = makeRenderScene(s.json());
+    VplSet vpls = generateVpls(scene, 200, 5);
+    QVERIFY(vpls.size() > 50);
+    const VplGatherer gatherer(scene, GatherSettings{});
+    VplSet doubled = vpls;
+    for (Vpl& v : doubled) v.power *= 2.0f;
+    int withVplLight = 0;
+    for (int y = 0; y < s.resolution; ++y)
+        for (int x = 0; x < s.resolution; ++x) {
+            const Ray ray = scene.camera().ray(float(x) + 0.5f, float(y) + 0.5f);
+            Rng a(7, uint64_t(y * s.resolution + x)), b = a, c = a;
+            const Rgb whole = gatherer.radiance(ray, a, vpls);
+            const VplGatherer::Parts parts = gatherer.radianceParts(ray, b, vpls);
+            const VplGatherer::Parts twice = gatherer.radianceParts(ray, c, doubled);
+            const Rgb sum = parts.rest + parts.vpl;
+            for (int k = 0; k < 3; ++k) {
+                QVERIFY(std::abs(sum[k] - whole[k]) <= 1e-5f * std::max(1.0f, std::abs(whole[k])));
+                QVERIFY(std::abs(twice.vpl[k] - 2.0f * parts.vpl[k]) <= 1e-5f * std::max(1.0f, parts.vpl[k]));
+                QCOMPARE(twice.rest[k], parts.rest[k]);
+            }
+            QCOMPARE(a.next1D(), b.next1D());  // the same numbers drawn
+            if (luminance(parts.vpl) > 0) ++withVplLight;
+        }
+    QVERIFY(withVplLight > s.resolution * s.resolution / 2);
+}
+
+void TestVpl::pcBalanceIsTheLeastError() {
+    // The error at a fixed cost, (s rho / m + B) (c_g + c_pc m), is least at the m returned.
+    PcBalance b;
+    b.sensitivity = 0.7;
+    b.sampleRelativeVariance = 0.9;
+    b.passRelmse = 6e-5;
+    b.passRays = 5e5;
+    b.sampleRays = 50;
+    const auto error = [&](double m) { return (b.sensitivity * b.sampleRelativeVariance / m + b.passRelmse) * (b.passRays + b.sampleRays * m); };
+    const int m = balancedPcSamples(b, 1, 1 << 30, 1000);
+    qInfo("balanced Pc samples a pass: %d", m);
+    QVERIFY(m > 100 && m < 1000000);
+    QVERIFY(error(m) <= error(m * 1.2) && error(m) <= error(m / 1.2));
+    // Twice the gather's error, a sqrt(2) fewer Pc samples; the bounds hold; a missing measure
+    // keeps the fallback.
+    b.passRelmse *= 2;
+    QVERIFY(std::abs(balancedPcSamples(b, 1, 1 << 30, 1000) * std::sqrt(2.0) / m - 1.0) < 0.01);
+    QCOMPARE(balancedPcSamples(b, 1, 100, 1000), 100);
+    QCOMPARE(balancedPcSamples(b, 100000, 200000, 1000), 100000);
+    b.passRelmse = 0;
+    QCOMPARE(balancedPcSamples(b, 1, 1 << 30, 1000), 1000);
+    b.passRelmse = std::numeric_limits<double>::quiet_NaN();
+    QCOMPARE(balancedPcSamples(b, 1, 1 << 30, 1000), 1000);
 }
 
 void TestVpl::hardCases_data() {

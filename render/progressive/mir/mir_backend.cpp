@@ -3,6 +3,7 @@
 #include "core/number_format.h"
 #include "render/progressive/gathering_backend.h"
 #include "render/progressive/mir/mir_settings.h"
+#include "render/progressive/mir/pc_balance.h"
 
 #include <array>
 
@@ -24,8 +25,8 @@ public:
     void prepare(TaskContext&) override {
         prepareGatherer(mir_.gather);
         const Sensor& camera = scene_->camera();
-        mir_.chain.pcSamples = mir_.pcSamplesPerPass >= 0 ? mir_.pcSamplesPerPass
-                                                          : std::max(256, camera.width() * camera.height() / 8);
+        defaultPcSamples_ = std::max(256, camera.width() * camera.height() / 8);
+        mir_.chain.pcSamples = mir_.pcSamplesPerPass >= 0 ? mir_.pcSamplesPerPass : defaultPcSamples_;
         vplFilm_ = std::make_unique<Film>(film_->width(), film_->height());
         for (int h = 0; h < 2; ++h)
             chains_.push_back(std::make_unique<MirChain>(*scene_, scene_->lights(), scene_->camera(), mir_.chain,
@@ -48,6 +49,7 @@ public:
         sum_.reset();
         geometricVplCount_ += vpls.size();
         ++passes_;
+        balancePcSamples();
     }
 
     // The direct light and the rest (film_) and the VPLs' light times Pc (vplFilm_'s half
@@ -73,10 +75,13 @@ public:
             d["mir_acceptance_rate"] = number(0.5 * (chains_[0]->acceptanceRate() + chains_[1]->acceptanceRate()));
             d["mir_pc_half0"] = number(chains_[0]->pc());
             d["mir_pc_half1"] = number(chains_[1]->pc());
+            d["mir_pc_relative_error"] =
+                number(0.5 * std::sqrt(chains_[0]->pcRelativeVariance() + chains_[1]->pcRelativeVariance()));
             d["mir_pc_samples"] = std::to_string(chains_[0]->pcSamples() + chains_[1]->pcSamples());
             d["mir_importance_points"] = std::to_string(chains_[0]->importancePoints());
             d["mir_floor_half0"] = number(chains_[0]->floor());
         }
+        d["mir_pc_samples_per_pass"] = std::to_string(pcSamplesNow_);
         d["mir_tries"] = std::to_string(mir_.chain.tries);
         d["mir_path_vpls_per_pass"] = std::to_string(mir_.pathVplsPerPass);
         d["mir_mean_geometric_vpls_per_pass"] = number(passes_ > 0 ? double(geometricVplCount_) / passes_ : 0.0);
@@ -84,7 +89,46 @@ public:
     }
 
 private:
+    // The cheap Pc samples of the passes to come, balanced against the gather's error
+    // (pc_balance.h), unless the option pc_samples fixes them. On a closed sphere of albedo 0.9
+    // Pc's error was most of the image's at the default's eighth of the pixel count a pass.
+    void balancePcSamples() {
+        pcSamplesNow_ = mir_.chain.pcSamples;
+        if (mir_.pcSamplesPerPass >= 0 || passes_ < 2) return;
+        // The VPLs' light with one Pc in both halves: the halves' difference is then the gather's.
+        const double pc = 0.5 * (chains_[0]->pc() + chains_[1]->pc());
+        Film vpl = *vplFilm_;
+        vpl.setHalfScale(0, pc);
+        vpl.setHalfScale(1, pc);
+        const std::array<const Film*, 2> films{film_.get(), &vpl};
+        const Film gather = Film::sum(films);
+        const Image all = gather.image(), vplLight = vpl.image();
+        double sensitivity = 0;  // the mean of V^2 / (I^2 + 0.01) over pixels and channels (SPEC's relmse)
+        for (size_t p = 0; p < all.pixels.size(); ++p)
+            for (int c = 0; c < 3; ++c) {
+                const double v = vplLight.pixels[p][c], i = all.pixels[p][c];
+                sensitivity += v * v / (i * i + 0.01);
+            }
+        PcBalance b;
+        b.sensitivity = sensitivity / (3.0 * double(std::max<size_t>(1, all.pixels.size())));
+        b.sampleRelativeVariance = 0.5 * (chains_[0]->pcSampleRelativeVariance() + chains_[1]->pcSampleRelativeVariance());
+        b.passRelmse = gather.estimatedRelmse() * gather.samplesPerPixel();
+        // A pixel's gather: the camera ray, the residual's, a shadow ray and a BSDF ray per direct
+        // sample, a shadow ray per VPL.
+        b.passRays = double(all.pixels.size()) *
+                     (2.0 + 2.0 * mir_.gather.directSamples + double(geometricVplCount_) / double(passes_));
+        b.sampleRays = 0.5 * (chains_[0]->pcSampleRays() + chains_[1]->pcSampleRays());
+        pcSamplesNow_ = balancedPcSamples(b, kLeastPcSamples, kMostPcSamplesTimesDefault * defaultPcSamples_,
+                                          mir_.chain.pcSamples);
+        for (auto& chain : chains_) chain->setPcSamples(pcSamplesNow_);
+    }
+
+    static constexpr int kLeastPcSamples = 64;
+    static constexpr int kMostPcSamplesTimesDefault = 16;
+
     MirSettings mir_;
+    int defaultPcSamples_ = 0;
+    int pcSamplesNow_ = 0;
     std::vector<std::unique_ptr<MirChain>> chains_;  // one per film half
     std::unique_ptr<Film> vplFilm_;
     mutable std::unique_ptr<Film> sum_;  // film(), until the next pass

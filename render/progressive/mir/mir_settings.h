@@ -13,8 +13,9 @@ struct MirSettings {
                                    // Cornell scenes (docs/benchmarks-history.md,
                                    // issue 3, "Targets")
     int pathVplsPerPass = 64;      // n: chain steps, hence path VPLs, per pass
-    // Cheap samples refining Pc each pass (chain.pcSamples); -1: an eighth of the pixel count, at
-    // least 256, so that Pc's error, shared by every pixel, falls as fast as the gather's noise.
+    // Cheap samples refining Pc each pass (chain.pcSamples); -1: balanced against the gather's
+    // error after the first two passes (pc_balance.h), an eighth of the pixel count, at least
+    // 256, before.
     int pcSamplesPerPass = -1;
 
     // Reads "vpl_paths", "tries", "large_step", "pc_samples", "importance_points", "defensive",
