@@ -19,7 +19,8 @@
 //      large-step trials and references) and of pcSamples cheaper unbiased estimates of f a call
 //      (mir_path.h, estimateMirImportance), accumulated over calls. Pc's error is shared by every
 //      VPL: in a closed bright room it was the image mean's error (1% after seconds with 256
-//      exact samples a call);
+//      exact samples a call), so the mir backend applies the newest Pc to every pass's VPLs
+//      (sampleUnitVpls) and sets pcSamples by the balance of pc_balance.h;
 //      VPL i carries its sub-path's power times k_i Pc / (n c_k(u_i)), the importance weight of
 //      n draws from c / Pc, never above Pc / (n floor).
 

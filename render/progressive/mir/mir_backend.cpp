@@ -5,6 +5,7 @@
 #include "render/progressive/mir/mir_settings.h"
 #include "render/progressive/mir/pc_balance.h"
 
+#include <algorithm>
 #include <array>
 
 namespace lucerna {
@@ -27,6 +28,7 @@ public:
         const Sensor& camera = scene_->camera();
         defaultPcSamples_ = std::max(256, camera.width() * camera.height() / 8);
         mir_.chain.pcSamples = mir_.pcSamplesPerPass >= 0 ? mir_.pcSamplesPerPass : defaultPcSamples_;
+        pcSamplesNow_ = mir_.chain.pcSamples;
         vplFilm_ = std::make_unique<Film>(film_->width(), film_->height());
         for (int h = 0; h < 2; ++h)
             chains_.push_back(std::make_unique<MirChain>(*scene_, scene_->lights(), scene_->camera(), mir_.chain,
@@ -93,8 +95,10 @@ private:
     // (pc_balance.h), unless the option pc_samples fixes them. On a closed sphere of albedo 0.9
     // Pc's error was most of the image's at the default's eighth of the pixel count a pass.
     void balancePcSamples() {
-        pcSamplesNow_ = mir_.chain.pcSamples;
-        if (mir_.pcSamplesPerPass >= 0 || passes_ < 2) return;
+        // Measured again as the passes grow by a quarter: the measures cost a few passes over the
+        // film, single-threaded, and settle as the render goes.
+        if (mir_.pcSamplesPerPass >= 0 || passes_ < nextBalance_) return;
+        nextBalance_ = std::max(passes_ + 1, int(1.25 * passes_));
         // The VPLs' light with one Pc in both halves: the halves' difference is then the gather's.
         const double pc = 0.5 * (chains_[0]->pc() + chains_[1]->pc());
         Film vpl = *vplFilm_;
@@ -119,7 +123,7 @@ private:
                      (2.0 + 2.0 * mir_.gather.directSamples + double(geometricVplCount_) / double(passes_));
         b.sampleRays = 0.5 * (chains_[0]->pcSampleRays() + chains_[1]->pcSampleRays());
         pcSamplesNow_ = balancedPcSamples(b, kLeastPcSamples, kMostPcSamplesTimesDefault * defaultPcSamples_,
-                                          mir_.chain.pcSamples);
+                                          pcSamplesNow_);
         for (auto& chain : chains_) chain->setPcSamples(pcSamplesNow_);
     }
 
@@ -129,6 +133,7 @@ private:
     MirSettings mir_;
     int defaultPcSamples_ = 0;
     int pcSamplesNow_ = 0;
+    int nextBalance_ = 2;  // the pass count at which the balance is measured again
     std::vector<std::unique_ptr<MirChain>> chains_;  // one per film half
     std::unique_ptr<Film> vplFilm_;
     mutable std::unique_ptr<Film> sum_;  // film(), until the next pass
