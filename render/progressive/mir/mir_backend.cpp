@@ -99,27 +99,12 @@ private:
         // film, single-threaded, and settle as the render goes.
         if (mir_.pcSamplesPerPass >= 0 || passes_ < nextBalance_) return;
         nextBalance_ = std::max(passes_ + 1, int(1.25 * passes_));
-        // The VPLs' light with one Pc in both halves: the halves' difference is then the gather's.
-        const double pc = 0.5 * (chains_[0]->pc() + chains_[1]->pc());
-        Film vpl = *vplFilm_;
-        vpl.setHalfScale(0, pc);
-        vpl.setHalfScale(1, pc);
-        const std::array<const Film*, 2> films{film_.get(), &vpl};
-        const Film gather = Film::sum(films);
-        const Image all = gather.image(), vplLight = vpl.image();
-        double sensitivity = 0;  // the mean of V^2 / (I^2 + 0.01) over pixels and channels (SPEC's relmse)
-        for (size_t p = 0; p < all.pixels.size(); ++p)
-            for (int c = 0; c < 3; ++c) {
-                const double v = vplLight.pixels[p][c], i = all.pixels[p][c];
-                sensitivity += v * v / (i * i + 0.01);
-            }
         PcBalance b;
-        b.sensitivity = sensitivity / (3.0 * double(std::max<size_t>(1, all.pixels.size())));
+        measureImageTerms(*film_, *vplFilm_, 0.5 * (chains_[0]->pc() + chains_[1]->pc()), b);
         b.sampleRelativeVariance = 0.5 * (chains_[0]->pcSampleRelativeVariance() + chains_[1]->pcSampleRelativeVariance());
-        b.passRelmse = gather.estimatedRelmse() * gather.samplesPerPixel();
         // A pixel's gather: the camera ray, the residual's, a shadow ray and a BSDF ray per direct
         // sample, a shadow ray per VPL.
-        b.passRays = double(all.pixels.size()) *
+        b.passRays = double(film_->width()) * double(film_->height()) *
                      (2.0 + 2.0 * mir_.gather.directSamples + double(geometricVplCount_) / double(passes_));
         b.sampleRays = 0.5 * (chains_[0]->pcSampleRays() + chains_[1]->pcSampleRays());
         pcSamplesNow_ = balancedPcSamples(b, kLeastPcSamples, kMostPcSamplesTimesDefault * defaultPcSamples_,

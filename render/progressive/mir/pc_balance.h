@@ -13,6 +13,8 @@
 
 namespace lucerna {
 
+class Film;
+
 struct PcBalance {
     double sensitivity = 0;             // s
     double sampleRelativeVariance = 0;  // rho
@@ -20,6 +22,11 @@ struct PcBalance {
     double passRays = 0;                // c_g
     double sampleRays = 0;              // c_pc
 };
+
+// s and B from mir's two films: `rest` (the direct light, the clamp's residual, emitters seen)
+// and `vplLight` (the VPLs' light without Pc; both halves are read with the same `pc`, so that
+// their difference is the gather's alone). The other members are left as they are.
+void measureImageTerms(const Film& rest, const Film& vplLight, double pc, PcBalance& b);
 
 // m*, within [least, most]; `fallback` while a measure is missing (not positive or not finite).
 int balancedPcSamples(const PcBalance& b, int least, int most, int fallback);
