@@ -206,16 +206,22 @@ void TestLivePreview::editRestartsTheAccumulation() {
         QVERIFY2(std::abs(at - red) < 1e-3, qPrintable(QString("%1 vs %2").arg(at).arg(red)));
     }
     preview->setAlbedoLayer(false);
+    QTRY_VERIFY_WITH_TIMEOUT(!preview->frame()->image.channels.count("albedo.R") && preview->frame()->frames >= 3, kTimeout);
 
-    // An orbit: the next frame is one plain frame of the new camera, then it converges again.
+    // An orbit: the accumulation starts again from one plain frame of the new camera, then it
+    // converges again. The window shows the newest frame when it polls, so on a loaded machine
+    // the first it shows may already hold two (seen once with the whole suite at -j2): it must
+    // hold fewer than the old camera's last, and one frame's time is all of it.
+    const auto before = log.of(w.document()->snapshot());
+    QVERIFY(!before.empty());
     const Camera orbited = orbitCamera(w.document()->scene().camera, 0.05, 0.0);
     w.document()->undoStack()->push(new EditCameraCommand(w.document(), orbited, 0, "Orbit"));
     const SceneSnapshot edited = w.document()->snapshot();
     QTRY_VERIFY_WITH_TIMEOUT(log.of(edited).size() >= 2, kTimeout);
     const auto after = log.of(edited);
-    QCOMPARE(after[0]->frames, 1);
-    QCOMPARE(after[0]->milliseconds, after[0]->totalMilliseconds);
-    QCOMPARE_GT(after[1]->frames, 1);
+    QCOMPARE_LT(after[0]->frames, before.back()->frames);
+    if (after[0]->frames == 1) QCOMPARE(after[0]->milliseconds, after[0]->totalMilliseconds);
+    QCOMPARE_GT(after[1]->frames, after[0]->frames);
     w.document()->markSaved();
 }
 
