@@ -51,6 +51,14 @@ public:
     // Builds what rendering needs (acceleration structure, light tables). Not part of a --time
     // budget. May throw std::runtime_error.
     virtual void prepare(TaskContext& ctx) = 0;
+    // Work that prepare() left for the passes to come, done now: a Metropolis backend's bootstrap
+    // past its first pass's samples (mlt's bootstrap_first_per_pixel). A backend does it itself
+    // when a pass needs it; a caller that counts the passes' cost (auto) asks for it first, so
+    // that it is preparation there too. Not part of a --time budget.
+    virtual void completePreparation(TaskContext& ctx) { (void)ctx; }
+    // The seconds that work took so far, in completePreparation() or in passes: the pass loop
+    // leaves them out of a --time budget, as it leaves prepare() out.
+    virtual double deferredPreparationSeconds() const { return 0; }
     // Adds one pass to the film: one sample per pixel's worth of work. Pass p goes to half p % 2.
     // Returns without finishing the pass when ctx is cancelled (the film is then abandoned).
     virtual void renderPass(TaskContext& ctx, int pass) = 0;

@@ -43,7 +43,11 @@ RenderFrame runPasses(Backend& backend, std::string_view backendName, const Rend
     const double budget = settings.seconds;
     const auto start = Clock::now();
     double heldSeconds = 0;
-    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - start).count() - heldSeconds; };
+    // Held time and deferred preparation are not the passes'.
+    const auto elapsed = [&] {
+        return std::chrono::duration<double>(Clock::now() - start).count() - heldSeconds -
+               backend.deferredPreparationSeconds();
+    };
 
     std::optional<SurfaceLayers> surfaces;
     const auto makeFrame = [&](int passes) {

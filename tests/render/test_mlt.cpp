@@ -91,6 +91,8 @@ private slots:
     void hardCasesStayFinite();
     void halvesAreIndependent_data() { backends(); }
     void halvesAreIndependent();
+    void deferredBootstrapIsCompleted_data() { backends(); }
+    void deferredBootstrapIsCompleted();
 
 private:
     static void backends() {
@@ -451,6 +453,57 @@ void TestMlt::halvesAreIndependent() {
         QVERIFY2(rate >= 0 && rate <= 1, qPrintable(QString("%1 = %2").arg(key.c_str()).arg(rate)));
     }
     QVERIFY(std::isfinite(frame.estimatedRelmse) && frame.estimatedRelmse > 0);
+}
+
+// With bootstrap_first_per_pixel (auto's pilots) a half draws part of its bootstrap before its
+// first pass and the rest at its second, and the image stays right.
+void TestMlt::deferredBootstrapIsCompleted() {
+    QFETCH(QString, backend);
+    QFETCH(QString, option);
+    SphereWithEmittingCap sphere;
+    sphere.resolution = 16;
+    const auto scene = sceneFromJson(sphere.json());
+    RenderSettings s;
+    s.seed = 5;
+    s.options["bootstrap"] = "20000";
+    s.options["bootstrap_first_per_pixel"] = "0.25";  // under the least first count, 4096
+    addOption(option, s);
+    const auto bootstrapSamples = [&](int passes) {
+        s.spp = passes;
+        const RenderFrame frame = renderFrame(backend.toStdString(), scene, s);
+        return std::make_pair(std::stol(frame.image.attributes.at("lucerna:mlt_bootstrap_samples")), frame.image.mean());
+    };
+    QCOMPARE(bootstrapSamples(2).first, 2 * 4096L);
+    QCOMPARE(bootstrapSamples(3).first, 20000L + 4096L);
+    const auto [count, mean] = bootstrapSamples(8);
+    QCOMPARE(count, 2 * 20000L);
+    qInfo("mean %.5f, closed form %.5f", mean, sphere.expectedRadiance());
+    QVERIFY(std::abs(mean / sphere.expectedRadiance() - 1.0) < 0.02);
+
+    // Asked for (auto, before a method's second pass), the rest comes at once, its time told
+    // apart from the passes', and the chains start again among all the samples: asked for before
+    // any pass, the backend renders what the whole bootstrap gives.
+    RenderSettings whole = s;
+    whole.options.erase("bootstrap_first_per_pixel");
+    auto deferred = findBackend(backend.toStdString())->make(scene, s);
+    auto atOnce = findBackend(backend.toStdString())->make(scene, whole);
+    double secondsBefore = -1;
+    TaskSystem tasks(1);
+    auto job = tasks.submit([&](TaskContext& ctx) {
+        deferred->prepare(ctx);
+        atOnce->prepare(ctx);
+        secondsBefore = deferred->deferredPreparationSeconds();
+        deferred->completePreparation(ctx);
+        for (int pass = 0; pass < 4; ++pass) {
+            deferred->renderPass(ctx, pass);
+            atOnce->renderPass(ctx, pass);
+        }
+    });
+    job->wait();
+    QCOMPARE(secondsBefore, 0.0);
+    QVERIFY(deferred->deferredPreparationSeconds() > 0);
+    QCOMPARE(deferred->diagnostics().at("mlt_bootstrap_samples"), std::string("40000"));
+    QVERIFY(deferred->film().image().pixels == atOnce->film().image().pixels);
 }
 
 // cmlt's chain takes half its steps large by default (mlt's: 0.3; docs/benchmarks-history.md,

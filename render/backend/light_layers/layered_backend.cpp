@@ -30,6 +30,17 @@ public:
         combine();
     }
 
+    void completePreparation(TaskContext& ctx) override {
+        for (auto& layer : layers_)
+            if (!ctx.isCancelled()) layer->completePreparation(ctx);
+    }
+
+    double deferredPreparationSeconds() const override {
+        double s = 0;
+        for (const auto& layer : layers_) s += layer->deferredPreparationSeconds();
+        return s;
+    }
+
     void renderPass(TaskContext& ctx, int pass) override {
         for (auto& layer : layers_) {
             layer->renderPass(ctx, pass);
