@@ -230,6 +230,9 @@ void TestMeasuredAuto::trialsForWhatAShortRunUnderstates() {
     QVERIFY(takesTrial(q));
     QVERIFY(!takesTrial({"cmlt", 0.85, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
     QVERIFY(!takesTrial({"bdpt", 2.0, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
+    QVERIFY(!takesTrial({"ir", 0.85, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
+    // mir, whose chain and Pc settle (the daylit office's pilot: 0.74 to 1 of ir's), takes one.
+    QVERIFY(takesTrial({"mir", 0.85, 1.0, 1.0, 3.5, 10.0, 20.0, 0}));
     // Further behind than the margin: none.
     q.gain = 0.7;
     QVERIFY(!takesTrial(q));

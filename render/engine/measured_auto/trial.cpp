@@ -7,7 +7,11 @@ namespace lucerna {
 // Measured on the Cornell box with a glass block: path's relmse x seconds fell from 0.044 at
 // 0.3 s to 0.028 at 4 s, mlt's rose from 0.025 to 0.056 by 30 s; on the two-mirror caustic scene
 // a trial took bdpt to 26% of the time and it ended at 0.65 of cmlt's efficiency.
-bool shortRunIsFair(std::string_view method) { return method == "path"; }
+// mir: on the daylit office (30 s) ir carried seeds 5, 6 and 8 after mir's short run, whose
+// efficiency ended at 0.74 to 1 of ir's; with trials mir carried seeds 5 and 8 (relmse 0.70 and
+// 0.66 of ir carrying) and a third of seed 6 (0.98), and measured ahead of ir on all three at the
+// end (ir 0.62 to 0.84 of mir's efficiency); over 8 seeds 0.92 (BENCHMARKS.md, R97).
+bool shortRunIsFair(std::string_view method) { return method == "path" || method == "mir"; }
 
 // Path's pilot understates it where its Sobol sequence gains: on the office floor its relmse x
 // seconds fell from 0.031 at 2 passes to 0.016 at 100 while cmlt's stayed at 0.025, so its pilot

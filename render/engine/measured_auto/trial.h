@@ -21,10 +21,11 @@ inline constexpr int kCloseTrials = 3;
 inline bool leadsByMargin(double gain, double leadingGain) { return gain > kTrialMargin * leadingGain; }
 
 // The methods whose error per unit of cost a short run does not flatter: path, whose passes are
-// independent and whose Sobol sequence's error falls faster than 1 / time at first. Not the
-// chains (mlt, cmlt), whose error per unit of cost grows as they meet their rare paths, nor
-// bdpt, whose light paths meet their heavy tails late on caustics, nor ir and mir, whose
-// clamp's residual shows as no variance.
+// independent and whose Sobol sequence's error falls faster than 1 / time at first, and mir,
+// whose chain and normalisation (Pc, its samples balanced as the passes go) settle, so that its
+// error too falls faster than 1 / time at first. Not the chains of mlt and cmlt, whose error per
+// unit of cost grows as they meet their rare paths, nor bdpt, whose light paths meet their heavy
+// tails late on caustics, nor ir, whose passes are independent VPL sets.
 bool shortRunIsFair(std::string_view method);
 
 // What the trial rule reads of one method and of the render.

@@ -56,10 +56,10 @@ public:
     void prepare(TaskContext& ctx) override {
         prepareSceneAndFilm();
         const Sensor& camera = scene_->camera();
+        const double perPixel = std::ceil(double(mlt_.firstBootstrapPerPixel) * camera.width() * camera.height());
         const int first = mlt_.firstBootstrapPerPixel > 0
-                              ? std::clamp(int(std::ceil(mlt_.firstBootstrapPerPixel * double(camera.width()) *
-                                                         double(camera.height()))),
-                                           std::min(kLeastFirstBootstrap, mlt_.bootstrapSamples), mlt_.bootstrapSamples)
+                              ? int(std::clamp(perPixel, double(std::min(kLeastFirstBootstrap, mlt_.bootstrapSamples)),
+                                               double(mlt_.bootstrapSamples)))
                               : mlt_.bootstrapSamples;
         for (int half = 0; half < 2 && !ctx.isCancelled(); ++half) halves_[half] = bootstrap(ctx, half, first);
     }
