@@ -29,13 +29,13 @@ constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounc
 constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples", "importance_points", "defensive",
                                             "max_bounces", "clamp",   "compensate", "direct_samples",
                                             "light_sampler", "daylight_portals"};
-constexpr std::string_view kMltOptions[] = {"bootstrap", "bootstrap_first_per_pixel", "chains",    "mutations", "large_step", "sigma",
-                                            "caustic",   "max_depth", "rr_depth",  "strategies", "light_sampler",
-                                            "daylight_portals"};
-constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries",     "sigma_pixels", "caustic_sigma", "lens_steps",
-                                             "caustic_steps",   "bootstrap", "bootstrap_first_per_pixel", "chains",       "mutations",     "large_step",
-                                             "sigma",           "caustic",   "max_depth",    "rr_depth",      "strategies",
-                                             "light_sampler", "daylight_portals"};
+constexpr std::string_view kMltOptions[] = {"bootstrap", "bootstrap_first_per_pixel", "chains", "mutations",
+                                            "large_step", "sigma", "caustic", "max_depth", "rr_depth", "strategies",
+                                            "light_sampler", "daylight_portals"};
+constexpr std::string_view kCmltOptions[] = {"path_lens_steps", "tries", "sigma_pixels", "caustic_sigma", "lens_steps",
+                                             "caustic_steps", "bootstrap", "bootstrap_first_per_pixel", "chains",
+                                             "mutations", "large_step", "sigma", "caustic", "max_depth", "rr_depth",
+                                             "strategies", "light_sampler", "daylight_portals"};
 constexpr std::string_view kPreviewOptions[] = {"vpls",       "clamp", "area_samples", "unroll",        "pattern",
                                                 "visibility", "blur",  "split",        "vpl_source",    "shaded_lights",
                                                 "proxy_triangles", "sky_samples", "sky_shadow_size"};

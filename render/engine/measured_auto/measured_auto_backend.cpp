@@ -77,7 +77,8 @@ public:
             // made a 30 s render of the closed sphere of albedo 0.9, where both lose by far, take
             // 48 s (32 s deferred); the door, where cmlt carries, 32.8 s (31.7 s), at the same
             // error over 8 seeds.
-            if (m.name == "mlt" || m.name == "cmlt") mine.options.try_emplace("bootstrap_first_per_pixel", "0.25");
+            if (m.name == "mlt" || m.name == "cmlt")
+                mine.options.try_emplace("bootstrap_first_per_pixel", "0.25");
             for (int r = 0; r < 2; ++r) {
                 mine.seed = hashSeed(settings.seed, 0x6175746f + k, uint64_t(r));
                 m.replicas[size_t(r)] = findBackend(m.name)->make(scene, mine);
