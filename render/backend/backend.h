@@ -42,6 +42,11 @@ struct RenderSettings {
     // in prepare(), so that `seconds` (and a benchmark's clock) counts passes only, as for a
     // single method.
     bool firstFrameSoon = false;
+    // The caller may stop a backend after a pass or two (auto's pilots) and calls
+    // Backend::completePreparation() before it goes on: preparation only a longer run needs may
+    // wait until then (mlt's and cmlt's bootstrap; the option bootstrap_first_per_pixel says how
+    // much comes first).
+    bool deferPreparation = false;
 };
 
 class Backend {

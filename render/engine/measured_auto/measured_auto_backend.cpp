@@ -42,7 +42,6 @@ struct Method {
     std::array<int, 2> passes{0, 0};
     double cost = 0;  // seconds or rays of its passes, both replicas
     std::array<bool, 2> prepared{false, false};
-    bool completed = false;  // Backend::completePreparation, before its second pass
     int piloted() const { return std::min(passes[0], passes[1]); }
 };
 
@@ -63,6 +62,9 @@ public:
           start_(std::chrono::steady_clock::now()) {
         RenderSettings each = settings;
         if (!each.sharedScenes) each.sharedScenes = std::make_shared<RenderSceneCache>();
+        // A method far behind stops after its pilot: what only a longer run needs waits for its
+        // second pass (renderPass).
+        each.deferPreparation = true;
         if (auto_.cost == AutoCost::Rays && !each.rayRecorder) {
             rays_ = std::make_unique<RayRecorder>(int(std::thread::hardware_concurrency()) + 1, /*countOnly=*/true);
             each.rayRecorder = rays_.get();
@@ -71,17 +73,9 @@ public:
         for (size_t k = 0; k < auto_.candidates.size(); ++k) {
             Method m;
             m.name = auto_.candidates[k];
-            RenderSettings mine = each;
-            // The Metropolis methods draw a quarter of a pass's bootstrap before their pilot, the
-            // rest only if they go on (completePreparation): the whole bootstrap of four replicas
-            // made a 30 s render of the closed sphere of albedo 0.9, where both lose by far, take
-            // 48 s (32 s deferred); the door, where cmlt carries, 32.8 s (31.7 s), at the same
-            // error over 8 seeds.
-            if (m.name == "mlt" || m.name == "cmlt")
-                mine.options.try_emplace("bootstrap_first_per_pixel", "0.25");
             for (int r = 0; r < 2; ++r) {
-                mine.seed = hashSeed(settings.seed, 0x6175746f + k, uint64_t(r));
-                m.replicas[size_t(r)] = findBackend(m.name)->make(scene, mine);
+                each.seed = hashSeed(settings.seed, 0x6175746f + k, uint64_t(r));
+                m.replicas[size_t(r)] = findBackend(m.name)->make(scene, each);
             }
             methods_.push_back(std::move(m));
         }
@@ -105,13 +99,13 @@ public:
         const size_t k = nextMethod();
         Method& m = methods_[k];
         if (!prepareMethod(m, ctx)) return;
-        // Past its first pass a method completes what its pilot went without, outside its cost
-        // as its preparation is: else the door's cmlt, with its bootstrap's rest (1 s) in its
-        // third pass, measured 0.75 of mir's efficiency and lost the render (relmse 1.7 times).
-        if (m.passes[0] >= 1 && !m.completed) {
+        // Past its first pass a method completes what its pilot went without (once; after that
+        // a call returns at once), outside its cost as its preparation is: else the door's cmlt,
+        // with its bootstrap's rest (1 s) in its third pass, measured 0.75 of mir's efficiency
+        // and lost the render (relmse 1.7 times).
+        if (m.passes[0] >= 1) {
             for (auto& r : m.replicas) r->completePreparation(ctx);
             if (ctx.isCancelled()) return;
-            m.completed = true;
         }
         const double before = costNow();
         const bool eligibleBefore = m.piloted() >= 2;

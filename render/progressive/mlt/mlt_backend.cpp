@@ -156,16 +156,13 @@ private:
     void completeBootstrap(TaskContext& ctx, int half, ChainSet& set) {
         if (set.bootstrapCount >= mlt_.bootstrapSamples) return;
         const auto start = std::chrono::steady_clock::now();
-        struct Timer {
-            std::chrono::steady_clock::time_point start;
-            double& seconds;
-            ~Timer() { seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); }
-        } timer{start, deferredSeconds_};
         const std::vector<double> rest = uniformSamples(ctx, half, int(set.bootstrapCount), mlt_.bootstrapSamples);
-        if (ctx.isCancelled()) return;
-        std::vector<double> f = set.firstSamples;
-        f.insert(f.end(), rest.begin(), rest.end());
-        set = seeded(ctx, half, std::move(f));
+        if (!ctx.isCancelled()) {
+            std::vector<double> f = std::move(set.firstSamples);
+            f.insert(f.end(), rest.begin(), rest.end());
+            set = seeded(ctx, half, std::move(f));
+        }
+        deferredSeconds_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     }
 
     // f of uniform samples begin, ..., end - 1 of a half, each from its own seed.
@@ -203,6 +200,11 @@ MltSettings MltSettings::fromOptions(const RenderSettings& settings, MltSettings
     MltSettings s = std::move(defaults);
     s.bdpt = BdptSettings::fromOptions(settings);
     readOption(settings, "bootstrap", s.bootstrapSamples, 1, 100000000);
+    // A quarter of a pass's samples before a pilot's pass: the whole bootstrap of auto's four
+    // Metropolis replicas made a 30 s render of the closed sphere of albedo 0.9, where both lose
+    // by far, take 48 s (32 s deferred); the door, where cmlt carries, 32.8 s (31.7 s), at the
+    // same error over 8 seeds (BENCHMARKS.md, R96).
+    if (settings.deferPreparation) s.firstBootstrapPerPixel = 0.25f;
     readOption(settings, "bootstrap_first_per_pixel", s.firstBootstrapPerPixel, 0, 1e4);
     readOption(settings, "chains", s.chains, 1, 1000000);
     readOption(settings, "mutations", s.mutationsPerPixel, 1e-3, 1e4);
