@@ -3,6 +3,8 @@
 #include "core/photometry/luminaire.h"
 #include "render/trace/rng.h"
 
+#include <algorithm>
+
 namespace lucerna {
 
 namespace {
@@ -107,8 +109,13 @@ VplSet generateVplsForLight(const RenderScene& scene, int sourceIndex, int light
     return generateWith(scene, samplerForSource(scene, sources[size_t(sourceIndex)]), lightPaths, seed, options);
 }
 
+double particleSurvival(const Rgb& beta, int bounce, const VplOptions& options) {
+    return bounce >= options.rouletteStartBounce ? double(std::min(0.95f, maxComponent(beta))) : 1.0;
+}
+
 int traceLightPath(const RenderScene& scene, const LightSampler& lights, SampleGenerator& u, float powerScale,
-                   const VplOptions& options, const std::function<void(const Vpl&)>& deposit) {
+                   const VplOptions& options, const std::function<void(const Vpl&)>& deposit,
+                   const RouletteRule& roulette) {
     // Always draw the same count of numbers per step, so that a primary-sample-space stream keeps
     // each dimension's meaning whatever happens along the path.
     const V2f uPos = u.next2D(), uDir = u.next2D();
@@ -157,10 +164,10 @@ int traceLightPath(const RenderScene& scene, const LightSampler& lights, SampleG
         if (!bsdfSample(mat, frame.toLocal(incident), ud, uLobe, bs)) break;
         beta *= bs.weight;
         if (isBlack(beta) || !isFinite(beta)) break;
-        if (bounce >= options.rouletteStartBounce) {
-            const float survive = std::min(0.95f, maxComponent(beta));
-            if (uRoulette >= survive) break;
-            beta /= survive;
+        const double survive = roulette ? roulette(beta, bounce) : particleSurvival(beta, bounce, options);
+        if (survive < 1) {
+            if (double(uRoulette) >= survive) break;
+            beta /= float(survive);
         }
         const V3f wi = frame.toWorld(bs.wi);
         ray = Ray{hit->spawnOrigin(wi), wi};

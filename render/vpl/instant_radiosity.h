@@ -51,10 +51,21 @@ VplSet generateVpls(const RenderScene& scene, int lightPaths, uint64_t seed, con
 VplSet generateVplsForLight(const RenderScene& scene, int sourceIndex, int lightPaths, uint64_t seed,
                             const VplOptions& options = {});
 
+// The probability that a particle goes on past `bounce`, given its throughput `beta` relative to
+// the emitted power (compensated for its survivals so far). Any rule in [0, 1] leaves every
+// VPL's expected power as it is; a rule of 0 ends the particle.
+using RouletteRule = std::function<double(const Rgb& beta, int bounce)>;
+
+// Instant radiosity's own rule: from options.rouletteStartBounce on, max(beta), at most 0.95, so
+// that a particle's throughput stays near 1 and its VPLs near equal power.
+double particleSurvival(const Rgb& beta, int bounce, const VplOptions& options);
+
 // One particle: samples an emission from `lights` with the numbers of `u`, traces it and calls
 // `deposit` for every VPL (power = throughput * powerScale). Returns the number of VPLs
-// deposited. The Metropolis backend drives it with a primary-sample-space stream.
+// deposited. The Metropolis backend drives it with a primary-sample-space stream. `roulette`,
+// where given, replaces particleSurvival.
 int traceLightPath(const RenderScene& scene, const LightSampler& lights, SampleGenerator& u, float powerScale,
-                   const VplOptions& options, const std::function<void(const Vpl&)>& deposit);
+                   const VplOptions& options, const std::function<void(const Vpl&)>& deposit,
+                   const RouletteRule& roulette = {});
 
 }  // namespace lucerna

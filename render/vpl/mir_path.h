@@ -43,9 +43,11 @@ double evaluateMirLightPath(const RenderScene& scene, const LightSampler& lights
                             const VplOptions& vpl, float maxG, double floor, const std::vector<float>& u,
                             MirPath& path);
 
-// An unbiased estimate of f at a uniformly drawn u (the light sub-path traced with `rng`), each
-// vertex measured on `perVertex` members of S drawn at random (with replacement) instead of all:
-// |S| / perVertex times fewer shadow rays, for the many samples the normalisation Pc needs.
+// An unbiased estimate of Pc = E[f(u)] for uniformly drawn u from one light sub-path traced with
+// `rng`, each vertex measured on `perVertex` members of S drawn at random (with replacement)
+// instead of all: |S| / perVertex times fewer shadow rays, for the many samples Pc needs. The path
+// plays its own Russian roulette (fewer ends by chance than the chain's), each vertex's floor
+// weighted by the chain's probability of reaching it over this path's.
 // vertices, if given, receives the path's vertex count (its cost: a ray to each vertex and
 // perVertex to S from it).
 double estimateMirImportance(const RenderScene& scene, const LightSampler& lights, std::span<const CameraVertex> points,
