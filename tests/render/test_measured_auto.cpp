@@ -291,6 +291,12 @@ void TestMeasuredAuto::bestByFarTakesTheTime() {
     QVERIFY2(vpl > 0.85, qPrintable(QString::number(vpl)));
     QVERIFY(share(f.image, "auto_weight", "ir") + share(f.image, "auto_weight", "mir") > 0.95);
     QCOMPARE_LE(std::abs(f.image.mean() / s.expectedRadiance() - 1.0), 0.02);
+    // Once decided, the others take next to nothing: "; since mir's pilot (53% of the rays) the
+    // others took 0%".
+    const std::string& line = f.image.attributes.at("lucerna:auto");
+    const size_t took = line.find("the others took ");
+    QVERIFY(took != std::string::npos);
+    QCOMPARE_LE(std::stod(line.substr(took + 16)), 5.0);
 }
 
 void TestMeasuredAuto::saysWhatItDecided() {
@@ -302,6 +308,7 @@ void TestMeasuredAuto::saysWhatItDecided() {
     QCOMPARE(a.at("lucerna:backend"), std::string("auto"));
     QVERIFY(a.at("lucerna:auto").starts_with("measured path bdpt ir mir mlt cmlt"));
     QVERIFY(a.at("lucerna:auto").find('\n') == std::string::npos);
+    QVERIFY(a.at("lucerna:auto").find("'s pilot (") != std::string::npos);
     QVERIFY(!a.at("lucerna:auto_methods").empty());
     double time = 0;
     for (const char* m : {"path", "bdpt", "ir", "mir", "mlt", "cmlt"}) time += share(f.image, "auto_time", m);

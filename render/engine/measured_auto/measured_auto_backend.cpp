@@ -107,13 +107,15 @@ public:
             for (auto& r : m.replicas) r->completePreparation(ctx);
             if (ctx.isCancelled()) return;
         }
-        const double before = costNow();
+        const double before = costNow(), renderBefore = totalCost();
         const bool eligibleBefore = m.piloted() >= 2;
         for (int r = 0; r < 2; ++r) {
             if (r == 1 && pilotDone(k) && m.passes[1] >= 2) continue;
             m.replicas[size_t(r)]->renderPass(ctx, m.passes[size_t(r)]);
             if (ctx.isCancelled()) return;
             ++m.passes[size_t(r)];
+            const double end = renderBefore + costNow() - before;
+            passes_.push_back({k, r, end, end - (passes_.empty() ? 0.0 : passes_.back().end)});
         }
         m.cost += costNow() - before;
         dirty_ = true;
@@ -445,7 +447,28 @@ private:
         for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.imageWeight[k], 2);
         s += "; efficiency (best 1):";
         for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.efficiency[k], 2);
-        return s;
+        return s + decision(order[0]);
+    }
+
+    // "; since mir's pilot (3.4 s of 30 s) the others took 0.2 s (1%)": when the costliest
+    // method's short replica had its last pass (its pilot done), and the cost of every other
+    // method's passes after that (pilots still running, trials, a far-behind method measured back
+    // in): what auto spent beyond that method alone is its short replica and the others' passes.
+    std::string decision(size_t carrying) const {
+        double from = 0;
+        for (const PassRecord& p : passes_)
+            if (p.method == carrying && p.replica == 1) from = p.end;
+        double others = 0;
+        for (const PassRecord& p : passes_)
+            if (p.end > from && p.method != carrying) others += p.cost;
+        const double total = totalCost();
+        if (!(total > 0)) return "";
+        const std::string share = fixedNumber(100.0 * others / total, 0) + "%";
+        const std::string since = "; since " + methods_[carrying].name + "'s pilot (";
+        if (auto_.cost == AutoCost::Rays)
+            return since + fixedNumber(100.0 * from / total, 0) + "% of the rays) the others took " + share;
+        return since + fixedNumber(from, 1) + " s of " + fixedNumber(total, 1) + " s) the others took " +
+               fixedNumber(others, 1) + " s (" + share + ")";
     }
 
     // "path=0.81 bdpt=0.03 ...": each method's share of the cost, or its mean weight in the image.
@@ -495,6 +518,14 @@ private:
     };
     mutable Combination combination_;
     mutable bool dirty_ = true;
+    // Every replica's pass in order: its method, replica, the render's cost when it ended and
+    // its own cost.
+    struct PassRecord {
+        size_t method;
+        int replica;
+        double end, cost;
+    };
+    std::vector<PassRecord> passes_;
     mutable std::unique_ptr<Film> film_ = std::make_unique<Film>(0, 0);
 };
 
