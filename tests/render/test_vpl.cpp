@@ -29,6 +29,16 @@ double sumLuminance(const VplSet& vpls, int bounce = 0) {
     return s;
 }
 
+// A coarse closed sphere of albedo rho (12 rings of 24 segments) seen at 8x8 pixels.
+SphereWithEmittingCap smallSphere(double rho) {
+    SphereWithEmittingCap s;
+    s.rho = rho;
+    s.rings = 12;
+    s.segments = 24;
+    s.resolution = 8;
+    return s;
+}
+
 // Two lamps over the floor of RectangleOverPlane: one emissive quad and a point light.
 std::string twoLightScene() {
     RectangleOverPlane r;
@@ -142,10 +152,7 @@ void TestVpl::contributionFormulaAndClamp() {
 void TestVpl::radiancePartsSumToRadiance() {
     // mir keeps the VPL term in a film of its own, scaled by the newest Pc when read: the parts
     // must be radiance() split, drawing the same numbers, and the VPL part linear in the powers.
-    SphereWithEmittingCap s;
-    s.rings = 12;
-    s.segments = 24;
-    s.resolution = 8;
+    SphereWithEmittingCap s = smallSphere(0.5);
     const RenderScene scene = makeRenderScene(s.json());
     VplSet vpls = generateVpls(scene, 200, 5);
     QVERIFY(vpls.size() > 50);
@@ -204,11 +211,7 @@ void TestVpl::pcSamplesEstimateTheChainsMean() {
     // per vertex reached (not weighted) moved it by 31% (the bound: 2.7%). And in a closed sphere
     // of albedo 0.9, where the chain's path lengths are most of f's spread, they vary less (0.38
     // against 0.86).
-    SphereWithEmittingCap s;
-    s.rho = 0.9;
-    s.rings = 12;
-    s.segments = 24;
-    s.resolution = 8;
+    SphereWithEmittingCap s = smallSphere(0.9);
     const RenderScene scene = makeRenderScene(s.json());
     const auto points = traceImportancePoints(scene, scene.camera(), 16, 16, 3);
     QCOMPARE(points.size(), size_t(16));
