@@ -149,6 +149,8 @@ void TestMainWindow::editingSession() {
     // Once its pilots are done, auto says which methods carry the image and their time.
     QTRY_VERIFY_WITH_TIMEOUT(w.findChild<QLabel*>("renderReason")->text().contains("carried by"), kTimeout);
     QVERIFY(w.findChild<QLabel*>("renderReason")->text().contains("%"));
+    // Then when every pilot was done, and the share of the time the carrying method had since.
+    QTRY_VERIFY_WITH_TIMEOUT(w.findChild<QLabel*>("renderReason")->text().contains("pilots done at "), kTimeout);
     {
         // The red wall on the left, the green one on the right (SPEC.md), in the render's view.
         const QImage shown = w.renderPanel()->view()->image();

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <numeric>
 #include <optional>
+#include <ranges>
 #include <thread>
 
 #include <tbb/parallel_for.h>
@@ -129,6 +130,9 @@ public:
         if (allPiloted() &&
             (!measures_.taken || trialDue || eligible || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost))
             measure();
+        if (!pilotsDone_ && allPiloted() &&
+            std::ranges::all_of(std::views::iota(size_t(0), methods_.size()), [&](size_t j) { return pilotDone(j); }))
+            pilotsDone_ = totalCost();
     }
 
     double deferredPreparationSeconds() const override {
@@ -162,7 +166,11 @@ public:
 
     std::map<std::string, std::string> diagnostics() const override {
         film();
-        return {{"auto", summary()}, {"auto_methods", carrying()}, {"auto_time", shares(false)}, {"auto_weight", shares(true)}};
+        std::map<std::string, std::string> d{
+            {"auto", summary()}, {"auto_methods", carrying()}, {"auto_time", shares(false)}, {"auto_weight", shares(true)}};
+        if (const auto p = decided())
+            d["auto_decided"] = fixedNumber(p->pilotsDone, 1) + " " + methods_[p->carrying].name + " " + fixedNumber(p->share, 3);
+        return d;
     }
 
     void rewriteFilms(const std::function<void(Film&)>& rewrite) override {
@@ -447,28 +455,40 @@ private:
         for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.imageWeight[k], 2);
         s += "; efficiency (best 1):";
         for (size_t k : order) s += " " + methods_[k].name + " " + formatNumber(measures_.efficiency[k], 2);
-        return s + decision(order[0]);
+        return s + decision();
     }
 
-    // "; since mir's pilot (3.4 s of 30 s) the others took 0.2 s (1%)": when the costliest
-    // method's short replica had its last pass (its pilot done), and the cost of every other
-    // method's passes after that (pilots still running, trials, a far-behind method measured back
-    // in): what auto spent beyond that method alone is its short replica and the others' passes.
-    std::string decision(size_t carrying) const {
-        double from = 0;
-        for (const PassRecord& p : passes_)
-            if (p.method == carrying && p.replica == 1) from = p.end;
-        double others = 0;
-        for (const PassRecord& p : passes_)
-            if (p.end > from && p.method != carrying) others += p.cost;
-        const double total = totalCost();
-        if (!(total > 0)) return "";
-        const std::string share = fixedNumber(100.0 * others / total, 0) + "%";
-        const std::string since = "; since " + methods_[carrying].name + "'s pilot (";
+    // When every pilot was first done, in the render's cost, the method that carries the image
+    // now (the largest weight) and its share of the cost since: what auto spent beyond that
+    // method alone is the part before, its short replica and the others' passes after (trials,
+    // a far-behind method measured back in).
+    struct Decision {
+        double pilotsDone;
+        size_t carrying;
+        double share, longShare;  // of the cost since pilotsDone: both its replicas, its long one
+    };
+    std::optional<Decision> decided() const {
+        if (!pilotsDone_ || !measures_.taken) return std::nullopt;
+        Decision d{*pilotsDone_, size_t(std::ranges::max_element(measures_.imageWeight) - measures_.imageWeight.begin()), 0, 0};
+        double both = 0, longReplica = 0;
+        for (const PassRecord& r : passes_)
+            if (r.end > d.pilotsDone && r.method == d.carrying) (r.replica == 0 ? longReplica : both) += r.cost;
+        both += longReplica;
+        const double since = totalCost() - d.pilotsDone;
+        d.share = since > 0 ? both / since : 1.0;
+        d.longShare = since > 0 ? longReplica / since : 1.0;
+        return d;
+    }
+
+    // "; pilots done after 3.4 s of 30 s, mir 99% of the time since (its long replica 97%)".
+    std::string decision() const {
+        const auto d = decided();
+        if (!d) return "";
+        const std::string after = ", " + methods_[d->carrying].name + " " + fixedNumber(100.0 * d->share, 0) +
+                                  "% of the time since (its long replica " + fixedNumber(100.0 * d->longShare, 0) + "%)";
         if (auto_.cost == AutoCost::Rays)
-            return since + fixedNumber(100.0 * from / total, 0) + "% of the rays) the others took " + share;
-        return since + fixedNumber(from, 1) + " s of " + fixedNumber(total, 1) + " s) the others took " +
-               fixedNumber(others, 1) + " s (" + share + ")";
+            return "; pilots done after " + fixedNumber(100.0 * d->pilotsDone / totalCost(), 0) + "% of the rays" + after;
+        return "; pilots done after " + fixedNumber(d->pilotsDone, 1) + " s of " + fixedNumber(totalCost(), 1) + " s" + after;
     }
 
     // "path=0.81 bdpt=0.03 ...": each method's share of the cost, or its mean weight in the image.
@@ -526,6 +546,7 @@ private:
         double end, cost;
     };
     std::vector<PassRecord> passes_;
+    std::optional<double> pilotsDone_;  // the render's cost when every pilot was first done
     mutable std::unique_ptr<Film> film_ = std::make_unique<Film>(0, 0);
 };
 
