@@ -42,6 +42,7 @@ struct Method {
     // two replicas at 92% of the time).
     std::array<int, 2> passes{0, 0};
     double cost = 0;  // seconds or rays of its passes, both replicas
+    std::array<double, 2> costSincePilots{0, 0};  // of each replica's passes once every pilot was done
     std::array<bool, 2> prepared{false, false};
     int piloted() const { return std::min(passes[0], passes[1]); }
 };
@@ -108,15 +109,15 @@ public:
             for (auto& r : m.replicas) r->completePreparation(ctx);
             if (ctx.isCancelled()) return;
         }
-        const double before = costNow(), renderBefore = totalCost();
+        const double before = costNow();
         const bool eligibleBefore = m.piloted() >= 2;
         for (int r = 0; r < 2; ++r) {
             if (r == 1 && pilotDone(k) && m.passes[1] >= 2) continue;
+            const double passStart = costNow();
             m.replicas[size_t(r)]->renderPass(ctx, m.passes[size_t(r)]);
             if (ctx.isCancelled()) return;
             ++m.passes[size_t(r)];
-            const double end = renderBefore + costNow() - before;
-            passes_.push_back({k, r, end, end - (passes_.empty() ? 0.0 : passes_.back().end)});
+            if (pilotsDone_) m.costSincePilots[size_t(r)] += costNow() - passStart;
         }
         m.cost += costNow() - before;
         dirty_ = true;
@@ -130,7 +131,7 @@ public:
         if (allPiloted() &&
             (!measures_.taken || trialDue || eligible || totalCost() >= (1 + auto_.remeasureGrowth) * measures_.cost))
             measure();
-        if (!pilotsDone_ && allPiloted() &&
+        if (!pilotsDone_ &&
             std::ranges::all_of(std::views::iota(size_t(0), methods_.size()), [&](size_t j) { return pilotDone(j); }))
             pilotsDone_ = totalCost();
     }
@@ -470,11 +471,8 @@ private:
     std::optional<Decision> decided() const {
         if (!pilotsDone_ || !measures_.taken) return std::nullopt;
         Decision d{*pilotsDone_, size_t(std::ranges::max_element(measures_.imageWeight) - measures_.imageWeight.begin()), 0, 0};
-        double both = 0, longReplica = 0;
-        for (const PassRecord& r : passes_)
-            if (r.end > d.pilotsDone && r.method == d.carrying) (r.replica == 0 ? longReplica : both) += r.cost;
-        both += longReplica;
-        const double since = totalCost() - d.pilotsDone;
+        const auto& [longReplica, shortReplica] = methods_[d.carrying].costSincePilots;
+        const double both = longReplica + shortReplica, since = totalCost() - d.pilotsDone;
         d.share = since > 0 ? both / since : 1.0;
         d.longShare = since > 0 ? longReplica / since : 1.0;
         return d;
@@ -538,14 +536,6 @@ private:
     };
     mutable Combination combination_;
     mutable bool dirty_ = true;
-    // Every replica's pass in order: its method, replica, the render's cost when it ended and
-    // its own cost.
-    struct PassRecord {
-        size_t method;
-        int replica;
-        double end, cost;
-    };
-    std::vector<PassRecord> passes_;
     std::optional<double> pilotsDone_;  // the render's cost when every pilot was first done
     mutable std::unique_ptr<Film> film_ = std::make_unique<Film>(0, 0);
 };
