@@ -14,10 +14,9 @@
 
 #include <QtTest>
 
-#include <sstream>
-
 #include <numeric>
 #include <random>
+#include <sstream>
 
 using namespace lucerna;
 using namespace lucerna::test;
