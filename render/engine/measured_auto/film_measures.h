@@ -115,6 +115,11 @@ std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats
 std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
                                    const std::vector<std::vector<double>>& errors);
 
+// Replica a's error over replica b's, image-wide: their variances summed over the tiles, each
+// tile's over its squared brightness (as relativeErrors); 0 where b shows none. One number from
+// the whole image, so it hardly depends on any one value it weighs.
+double errorLevelRatio(const TileStats& a, const TileStats& b);
+
 // Per method and tile, the weights of an inverse-error combination: (1 / e_k) / sum_j (1 / e_j);
 // equal where every error is 0. Weights under `minimum` are made 0 and the rest renormalised: a
 // method that would take a small weight takes little off the error, but its error estimate,

@@ -251,7 +251,8 @@ private:
         std::optional<size_t> onTrial;
         for (size_t k = 0; k < methods_.size(); ++k) {
             const TrialQuestion q{methods_[k].name, measures_.gain[k], leading, methods_[k].cost,
-                                  kMinimumShare * costliest, methods_[leader].cost, costLeft, closeTrials_[k]};
+                                  kMinimumShare * costliest, methods_[leader].cost, costLeft, closeTrials_[k],
+                                  auto_.caustics};
             if (k != leader && takesTrial(q) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
         }
         if (!onTrial) {
@@ -384,6 +385,15 @@ private:
             // then as replica r's would be with its own samples: error as 1 / samples, replica 0
             // running longer than replica 1. The pair's error is that of the mean by samples,
             // n / n_s times replica s's: half of it floors replica s's.
+            // The long replica's errors are at least at the level its own halves show against
+            // the short one's (errorLevelRatio: one number a method, so the tiles' pattern stays
+            // the short replica's): a chain's error need not fall as 1 / samples (cmlt on the
+            // satin-ball caustic: relmse x seconds 3.3 times from 0.3 s to 30 s), and where it
+            // fell slower, or a chain of the long one stuck on a rare bright path, the long
+            // replica took a weight its noise did not earn (seed 11: cmlt with 22% of the time took
+            // 0.45 of the image beside bdpt, 5.4 times bdpt's error alone). Only up: a short
+            // replica of one or two VPL sets a half shows its image-wide level with few degrees
+            // of freedom, and where that read high the long replica would take weight unearned.
             const int s = 1 - r;
             std::vector<const TileStats*> other;
             std::vector<double> floors;
@@ -393,8 +403,12 @@ private:
                 floors.push_back(0.5 * pairRelative[i] * (samples(k, 0) + samples(k, 1)) / samples(k, s));
             }
             auto errors = expectedSquaredErrors(other, floors);
-            for (size_t j = 0; j < in.size(); ++j)
-                for (double& e : errors[j]) e *= samples(measured[in[j]], s) / samples(measured[in[j]], r);
+            for (size_t j = 0; j < in.size(); ++j) {
+                const size_t k = measured[in[j]];
+                double scale = samples(k, s) / samples(k, r);
+                if (r == 0) scale = std::max(scale, errorLevelRatio(m[in[j]].replica[0], m[in[j]].replica[1]));
+                for (double& e : errors[j]) e *= scale;
+            }
             w = inverseErrorWeights(errors, kMinimumWeight);
         }
         const std::array<double, 2> sums{halfSamples(c.methods, 0), halfSamples(c.methods, 1)};

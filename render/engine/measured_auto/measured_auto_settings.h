@@ -17,6 +17,7 @@ enum class AutoCost { Seconds, Rays };
 struct MeasuredAutoSettings {
     // The methods that are consistent for the scene, in the order their pilots run.
     std::vector<std::string> candidates;
+    bool caustics = false;  // the scene has mirrors or glass (trial.h, shortRunIsFair)
     AutoCost cost = AutoCost::Seconds;
     int tileSize = 16;         // pixels per side of the squares the measures pool over
     int pilotPasses = 1;       // passes of each replica before a method is measured
@@ -35,9 +36,10 @@ struct MeasuredAutoSettings {
 };
 
 // The methods auto may combine for `scene`. Every one must be consistent, so that the combination
-// is: with mirrors or glass, the ones with light-side strategies (bdpt, mlt, cmlt; VPLs cannot
-// carry a caustic), and path where no light is a point or a single direction (a path tracer cannot
-// find a point light's caustic); otherwise all six tracing methods.
+// is: with mirrors or glass, the ones with light-side strategies (bdpt, cmlt; VPLs cannot carry a
+// caustic), and path where no light is a point or a single direction (a path tracer cannot find a
+// point light's caustic); otherwise path, bdpt, ir, mir and cmlt. Never mlt, which cmlt extends
+// (measured_auto_settings.cpp).
 std::vector<std::string> autoCandidates(const Scene& scene);
 
 }  // namespace lucerna

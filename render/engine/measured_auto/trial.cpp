@@ -11,7 +11,12 @@ namespace lucerna {
 // efficiency ended at 0.74 to 1 of ir's; with trials mir carried seeds 5 and 8 (relmse 0.70 and
 // 0.66 of ir carrying) and a third of seed 6 (0.98), and measured ahead of ir on all three at the
 // end (ir 0.62 to 0.84 of mir's efficiency); over 8 seeds 0.92 (BENCHMARKS.md, R97).
-bool shortRunIsFair(std::string_view method) { return method == "path" || method == "mir"; }
+// path with caustics: on the caustic glass cube its trials took 4 to 24% of the time for at most
+// 0.02 of the image (R101); on the small-light caustic (seed 10) 29% of the time and 0.35 of the
+// image, which came out 7 times cmlt's error alone (R105).
+bool shortRunIsFair(std::string_view method, bool caustics) {
+    return (method == "path" && !caustics) || method == "mir";
+}
 
 // Path's pilot understates it where its Sobol sequence gains: on the office floor its relmse x
 // seconds fell from 0.031 at 2 passes to 0.016 at 100 while cmlt's stayed at 0.025, so its pilot
@@ -19,7 +24,7 @@ bool shortRunIsFair(std::string_view method) { return method == "path" || method
 // relmse alone. Where the leader's error grows with its length (mlt on the Cornell box with a
 // glass block), a later measure puts path first, and a trial brings it back.
 bool takesTrial(const TrialQuestion& q) {
-    if (!shortRunIsFair(q.method) || q.cost >= std::max(q.inImageCost, q.leadingCost)) return false;
+    if (!shortRunIsFair(q.method, q.caustics) || q.cost >= std::max(q.inImageCost, q.leadingCost)) return false;
     const bool close = q.gain > (1 / kTrialMargin) * q.leadingGain;
     if (!(q.closeTrials >= kCloseTrials ? leadsByMargin(q.gain, q.leadingGain) : close)) return false;
     return q.cost + q.costLeft >= q.inImageCost;

@@ -21,12 +21,14 @@ inline constexpr int kCloseTrials = 3;
 inline bool leadsByMargin(double gain, double leadingGain) { return gain > kTrialMargin * leadingGain; }
 
 // The methods whose error per unit of cost a short run does not flatter: path, whose passes are
-// independent and whose Sobol sequence's error falls faster than 1 / time at first, and mir,
-// whose chain and normalisation (Pc, its samples balanced as the passes go) settle, so that its
-// error too falls faster than 1 / time at first. Not the chains of mlt and cmlt, whose error per
-// unit of cost grows as they meet their rare paths, nor bdpt, whose light paths meet their heavy
-// tails late on caustics, nor ir, whose passes are independent VPL sets.
-bool shortRunIsFair(std::string_view method);
+// independent and whose Sobol sequence's error falls faster than 1 / time at first, but not
+// where mirrors or glass make caustics (`caustics`), which it finds only by hitting an emitter
+// and a short run does not show; and mir, whose chain and normalisation (Pc, its samples
+// balanced as the passes go) settle, so that its error too falls faster than 1 / time at first.
+// Not the chains of mlt and cmlt, whose error per unit of cost grows as they meet their rare
+// paths, nor bdpt, whose light paths meet their heavy tails late on caustics, nor ir, whose
+// passes are independent VPL sets.
+bool shortRunIsFair(std::string_view method, bool caustics);
 
 // What the trial rule reads of one method and of the render.
 struct TrialQuestion {
@@ -38,6 +40,7 @@ struct TrialQuestion {
     double leadingCost = 0;   // the leading method's cost
     double costLeft = 0;      // the budget left (open-ended: as long again as so far)
     int closeTrials = 0;      // the trials it has taken without leading by kTrialMargin
+    bool caustics = false;    // the scene has mirrors or glass (shortRunIsFair)
 };
 
 // True when the method takes the passes: its short run does not flatter it; it is out of the
