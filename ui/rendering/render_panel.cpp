@@ -102,10 +102,16 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     QString decided;  // "; pilots done at 3.2 s, path 96% of the time since" (lucerna:auto_decided)
     if (const auto d = attributes.find("lucerna:auto_decided"); d != attributes.end()) {
         const QStringList v = QString::fromStdString(d->second).split(' ', Qt::SkipEmptyParts);
-        // One multi-argument arg(): the text it puts in is not scanned again, so "%3%" stays a percent.
-        if (v.size() == 3)
+        if (v.size() == 3) {
+            const QString& pilotsDoneSeconds = v.at(0);
+            const QString& carrying = v.at(1);
+            const long percentSince = std::lround(100 * v.at(2).toDouble());
+            // The strings first, in one arg(), then the number: the text put in is not scanned
+            // again, and "%3%" stays a percent sign after the number.
             decided = RenderPanel::tr("; pilots done at %1 s, %2 %3% of the time since")
-                          .arg(v[0], v[1], QString::number(std::lround(100 * v[2].toDouble())));
+                          .arg(pilotsDoneSeconds, carrying)
+                          .arg(percentSince);
+        }
     }
     return RenderPanel::tr("carried by %1; time %2%3")
         .arg(QString::fromStdString(methods->second).replace(' ', QStringLiteral(", ")), parts.join(QStringLiteral(", ")),

@@ -190,10 +190,8 @@ std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
 
 double errorLevelRatio(const TileStats& a, const TileStats& b) {
     const std::array<const TileStats*, 2> both{&a, &b};
-    const std::vector<double> bright = squaredBrightness(both);
-    double sa = 0, sb = 0;
-    for (size_t t = 0; t < bright.size(); ++t) sa += a.variance[t] / bright[t], sb += b.variance[t] / bright[t];
-    return sb > 0 ? sa / sb : 0.0;
+    const std::vector<double> level = relativeErrors(both, {a.variance, b.variance});
+    return level[1] > 0 ? level[0] / level[1] : 0.0;
 }
 
 std::vector<std::vector<double>> measuredSquaredErrors(std::span<const TileStats* const> methods) {

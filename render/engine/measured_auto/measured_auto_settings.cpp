@@ -4,14 +4,15 @@
 
 namespace lucerna {
 
-std::vector<std::string> autoCandidates(const Scene& scene) {
+std::vector<std::string> autoCandidates(const Scene& scene) { return autoCandidates(analyseFeatures(scene)); }
+
+std::vector<std::string> autoCandidates(const SceneFeatures& f) {
     // Not mlt: cmlt is mlt with coherent mutations added, and where it lost to mlt it lost by
     // little (the caustic slab mirror: 1.02 of mlt's relmse), while mlt's short runs flattered
     // it: on the two-mirror caustic (seed 9) its pilot led, it took 90% of the time and the image
     // came out 2.4 times cmlt's alone; on the small-light caustic mlt alone was 3.1 times cmlt's
     // mean error over 8 seeds, and it had carried a firefly into auto's image there. Its pilot
     // also cost 5% of a 10 s render (BENCHMARKS.md, R105).
-    const SceneFeatures f = analyseFeatures(scene);
     if (!f.hasSpecular()) return {"path", "bdpt", "ir", "mir", "cmlt"};
     // A path tracer finds a caustic only by hitting its emitter after the specular bounces, so it
     // is consistent where every light has an area (emitters, the sky), not a point or a single
@@ -23,8 +24,9 @@ std::vector<std::string> autoCandidates(const Scene& scene) {
 
 MeasuredAutoSettings MeasuredAutoSettings::forScene(const Scene& scene, const RenderSettings& render) {
     MeasuredAutoSettings s;
-    s.candidates = autoCandidates(scene);
-    s.caustics = analyseFeatures(scene).hasSpecular();
+    const SceneFeatures features = analyseFeatures(scene);
+    s.candidates = autoCandidates(features);
+    s.caustics = features.hasSpecular();
     s.cost = render.spp > 0 ? AutoCost::Rays : AutoCost::Seconds;
     // A hundredth of the budget each, so that the pilots of five methods take a twentieth of it
     // at most (and a method far behind stops after its first pass); half a second where the

@@ -41,5 +41,6 @@ struct MeasuredAutoSettings {
 // point light's caustic); otherwise path, bdpt, ir, mir and cmlt. Never mlt, which cmlt extends
 // (measured_auto_settings.cpp).
 std::vector<std::string> autoCandidates(const Scene& scene);
+std::vector<std::string> autoCandidates(const SceneFeatures& features);
 
 }  // namespace lucerna
