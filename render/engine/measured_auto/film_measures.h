@@ -97,26 +97,26 @@ std::vector<std::vector<double>> measuredSquaredErrors(std::span<const TileStats
 // chrome block read 2.9 times its per-pixel value and cmlt's 2.06 times, and auto gave the time
 // to cmlt, at 2.5 times bdpt's error alone.
 std::vector<std::vector<double>> relativeSquaredErrors(std::span<const TileStats* const> methods);
-// measuredSquaredErrors spread for the combination's weights: relative to the tiles' brightness, each
-// tile's error is drawn halfway (geometrically) to the method's mean over the image, and floored
-// at a quarter of its median: a tile's variance is pooled over its pixels, but a method whose
-// errors correlate across pixels (a VPL set, a chain) has few degrees of freedom there, so that a
-// tile's estimate may be ten times too small, and a tile where a method has seen nothing yet must
-// not claim it is exact. Not for the allocation: the spreading moves error between bright and
-// dark tiles, which SPEC's relmse weighs differently (on the deep-plan daylit room it put path's
-// relmse at 1.7 times its variance and mir's at 0.76 times, and auto gave mir 95% of the time
-// where path is the faster).
+// measuredSquaredErrors spread for the combination's weights: relative to SPEC's denominators of
+// the tiles' means (what the relmse divides by), each tile's error is drawn halfway
+// (geometrically) to the method's mean over the image, and floored at a quarter of its median:
+// a tile's variance is pooled over its pixels, but a method whose errors correlate across pixels
+// (a VPL set, a chain) has few degrees of freedom there, so that a tile's estimate may be ten
+// times too small, and a tile where a method has seen nothing yet must not claim it is exact. Not for the allocation: the spreading moves error between bright and
+// dark tiles, which SPEC's relmse weighs per pixel (when the tiles' errors were relative to their
+// squared brightness, on the deep-plan daylit room it put path's relmse at 1.7 times its variance
+// and mir's at 0.76 times, and auto gave mir 95% of the time where path is the faster).
 // `floors`, where given: per method, a further floor on its error relative to the tiles'
-// brightness (the image-wide error the replicas' spread shows, where a replica's own halves may
+// denominators (the image-wide error the replicas' spread shows, where a replica's own halves may
 // understate it).
 std::vector<std::vector<double>> expectedSquaredErrors(std::span<const TileStats* const> methods,
                                                        std::span<const double> floors = {});
-// Per method, its mean error over the tiles relative to their brightness (as the floors above).
+// Per method, its mean error over the tiles relative to their denominators (as the floors above).
 std::vector<double> relativeErrors(std::span<const TileStats* const> methods,
                                    const std::vector<std::vector<double>>& errors);
 
 // Replica a's error over replica b's, image-wide: their variances summed over the tiles, each
-// tile's over its squared brightness (as relativeErrors); 0 where b shows none. One number from
+// tile's over its denominator (as relativeErrors); 0 where b shows none. One number from
 // the whole image, so it hardly depends on any one value it weighs.
 double errorLevelRatio(const TileStats& a, const TileStats& b);
 

@@ -244,6 +244,13 @@ private:
         }
         const size_t leader = size_t(std::ranges::max_element(gains) - gains.begin());
         const double leading = gains[leader];
+        // A trial runs until its method's cost has doubled: a measure taken before, as the render
+        // grows, does not end it. Else a first trial, taken at kFirstTrialMargin, ended at the
+        // next such measure, which asks kTrialMargin (the daylit office, seed 4: one pass of mir).
+        if (trial_) {
+            if (methods_[trial_->method].cost < 2 * trial_->startCost) return trial_->method;
+            trial_.reset();
+        }
         // A method on trial takes the pass, the one with the largest gain if several are.
         // Open-ended (the window, or counted in passes), the budget left is as long again as so far.
         const double total = totalCost();
@@ -255,14 +262,9 @@ private:
                                   auto_.caustics};
             if (k != leader && takesTrial(q) && (!onTrial || measures_.gain[k] > measures_.gain[*onTrial])) onTrial = k;
         }
-        if (!onTrial) {
-            trial_.reset();
-            return leading >= 0 ? leader : 0;
-        }
-        if (!trial_ || trial_->method != *onTrial) {
-            trial_ = Trial{*onTrial, methods_[*onTrial].cost};
-            if (!leadsByMargin(measures_.gain[*onTrial], leading)) ++closeTrials_[*onTrial];
-        }
+        if (!onTrial) return leading >= 0 ? leader : 0;
+        trial_ = Trial{*onTrial, methods_[*onTrial].cost};
+        if (!leadsByMargin(measures_.gain[*onTrial], leading)) ++closeTrials_[*onTrial];
         return *onTrial;
     }
 
@@ -331,7 +333,6 @@ private:
         const auto pooled = pooledTowardMean(errors);
         const std::vector<double> gains = marginalGains(pooled, costs);
         measures_ = Measures{};
-        trial_.reset();  // a method still on trial after this measure starts a new one
         measures_.gain.assign(methods_.size(), 0.0);
         measures_.efficiency.assign(methods_.size(), 0.0);
         measures_.imageWeight.assign(methods_.size(), 0.0);
@@ -534,7 +535,8 @@ private:
     RayRecorder* recorder_ = nullptr;
     std::vector<Method> methods_;
     mutable Measures measures_;
-    // The method on trial since the last measure (takesTrial), and its cost when it began.
+    // The method on trial (takesTrial), and its cost when the trial began: it runs until that has
+    // doubled (nextMethod).
     struct Trial {
         size_t method;
         double startCost;

@@ -27,7 +27,8 @@ bool shortRunIsFair(std::string_view method, bool caustics) {
 // 1.05 of path's error alone, R105).
 bool takesTrial(const TrialQuestion& q) {
     if (!shortRunIsFair(q.method, q.caustics) || q.cost >= std::max(q.inImageCost, q.leadingCost)) return false;
-    const bool close = q.gain > (1 / kTrialMargin) * q.leadingGain;
+    const double margin = q.closeTrials == 0 ? kFirstTrialMargin : kTrialMargin;
+    const bool close = q.gain > (1 / margin) * q.leadingGain;
     if (!(q.closeTrials >= kCloseTrials ? leadsByMargin(q.gain, q.leadingGain) : close)) return false;
     return q.cost + q.costLeft >= q.inImageCost;
 }
