@@ -1,10 +1,11 @@
 // `--backend auto` as a measurement (render/engine/measured_auto/): the measures of constructed
 // films (weights that follow each method's noise tile by tile, a chain's understated halves, a
-// method that has not seen a rare event, tiles weighed as SPEC's relmse weighs them, the allocation's relmse of each method as SPEC weighs
-// it and the level of the weights' errors, both read from the replica that runs on), when a
-// method out of the image takes a trial, where the time goes on a scene one method wins by far,
-// what it says it decided, and that a render with a seed is reproducible. Its consistency on the closed forms is in test_closed_form (its
-// "auto" rows).
+// method that has not seen a rare event, tiles weighed as SPEC's relmse weighs them, the
+// allocation's relmse of each method as SPEC weighs it and the level of the weights' errors, both
+// read from the replica that runs on), when a method out of the image takes a trial, where the
+// time goes on a scene one method wins by far, what it says it decided, and that a render with a
+// seed is reproducible. Its consistency on the closed forms is in test_closed_form (its "auto"
+// rows).
 
 #include "closed_form_scenes.h"
 #include "render/engine/measured_auto/film_measures.h"

@@ -102,10 +102,11 @@ std::vector<std::vector<double>> relativeSquaredErrors(std::span<const TileStats
 // (geometrically) to the method's mean over the image, and floored at a quarter of its median:
 // a tile's variance is pooled over its pixels, but a method whose errors correlate across pixels
 // (a VPL set, a chain) has few degrees of freedom there, so that a tile's estimate may be ten
-// times too small, and a tile where a method has seen nothing yet must not claim it is exact. Not for the allocation: the spreading moves error between bright and
-// dark tiles, which SPEC's relmse weighs per pixel (when the tiles' errors were relative to their
-// squared brightness, on the deep-plan daylit room it put path's relmse at 1.7 times its variance
-// and mir's at 0.76 times, and auto gave mir 95% of the time where path is the faster).
+// times too small, and a tile where a method has seen nothing yet must not claim it is exact.
+// Not for the allocation: the spreading moves error between bright and dark tiles, which SPEC's
+// relmse weighs per pixel (when the tiles' errors were relative to their squared brightness, on
+// the deep-plan daylit room it put path's relmse at 1.7 times its variance and mir's at 0.76
+// times, and auto gave mir 95% of the time where path is the faster).
 // `floors`, where given: per method, a further floor on its error relative to the tiles'
 // denominators (the image-wide error the replicas' spread shows, where a replica's own halves may
 // understate it).
