@@ -83,6 +83,11 @@ void RenderPanel::setDisplaySettings(const DisplaySettings& settings) {
 }
 
 namespace {
+// "mir 81%": a method and its share (0 to 1) of auto's time.
+QString methodShare(const QString& method, double share) {
+    return QStringLiteral("%1 %2%").arg(method).arg(std::lround(100 * share));
+}
+
 // "carried by mir, path; time mir 81%, ir 6%, ...; pilots done at 3.2 s, mir 96% of the time
 // since", from a frame of auto's attributes.
 QString describeAuto(const std::map<std::string, std::string>& attributes) {
@@ -98,20 +103,14 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     std::ranges::sort(shares, std::greater<>());
     QStringList parts;
     for (const auto& [share, name] : shares)
-        if (share >= 0.01) parts << QStringLiteral("%1 %2%").arg(name).arg(std::lround(100 * share));
+        if (share >= 0.01) parts << methodShare(name, share);
     QString decided;  // "; pilots done at 3.2 s, path 96% of the time since" (lucerna:auto_decided)
     if (const auto d = attributes.find("lucerna:auto_decided"); d != attributes.end()) {
         const QStringList v = QString::fromStdString(d->second).split(' ', Qt::SkipEmptyParts);
-        if (v.size() == 3) {
-            const QString& pilotsDoneSeconds = v.at(0);
-            const QString& carrying = v.at(1);
-            const long percentSince = std::lround(100 * v.at(2).toDouble());
-            // The strings first, in one arg(), then the number: the text put in is not scanned
-            // again, and "%3%" stays a percent sign after the number.
-            decided = RenderPanel::tr("; pilots done at %1 s, %2 %3% of the time since")
-                          .arg(pilotsDoneSeconds, carrying)
-                          .arg(percentSince);
-        }
+        // One multi-argument arg(): the text it puts in is not scanned again.
+        if (v.size() == 3)
+            decided = RenderPanel::tr("; pilots done at %1 s, %2 of the time since")
+                          .arg(v.at(0), methodShare(v.at(1), v.at(2).toDouble()));
     }
     return RenderPanel::tr("carried by %1; time %2%3")
         .arg(QString::fromStdString(methods->second).replace(' ', QStringLiteral(", ")), parts.join(QStringLiteral(", ")),

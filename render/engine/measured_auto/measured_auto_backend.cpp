@@ -231,11 +231,18 @@ private:
         for (size_t k = 0; k < methods_.size(); ++k)
             if (!pilotDone(k) && (best == methods_.size() || methods_[k].cost < methods_[best].cost)) best = k;
         if (best < methods_.size()) return best;
+        if (!measures_.taken || measures_.gain.size() != methods_.size()) return 0;  // not measured (not prepared)
+        // A trial runs until its method's cost has doubled: a measure taken before, as the render
+        // grows, does not end it. Else a first trial, taken at kFirstTrialMargin, ended at the
+        // next such measure, which asks kTrialMargin (the daylit office, seed 4: one pass of mir).
+        if (trial_) {
+            if (methods_[trial_->method].cost < 2 * trial_->startCost) return trial_->method;
+            trial_.reset();
+        }
         // A method out of the image (under kMinimumShare of costliestInImage) adds nothing
         // until it is in: its gain counts by how far along it is, so that a pilot's optimistic
         // estimate does not draw time that the image then leaves out (the office floor: cmlt took
         // 14% of the time, path kept the image).
-        if (!measures_.taken || measures_.gain.size() != methods_.size()) return 0;  // not measured (not prepared)
         const double costliest = costliestInImage();
         std::vector<double> gains(methods_.size());
         for (size_t k = 0; k < methods_.size(); ++k) {
@@ -244,13 +251,6 @@ private:
         }
         const size_t leader = size_t(std::ranges::max_element(gains) - gains.begin());
         const double leading = gains[leader];
-        // A trial runs until its method's cost has doubled: a measure taken before, as the render
-        // grows, does not end it. Else a first trial, taken at kFirstTrialMargin, ended at the
-        // next such measure, which asks kTrialMargin (the daylit office, seed 4: one pass of mir).
-        if (trial_) {
-            if (methods_[trial_->method].cost < 2 * trial_->startCost) return trial_->method;
-            trial_.reset();
-        }
         // A method on trial takes the pass, the one with the largest gain if several are.
         // Open-ended (the window, or counted in passes), the budget left is as long again as so far.
         const double total = totalCost();
