@@ -88,6 +88,18 @@ QString methodShare(const QString& method, double share) {
     return QStringLiteral("%1 %2%").arg(method).arg(std::lround(100 * share));
 }
 
+// "; pilots done at 3.2 s, path 96% of the time since", from lucerna:auto_decided ("3.2 path
+// 0.96": when every pilot was done, in seconds, the method carrying the image and its share of
+// the time since); empty where it is not of that form.
+QString describeDecision(const std::string& decided) {
+    const QStringList fields = QString::fromStdString(decided).split(' ', Qt::SkipEmptyParts);
+    if (fields.size() != 3) return {};
+    const QString& pilotsDoneSeconds = fields.front();
+    const QString carrying = methodShare(fields[1], fields.back().toDouble());
+    // One multi-argument arg(): the text it puts in is not scanned again.
+    return RenderPanel::tr("; pilots done at %1 s, %2 of the time since").arg(pilotsDoneSeconds, carrying);
+}
+
 // "carried by mir, path; time mir 81%, ir 6%, ...; pilots done at 3.2 s, mir 96% of the time
 // since", from a frame of auto's attributes.
 QString describeAuto(const std::map<std::string, std::string>& attributes) {
@@ -104,17 +116,10 @@ QString describeAuto(const std::map<std::string, std::string>& attributes) {
     QStringList parts;
     for (const auto& [share, name] : shares)
         if (share >= 0.01) parts << methodShare(name, share);
-    QString decided;  // "; pilots done at 3.2 s, path 96% of the time since" (lucerna:auto_decided)
-    if (const auto d = attributes.find("lucerna:auto_decided"); d != attributes.end()) {
-        const QStringList v = QString::fromStdString(d->second).split(' ', Qt::SkipEmptyParts);
-        // One multi-argument arg(): the text it puts in is not scanned again.
-        if (v.size() == 3)
-            decided = RenderPanel::tr("; pilots done at %1 s, %2 of the time since")
-                          .arg(v.at(0), methodShare(v.at(1), v.at(2).toDouble()));
-    }
+    const auto decided = attributes.find("lucerna:auto_decided");
     return RenderPanel::tr("carried by %1; time %2%3")
         .arg(QString::fromStdString(methods->second).replace(' ', QStringLiteral(", ")), parts.join(QStringLiteral(", ")),
-             decided);
+             decided != attributes.end() ? describeDecision(decided->second) : QString());
 }
 }  // namespace
 
