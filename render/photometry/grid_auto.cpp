@@ -39,13 +39,17 @@ constexpr double kCloseRatio = 3;
 // runs 0.1 s, and path, held to a twentieth, was piloted on 1 of 4 seeds, then took over and
 // finished in 0.05 s.
 constexpr double kCombinedPilotRestShare = 0.5;
-// A pilot at its full share that does not take over, whose rest is under kCloserRatio times the
-// running method's and whose projection is still falling fast (under kFallingRatio times its
-// projection at half the pilot's length: a heavy tail met early, being diluted) goes on, twice as
-// long each time, while all pilots together take at most kLongerPilotsShare of the running
-// method's projected total. Such a method shows its pace only after a while: bdpt in a room lit
-// from the next one projected 3.4 to 6.6 s in its first 0.1 s (one sample's spike), against
-// path's 2.5 to 3, and reaches the target in 1.7 s alone, path in 3.1 s.
+// A pilot at its full share that does not take over goes on, twice as long each time, while all
+// pilots together take at most kLongerPilotsShare of the running method's projected total
+// (pilotRunsOn, grid_auto.h):
+// - where it is ahead of the running method but within the take-over margin: a longer pilot
+//   settles its error bars (the room lit from the next one: bdpt's pilots projected 1.4 to 3.6 s
+//   against its 1.9 s alone, and one at 2.4 s against path's 3.2 s lost);
+// - where its rest is under kCloserRatio times the running method's and its projection is still
+//   falling fast (under kFallingRatio times its projection at half the pilot's length: a heavy
+//   tail met early, being diluted). Such a method shows its pace only after a while: bdpt in a
+//   room lit from the next one projected 3.4 to 6.6 s in its first 0.1 s (one sample's spike),
+//   against path's 2.5 to 3, and reaches the target in 1.7 s alone, path in 3.1 s.
 constexpr double kCloserRatio = 2;
 constexpr double kFallingRatio = 0.75;
 constexpr double kLongerPilotsShare = 0.2;
@@ -291,15 +295,15 @@ private:
         // diluted) is not to be trusted yet.
         const auto half = std::ranges::find_if(own, [&](const auto& e) { return e.first >= 0.5 * pilot.seconds; });
         const bool falling = half != own.end() && pilotNeeds < kFallingRatio * half->second;
-        const bool close = o.shortPilot ? rest < kCloseRatio * runningRest : falling && rest < kCloserRatio * runningRest;
-        if (close && longerPilot(pilot.seconds, o) > pilot.seconds) {
+        if (pilotRunsOn(o.shortPilot, falling, rest, runningRest) && longerPilot(pilot.seconds, o) > pilot.seconds) {
             pilots_.back() += ", longer";
             return Verdict::Longer;
         }
         const auto first = std::ranges::find(measured_, method, &Measure::first);  // its first measure, if any
         const bool second = first != measured_.end() && std::ranges::count(measured_, method, &Measure::first) == 1;
+        const double firstNeeds = second ? first->second : needs;  // read before measured_ grows
         measured_.emplace_back(method, needs);
-        if (second && std::max(needs, first->second) > kDisagreementRatio * std::min(needs, first->second)) {
+        if (second && std::max(needs, firstNeeds) > kDisagreementRatio * std::min(needs, firstNeeds)) {
             pilots_.back() += ", again later";
             pilotAgainNext(method);
         } else {
@@ -395,6 +399,11 @@ private:
 };
 
 }  // namespace
+
+bool pilotRunsOn(bool shortPilot, bool falling, double restSeconds, double runningRestSeconds) {
+    if (shortPilot) return restSeconds < kCloseRatio * runningRestSeconds;
+    return restSeconds < runningRestSeconds || (falling && restSeconds < kCloserRatio * runningRestSeconds);
+}
 
 bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft, double margin) {
     if (!std::isfinite(challenger.needsSeconds)) return false;

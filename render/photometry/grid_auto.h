@@ -64,4 +64,12 @@ struct MethodStand {
 // than where they stay in the result (path and ir, combined: 0.85).
 bool challengerTakesOver(const MethodStand& challenger, const MethodStand& running, double secondsLeft, double margin = 0.7);
 
+// Whether a pilot that did not take over runs on, twice as long, with `restSeconds` of its own
+// left to the target against the running method's `runningRestSeconds`: path's or ir's first,
+// short pilot (`shortPilot`) when its rest is under 3 times the running one's; any other when it
+// is ahead (its rest the shorter, though not by the take-over margin: its error bars are a short
+// run's), or when its rest is under twice the running one's and its projection is still falling
+// fast (`falling`: a heavy tail met early, being diluted).
+bool pilotRunsOn(bool shortPilot, bool falling, double restSeconds, double runningRestSeconds);
+
 }  // namespace lucerna

@@ -78,6 +78,18 @@ private slots:
         QVERIFY(challengerTakesOver({12, 2}, {40, 10}, 8));         // 12/10 = 1.2 against 1.56
     }
 
+    // A pilot that lost runs on where it may yet take over: path's or ir's short first one within
+    // 3 times the running method's rest; any other ahead of it, or within twice its rest while
+    // still falling fast.
+    void aPilotAheadRunsOn() {
+        QVERIFY(pilotRunsOn(true, false, 25, 10));
+        QVERIFY(!pilotRunsOn(true, false, 35, 10));
+        QVERIFY(pilotRunsOn(false, false, 8, 10));    // ahead, within the take-over margin of 0.7
+        QVERIFY(!pilotRunsOn(false, false, 12, 10));  // behind, its projection settled
+        QVERIFY(pilotRunsOn(false, true, 15, 10));    // behind, but still falling fast
+        QVERIFY(!pilotRunsOn(false, true, 25, 10));
+    }
+
     // A share of the running method's rest, within the pilots' tenth of its total; path's or
     // ir's first pilot a hundredth (at least 0.01 s), up to half the rest against path or ir.
     void pilotsAreAShareOfTheRest() {
