@@ -42,9 +42,10 @@ constexpr double kCombinedPilotRestShare = 0.5;
 // A pilot at its full share that does not take over goes on, twice as long each time, while all
 // pilots together take at most kLongerPilotsShare of the running method's projected total
 // (pilotRunsOn, grid_auto.h):
-// - where it is ahead of the running method but within the take-over margin: a longer pilot
-//   settles its error bars (the room lit from the next one: bdpt's pilots projected 1.4 to 3.6 s
-//   against its 1.9 s alone, and one at 2.4 s against path's 3.2 s lost);
+// - where it is ahead of the running method but within the take-over margin: a short pilot's
+//   projection is one noisy reading, and a longer one gives a later reading (the room lit from
+//   the next one: bdpt's pilots projected 1.4 to 3.6 s against its 1.9 s alone, and one at 2.4 s
+//   against path's 3.2 s lost);
 // - where its rest is under kCloserRatio times the running method's and its projection is still
 //   falling fast (under kFallingRatio times its projection at half the pilot's length: a heavy
 //   tail met early, being diluted). Such a method shows its pace only after a while: bdpt in a

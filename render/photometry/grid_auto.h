@@ -67,8 +67,8 @@ bool challengerTakesOver(const MethodStand& challenger, const MethodStand& runni
 // Whether a pilot that did not take over runs on, twice as long, with `restSeconds` of its own
 // left to the target against the running method's `runningRestSeconds`: path's or ir's first,
 // short pilot (`shortPilot`) when its rest is under 3 times the running one's; any other when it
-// is ahead (its rest the shorter, though not by the take-over margin: its error bars are a short
-// run's), or when its rest is under twice the running one's and its projection is still falling
+// is ahead (its rest the shorter, though not by the take-over margin: a short run's projection is
+// noisy), or when its rest is under twice the running one's and its projection is still falling
 // fast (`falling`: a heavy tail met early, being diluted).
 bool pilotRunsOn(bool shortPilot, bool falling, double restSeconds, double runningRestSeconds);
 
