@@ -12,6 +12,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QPushButton>
+#include <QTextStream>
 #include <QVBoxLayout>
 
 #include <algorithm>
@@ -92,12 +93,15 @@ QString methodShare(const QString& method, double share) {
 // 0.96": when every pilot was done, in seconds, the method carrying the image and its share of
 // the time since); empty where it is not of that form.
 QString describeDecision(const std::string& decided) {
-    const QStringList fields = QString::fromStdString(decided).split(' ', Qt::SkipEmptyParts);
-    if (fields.size() != 3) return {};
-    const QString& pilotsDoneSeconds = fields.front();
-    const QString carrying = methodShare(fields[1], fields.back().toDouble());
+    QString text = QString::fromStdString(decided);
+    QTextStream in(&text);
+    QString pilotsDoneSeconds, carrying, share;
+    in >> pilotsDoneSeconds >> carrying >> share;
+    in.skipWhiteSpace();
+    if (share.isEmpty() || !in.atEnd()) return {};
     // One multi-argument arg(): the text it puts in is not scanned again.
-    return RenderPanel::tr("; pilots done at %1 s, %2 of the time since").arg(pilotsDoneSeconds, carrying);
+    return RenderPanel::tr("; pilots done at %1 s, %2 of the time since")
+        .arg(pilotsDoneSeconds, methodShare(carrying, share.toDouble()));
 }
 
 // "carried by mir, path; time mir 81%, ir 6%, ...; pilots done at 3.2 s, mir 96% of the time
