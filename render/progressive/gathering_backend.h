@@ -4,6 +4,7 @@
 
 #include "render/progressive/tracing_backend.h"
 #include "render/trace/rng.h"
+#include "render/trace/sobol_sampler.h"
 #include "render/vpl/tile_scheduler.h"
 #include "render/vpl/vpl_gatherer.h"
 
@@ -24,8 +25,12 @@ protected:
 
     // Adds one sample to every pixel of the film's half pass % 2 (not finishing the pass): a
     // camera ray through a uniformly jittered point of the pixel (box filter), gathering the VPLs
-    // vplsAt(passSeed, pixel) chooses for the pixel (its index y * width + x); each pixel's
-    // random numbers depend only on the seed, the pass and the pixel.
+    // vplsAt(passSeed, pixel) chooses for the pixel (its index y * width + x). Each pixel's
+    // numbers (its jitter, direct-light and residual samples) come from its own scrambled Sobol
+    // sequence per half of the film, as path's and bdpt's do (camera_pass.h): its samples stratify
+    // the pixel's edges and the first direct-light samples, and the halves stay independent, so
+    // their difference is still an honest error estimate. They depend only on the seed, the pass
+    // and the pixel.
     // With vplFilm, the VPL term goes there and the rest to film_ (VplGatherer::radianceParts).
     template <class VplsAt>
     void gatherPass(TaskContext& ctx, int pass, int tileSize, const VplsAt& vplsAt, Film* vplFilm = nullptr) {
@@ -35,7 +40,7 @@ protected:
         const auto finite = [](const Rgb& L) { return isFinite(L) ? L : Rgb(0, 0, 0); };  // never poison a film
         forEachPixel(camera.width(), camera.height(), tileSize, ctx, [&](int x, int y) {
             const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
-            Rng rng(passSeed, pixel);
+            SobolSampler rng(hashSeed(settings_.seed, pixel, uint64_t(half)), uint32_t(pass / 2));
             const V2f jitter = rng.next2D();
             const Ray ray = camera.ray(float(x) + jitter.x, float(y) + jitter.y);
             if (!vplFilm) {

@@ -48,7 +48,7 @@ VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& setting
 // Direct light at x1 by next-event estimation and one BSDF sample (power heuristic), directSamples
 // times; the first BSDF sample also estimates the residual of the clamp and the light arriving
 // through specular surfaces.
-Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const {
+Rgb VplGatherer::directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights) const {
     const ShadingMaterial& mat = *r.material;
     const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
     const V3f woLocal = frame.toLocal(r.wo);
@@ -58,7 +58,7 @@ Rgb VplGatherer::directAndResidual(const VplReceiver& r, Rng& rng, bool withoutD
     return direct * (1.0f / float(n)) + residual;
 }
 
-Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, Rng& rng, bool withoutDeltaLights,
+Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, SampleGenerator& rng, bool withoutDeltaLights,
                               Rgb* residual) const {
     const ShadingMaterial& mat = *r.material;
     Rgb L(0, 0, 0);
@@ -118,14 +118,14 @@ Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3
     return L;
 }
 
-Rgb VplGatherer::radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
+Rgb VplGatherer::radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
     const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
     Rgb L = cv.emitted;
     if (!cv.found) return L;
     return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
 }
 
-VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, Rng& rng, std::span<const Vpl> vpls) const {
+VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls) const {
     const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
     Parts parts{Rgb(0, 0, 0), cv.emitted};
     if (!cv.found) return parts;
@@ -134,7 +134,7 @@ VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, Rng& rng, std::spa
     return parts;
 }
 
-Rgb VplGatherer::reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale,
+Rgb VplGatherer::reflected(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale,
                            bool withoutDeltaLights) const {
     Rgb L = directAndResidual(r, rng, withoutDeltaLights);
     if (!vpls.empty()) L += gatherVpls(scene_, vpls, scale, r, maxG_);

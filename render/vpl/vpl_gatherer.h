@@ -44,7 +44,7 @@ public:
 
     // Radiance along a camera ray; the VPL term is sum_i scale[i] * contribution_i (scale empty:
     // all 1).
-    Rgb radiance(const Ray& ray, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
+    Rgb radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
 
     // radiance() in two parts that sum to it, drawing the same random numbers: the VPL term
     // (linear in the VPLs' powers) and the rest.
@@ -52,20 +52,20 @@ public:
         Rgb vpl{0, 0, 0};
         Rgb rest{0, 0, 0};
     };
-    Parts radianceParts(const Ray& ray, Rng& rng, std::span<const Vpl> vpls) const;
+    Parts radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls) const;
 
     // Radiance leaving the receiver toward r.wo by reflection (its emission not included): direct
     // light, the clamp residual and the VPL term, as radiance() computes at x1. With
     // withoutDeltaLights, the direct light of point, spot, directional lights and luminaires is
     // left out (the caller adds it exactly); the rest stays unbiased.
-    Rgb reflected(const VplReceiver& r, Rng& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
+    Rgb reflected(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
                   bool withoutDeltaLights = false) const;
 
 private:
-    Rgb directAndResidual(const VplReceiver& r, Rng& rng, bool withoutDeltaLights) const;
+    Rgb directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights) const;
     // One sample of the direct light at r (next-event estimation and a BSDF sample); with
     // `residual`, that BSDF sample's estimate of the clamp's residual is added to it.
-    Rgb directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, Rng& rng, bool withoutDeltaLights,
+    Rgb directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, SampleGenerator& rng, bool withoutDeltaLights,
                      Rgb* residual) const;
 
     const RenderScene& scene_;
