@@ -11,8 +11,6 @@ CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerato
     for (int depth = 0; depth <= maxSpecularDepth; ++depth) {
         Rgb through;
         const auto hit = scene.intersect(ray, nullptr, &through);
-        const V2f ud = u.next2D();
-        const float uLobe = u.next1D();
         cv.throughput *= through;  // glazing crossed on the way
         if (!hit) {
             // The sky seen directly or through mirrors and glass: no other strategy finds it.
@@ -30,6 +28,10 @@ CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerato
             cv.receiver = VplReceiver{*hit, &mat, wo};
             break;
         }
+        // Drawn only here, so that at a diffuse/glossy x1 the next numbers (a Sobol sequence's
+        // stratified dimensions in the gathering pass) go to its direct light.
+        const V2f ud = u.next2D();
+        const float uLobe = u.next1D();
         const Frame frame(shadingNormal(mat, hit->ng, wo));
         BsdfSample bs;
         if (!bsdfSample(mat, frame.toLocal(wo), ud, uLobe, bs)) break;

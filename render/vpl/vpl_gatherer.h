@@ -32,8 +32,8 @@ struct CameraVertex {
     Rgb emitted{0, 0, 0};         // emitters seen directly or through the specular chain
 };
 
-// Follows `ray` through delta surfaces (drawing 3 numbers per delta bounce from u) to the first
-// diffuse/glossy vertex.
+// Follows `ray` through delta surfaces (drawing 3 numbers from u at each, none elsewhere) to the
+// first diffuse/glossy vertex.
 CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth);
 
 class VplGatherer {
