@@ -40,14 +40,14 @@ protected:
         const auto finite = [](const Rgb& L) { return isFinite(L) ? L : Rgb(0, 0, 0); };  // never poison a film
         forEachPixel(camera.width(), camera.height(), tileSize, ctx, [&](int x, int y) {
             const uint64_t pixel = uint64_t(y) * uint64_t(camera.width()) + uint64_t(x);
-            SobolSampler rng(hashSeed(settings_.seed, pixel, uint64_t(half)), uint32_t(pass / 2));
-            const V2f jitter = rng.next2D();
+            SobolSampler sampler(hashSeed(settings_.seed, pixel, uint64_t(half)), uint32_t(pass / 2));
+            const V2f jitter = sampler.next2D();
             const Ray ray = camera.ray(float(x) + jitter.x, float(y) + jitter.y);
             if (!vplFilm) {
-                film_->addSample(half, x, y, finite(gatherer_->radiance(ray, rng, vplsAt(passSeed, pixel))));
+                film_->addSample(half, x, y, finite(gatherer_->radiance(ray, sampler, vplsAt(passSeed, pixel))));
                 return;
             }
-            const VplGatherer::Parts L = gatherer_->radianceParts(ray, rng, vplsAt(passSeed, pixel));
+            const VplGatherer::Parts L = gatherer_->radianceParts(ray, sampler, vplsAt(passSeed, pixel));
             film_->addSample(half, x, y, finite(L.rest));
             vplFilm->addSample(half, x, y, finite(L.vpl));
         });
