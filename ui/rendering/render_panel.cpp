@@ -95,13 +95,15 @@ QString methodShare(const QString& method, double share) {
 QString describeDecision(const std::string& decided) {
     QString text = QString::fromStdString(decided);
     QTextStream in(&text);
-    QString pilotsDoneSeconds, carrying, share;
+    double pilotsDoneSeconds = 0, share = 0;
+    QString carrying;
     in >> pilotsDoneSeconds >> carrying >> share;
+    if (in.status() != QTextStream::Ok || carrying.isEmpty()) return {};  // a number that was not one
     in.skipWhiteSpace();
-    if (share.isEmpty() || !in.atEnd()) return {};
+    if (!in.atEnd()) return {};
     // One multi-argument arg(): the text it puts in is not scanned again.
     return RenderPanel::tr("; pilots done at %1 s, %2 of the time since")
-        .arg(pilotsDoneSeconds, methodShare(carrying, share.toDouble()));
+        .arg(QString::number(pilotsDoneSeconds, 'f', 1), methodShare(carrying, share));
 }
 
 // "carried by mir, path; time mir 81%, ir 6%, ...; pilots done at 3.2 s, mir 96% of the time
