@@ -1,7 +1,9 @@
 // Where an image's relmse sits (issue 38): the share of SPEC's relmse that its worst pixels carry,
 // and, with OUT.exr, the map of each pixel's term (the sum over its channels of
 // (x - ref)^2 / (ref^2 + 0.01)) to look at with `lucerna convert`. A method whose error is a few
-// fireflies and one whose error is spread over the image call for different remedies.
+// fireflies and one whose error is spread over the image call for different remedies. Also the
+// relmse left once the test image is scaled to the reference's mean: a normalisation's error
+// (mir's Pc) against the pixels' own noise.
 //   bench_error_share TEST.exr REF.exr [OUT.exr]
 
 #include "core/image/exr_io.h"
@@ -47,6 +49,10 @@ int main(int argc, char** argv) {
             const double part = std::accumulate(terms.begin(), terms.begin() + long(n), 0.0);
             std::printf("worst %5.1f%% of the pixels (%zu): %.1f%% of the relmse\n", 100 * share, n, total > 0 ? 100 * part / total : 0.0);
         }
+        const double scale = test.mean() > 0 ? ref.mean() / test.mean() : 1.0;
+        Image scaled = test;
+        for (Rgb& p : scaled.pixels) p = p * float(scale);
+        std::printf("scaled to the reference's mean (x %.5f): relmse %.4g\n", scale, compareImages(scaled, ref).relmse);
         if (argc == 4) writeExr(argv[3], map);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "bench_error_share: %s\n", e.what());

@@ -24,10 +24,10 @@ namespace {
 // particles, so its list leaves daylight_portals out).
 constexpr std::string_view kPathOptions[] = {"max_depth", "rr_depth", "light_sampler"};
 constexpr std::string_view kBdptOptions[] = {"max_depth", "rr_depth", "strategies", "light_sampler", "daylight_portals"};
-constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounces", "clamp", "compensate", "direct_samples",
-                                          "light_sampler", "daylight_portals"};
+constexpr std::string_view kIrOptions[] = {"vpl_paths", "interleave", "max_bounces", "clamp", "compensate", "residual_vpls",
+                                          "direct_samples", "light_sampler", "daylight_portals"};
 constexpr std::string_view kMirOptions[] = {"vpl_paths", "tries",      "large_step", "pc_samples", "importance_points", "defensive",
-                                            "max_bounces", "clamp",   "compensate", "direct_samples",
+                                            "max_bounces", "clamp",   "compensate", "residual_vpls", "direct_samples",
                                             "light_sampler", "daylight_portals"};
 constexpr std::string_view kMltOptions[] = {"bootstrap", "bootstrap_first_per_pixel", "chains", "mutations",
                                             "large_step", "sigma", "caustic", "max_depth", "rr_depth", "strategies",

@@ -10,6 +10,7 @@ GatherSettings gatherSettingsFromOptions(const RenderSettings& settings, GatherS
     int compensate = g.compensate ? 1 : 0;
     readOption(settings, "compensate", compensate, 0, 1);
     g.compensate = compensate == 1;
+    readOption(settings, "residual_vpls", g.residualVplShare, 0.0, 1.0);
     readOption(settings, "direct_samples", g.directSamples, 1, 1024);
     return g;
 }

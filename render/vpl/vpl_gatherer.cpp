@@ -50,18 +50,29 @@ VplGatherer::VplGatherer(const RenderScene& scene, const GatherSettings& setting
 // Direct light at x1 by next-event estimation and one BSDF sample (power heuristic), directSamples
 // times; the first BSDF sample also estimates the residual of the clamp and the light arriving
 // through specular surfaces.
-Rgb VplGatherer::directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights) const {
+VplGatherer::Parts VplGatherer::directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights,
+                                                  std::span<const Vpl> vpls, std::span<const float> scale, int directSamples) const {
     const ShadingMaterial& mat = *r.material;
     const Frame frame(shadingNormal(mat, r.x.ng, r.wo));
     const V3f woLocal = frame.toLocal(r.wo);
-    const int n = std::max(1, settings_.directSamples);
-    Rgb direct(0, 0, 0), residual(0, 0, 0);
+    const int n = std::max(1, directSamples);
+    Rgb direct(0, 0, 0);
+    Residual residual{vpls, scale, {}};
     for (int i = 0; i < n; ++i) direct += directSample(r, frame, woLocal, rng, withoutDeltaLights, i == 0 ? &residual : nullptr);
-    return direct * (1.0f / float(n)) + residual;
+    residual.value.rest += direct * (1.0f / float(n));
+    return residual.value;
+}
+
+VplGatherer::Parts VplGatherer::leavingX2(const VplReceiver& x2, SampleGenerator& rng, std::span<const Vpl> vpls,
+                                          std::span<const float> scale) const {
+    // One direct sample at x2: its light is the residual's, a small part of the pixel's.
+    Parts L = directAndResidual(x2, rng, false, {}, {}, 1);
+    L.vpl += gatherVpls(scene_, vpls, scale, x2, maxG_);
+    return L;
 }
 
 Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, SampleGenerator& rng, bool withoutDeltaLights,
-                              Rgb* residual) const {
+                              Residual* residual) const {
     const ShadingMaterial& mat = *r.material;
     Rgb L(0, 0, 0);
 
@@ -114,9 +125,16 @@ Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3
         weight = g > maxG_ ? 1.0f - maxG_ / g : 0.0f;
         if (!(weight > 0.0f)) return L;
     }
-    // Light leaving x2 toward x1: x2 does not emit, so the path tracer returns reflected light only.
-    // (It traces this ray again, panes included.)
-    *residual += bs.weight * pathTracer_.radiance(ray, rng) * weight;
+    // Light leaving x2 toward x1 (x2 does not emit): by the gather's terms at x2 and by a path
+    // traced from it (which traces this ray again, panes included), weighed by the share.
+    const float share = m2.isDelta() || residual->vpls.empty() ? 0.0f : settings_.residualVplShare;
+    if (share > 0.0f) {
+        const Parts atX2 = leavingX2(VplReceiver{*hit, &m2, -wi}, rng, residual->vpls, residual->scale);
+        const Rgb w = bs.weight * through * (weight * share);
+        residual->value.rest += w * atX2.rest;
+        residual->value.vpl += w * atX2.vpl;
+    }
+    if (share < 1.0f) residual->value.rest += bs.weight * pathTracer_.radiance(ray, rng) * (weight * (1.0f - share));
     return L;
 }
 
@@ -131,16 +149,23 @@ VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, SampleGenerator& r
     const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
     Parts parts{Rgb(0, 0, 0), cv.emitted};
     if (!cv.found) return parts;
-    parts.rest += cv.throughput * directAndResidual(cv.receiver, rng, false);
-    if (!vpls.empty()) parts.vpl = cv.throughput * gatherVpls(scene_, vpls, {}, cv.receiver, maxG_);
+    const Parts at = reflectedParts(cv.receiver, rng, vpls, {}, false);
+    parts.rest += cv.throughput * at.rest;
+    parts.vpl += cv.throughput * at.vpl;
     return parts;
+}
+
+VplGatherer::Parts VplGatherer::reflectedParts(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls,
+                                               std::span<const float> scale, bool withoutDeltaLights) const {
+    Parts L = directAndResidual(r, rng, withoutDeltaLights, vpls, scale, settings_.directSamples);
+    if (!vpls.empty()) L.vpl += gatherVpls(scene_, vpls, scale, r, maxG_);
+    return L;
 }
 
 Rgb VplGatherer::reflected(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale,
                            bool withoutDeltaLights) const {
-    Rgb L = directAndResidual(r, rng, withoutDeltaLights);
-    if (!vpls.empty()) L += gatherVpls(scene_, vpls, scale, r, maxG_);
-    return L;
+    const Parts L = reflectedParts(r, rng, vpls, scale, withoutDeltaLights);
+    return L.rest + L.vpl;
 }
 
 }  // namespace lucerna

@@ -7,10 +7,11 @@
 //       GatherSettings::directSamples such pairs)
 //     + indirect light at x1 from the VPLs, geometric term clamped to maxG
 //     + the clamped-away residual (Kollig & Keller 2004): the first pair's BSDF sample, when it
-//       hits a diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) and continued by path
-//       tracing; when it hits a mirror or glass, continued by path tracing unweighted (VPL
-//       connections are straight segments, so light reaching x1 through a specular surface is
-//       not in the VPL term).
+//       hits a diffuse/glossy x2, weighted by max(0, 1 - maxG / G(x1, x2)) times the light
+//       leaving x2 toward x1, estimated by path tracing from x2, by these same terms at x2, or
+//       by both (GatherSettings::residualVplShare); when it hits a mirror or glass, continued
+//       by path tracing unweighted (VPL connections are straight segments, so light reaching x1
+//       through a specular surface is not in the VPL term).
 // Since  int f L G V dA = int f L min(G, b) V dA + int f L G max(0, 1 - b/G) V dA,  the sum is
 // consistent whatever the clamp: the VPLs estimate the first integral, the paths the second.
 
@@ -60,13 +61,29 @@ public:
     // left out (the caller adds it exactly); the rest stays unbiased.
     Rgb reflected(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
                   bool withoutDeltaLights = false) const;
+    // reflected() in the two parts of radianceParts().
+    Parts reflectedParts(const VplReceiver& r, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
+                         bool withoutDeltaLights = false) const;
 
 private:
-    Rgb directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights) const;
+    // Direct light at r (the mean of directSamples) and the clamp's residual; the residual's VPL
+    // term goes to .vpl, the rest to .rest. With `vpls` empty the residual is traced as a path.
+    Parts directAndResidual(const VplReceiver& r, SampleGenerator& rng, bool withoutDeltaLights, std::span<const Vpl> vpls,
+                            std::span<const float> scale, int directSamples) const;
+    // The clamp's residual as it is summed: the VPLs (and their scales) that estimate it at x2,
+    // and the parts so far.
+    struct Residual {
+        std::span<const Vpl> vpls;
+        std::span<const float> scale;
+        Parts value;
+    };
     // One sample of the direct light at r (next-event estimation and a BSDF sample); with
     // `residual`, that BSDF sample's estimate of the clamp's residual is added to it.
     Rgb directSample(const VplReceiver& r, const Frame& frame, const V3f& woLocal, SampleGenerator& rng, bool withoutDeltaLights,
-                     Rgb* residual) const;
+                     Residual* residual) const;
+    // The light leaving x2 toward x1 (x2 diffuse or glossy, not an emitter) as the gather
+    // estimates it at x1, x2's own residual by a path.
+    Parts leavingX2(const VplReceiver& x2, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale) const;
 
     const RenderScene& scene_;
     GatherSettings settings_;

@@ -62,6 +62,8 @@ private slots:
     void hardCases();
     void consistency_data();
     void consistency();
+    void residualCarriesWhatTheClampTakes_data();
+    void residualCarriesWhatTheClampTakes();
 };
 
 void TestVpl::firstBounceCarriesIncidentFlux() {
@@ -152,11 +154,16 @@ void TestVpl::contributionFormulaAndClamp() {
 void TestVpl::radiancePartsSumToRadiance() {
     // mir keeps the VPL term in a film of its own, scaled by the newest Pc when read: the parts
     // must be radiance() split, drawing the same numbers, and the VPL part linear in the powers.
+    // The clamp takes part of every bounce here (as in residualCarriesWhatTheClampTakes), so the
+    // residual's VPL term at x2 is in the VPL part too.
     SphereWithEmittingCap s = smallSphere(0.5);
     const RenderScene scene = makeRenderScene(s.json());
     VplSet vpls = generateVpls(scene, 200, 5);
     QVERIFY(vpls.size() > 50);
-    const VplGatherer gatherer(scene, GatherSettings{});
+    GatherSettings clamping;
+    clamping.clampFraction = 4;
+    clamping.residualVplShare = 0.5f;
+    const VplGatherer gatherer(scene, clamping);
     VplSet doubled = vpls;
     for (Vpl& v : doubled) v.power *= 2.0f;
     int withVplLight = 0;
@@ -309,6 +316,45 @@ void TestVpl::consistency() {
     qInfo("%s: relmse %.3g at %d spp, %.3g at %d spp (ratio %.3f); mean / closed form %.4f, %.4f", qPrintable(backend),
           relmse[0], spp[0], relmse[1], spp[1], relmse[1] / relmse[0], means[0], means[1]);
     QVERIFY(relmse[1] <= 0.5 * relmse[0]);
+}
+
+void TestVpl::residualCarriesWhatTheClampTakes_data() {
+    QTest::addColumn<QString>("backend");
+    QTest::addColumn<QString>("share");  // of the residual estimated by the VPLs at x2
+    QTest::newRow("ir, by paths") << "ir" << "0";
+    QTest::newRow("ir, by VPLs") << "ir" << "1";
+    QTest::newRow("mir, by both") << "mir" << "0.5";
+}
+
+void TestVpl::residualCarriesWhatTheClampTakes() {
+    // In a sphere every pair of points has G = 1 / (4 R^2); a clamp distance of four times the
+    // scene's radius clamps G to at most a quarter of that, so the residual carries at least
+    // three quarters of every indirect bounce. The mean must still be the closed form's, and
+    // without the residual far below it (the check can fail).
+    QFETCH(QString, backend);
+    QFETCH(QString, share);
+    SphereWithEmittingCap s;
+    s.rho = 0.8;
+    s.rings = 24;
+    s.segments = 48;
+    s.resolution = 16;
+    const auto scene = sceneFromJson(s.json());
+    const double expected = s.expectedRadiance();
+    const auto mean = [&](bool compensate, int spp) {
+        RenderSettings rs;
+        rs.spp = spp;
+        rs.seed = 7;
+        rs.options["clamp"] = "4";
+        rs.options["compensate"] = compensate ? "1" : "0";
+        rs.options["residual_vpls"] = share.toStdString();
+        if (backend == "ir") rs.options["vpl_paths"] = "256";
+        return renderFrame(backend.toStdString(), scene, rs).image.mean() / expected;
+    };
+    const double compensated = mean(true, 32), clamped = mean(false, 4);
+    qInfo("%s, share %s: mean / closed form %.4f (without the residual %.4f)", qPrintable(backend), qPrintable(share),
+          compensated, clamped);
+    QVERIFY(std::abs(compensated - 1.0) < 0.015);
+    QVERIFY(clamped < 0.8);
 }
 
 QTEST_GUILESS_MAIN(TestVpl)

@@ -19,8 +19,8 @@ struct IrSettings {
     int interleave = 8;
     VplOptions vpl;
 
-    // Reads "vpl_paths", "interleave", "clamp", "compensate", "direct_samples" (1), "max_bounces"; throws
-    // std::invalid_argument on bad values.
+    // Reads "vpl_paths", "interleave", "clamp", "compensate", "residual_vpls" (0), "direct_samples"
+    // (1), "max_bounces"; throws std::invalid_argument on bad values.
     static IrSettings fromOptions(const RenderSettings& settings);
 };
 

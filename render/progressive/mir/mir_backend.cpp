@@ -21,7 +21,8 @@ public:
         // error 1.9x and 4.7x sooner on two closed rooms of the daylit family, had 2.0 to 2.5x
         // less relmse at 10 s on the daylit office, and on the held-out room open to a bright
         // ground 1.2x more and 3.1x less (two seeds each; BENCHMARKS.md).
-        : GatheringBackend(std::move(scene), settings, std::nullopt, true), mir_(MirSettings::fromOptions(settings)) {}
+        : GatheringBackend(std::move(scene), settings, std::nullopt, true),
+          mir_(MirSettings::fromOptions(settings, analyseFeatures(*snapshot_).hasDaylight())) {}
 
     void prepare(TaskContext&) override {
         prepareGatherer(mir_.gather);
