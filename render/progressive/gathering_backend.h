@@ -43,11 +43,12 @@ protected:
             SobolSampler sampler(hashSeed(settings_.seed, pixel, uint64_t(half)), uint32_t(pass / 2));
             const V2f jitter = sampler.next2D();
             const Ray ray = camera.ray(float(x) + jitter.x, float(y) + jitter.y);
+            const int point = camera.pointAt(float(x) + jitter.x);
             if (!vplFilm) {
-                film_->addSample(half, x, y, finite(gatherer_->radiance(ray, sampler, vplsAt(passSeed, pixel))));
+                film_->addSample(half, x, y, finite(gatherer_->radiance(ray, sampler, vplsAt(passSeed, pixel), {}, point)));
                 return;
             }
-            const VplGatherer::Parts L = gatherer_->radianceParts(ray, sampler, vplsAt(passSeed, pixel));
+            const VplGatherer::Parts L = gatherer_->radianceParts(ray, sampler, vplsAt(passSeed, pixel), point);
             film_->addSample(half, x, y, finite(L.rest));
             vplFilm->addSample(half, x, y, finite(L.vpl));
         });

@@ -1,26 +1,35 @@
 #include "render/vpl/vpl_gatherer.h"
 
+#include "render/trace/sensor_direct.h"
+
 namespace lucerna {
 
 namespace {
 PathSettings residualPathSettings() { return PathSettings{}; }
 }  // namespace
 
-CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth) {
+CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth, int sensorPoint) {
     CameraVertex cv;
+    // Light found before any scattering, weighed against next-event estimation at a sensor's
+    // point (sensor_direct.h); 1 for the pinhole, and through mirrors and glass.
+    const auto directWeight = [&](int depth, const V3f& dir, const SurfacePoint* emitter) {
+        return depth == 0 && sensorPoint >= 0 ? sensorRayWeight(scene, sensorPoint, dir, emitter) : 1.0f;
+    };
     for (int depth = 0; depth <= maxSpecularDepth; ++depth) {
         Rgb through;
         const auto hit = scene.intersect(ray, nullptr, &through);
         cv.throughput *= through;  // glazing crossed on the way
         if (!hit) {
-            // The sky seen directly or through mirrors and glass: no other strategy finds it.
-            cv.emitted += cv.throughput * scene.escapedRadiance(ray.direction.normalized());
+            // The sky seen directly or through mirrors and glass: no other strategy finds it
+            // (but a sensor's next-event estimation, directly).
+            const V3f dir = ray.direction.normalized();
+            cv.emitted += cv.throughput * scene.escapedRadiance(dir) * directWeight(depth, dir, nullptr);
             break;
         }
         const ShadingMaterial& mat = scene.material(hit->material);
         const V3f wo = -ray.direction.normalized();
         if (mat.isEmitter()) {
-            if (hit->ng.dot(wo) > 0.0f) cv.emitted += cv.throughput * mat.radiance;
+            if (hit->ng.dot(wo) > 0.0f) cv.emitted += cv.throughput * mat.radiance * directWeight(depth, -wo, &*hit);
             break;
         }
         if (!mat.isDelta()) {
@@ -138,20 +147,26 @@ Rgb VplGatherer::directSample(const VplReceiver& r, const Frame& frame, const V3
     return L;
 }
 
-Rgb VplGatherer::radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale) const {
-    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
+Rgb VplGatherer::radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale,
+                          int sensorPoint) const {
+    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth, sensorPoint);
     Rgb L = cv.emitted;
-    if (!cv.found) return L;
-    return L + cv.throughput * reflected(cv.receiver, rng, vpls, scale);
+    if (cv.found) L += cv.throughput * reflected(cv.receiver, rng, vpls, scale);
+    // Last, so that x1's direct light keeps the numbers after the camera ray's.
+    if (sensorPoint >= 0) L += sensorNextEvent(scene_, sensorPoint, rng);
+    return L;
 }
 
-VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls) const {
-    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth);
+VplGatherer::Parts VplGatherer::radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls,
+                                              int sensorPoint) const {
+    const CameraVertex cv = traceCameraVertex(scene_, ray, rng, settings_.maxSpecularDepth, sensorPoint);
     Parts parts{Rgb(0, 0, 0), cv.emitted};
-    if (!cv.found) return parts;
-    const Parts at = reflectedParts(cv.receiver, rng, vpls, {}, false);
-    parts.rest += cv.throughput * at.rest;
-    parts.vpl += cv.throughput * at.vpl;
+    if (cv.found) {
+        const Parts at = reflectedParts(cv.receiver, rng, vpls, {}, false);
+        parts.rest += cv.throughput * at.rest;
+        parts.vpl += cv.throughput * at.vpl;
+    }
+    if (sensorPoint >= 0) parts.rest += sensorNextEvent(scene_, sensorPoint, rng);
     return parts;
 }
 

@@ -34,8 +34,10 @@ struct CameraVertex {
 };
 
 // Follows `ray` through delta surfaces (drawing 3 numbers from u at each, none elsewhere) to the
-// first diffuse/glossy vertex.
-CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth);
+// first diffuse/glossy vertex. With sensorPoint >= 0 the ray is that point's of the scene's
+// camera, and what it finds before scattering is weighed by sensorRayWeight (sensor_direct.h).
+CameraVertex traceCameraVertex(const RenderScene& scene, Ray ray, SampleGenerator& u, int maxSpecularDepth,
+                               int sensorPoint = -1);
 
 class VplGatherer {
 public:
@@ -44,8 +46,12 @@ public:
     float maxG() const { return maxG_; }
 
     // Radiance along a camera ray; the VPL term is sum_i scale[i] * contribution_i (scale empty:
-    // all 1).
-    Rgb radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {}) const;
+    // all 1). With sensorPoint >= 0 the ray is that point's of the scene's camera (what
+    // Sensor::pointAt gives for its raster point), and for an irradiance sensor the light it
+    // finds directly is shared with next-event estimation at the point (sensor_direct.h): the
+    // value is then right for the point's block mean, not for the ray's own direction.
+    Rgb radiance(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, std::span<const float> scale = {},
+                 int sensorPoint = -1) const;
 
     // radiance() in two parts that sum to it, drawing the same random numbers: the VPL term
     // (linear in the VPLs' powers) and the rest.
@@ -53,7 +59,7 @@ public:
         Rgb vpl{0, 0, 0};
         Rgb rest{0, 0, 0};
     };
-    Parts radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls) const;
+    Parts radianceParts(const Ray& ray, SampleGenerator& rng, std::span<const Vpl> vpls, int sensorPoint = -1) const;
 
     // Radiance leaving the receiver toward r.wo by reflection (its emission not included): direct
     // light, the clamp residual and the VPL term, as radiance() computes at x1. With

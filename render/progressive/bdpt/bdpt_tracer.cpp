@@ -1,5 +1,7 @@
 #include "render/progressive/bdpt/bdpt_tracer.h"
 
+#include "render/trace/sensor_direct.h"
+
 namespace lucerna {
 
 namespace {
@@ -297,9 +299,11 @@ float BdptTracer::nextEventRatio(const PathVertex& x0, const PathVertex& x1, con
 }
 
 float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
-    if (s + t == 2) return 1.0f;  // the only strategy used for paths of one edge (s = 1, t = 1 is skipped)
     const auto lightAt = [&](int i) -> const PathVertex& { return s == 1 && i == 0 ? *sampled : light_[size_t(i)]; };
     const auto cameraAt = [&](int i) -> const PathVertex& { return t == 1 && i == 0 ? *sampled : camera_[size_t(i)]; };
+    // Paths of one edge: s = 0, t = 2 alone (s = 1, t = 1 is skipped), or beside next-event
+    // estimation at an irradiance sensor's point (sampleTraced).
+    if (s + t == 2) return sensorDirectWeight(cameraAt(0), cameraAt(1));
     const PathVertex* qs = s > 0 ? &lightAt(s - 1) : nullptr;
     const PathVertex& pt = cameraAt(t - 1);
     const PathVertex* qsMinus = s > 1 ? &lightAt(s - 2) : nullptr;
@@ -345,6 +349,12 @@ float BdptTracer::misWeight(int s, int t, const PathVertex* sampled) const {
     sumRatios /= own * own;
     const double w = 1.0 / (1.0 + sumRatios);
     return std::isfinite(w) ? float(w) : 0.0f;
+}
+
+float BdptTracer::sensorDirectWeight(const PathVertex& sensor, const PathVertex& light) const {
+    const int point = int(sensor.light);
+    if (light.atInfinity()) return sensorRayWeight(scene_, point, -light.sp.ng, nullptr);
+    return sensorRayWeight(scene_, point, (light.p() - sensor.p()).normalized(), &light.sp);
 }
 
 Rgb BdptTracer::sample(float x, float y, SampleGenerator& rng, std::vector<FilmSplat>& splats) {
@@ -444,6 +454,21 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
                 record_->strategies.push_back(r);
             }
         }
+    // Last, so that every number before it stays where it was for the pinhole.
+    if (nCamera >= 1) {
+        const Rgb c = sensorNextEvent(scene_, int(camera_[0].light), rng);
+        if (isFinite(c)) L += c;
+        if (record_ && !isBlack(c) && isFinite(c)) {
+            StrategyRecord r;
+            r.s = r.t = 1;
+            r.sensorNextEvent = true;
+            r.sampled = camera_[0];
+            r.weighted = c;
+            r.rasterX = x;
+            r.rasterY = y;
+            record_->strategies.push_back(r);
+        }
+    }
     if (record_) {
         record_->camera = camera_;
         record_->light = light_;

@@ -6,7 +6,9 @@
 //   s = 1   next-event estimation: a fresh point on a light, joined to camera vertex t-1, the
 //           light chosen as `light_sampler` says (the tree: by its importance at that vertex);
 //   t = 1   light tracing: light vertex s-1 joined to the pinhole and splatted onto the film;
-//   else    light vertex s-1 joined to camera vertex t-1 by a shadow ray.
+//   else    light vertex s-1 joined to camera vertex t-1 by a shadow ray;
+// and at an irradiance sensor's point, next-event estimation for the paths of one edge
+// (sensor_direct.h).
 // Each contribution is weighted by the power heuristic over all strategies that could have made
 // the same path (eq. 10.9 with beta = 2), computed from the per-vertex densities pdfFwd/pdfRev
 // so that nothing is counted twice. Light subpaths start by power, so the s = 1 strategy's
@@ -35,12 +37,17 @@ struct StrategyRecord {
     float misWeight = 1;     // weighted = misWeight times the unweighted contribution
     float rasterX = 0, rasterY = 0;
     PathVertex sampled;      // s = 1 or t = 1 only; s = 1: its pdfFwd the density it was drawn with
+    // Next-event estimation at an irradiance sensor's point (s = t = 1, at the camera sample's
+    // raster point): light straight from an emitter whose path is kept nowhere, so no
+    // perturbation can rebuild it.
+    bool sensorNextEvent = false;
 };
 struct SampledPaths {
     std::vector<PathVertex> camera, light;
     std::vector<StrategyRecord> strategies;
 
-    // Path x_0 (the sensor) ... x_k (the light) of strategy i, appended to `out` (cleared).
+    // Path x_0 (the sensor) ... x_k (the light) of strategy i, appended to `out` (cleared); not
+    // for a sensorNextEvent record, which keeps no path.
     void path(const StrategyRecord& r, std::vector<PathVertex>& out) const;
 };
 
@@ -101,6 +108,9 @@ private:
     // selection, and where x1 is the camera, which never estimates next events).
     float nextEventRatio(const PathVertex& x0, const PathVertex& x1, const PathVertex& x2) const;
     PathVertex cameraVertex(int point) const;
+    // sensorRayWeight of a path of one edge, from the sensor vertex to the emitter (or the
+    // environment) it found.
+    float sensorDirectWeight(const PathVertex& sensor, const PathVertex& light) const;
     // The vertex of a camera subpath that left the scene along `ray` (the environment's), with
     // the walk's throughput and the solid-angle density of its direction.
     PathVertex escapedVertex(const Ray& ray, const Rgb& beta, float pdfDir) const;

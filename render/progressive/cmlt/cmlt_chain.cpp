@@ -158,7 +158,7 @@ void asDeposit(const Sensor& camera, float x, float y, const Rgb& c, PathContrib
 int CmltChain::pathLensSubChain(double scale, std::vector<FilmSplat>& out) {
     const int p = std::max(1, settings_.tries), made = settings_.pathLensSteps * p;
     const StrategyRecord* seed = choosePath(current().paths, sampler().rng());
-    if (seed) {
+    if (seed && !seed->sensorNextEvent) {
         current().paths.path(*seed, pathVertices_);
         if (lensSubChain(*seed, p, scale, out)) {
             countSteps(cmltCounters_.pathLensSteps, made);
