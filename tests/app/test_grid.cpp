@@ -41,15 +41,19 @@ GridResult computeGrid(const SceneSnapshot& scene, const std::vector<V3d>& point
     return result;
 }
 
-// 4 x 4 points on the floor of RectangleOverPlane (y = 0, facing up), 2 m across under its emitter.
-CalculationGrid floorUnderTheEmitter() {
+// A horizontal square grid facing up, centred on the y axis at height y, `side` across (scene
+// units), its points `spacing` metres apart.
+CalculationGrid squareGrid(double y, double side, double spacing) {
     CalculationGrid g;
-    g.corner = V3d(-1, 0, 1);
-    g.edgeU = V3d(2, 0, 0);
-    g.edgeV = V3d(0, 0, -2);
-    g.spacingMeters = 0.5;
+    g.corner = V3d(-0.5 * side, y, 0.5 * side);
+    g.edgeU = V3d(side, 0, 0);
+    g.edgeV = V3d(0, 0, -side);
+    g.spacingMeters = spacing;
     return g;
 }
+
+// 4 x 4 points on the floor of RectangleOverPlane (y = 0, facing up), 2 m across under its emitter.
+CalculationGrid floorUnderTheEmitter() { return squareGrid(0, 2, 0.5); }
 
 // Within twice the 95% error bar (fails about once in a million runs, not once in twenty) for
 // an unbiased method; within `bias` of the expected value for the preview. The Metropolis methods
@@ -174,11 +178,7 @@ private slots:
         QFETCH(double, target);
         DeltaLightOverPlane s;
         const SceneSnapshot scene = sceneFromJson(s.json());
-        CalculationGrid g;
-        g.corner = V3d(-1500, 0, 1500);
-        g.edgeU = V3d(3000, 0, 0);
-        g.edgeV = V3d(0, 0, -3000);
-        g.spacingMeters = 0.5;
+        const CalculationGrid g = squareGrid(0, 3000, 0.5);  // millimetres
         const GridLayout layout = layoutGrid(g, 0.001);
         const GridResult r = computeGrid(scene, layout.points, g.normal(), settingsFor(GridMethod(method), target));
         QVERIFY(r.converged);
@@ -269,11 +269,7 @@ private slots:
         QFETCH(double, bias);
         SunOverPlane s;
         const SceneSnapshot scene = sceneFromJson(s.json());
-        CalculationGrid g;
-        g.corner = V3d(-3, 0.8, 3);
-        g.edgeU = V3d(6, 0, 0);
-        g.edgeV = V3d(0, 0, -6);
-        g.spacingMeters = 2.0;
+        const CalculationGrid g = squareGrid(0.8, 6, 2.0);
         const GridLayout layout = layoutGrid(g, 1.0);
         GridSettings settings = settingsFor(GridMethod(method), target);
         settings.timeLimitSeconds = 30;  // the sensor rays alone would need hours

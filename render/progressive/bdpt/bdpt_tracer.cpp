@@ -455,10 +455,10 @@ Rgb BdptTracer::sampleTraced(float x, float y, const std::optional<SurfacePoint>
             }
         }
     // Last, so that every number before it stays where it was for the pinhole.
-    if (nCamera >= 1) {
-        const Rgb c = sensorNextEvent(scene_, int(camera_[0].light), rng);
-        if (isFinite(c)) L += c;
-        if (record_ && !isBlack(c) && isFinite(c)) {
+    if (const Rgb c = nCamera >= 1 ? sensorNextEvent(scene_, int(camera_[0].light), rng) : Rgb(0, 0, 0);
+        isFinite(c) && !isBlack(c)) {
+        L += c;
+        if (record_) {
             StrategyRecord r;
             r.s = r.t = 1;
             r.sensorNextEvent = true;
